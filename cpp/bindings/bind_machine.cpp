@@ -1,0 +1,149 @@
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "servobench/common/validate.hpp"
+#include "servobench/machine/axis.hpp"
+
+namespace servobench::bindings {
+
+namespace py = pybind11;
+using machine::Axis;
+using machine::AxisConfig;
+
+namespace {
+
+using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+const std::vector<std::string>& signal_names() {
+  static const std::vector<std::string> names = {
+#define SERVOBENCH_NAME(name, unit, doc) #name,
+      SERVOBENCH_TRACE_SIGNALS(SERVOBENCH_NAME)
+#undef SERVOBENCH_NAME
+  };
+  return names;
+}
+
+double** trace_slot(machine::Trace& t, const std::string& name) {
+#define SERVOBENCH_SLOT(n, unit, doc) \
+  if (name == #n) return &t.n;
+  SERVOBENCH_TRACE_SIGNALS(SERVOBENCH_SLOT)
+#undef SERVOBENCH_SLOT
+  return nullptr;
+}
+
+machine::LawParams law_from(const py::handle& law) {
+  if (py::isinstance<control::GtServoLawParams>(law)) return law.cast<control::GtServoLawParams>();
+  if (py::isinstance<control::ApsServoLawParams>(law)) return law.cast<control::ApsServoLawParams>();
+  throw py::type_error("law must be a GtServoLaw or an ApsServoLaw, got " + py::str(py::type::of(law)).cast<std::string>());
+}
+
+Array checked_array(const py::handle& obj, const char* name, py::ssize_t expected) {
+  Array a = Array::ensure(obj);
+  if (!a) throw py::type_error(std::string(name) + " must be a 1-D array of numbers");
+  if (a.ndim() != 1) throw py::value_error(std::string(name) + " must be 1-D, got " + std::to_string(a.ndim()) + " dimensions");
+  if (expected >= 0 && a.shape(0) != expected)
+    throw py::value_error(std::string(name) + " has " + std::to_string(a.shape(0)) + " samples; expected " +
+                          std::to_string(expected) + " (one per tick, like the positions)");
+  const double* d = a.data();
+  for (py::ssize_t k = 0; k < a.shape(0); ++k) {
+    if (!std::isfinite(d[k]))
+      throw py::value_error(std::string(name) + "[" + std::to_string(k) + "] = " + format_value(d[k]) +
+                            " is not a finite number");
+  }
+  return a;
+}
+
+}  // namespace
+
+void bind_machine(py::module_& m) {
+  py::list meta;
+#define SERVOBENCH_META(name, unit, doc) meta.append(py::make_tuple(#name, unit, doc));
+  SERVOBENCH_TRACE_SIGNALS(SERVOBENCH_META)
+#undef SERVOBENCH_META
+  m.attr("TRACE_SIGNALS") = meta;
+
+  py::class_<Axis>(m, "Axis", "One simulated servo axis (C++ core). Use servobench.Axis.")
+      .def(py::init([](const py::object& law, const drive::TorqueDriveParams& drv, const plant::RigidPlantParams& plant,
+                       const plant::EncoderParams& enc, const drive::DacParams& dac,
+                       std::optional<double> servo_period_s, double substeps) {
+             check_integer("Axis", "substeps", substeps, 1, 1000);
+             AxisConfig c;
+             c.law = law_from(law);
+             c.drive = drv;
+             c.plant = plant;
+             c.encoder = enc;
+             c.dac = dac;
+             c.servo_period_s = servo_period_s;
+             c.substeps = static_cast<int>(substeps);
+             return Axis(c);
+           }),
+           py::kw_only(), py::arg("law"), py::arg("drive"), py::arg("plant"), py::arg("encoder"), py::arg("dac"),
+           py::arg("servo_period_s") = py::none(), py::arg("substeps") = 1.0)
+      .def("reset", &Axis::reset, py::arg("angle_rad") = 0.0)
+      .def("set_law", [](Axis& a, const py::object& law) { a.set_law(law_from(law)); }, py::arg("law"))
+      .def_property_readonly("law", [](const Axis& a) -> py::object {
+        return std::visit([](const auto& p) { return py::cast(p); }, a.config().law);
+      })
+      .def_property_readonly("drive", [](const Axis& a) { return a.config().drive; })
+      .def_property_readonly("plant", [](const Axis& a) { return a.config().plant; })
+      .def_property_readonly("encoder", [](const Axis& a) { return a.config().encoder; })
+      .def_property_readonly("dac", [](const Axis& a) { return a.config().dac; })
+      .def_property_readonly("servo_period_s", &Axis::servo_period_s)
+      .def_property_readonly("substeps", [](const Axis& a) { return a.config().substeps; })
+      .def_property_readonly("tick", &Axis::tick)
+      .def_property_readonly("feedback_pulse", &Axis::feedback_pulse)
+      .def_property_readonly("angle_rad", &Axis::angle_rad)
+      .def_property_readonly("speed_rad_s", &Axis::speed_rad_s)
+      .def(
+          "run",
+          [](Axis& axis, const py::object& pos, const py::object& vel, const py::object& acc, const py::object& signals) {
+            Array p = checked_array(pos, "positions", -1);
+            const py::ssize_t n = p.shape(0);
+            Array v, a;
+            machine::CommandInput in;
+            in.pos = p.data();
+            in.n = static_cast<std::size_t>(n);
+            if (!vel.is_none()) {
+              v = checked_array(vel, "velocities", n);
+              in.vel = v.data();
+            }
+            if (!acc.is_none()) {
+              a = checked_array(acc, "accelerations", n);
+              in.acc = a.data();
+            }
+            std::vector<std::string> wanted;
+            if (signals.is_none()) {
+              wanted = signal_names();
+            } else {
+              for (const auto& s : signals) wanted.push_back(py::str(s));
+            }
+            machine::Trace trace;
+            py::dict out;
+            for (const auto& name : wanted) {
+              double** slot = trace_slot(trace, name);
+              if (slot == nullptr) {
+                std::string all;
+                for (const auto& s : signal_names()) all += (all.empty() ? "" : ", ") + s;
+                throw py::value_error("signals: unknown signal '" + name + "'; the signals are: " + all);
+              }
+              py::array_t<double> buf(n);
+              *slot = buf.mutable_data();
+              out[py::str(name)] = buf;
+            }
+            {
+              py::gil_scoped_release release;
+              axis.run(in, trace);
+            }
+            return out;
+          },
+          py::arg("positions"), py::arg("velocities") = py::none(), py::arg("accelerations") = py::none(),
+          py::arg("signals") = py::none(),
+          "Runs one tick per position (pulse); returns {signal: array}. Releases the GIL.");
+}
+
+}  // namespace servobench::bindings

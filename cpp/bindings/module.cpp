@@ -1,0 +1,28 @@
+// servobench._core: the pybind11 module. One bind_<layer>.cpp per layer; no logic here.
+#include <pybind11/pybind11.h>
+
+namespace py = pybind11;
+
+namespace servobench::bindings {
+void bind_control(py::module_& m);
+void bind_drive(py::module_& m);
+void bind_plant(py::module_& m);
+void bind_motion(py::module_& m);
+void bind_machine(py::module_& m);
+}  // namespace servobench::bindings
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "servobench C++ core (servo laws, drives, plants, motion, axis). Use the `servobench` package.";
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const std::invalid_argument& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+  servobench::bindings::bind_control(m);
+  servobench::bindings::bind_drive(m);
+  servobench::bindings::bind_plant(m);
+  servobench::bindings::bind_motion(m);
+  servobench::bindings::bind_machine(m);
+}

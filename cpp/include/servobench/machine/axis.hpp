@@ -1,0 +1,85 @@
+// Axis: one simulated servo axis, composed of the layers and stepped one servo tick at a time.
+//
+// The tick (docs/decisions.md, "order inside a tick"):
+//   command -> encoder read -> servo law -> filter slot 0 -> filter slot 1 -> output stage and DAC,
+//   then the drive and mechanics advance over Ts (in `substeps` equal sub-steps) with the DAC voltage of the
+//   previous tick: the controller's output takes effect one tick later, as on the cards' DSPs.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <variant>
+
+#include "servobench/control/aps_servo_law.hpp"
+#include "servobench/control/filter_slot.hpp"
+#include "servobench/control/gt_servo_law.hpp"
+#include "servobench/drive/dac.hpp"
+#include "servobench/drive/torque_drive.hpp"
+#include "servobench/machine/powertrain.hpp"
+#include "servobench/machine/trace.hpp"
+#include "servobench/plant/encoder.hpp"
+#include "servobench/plant/rigid.hpp"
+
+namespace servobench::machine {
+
+using LawParams = std::variant<control::GtServoLawParams, control::ApsServoLawParams>;
+
+struct AxisConfig {
+  LawParams law = control::GtServoLawParams{};
+  drive::TorqueDriveParams drive{};
+  plant::RigidPlantParams plant{};
+  plant::EncoderParams encoder{};
+  drive::DacParams dac{};
+  std::optional<double> servo_period_s;  // s; empty: the law's card default (GT 200 us, APS 250 us)
+  int substeps = 1;             // plant integration sub-steps per tick, 1..1000 (bindings check the range)
+  // Validates every part and the servo period against the law's card range; fills the default period.
+  void validate_and_complete();
+};
+
+// Command input for `run`: n positions (pulse); velocities/accelerations optional (null: backward
+// differences of the positions, pulse/tick and pulse/tick^2).
+struct CommandInput {
+  const double* pos = nullptr;
+  const double* vel = nullptr;
+  const double* acc = nullptr;
+  std::size_t n = 0;
+};
+
+class Axis {
+ public:
+  explicit Axis(AxisConfig config = {});
+
+  const AxisConfig& config() const { return config_; }
+  double servo_period_s() const { return *config_.servo_period_s; }
+  long long tick() const { return tick_; }
+
+  // Power-on state at the given motor angle: law memories cleared, at rest, output 0 V, tick counter 0.
+  void reset(double angle_rad = 0.0);
+  // Replaces the servo-law parameters at the next tick (the card's Update); the law keeps its memories.
+  void set_law(const LawParams& law);
+
+  // Runs n ticks; continues from the current state. Fills the non-null buffers of `trace`.
+  void run(const CommandInput& command, const Trace& trace);
+
+  // Present state.
+  double feedback_pulse() const { return encoder_.read(power_.angle_rad()); }
+  double angle_rad() const { return power_.angle_rad(); }
+  double speed_rad_s() const { return power_.speed_rad_s(); }
+
+ private:
+  template <class Law>
+  void run_with(Law& law, const CommandInput& command, const Trace& trace);
+
+  AxisConfig config_;
+  std::variant<control::GtServoLaw, control::ApsServoLaw> law_;
+  control::FilterSlot slot0_, slot1_;
+  drive::Dac dac_;
+  plant::Encoder encoder_;
+  PowerTrain power_;
+  double pending_volts_ = 0.0;  // DAC output of the previous tick, applied during this one
+  double prev_cmd_ = 0.0, prev_vel_ = 0.0;
+  bool primed_ = false;
+  long long tick_ = 0;
+};
+
+}  // namespace servobench::machine

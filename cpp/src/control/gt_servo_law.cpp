@@ -1,0 +1,33 @@
+#include "servobench/control/gt_servo_law.hpp"
+
+#include "servobench/common/validate.hpp"
+
+namespace servobench::control {
+
+void GtServoLawParams::validate() const {
+  constexpr const char* owner = "GtServoLaw";
+  constexpr const char* table = "GT manual Table 3-4";
+  check_integer(owner, "kp", kp, 0, 32767, table);
+  check_integer(owner, "ki", ki, 0, 32767, table);
+  check_integer(owner, "kd", kd, 0, 32767, table);
+  check_integer(owner, "kvff", kvff, 0, 32767, table);
+  check_integer(owner, "kaff", kaff, 0, 32767, table);
+  check_integer(owner, "ilmt", ilmt, 0, 32767, table);
+  check_integer(owner, "bias", bias, -32768, 32767, table);
+  check_integer(owner, "mtr_lmt", mtr_lmt, 0, 32767, "GT manual L829");
+}
+
+GtServoLaw::GtServoLaw(const GtServoLawParams& params) : params_(params) { params_.validate(); }
+
+void GtServoLaw::set_params(const GtServoLawParams& params) {
+  params.validate();
+  params_ = params;
+  if (params_.ilmt == 0) sum_ = 0.0;
+}
+
+void GtServoLaw::reset() {
+  sum_ = 0.0;
+  prev_error_ = 0.0;
+}
+
+}  // namespace servobench::control

@@ -1,0 +1,134 @@
+#include "servobench/machine/axis.hpp"
+
+#include <type_traits>
+
+#include "servobench/common/validate.hpp"
+
+namespace servobench::machine {
+
+void AxisConfig::validate_and_complete() {
+  double lo = 0, hi = 0, def = 0;
+  const char* source = "";
+  std::visit(
+      [&](const auto& p) {
+        using P = std::decay_t<decltype(p)>;
+        p.validate();
+        lo = P::kMinPeriodS;
+        hi = P::kMaxPeriodS;
+        def = P::kDefaultPeriodS;
+        source = std::is_same_v<P, control::GtServoLawParams> ? "GT_SetSmplTm, GT manual L578-580"
+                                                              : "ADLINK servo cycle, manual L1733";
+      },
+      law);
+  drive.validate();
+  plant.validate();
+  encoder.validate();
+  dac.validate();
+  if (!servo_period_s) servo_period_s = def;
+  check_range("Axis", "servo_period_s", *servo_period_s, lo, hi, source);
+  check_integer("Axis", "substeps", substeps, 1, 1000);
+}
+
+namespace {
+AxisConfig completed(AxisConfig c) {
+  c.validate_and_complete();
+  return c;
+}
+std::variant<control::GtServoLaw, control::ApsServoLaw> make_law(const LawParams& p) {
+  if (const auto* gt = std::get_if<control::GtServoLawParams>(&p)) return control::GtServoLaw(*gt);
+  return control::ApsServoLaw(std::get<control::ApsServoLawParams>(p));
+}
+}  // namespace
+
+Axis::Axis(AxisConfig config)
+    : config_(completed(std::move(config))),
+      law_(make_law(config_.law)),
+      dac_(config_.dac),
+      encoder_(config_.encoder),
+      power_(config_.drive, config_.plant, *config_.servo_period_s / config_.substeps) {}
+
+void Axis::reset(double angle_rad) {
+  std::visit([](auto& law) { law.reset(); }, law_);
+  slot0_.reset();
+  slot1_.reset();
+  power_.reset(angle_rad);
+  pending_volts_ = 0.0;
+  prev_cmd_ = prev_vel_ = 0.0;
+  primed_ = false;
+  tick_ = 0;
+}
+
+void Axis::set_law(const LawParams& law) {
+  if (law.index() != law_.index()) {
+    // A different card's law: validate its period range too, then start it from power-on.
+    AxisConfig c = config_;
+    c.law = law;
+    c.validate_and_complete();
+    config_ = c;
+    law_ = make_law(law);
+    return;
+  }
+  std::visit(
+      [&](auto& active) {
+        using P = std::decay_t<decltype(active.params())>;
+        active.set_params(std::get<P>(law));
+      },
+      law_);
+  config_.law = law;
+}
+
+void Axis::run(const CommandInput& command, const Trace& trace) {
+  std::visit([&](auto& law) { run_with(law, command, trace); }, law_);
+}
+
+template <class Law>
+void Axis::run_with(Law& law, const CommandInput& command, const Trace& tr) {
+  const double ts = *config_.servo_period_s;
+  const int substeps = config_.substeps;
+  for (std::size_t k = 0; k < command.n; ++k) {
+    const double r = command.pos[k];
+    if (!primed_) {
+      prev_cmd_ = r;
+      prev_vel_ = 0.0;
+      primed_ = true;
+    }
+    const double v = command.vel ? command.vel[k] : r - prev_cmd_;
+    const double a = command.acc ? command.acc[k] : v - prev_vel_;
+    prev_cmd_ = r;
+    prev_vel_ = v;
+
+    power_.set_input(pending_volts_);  // the previous tick's output reaches the drive now
+    const double y = encoder_.read(power_.angle_rad());
+    const control::LawTerms t = law.step(r, y, v, a);
+    const double f0 = slot0_.step(t.total);
+    const double f1 = slot1_.step(f0);
+    const double volts = dac_.convert(law.counts_to_volts(f1));
+
+    if (tr.time_s) tr.time_s[k] = static_cast<double>(tick_) * ts;
+    if (tr.cmd_pos) tr.cmd_pos[k] = r;
+    if (tr.cmd_vel) tr.cmd_vel[k] = t.vel;
+    if (tr.cmd_acc) tr.cmd_acc[k] = t.acc;
+    if (tr.fb_pos) tr.fb_pos[k] = y;
+    if (tr.error) tr.error[k] = r - y;
+    if (tr.p) tr.p[k] = t.p;
+    if (tr.i) tr.i[k] = t.i;
+    if (tr.d) tr.d[k] = t.d;
+    if (tr.vff) tr.vff[k] = t.vff;
+    if (tr.aff) tr.aff[k] = t.aff;
+    if (tr.bias) tr.bias[k] = t.bias;
+    if (tr.u) tr.u[k] = t.total;
+    if (tr.biquad0) tr.biquad0[k] = f0;
+    if (tr.biquad1) tr.biquad1[k] = f1;
+    if (tr.volts) tr.volts[k] = volts;
+    if (tr.current_a) tr.current_a[k] = power_.current_a();
+    if (tr.torque_nm) tr.torque_nm[k] = power_.torque_nm();
+    if (tr.angle_rad) tr.angle_rad[k] = power_.angle_rad();
+    if (tr.speed_rad_s) tr.speed_rad_s[k] = power_.speed_rad_s();
+
+    for (int s = 0; s < substeps; ++s) power_.step();
+    pending_volts_ = volts;
+    ++tick_;
+  }
+}
+
+}  // namespace servobench::machine

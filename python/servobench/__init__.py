@@ -1,0 +1,52 @@
+"""servobench: a simulator of industrial motion controllers and a servo-tuning workbench.
+
+The C++ core steps one servo tick at a time (command -> servo law -> filters -> DAC -> drive -> plant ->
+encoder) with the vendor manuals' exact discrete laws; this package is its Python face.
+
+Units: controller side in pulse, pulse/tick, pulse/tick^2 and DAC counts (32767 counts = 10 V); the drive
+and the plant in SI (V, A, N*m, kg*m^2, rad, rad/s); time in s.
+
+Quick use::
+
+    import servobench as sb
+    axis = sb.demo_axis()
+    move = sb.trapezoid_move(distance_pulse=10000, vel_pulse_per_tick=20, acc_pulse_per_tick2=0.1,
+                             dwell_after=1000)
+    run = axis.run(move)
+    print(sb.move_metrics(run))
+"""
+
+from ._core import (
+    ApsServoLaw,
+    Dac,
+    Encoder,
+    GtServoLaw,
+    RigidPlant,
+    TorqueDrive,
+)
+from .axis import Axis, AxisRun, SIGNALS, SIGNAL_UNITS
+from .trajectory import Trajectory, trapezoid_move
+from .metrics import MoveMetrics, move_metrics
+from .examples import demo_axis
+from . import plot
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "ApsServoLaw",
+    "Axis",
+    "AxisRun",
+    "Dac",
+    "Encoder",
+    "GtServoLaw",
+    "MoveMetrics",
+    "RigidPlant",
+    "SIGNALS",
+    "SIGNAL_UNITS",
+    "TorqueDrive",
+    "Trajectory",
+    "demo_axis",
+    "move_metrics",
+    "plot",
+    "trapezoid_move",
+]

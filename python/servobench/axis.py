@@ -1,0 +1,167 @@
+"""The simulated axis and the record of a run."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Iterable, Mapping
+
+import numpy as np
+
+from . import _core
+from .trajectory import Trajectory
+
+#: Names of the signals an axis records every tick, in order.
+SIGNALS: tuple[str, ...] = tuple(name for name, _unit, _doc in _core.TRACE_SIGNALS)
+#: Unit of each signal.
+SIGNAL_UNITS: dict[str, str] = {name: unit for name, unit, _doc in _core.TRACE_SIGNALS}
+_SIGNAL_DOCS: dict[str, str] = {name: doc for name, _unit, doc in _core.TRACE_SIGNALS}
+
+
+@dataclass(frozen=True)
+class AxisRun:
+    """What an axis recorded during :meth:`Axis.run`: one NumPy array per signal, one sample per tick.
+
+    Signals (attribute names) and units:
+
+    ``time_s`` s; ``cmd_pos`` pulse; ``cmd_vel`` pulse/tick; ``cmd_acc`` pulse/tick^2; ``fb_pos`` pulse;
+    ``error`` pulse (cmd_pos - fb_pos); law terms ``p``, ``i``, ``d``, ``vff``, ``aff``, ``bias`` and the law
+    output ``u`` in DAC counts; filter-slot outputs ``biquad0``, ``biquad1`` in counts; ``volts`` V (computed at
+    the tick, applied from the next); ``current_a`` A; ``torque_nm`` N*m; ``angle_rad`` rad; ``speed_rad_s`` rad/s.
+    Mechanical signals are sampled at the instant the encoder is read.
+    """
+
+    signals: Mapping[str, np.ndarray]
+    servo_period_s: float
+    law: object = field(default=None, repr=False)
+
+    def __getattr__(self, name: str) -> np.ndarray:
+        signals = object.__getattribute__(self, "signals")
+        if name in signals:
+            return signals[name]
+        if name in SIGNAL_UNITS:
+            raise AttributeError(f"signal '{name}' was not recorded in this run (see Axis.run(signals=...))")
+        raise AttributeError(name)
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        return self.signals[name]
+
+    def __len__(self) -> int:
+        return len(next(iter(self.signals.values()))) if self.signals else 0
+
+    def __repr__(self) -> str:
+        n = len(self)
+        return (f"AxisRun({n} ticks = {n * self.servo_period_s:.6g} s at Ts = {self.servo_period_s * 1e6:.6g} us, "
+                f"signals: {', '.join(self.signals)})")
+
+    @property
+    def units(self) -> dict[str, str]:
+        """Unit of each recorded signal."""
+        return {k: SIGNAL_UNITS[k] for k in self.signals}
+
+    def to_dict(self) -> dict[str, np.ndarray]:
+        """The recorded signals as a plain dict of arrays."""
+        return dict(self.signals)
+
+    def metrics(self, **kwargs):
+        """Move metrics of this run; see :func:`servobench.move_metrics`."""
+        from .metrics import move_metrics
+
+        return move_metrics(self, **kwargs)
+
+    def plot(self, **kwargs):
+        """Draws the response (position, following error, volts); see :func:`servobench.plot.response`."""
+        from .plot import response
+
+        return response(self, **kwargs)
+
+
+class Axis:
+    """One simulated servo axis: servo law -> two filter slots -> DAC -> drive -> plant -> encoder.
+
+    Parameters (keyword only; each part is a validated parameter object):
+
+    law
+        :class:`GtServoLaw` (default, the GT manual's defaults) or :class:`ApsServoLaw`.
+    drive
+        :class:`TorqueDrive` (V -> A -> N*m).
+    plant
+        :class:`RigidPlant` (kg*m^2, N*m*s/rad, N*m).
+    encoder
+        :class:`Encoder` (counts per revolution).
+    dac
+        :class:`Dac` (16-bit +-10 V by default).
+    servo_period_s
+        servo period Ts in s; ``None`` takes the card's default (GT 200 us, ADLINK 250 us). The range is the
+        card's: GT 48..1966.08 us, ADLINK 50..2000 us.
+    substeps
+        integration sub-steps per tick (1..1000); the linear dynamics are exact for any value, more sub-steps
+        resolve friction events more finely.
+
+    The controller output computed at tick k reaches the drive at tick k+1 (one-tick computation delay).
+    The axis keeps its state between :meth:`run` calls; :meth:`reset` returns it to power-on.
+    """
+
+    def __init__(self, *, law=None, drive=None, plant=None, encoder=None, dac=None, servo_period_s=None,
+                 substeps: int = 1):
+        self._axis = _core.Axis(
+            law=_core.GtServoLaw() if law is None else law,
+            drive=_core.TorqueDrive() if drive is None else drive,
+            plant=_core.RigidPlant() if plant is None else plant,
+            encoder=_core.Encoder() if encoder is None else encoder,
+            dac=_core.Dac() if dac is None else dac,
+            servo_period_s=servo_period_s,
+            substeps=substeps,
+        )
+
+    # -- parts ------------------------------------------------------------------------------------
+    law = property(lambda self: self._axis.law, doc="The active servo-law parameters.")
+    drive = property(lambda self: self._axis.drive, doc="The drive parameters.")
+    plant = property(lambda self: self._axis.plant, doc="The plant parameters.")
+    encoder = property(lambda self: self._axis.encoder, doc="The encoder parameters.")
+    dac = property(lambda self: self._axis.dac, doc="The DAC parameters.")
+    servo_period_s = property(lambda self: self._axis.servo_period_s, doc="Servo period Ts, s.")
+    substeps = property(lambda self: self._axis.substeps, doc="Plant integration sub-steps per tick.")
+    tick = property(lambda self: self._axis.tick, doc="Ticks run since power-on/reset.")
+    feedback_pulse = property(lambda self: self._axis.feedback_pulse, doc="Encoder reading now, pulse.")
+    angle_rad = property(lambda self: self._axis.angle_rad, doc="Motor angle now, rad.")
+    speed_rad_s = property(lambda self: self._axis.speed_rad_s, doc="Motor speed now, rad/s.")
+
+    def __repr__(self) -> str:
+        return (f"Axis(law={self.law!r}, drive={self.drive!r}, plant={self.plant!r}, encoder={self.encoder!r}, "
+                f"dac={self.dac!r}, servo_period_s={self.servo_period_s!r}, substeps={self.substeps})")
+
+    # -- control ----------------------------------------------------------------------------------
+    def reset(self, angle_rad: float = 0.0) -> None:
+        """Power-on state at `angle_rad` (rad): law memories cleared, at rest, output 0 V, tick 0."""
+        self._axis.reset(float(angle_rad))
+
+    def set_law(self, law) -> None:
+        """Replaces the servo-law parameters from the next tick on (the card's Update)."""
+        self._axis.set_law(law)
+
+    def run(self, command, *, velocities=None, accelerations=None, signals: Iterable[str] | None = None) -> AxisRun:
+        """Runs one servo tick per command sample and returns what was recorded.
+
+        command
+            command positions in pulse, one per tick (array-like), or a :class:`Trajectory` (whose velocities
+            and accelerations are then used too).
+        velocities, accelerations
+            optional profile velocity (pulse/tick) and acceleration (pulse/tick^2) per tick, fed to the GT law's
+            Kvff/Kaff terms; by default backward differences of the positions. The ADLINK law always uses the
+            differences, as its manual defines CmdVel and CmdAcc.
+        signals
+            names of the signals to record (default all, see :data:`SIGNALS`); fewer is faster.
+
+        Releases the GIL while it runs.
+        """
+        if isinstance(command, Trajectory):
+            positions = command.pos
+            velocities = command.vel if velocities is None else velocities
+            accelerations = command.acc if accelerations is None else accelerations
+        else:
+            positions = command
+        positions = np.asarray(positions, dtype=float)
+        if positions.ndim == 0:
+            raise ValueError("command must be a 1-D array of positions (pulse), one per tick")
+        rec = self._axis.run(positions, velocities, accelerations, None if signals is None else list(signals))
+        return AxisRun(signals=rec, servo_period_s=self.servo_period_s, law=self.law)

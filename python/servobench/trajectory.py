@@ -1,0 +1,49 @@
+"""Command trajectories sampled at the servo ticks."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import _core
+
+
+@dataclass(frozen=True)
+class Trajectory:
+    """A command sampled once per servo tick: position (pulse), velocity (pulse/tick), acceleration
+    (pulse/tick^2), as NumPy arrays of equal length."""
+
+    pos: np.ndarray
+    vel: np.ndarray
+    acc: np.ndarray
+
+    def __post_init__(self):
+        n = len(self.pos)
+        if len(self.vel) != n or len(self.acc) != n:
+            raise ValueError(f"Trajectory: pos, vel and acc must have equal lengths, got {n}, {len(self.vel)}, "
+                             f"{len(self.acc)}")
+
+    def __len__(self) -> int:
+        return len(self.pos)
+
+    def __repr__(self) -> str:
+        return (f"Trajectory({len(self)} ticks, {self.pos[0]:.6g} -> {self.pos[-1]:.6g} pulse, "
+                f"peak vel {np.max(np.abs(self.vel)):.6g} pulse/tick)")
+
+
+def trapezoid_move(*, distance_pulse: float, vel_pulse_per_tick: float, acc_pulse_per_tick2: float,
+                   start_pulse: float = 0.0, dwell_before: int = 0, dwell_after: int = 0) -> Trajectory:
+    """A trapezoidal point-to-point move sampled at the ticks (triangular if `vel` is not reached).
+
+    distance_pulse: signed move length, pulse. vel_pulse_per_tick > 0: cruise velocity, pulse/tick.
+    acc_pulse_per_tick2 > 0: acceleration and deceleration, pulse/tick^2. start_pulse: initial position,
+    pulse. dwell_before / dwell_after: ticks at rest before and after the move. The last sample of the move is
+    exactly start + distance; positions are fractional in between (the manuals' T-curve generators with
+    integer semantics are a separate feature).
+    """
+    pos, vel, acc = _core.trapezoid_move(start_pulse=start_pulse, distance_pulse=distance_pulse,
+                                         vel_pulse_per_tick=vel_pulse_per_tick,
+                                         acc_pulse_per_tick2=acc_pulse_per_tick2, dwell_before=dwell_before,
+                                         dwell_after=dwell_after)
+    return Trajectory(pos=pos, vel=vel, acc=acc)

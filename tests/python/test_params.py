@@ -1,0 +1,156 @@
+"""Bad input on every parameter object gets a ValueError naming the parameter, the value and the range.
+
+Ranges: GT manual (seed 000) Table 3-4 L784-793, L829, sample time L578-580; ADLINK manual (seed 004)
+L1733 (servo period) and L1746-1762 (law parameters)."""
+
+import math
+import pickle
+
+import numpy as np
+import pytest
+
+import servobench as sb
+
+NAN, INF = math.nan, math.inf
+
+# (class, field, bad values, text expected in the message)
+BAD = [
+    (sb.GtServoLaw, "kp", [-1, 32768, 1.5, NAN, INF], "0..32767"),
+    (sb.GtServoLaw, "ki", [-1, 32768, 0.25, NAN, -INF], "0..32767"),
+    (sb.GtServoLaw, "kd", [-1, 32768, NAN], "0..32767"),
+    (sb.GtServoLaw, "kvff", [-1, 32768, INF], "0..32767"),
+    (sb.GtServoLaw, "kaff", [-1, 32768, NAN], "0..32767"),
+    (sb.GtServoLaw, "ilmt", [-1, 32768, NAN], "0..32767"),
+    (sb.GtServoLaw, "bias", [-32769, 32768, 0.5, NAN], "-32768..32767"),
+    (sb.GtServoLaw, "mtr_lmt", [-1, 32768, INF], "0..32767"),
+    (sb.ApsServoLaw, "kp", [-1, 65536, 2.5, NAN], "0..65535"),
+    (sb.ApsServoLaw, "ki", [-1, 65536, INF], "0..65535"),
+    (sb.ApsServoLaw, "kd", [-1, 65536, NAN], "0..65535"),
+    (sb.ApsServoLaw, "kvff", [-1, 65536, NAN], "0..65535"),
+    (sb.ApsServoLaw, "kaff", [-1, 65536, NAN], "0..65535"),
+    (sb.ApsServoLaw, "kp_shift", [-32, 32, 0.5, NAN], "-31..31"),
+    (sb.ApsServoLaw, "ki_shift", [-32, 32, NAN], "-31..31"),
+    (sb.ApsServoLaw, "kd_shift", [-32, 32, INF], "-31..31"),
+    (sb.ApsServoLaw, "kvff_shift", [-32, 32, NAN], "-31..31"),
+    (sb.ApsServoLaw, "kaff_shift", [-32, 32, NAN], "-31..31"),
+    (sb.ApsServoLaw, "pid_shift", [-32, 32, NAN], "-31..31"),
+    (sb.ApsServoLaw, "integral_limit", [-1, 2147483648, 0.5, NAN], "0..2147483647"),
+    (sb.ApsServoLaw, "v_bias", [-0.1, 10.1, NAN, INF], "0..10"),
+    (sb.ApsServoLaw, "v_limit", [-0.1, 10.1, NAN], "0..10"),
+    (sb.ApsServoLaw, "v_inverse", [2, -1, 0.5], "0/False or 1/True"),
+    (sb.TorqueDrive, "amps_per_volt", [0, -1, NAN, INF], "> 0"),
+    (sb.TorqueDrive, "kt", [0, -0.1, NAN, INF], "> 0"),
+    (sb.TorqueDrive, "current_limit_a", [0, -1, NAN], "> 0"),
+    (sb.TorqueDrive, "current_bw_hz", [0, -5, NAN], "> 0"),
+    (sb.RigidPlant, "inertia_kgm2", [0, -1e-4, NAN, INF], "> 0"),
+    (sb.RigidPlant, "viscous_nms", [-1e-3, NAN, INF], ">= 0"),
+    (sb.RigidPlant, "coulomb_nm", [-0.1, NAN, INF], ">= 0"),
+    (sb.RigidPlant, "load_nm", [NAN, INF, 2e6], "-1000000..1000000"),
+    (sb.Encoder, "counts_per_rev", [0, -4, 1000.5, NAN, INF, 2**31 + 1], "1..2147483648"),
+    (sb.Encoder, "quantize", [3], "0/False or 1/True"),
+    (sb.Dac, "bits", [7, 25, 16.5, NAN], "8..24"),
+    (sb.Dac, "full_scale_v", [0, -10, 101, NAN], "0.001..100"),
+    (sb.Dac, "quantize", [2, NAN], "0/False or 1/True"),
+]
+
+
+@pytest.mark.parametrize("cls,field,bad,expect", [(c, f, v, e) for c, f, vals, e in BAD for v in vals],
+                         ids=lambda x: repr(x) if not isinstance(x, type) else x.__name__)
+def test_constructor_rejects(cls, field, bad, expect):
+    with pytest.raises(ValueError) as info:
+        cls(**{field: bad})
+    msg = str(info.value)
+    assert f"{cls.__name__}.{field} = " in msg
+    assert expect in msg
+
+
+@pytest.mark.parametrize("cls,field,bad,expect", [(c, f, vals[0], e) for c, f, vals, e in BAD],
+                         ids=lambda x: repr(x) if not isinstance(x, type) else x.__name__)
+def test_setter_rejects_and_keeps_the_old_value(cls, field, bad, expect):
+    obj = cls()
+    before = obj.to_dict()
+    with pytest.raises(ValueError, match=field):
+        setattr(obj, field, bad)
+    assert obj.to_dict() == before
+
+
+def test_every_field_is_covered_by_a_bad_input_test():
+    covered = {(c, f) for c, f, _v, _e in BAD}
+    for cls in (sb.GtServoLaw, sb.ApsServoLaw, sb.TorqueDrive, sb.RigidPlant, sb.Encoder, sb.Dac):
+        for field in cls.FIELDS:
+            assert (cls, field) in covered, f"{cls.__name__}.{field} has no bad-input test"
+
+
+def test_wrong_types_and_unknown_fields():
+    with pytest.raises(TypeError, match="kp must be a number"):
+        sb.GtServoLaw(kp="100")
+    with pytest.raises(TypeError, match="unexpected keyword argument 'kpp'.*kp, ki, kd"):
+        sb.GtServoLaw(kpp=1)
+    with pytest.raises(TypeError):
+        sb.GtServoLaw(10)  # keyword arguments only
+
+
+def test_value_type_protocol():
+    law = sb.ApsServoLaw(kp=100, kp_shift=2, pid_shift=3)
+    assert law.effective_gains()["kp"] == 3200.0  # ADLINK manual L1733 worked example, see decisions.md
+    assert law == sb.ApsServoLaw(kp=100, kp_shift=2, pid_shift=3)
+    assert law != law.replace(kp=101)
+    assert pickle.loads(pickle.dumps(law)) == law
+    assert repr(law).startswith("ApsServoLaw(kp=100, ki=0, kd=0, kvff=0, kaff=0, kp_shift=2, ki_shift=-15")
+    assert "v_inverse=False" in repr(law)
+    assert np.isinf(sb.TorqueDrive(current_bw_hz=INF).current_bw_hz)  # inf = ideal current loop
+
+
+@pytest.mark.parametrize("law,period", [
+    (sb.GtServoLaw(), 47e-6), (sb.GtServoLaw(), 1967e-6), (sb.GtServoLaw(), NAN), (sb.GtServoLaw(), 0.0),
+    (sb.ApsServoLaw(), 49e-6), (sb.ApsServoLaw(), 2001e-6), (sb.ApsServoLaw(), INF), (sb.ApsServoLaw(), -1.0),
+])
+def test_axis_servo_period_range_is_the_cards(law, period):
+    with pytest.raises(ValueError, match="Axis.servo_period_s = .* (allowed range|finite)"):
+        sb.Axis(law=law, servo_period_s=period)
+
+
+def test_axis_default_periods_and_ranges():
+    assert sb.Axis().servo_period_s == pytest.approx(200e-6)  # GT manual L578-580
+    assert sb.Axis(law=sb.ApsServoLaw()).servo_period_s == pytest.approx(250e-6)  # ADLINK manual L1733
+    sb.Axis(servo_period_s=48e-6)
+    sb.Axis(servo_period_s=1966.08e-6)
+    sb.Axis(law=sb.ApsServoLaw(), servo_period_s=50e-6)
+    sb.Axis(law=sb.ApsServoLaw(), servo_period_s=2000e-6)
+
+
+@pytest.mark.parametrize("substeps", [0, 1001, 1.5, NAN])
+def test_axis_substeps(substeps):
+    with pytest.raises(ValueError, match="Axis.substeps"):
+        sb.Axis(substeps=substeps)
+
+
+def test_axis_rejects_a_part_of_the_wrong_kind():
+    with pytest.raises(TypeError, match="law must be a GtServoLaw or an ApsServoLaw"):
+        sb.Axis(law=sb.RigidPlant())
+
+
+@pytest.mark.parametrize("kwargs,field", [
+    (dict(distance_pulse=100, vel_pulse_per_tick=0, acc_pulse_per_tick2=1), "vel_pulse_per_tick"),
+    (dict(distance_pulse=100, vel_pulse_per_tick=1, acc_pulse_per_tick2=-1), "acc_pulse_per_tick2"),
+    (dict(distance_pulse=NAN, vel_pulse_per_tick=1, acc_pulse_per_tick2=1), "distance_pulse"),
+    (dict(distance_pulse=10, vel_pulse_per_tick=1, acc_pulse_per_tick2=1, dwell_after=-1), "dwell_after"),
+    (dict(distance_pulse=10, vel_pulse_per_tick=1, acc_pulse_per_tick2=1, dwell_before=2.5), "dwell_before"),
+    (dict(distance_pulse=1e9, vel_pulse_per_tick=1e-3, acc_pulse_per_tick2=1), "distance_pulse"),
+])
+def test_trapezoid_move_rejects(kwargs, field):
+    with pytest.raises(ValueError, match=field):
+        sb.trapezoid_move(**kwargs)
+
+
+def test_run_rejects_bad_commands():
+    axis = sb.Axis()
+    with pytest.raises(ValueError, match=r"positions\[2\] = nan is not a finite number"):
+        axis.run([0.0, 1.0, NAN])
+    with pytest.raises(ValueError, match="1-D"):
+        axis.run(np.zeros((3, 2)))
+    with pytest.raises(ValueError, match="velocities has 2 samples; expected 3"):
+        axis.run([0.0, 1.0, 2.0], velocities=[0.0, 1.0])
+    with pytest.raises(ValueError, match="unknown signal 'speed'"):
+        axis.run([0.0, 1.0], signals=["speed"])
+    assert axis.tick == 0  # nothing ran
