@@ -1,12 +1,14 @@
 #include "param_class.hpp"
 #include "servobench/drive/dac.hpp"
 #include "servobench/drive/torque_drive.hpp"
+#include "servobench/drive/velocity_drive.hpp"
 
 namespace servobench::bindings {
 
 void bind_drive(py::module_& m) {
   using drive::DacParams;
   using drive::TorqueDriveParams;
+  using drive::VelocityDriveParams;
 
   ParamClass<DacParams>(m, "Dac",
       "Bipolar DAC: saturates at +-full_scale_v and (if quantize) rounds to the nearest of the symmetric codes\n"
@@ -17,12 +19,30 @@ void bind_drive(py::module_& m) {
       .finish();
 
   ParamClass<TorqueDriveParams>(m, "TorqueDrive",
-      "Servo amplifier in torque mode: i_cmd = clamp(amps_per_volt*V, +-current_limit_a); first-order current loop\n"
-      "of bandwidth current_bw_hz (inf = ideal); torque = kt*i.")
+      "Servo amplifier in torque mode: i_cmd = clamp(amps_per_volt*V, +-min(current_limit_a, torque_limit_nm/kt));\n"
+      "first-order current loop of bandwidth current_bw_hz (inf = ideal); torque = kt*i. alarm_at_s: time at which\n"
+      "a drive alarm trips (current command forced to 0 from then on; inf = never).")
       .field("amps_per_volt", &TorqueDriveParams::amps_per_volt, "current command per volt, A/V, > 0")
       .field("kt", &TorqueDriveParams::kt, "torque constant, N*m/A, > 0")
       .field("current_limit_a", &TorqueDriveParams::current_limit_a, "current command limit, A, > 0 (inf = none)")
+      .field("torque_limit_nm", &TorqueDriveParams::torque_limit_nm, "torque limit, N*m, > 0 (inf = none)")
       .field("current_bw_hz", &TorqueDriveParams::current_bw_hz, "current-loop bandwidth, Hz, > 0 (inf = ideal)")
+      .field("alarm_at_s", &TorqueDriveParams::alarm_at_s, "drive alarm trip time, s, >= 0 (inf = never)")
+      .finish();
+
+  ParamClass<VelocityDriveParams>(m, "VelocityDrive",
+      "Servo amplifier in velocity mode: w_cmd = speed_per_volt_rad_s*V; a discrete PI speed loop at loop_rate_hz\n"
+      "(T = kp_nms*e + integral of ki_nm_per_rad*e, both clamped to the torque limit) on the motor speed, then the\n"
+      "current loop. The servo period must be a whole number of speed-loop periods.")
+      .field("speed_per_volt_rad_s", &VelocityDriveParams::speed_per_volt_rad_s, "speed command per volt, rad/s/V, > 0")
+      .field("kp_nms", &VelocityDriveParams::kp_nms, "speed-loop P gain, N*m per rad/s, >= 0")
+      .field("ki_nm_per_rad", &VelocityDriveParams::ki_nm_per_rad, "speed-loop I gain, N*m per rad, >= 0")
+      .field("loop_rate_hz", &VelocityDriveParams::loop_rate_hz, "speed-loop rate, Hz, 100..1e6")
+      .field("kt", &VelocityDriveParams::kt, "torque constant, N*m/A, > 0")
+      .field("current_limit_a", &VelocityDriveParams::current_limit_a, "current limit, A, > 0 (inf = none)")
+      .field("torque_limit_nm", &VelocityDriveParams::torque_limit_nm, "torque limit, N*m, > 0 (inf = none)")
+      .field("current_bw_hz", &VelocityDriveParams::current_bw_hz, "current-loop bandwidth, Hz, > 0 (inf = ideal)")
+      .field("alarm_at_s", &VelocityDriveParams::alarm_at_s, "drive alarm trip time, s, >= 0 (inf = never)")
       .finish();
 }
 

@@ -36,6 +36,18 @@ double** trace_slot(machine::Trace& t, const std::string& name) {
   return nullptr;
 }
 
+machine::PlantParams plant_from(const py::handle& p) {
+  if (py::isinstance<plant::RigidPlantParams>(p)) return p.cast<plant::RigidPlantParams>();
+  if (py::isinstance<plant::TwoMassPlantParams>(p)) return p.cast<plant::TwoMassPlantParams>();
+  throw py::type_error("plant must be a RigidPlant or a TwoMassPlant, got " + py::str(py::type::of(p)).cast<std::string>());
+}
+
+machine::DriveParams drive_from(const py::handle& d) {
+  if (py::isinstance<drive::TorqueDriveParams>(d)) return d.cast<drive::TorqueDriveParams>();
+  if (py::isinstance<drive::VelocityDriveParams>(d)) return d.cast<drive::VelocityDriveParams>();
+  throw py::type_error("drive must be a TorqueDrive or a VelocityDrive, got " + py::str(py::type::of(d)).cast<std::string>());
+}
+
 machine::LawParams law_from(const py::handle& law) {
   if (py::isinstance<control::GtServoLawParams>(law)) return law.cast<control::GtServoLawParams>();
   if (py::isinstance<control::ApsServoLawParams>(law)) return law.cast<control::ApsServoLawParams>();
@@ -68,29 +80,35 @@ void bind_machine(py::module_& m) {
   m.attr("TRACE_SIGNALS") = meta;
 
   py::class_<Axis>(m, "Axis", "One simulated servo axis (C++ core). Use servobench.Axis.")
-      .def(py::init([](const py::object& law, const drive::TorqueDriveParams& drv, const plant::RigidPlantParams& plant,
-                       const plant::EncoderParams& enc, const drive::DacParams& dac,
+      .def(py::init([](const py::object& law, const py::object& drv, const py::object& plant,
+                       const plant::EncoderParams& enc, const drive::DacParams& dac, const plant::SwitchParams& sw,
                        std::optional<double> servo_period_s, double substeps) {
              check_integer("Axis", "substeps", substeps, 1, 1000);
              AxisConfig c;
              c.law = law_from(law);
-             c.drive = drv;
-             c.plant = plant;
+             c.drive = drive_from(drv);
+             c.plant = plant_from(plant);
              c.encoder = enc;
+             c.switches = sw;
              c.dac = dac;
              c.servo_period_s = servo_period_s;
              c.substeps = static_cast<int>(substeps);
              return Axis(c);
            }),
            py::kw_only(), py::arg("law"), py::arg("drive"), py::arg("plant"), py::arg("encoder"), py::arg("dac"),
-           py::arg("servo_period_s") = py::none(), py::arg("substeps") = 1.0)
+           py::arg("switches"), py::arg("servo_period_s") = py::none(), py::arg("substeps") = 1.0)
       .def("reset", &Axis::reset, py::arg("angle_rad") = 0.0)
       .def("set_law", [](Axis& a, const py::object& law) { a.set_law(law_from(law)); }, py::arg("law"))
       .def_property_readonly("law", [](const Axis& a) -> py::object {
         return std::visit([](const auto& p) { return py::cast(p); }, a.config().law);
       })
-      .def_property_readonly("drive", [](const Axis& a) { return a.config().drive; })
-      .def_property_readonly("plant", [](const Axis& a) { return a.config().plant; })
+      .def_property_readonly("drive", [](const Axis& a) -> py::object {
+        return std::visit([](const auto& p) { return py::cast(p); }, a.config().drive);
+      })
+      .def_property_readonly("plant", [](const Axis& a) -> py::object {
+        return std::visit([](const auto& p) { return py::cast(p); }, a.config().plant);
+      })
+      .def_property_readonly("switches", [](const Axis& a) { return a.config().switches; })
       .def_property_readonly("encoder", [](const Axis& a) { return a.config().encoder; })
       .def_property_readonly("dac", [](const Axis& a) { return a.config().dac; })
       .def_property_readonly("servo_period_s", &Axis::servo_period_s)
@@ -99,6 +117,11 @@ void bind_machine(py::module_& m) {
       .def_property_readonly("feedback_pulse", &Axis::feedback_pulse)
       .def_property_readonly("angle_rad", &Axis::angle_rad)
       .def_property_readonly("speed_rad_s", &Axis::speed_rad_s)
+      .def_property_readonly("load_angle_rad", &Axis::load_angle_rad)
+      .def_property_readonly("load_speed_rad_s", &Axis::load_speed_rad_s)
+      .def_property_readonly("alarm", &Axis::alarm)
+      .def_property_readonly("substeps_per_tick", [](const Axis& a) { return a.power_train().substeps_per_tick(); })
+      .def_property_readonly("mechanical_energy_j", [](const Axis& a) { return a.power_train().mechanical_energy_j(); })
       .def(
           "run",
           [](Axis& axis, const py::object& pos, const py::object& vel, const py::object& acc, const py::object& signals) {

@@ -1,27 +1,154 @@
+#include <pybind11/complex.h>
+#include <pybind11/numpy.h>
+
 #include "param_class.hpp"
 #include "servobench/plant/encoder.hpp"
+#include "servobench/plant/mechanics.hpp"
 #include "servobench/plant/rigid.hpp"
+#include "servobench/plant/switches.hpp"
+#include "servobench/plant/two_mass.hpp"
 
 namespace servobench::bindings {
+
+namespace {
+
+using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+std::vector<double> to_vector(const py::handle& obj, const char* name) {
+  Array a = Array::ensure(obj);
+  if (!a) throw py::type_error(std::string(name) + " must be an array of numbers");
+  const py::ssize_t n = a.size();
+  return std::vector<double>(a.data(), a.data() + n);
+}
+
+py::array_t<std::complex<double>> response(const plant::Mechanics& m, const py::handle& freq, bool load_side,
+                                           const std::optional<double>& period_s) {
+  if (period_s && !(*period_s > 0 && std::isfinite(*period_s)))
+    throw_invalid("frequency_response", "period_s", *period_s, "must be finite and > 0 (or None: continuous)");
+  std::vector<double> f = to_vector(freq, "freq_hz");
+  std::vector<std::complex<double>> h;
+  {
+    py::gil_scoped_release release;
+    h = plant::frequency_response(m, f, load_side, period_s ? *period_s : 0.0);
+  }
+  py::array_t<std::complex<double>> out(static_cast<py::ssize_t>(h.size()));
+  std::copy(h.begin(), h.end(), out.mutable_data());
+  return out;
+}
+
+py::array_t<double> friction_curve(const plant::FrictionParams& fp, const py::handle& speed) {
+  Array s = Array::ensure(speed);
+  if (!s) throw py::type_error("speed_rad_s must be an array of numbers");
+  py::array_t<double> out(s.request().shape);
+  const double* in = s.data();
+  double* o = out.mutable_data();
+  for (py::ssize_t k = 0; k < s.size(); ++k) {
+    if (!std::isfinite(in[k])) throw_invalid("friction_torque", "speed_rad_s", in[k], "is not a finite number");
+    o[k] = fp.steady_torque_nm(in[k]);
+  }
+  return out;
+}
+
+const char* kResponseDoc =
+    "Frequency response from motor torque (N*m) to the motor (output='motor') or load (output='load') angle (rad)\n"
+    "at freq_hz (Hz), complex. period_s=None: the continuous plant; period_s=Ts: its zero-order-hold\n"
+    "discretisation at Ts (what a sampled loop sees), valid below the Nyquist frequency. Linear part only\n"
+    "(inertias, shaft, viscous friction); dry friction and disturbances are nonlinear and left out.";
+
+}  // namespace
 
 void bind_plant(py::module_& m) {
   using plant::EncoderParams;
   using plant::RigidPlantParams;
+  using plant::SwitchParams;
+  using plant::TwoMassPlantParams;
 
   ParamClass<RigidPlantParams>(m, "RigidPlant",
-      "Rigid single-inertia mechanics in SI units: J*dw/dt = torque - viscous*w - coulomb*sign(w) - load,\n"
-      "with stiction (at rest while |torque - load| <= coulomb).")
+      "Rigid single-inertia mechanics (SI): J*w' = torque - friction(w) - load - unbalance*sin(theta) +\n"
+      "cogging*sin(N*theta). Friction: viscous + Coulomb + Stribeck, with stiction (at rest while the applied\n"
+      "torque stays within the breakaway level).")
       .field("inertia_kgm2", &RigidPlantParams::inertia_kgm2, "total inertia at the motor, kg*m^2, > 0")
       .field("viscous_nms", &RigidPlantParams::viscous_nms, "viscous friction, N*m*s/rad, >= 0")
-      .field("coulomb_nm", &RigidPlantParams::coulomb_nm, "Coulomb/static friction level, N*m, >= 0")
+      .field("coulomb_nm", &RigidPlantParams::coulomb_nm, "Coulomb (sliding) friction, N*m, >= 0")
+      .field("static_nm", &RigidPlantParams::static_nm, "breakaway friction, N*m, 0 (= coulomb) or >= coulomb_nm")
+      .field("stribeck_speed_rad_s", &RigidPlantParams::stribeck_speed_rad_s, "Stribeck speed, rad/s, > 0")
+      .field("stribeck_exponent", &RigidPlantParams::stribeck_exponent, "Stribeck shape exponent, 0.5..4")
       .field("load_nm", &RigidPlantParams::load_nm, "constant load torque, N*m (positive opposes positive motion)")
-      .finish();
+      .field("unbalance_nm", &RigidPlantParams::unbalance_nm, "gravity torque amplitude of an unbalanced arm, N*m")
+      .field("cogging_nm", &RigidPlantParams::cogging_nm, "cogging ripple amplitude, N*m, >= 0")
+      .field("cogging_periods", &RigidPlantParams::cogging_periods, "cogging periods per revolution, 0..1000")
+      .finish()
+      .def("frequency_response",
+           [](const RigidPlantParams& p, const py::handle& f, std::optional<double> period_s) {
+             return response(plant::rigid_mechanics(p), f, false, period_s);
+           },
+           py::arg("freq_hz"), py::kw_only(), py::arg("period_s") = py::none(), kResponseDoc)
+      .def("friction_torque", [](const RigidPlantParams& p, const py::handle& s) { return friction_curve(p.friction(), s); },
+           py::arg("speed_rad_s"),
+           "Steady friction torque (N*m) opposing motion at each speed (rad/s): Stribeck curve plus viscous; 0 at rest.");
+
+  ParamClass<TwoMassPlantParams>(m, "TwoMassPlant",
+      "Two-mass mechanics (SI): motor inertia jm and load inertia jl joined by a shaft of stiffness k and damping c,\n"
+      "friction (viscous + Coulomb + Stribeck, stiction) on each side, load torque, unbalance and cogging.\n"
+      "resonance_hz / antiresonance_hz give the undamped resonance sqrt(k(jm+jl)/(jm jl)) and anti-resonance\n"
+      "sqrt(k/jl) of the motor-side response.")
+      .field("jm_kgm2", &TwoMassPlantParams::jm_kgm2, "motor inertia, kg*m^2, > 0")
+      .field("jl_kgm2", &TwoMassPlantParams::jl_kgm2, "load inertia, kg*m^2, > 0")
+      .field("k_nm_per_rad", &TwoMassPlantParams::k_nm_per_rad, "shaft stiffness, N*m/rad, > 0")
+      .field("c_nms_per_rad", &TwoMassPlantParams::c_nms_per_rad, "shaft damping, N*m*s/rad, >= 0")
+      .field("motor_viscous_nms", &TwoMassPlantParams::motor_viscous_nms, "motor-side viscous friction, N*m*s/rad")
+      .field("motor_coulomb_nm", &TwoMassPlantParams::motor_coulomb_nm, "motor-side Coulomb friction, N*m")
+      .field("motor_static_nm", &TwoMassPlantParams::motor_static_nm, "motor-side breakaway friction, N*m (0 = coulomb)")
+      .field("motor_stribeck_speed_rad_s", &TwoMassPlantParams::motor_stribeck_speed_rad_s, "rad/s, > 0")
+      .field("motor_stribeck_exponent", &TwoMassPlantParams::motor_stribeck_exponent, "0.5..4")
+      .field("load_viscous_nms", &TwoMassPlantParams::load_viscous_nms, "load-side viscous friction, N*m*s/rad")
+      .field("load_coulomb_nm", &TwoMassPlantParams::load_coulomb_nm, "load-side Coulomb friction, N*m")
+      .field("load_static_nm", &TwoMassPlantParams::load_static_nm, "load-side breakaway friction, N*m (0 = coulomb)")
+      .field("load_stribeck_speed_rad_s", &TwoMassPlantParams::load_stribeck_speed_rad_s, "rad/s, > 0")
+      .field("load_stribeck_exponent", &TwoMassPlantParams::load_stribeck_exponent, "0.5..4")
+      .field("load_nm", &TwoMassPlantParams::load_nm, "constant load torque on the load side, N*m")
+      .field("unbalance_nm", &TwoMassPlantParams::unbalance_nm, "gravity torque amplitude on the load side, N*m")
+      .field("cogging_nm", &TwoMassPlantParams::cogging_nm, "motor cogging amplitude, N*m, >= 0")
+      .field("cogging_periods", &TwoMassPlantParams::cogging_periods, "cogging periods per motor revolution, 0..1000")
+      .finish()
+      .def_property_readonly("resonance_hz", &TwoMassPlantParams::resonance_hz, "undamped resonance, Hz")
+      .def_property_readonly("antiresonance_hz", &TwoMassPlantParams::antiresonance_hz, "undamped anti-resonance, Hz")
+      .def("frequency_response",
+           [](const TwoMassPlantParams& p, const py::handle& f, const std::string& output, std::optional<double> period_s) {
+             if (output != "motor" && output != "load")
+               throw py::value_error("output = '" + output + "' must be 'motor' or 'load'");
+             return response(plant::two_mass_mechanics(p), f, output == "load", period_s);
+           },
+           py::arg("freq_hz"), py::kw_only(), py::arg("output") = "motor", py::arg("period_s") = py::none(), kResponseDoc)
+      .def("friction_torque",
+           [](const TwoMassPlantParams& p, const py::handle& s, const std::string& side) {
+             if (side != "motor" && side != "load") throw py::value_error("side = '" + side + "' must be 'motor' or 'load'");
+             return friction_curve(side == "motor" ? p.motor_friction() : p.load_friction(), s);
+           },
+           py::arg("speed_rad_s"), py::kw_only(), py::arg("side") = "motor",
+           "Steady friction torque (N*m) of one side at each speed (rad/s): Stribeck curve plus viscous; 0 at rest.");
 
   ParamClass<EncoderParams>(m, "Encoder",
-      "Position encoder on the motor: count = floor(angle*counts_per_rev/(2*pi) + 1/2) (quantize=True) or the\n"
-      "continuous value. counts_per_rev is after quadrature decoding (2500 lines x4 = 10000).")
+      "Position encoder: count = floor(angle*counts_per_rev/(2*pi) + noise + 1/2) (quantize=True) or the continuous\n"
+      "value. counts_per_rev is after x4 quadrature decoding (2500 lines -> 10000). noise_counts: Gaussian noise,\n"
+      "counts (std dev), from a generator seeded with `seed`. index_angle_rad: where the once-per-revolution index\n"
+      "mark sits. on_load: mounted on the load (fully closed loop) instead of the motor (semi-closed).")
       .field("counts_per_rev", &EncoderParams::counts_per_rev, "counts per revolution, whole number 1..2^31")
       .field("quantize", &EncoderParams::quantize, "False: ideal continuous encoder")
+      .field("noise_counts", &EncoderParams::noise_counts, "noise standard deviation, counts, >= 0")
+      .field("seed", &EncoderParams::seed, "noise seed, whole number 0..2^32-1")
+      .field("index_angle_rad", &EncoderParams::index_angle_rad, "index mark angle, rad")
+      .field("on_load", &EncoderParams::on_load, "True: on the load side (two-mass plants)")
+      .finish();
+
+  ParamClass<SwitchParams>(m, "Switches",
+      "Home and limit switches along the load's travel (load angle, rad): home on while home_min_rad <= angle <=\n"
+      "home_max_rad (both inf: none); positive limit on while angle >= pos_limit_rad (inf: none); negative limit on\n"
+      "while angle <= neg_limit_rad (-inf: none).")
+      .field("home_min_rad", &SwitchParams::home_min_rad, "home window start, rad (inf: no home switch)")
+      .field("home_max_rad", &SwitchParams::home_max_rad, "home window end, rad (inf: no home switch)")
+      .field("pos_limit_rad", &SwitchParams::pos_limit_rad, "positive limit position, rad (inf: none)")
+      .field("neg_limit_rad", &SwitchParams::neg_limit_rad, "negative limit position, rad (-inf: none)")
       .finish();
 }
 

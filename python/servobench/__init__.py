@@ -22,7 +22,10 @@ from ._core import (
     Encoder,
     GtServoLaw,
     RigidPlant,
+    Switches,
     TorqueDrive,
+    TwoMassPlant,
+    VelocityDrive,
 )
 from .axis import Axis, AxisRun, SIGNALS, SIGNAL_UNITS
 from .trajectory import Trajectory, trapezoid_move
@@ -43,7 +46,10 @@ __all__ = [
     "RigidPlant",
     "SIGNALS",
     "SIGNAL_UNITS",
+    "Switches",
     "TorqueDrive",
+    "TwoMassPlant",
+    "VelocityDrive",
     "Trajectory",
     "demo_axis",
     "move_metrics",

@@ -26,7 +26,9 @@ class AxisRun:
     ``time_s`` s; ``cmd_pos`` pulse; ``cmd_vel`` pulse/tick; ``cmd_acc`` pulse/tick^2; ``fb_pos`` pulse;
     ``error`` pulse (cmd_pos - fb_pos); law terms ``p``, ``i``, ``d``, ``vff``, ``aff``, ``bias`` and the law
     output ``u`` in DAC counts; filter-slot outputs ``biquad0``, ``biquad1`` in counts; ``volts`` V (computed at
-    the tick, applied from the next); ``current_a`` A; ``torque_nm`` N*m; ``angle_rad`` rad; ``speed_rad_s`` rad/s.
+    the tick, applied from the next); ``current_a`` A; ``torque_nm`` N*m; ``angle_rad`` rad; ``speed_rad_s`` rad/s
+    (motor); ``load_angle_rad`` rad; ``load_speed_rad_s`` rad/s; flags (0/1): ``alarm`` (drive alarm), ``index``
+    (encoder index passed since the previous tick), ``home_sw``, ``pos_limit_sw``, ``neg_limit_sw``.
     Mechanical signals are sampled at the instant the encoder is read.
     """
 
@@ -83,32 +85,36 @@ class Axis:
     law
         :class:`GtServoLaw` (default, the GT manual's defaults) or :class:`ApsServoLaw`.
     drive
-        :class:`TorqueDrive` (V -> A -> N*m).
+        :class:`TorqueDrive` (V -> A -> N*m) or :class:`VelocityDrive` (V -> rad/s command, own PI loop).
     plant
-        :class:`RigidPlant` (kg*m^2, N*m*s/rad, N*m).
+        :class:`RigidPlant` or :class:`TwoMassPlant` (kg*m^2, N*m/rad, N*m*s/rad, N*m).
     encoder
-        :class:`Encoder` (counts per revolution).
+        :class:`Encoder` (counts per revolution, noise, index, motor or load mounting).
     dac
         :class:`Dac` (16-bit +-10 V by default).
+    switches
+        :class:`Switches` (home and limit switch positions along the load, rad).
     servo_period_s
         servo period Ts in s; ``None`` takes the card's default (GT 200 us, ADLINK 250 us). The range is the
         card's: GT 48..1966.08 us, ADLINK 50..2000 us.
     substeps
         integration sub-steps per tick (1..1000); the linear dynamics are exact for any value, more sub-steps
-        resolve friction events more finely.
+        resolve friction events more finely. A velocity-mode drive multiplies them by its speed-loop updates per
+        tick.
 
     The controller output computed at tick k reaches the drive at tick k+1 (one-tick computation delay).
     The axis keeps its state between :meth:`run` calls; :meth:`reset` returns it to power-on.
     """
 
-    def __init__(self, *, law=None, drive=None, plant=None, encoder=None, dac=None, servo_period_s=None,
-                 substeps: int = 1):
+    def __init__(self, *, law=None, drive=None, plant=None, encoder=None, dac=None, switches=None,
+                 servo_period_s=None, substeps: int = 1):
         self._axis = _core.Axis(
             law=_core.GtServoLaw() if law is None else law,
             drive=_core.TorqueDrive() if drive is None else drive,
             plant=_core.RigidPlant() if plant is None else plant,
             encoder=_core.Encoder() if encoder is None else encoder,
             dac=_core.Dac() if dac is None else dac,
+            switches=_core.Switches() if switches is None else switches,
             servo_period_s=servo_period_s,
             substeps=substeps,
         )
@@ -119,16 +125,25 @@ class Axis:
     plant = property(lambda self: self._axis.plant, doc="The plant parameters.")
     encoder = property(lambda self: self._axis.encoder, doc="The encoder parameters.")
     dac = property(lambda self: self._axis.dac, doc="The DAC parameters.")
+    switches = property(lambda self: self._axis.switches, doc="The switch positions.")
     servo_period_s = property(lambda self: self._axis.servo_period_s, doc="Servo period Ts, s.")
     substeps = property(lambda self: self._axis.substeps, doc="Plant integration sub-steps per tick.")
     tick = property(lambda self: self._axis.tick, doc="Ticks run since power-on/reset.")
     feedback_pulse = property(lambda self: self._axis.feedback_pulse, doc="Encoder reading now, pulse.")
     angle_rad = property(lambda self: self._axis.angle_rad, doc="Motor angle now, rad.")
     speed_rad_s = property(lambda self: self._axis.speed_rad_s, doc="Motor speed now, rad/s.")
+    load_angle_rad = property(lambda self: self._axis.load_angle_rad, doc="Load angle now, rad.")
+    load_speed_rad_s = property(lambda self: self._axis.load_speed_rad_s, doc="Load speed now, rad/s.")
+    alarm = property(lambda self: self._axis.alarm, doc="True once the drive alarm has tripped.")
+    mechanical_energy_j = property(lambda self: self._axis.mechanical_energy_j,
+                                   doc="Kinetic energy of the bodies plus the shaft's spring energy now, J.")
+    substeps_per_tick = property(lambda self: self._axis.substeps_per_tick,
+                                 doc="Integration sub-steps actually taken per tick.")
 
     def __repr__(self) -> str:
         return (f"Axis(law={self.law!r}, drive={self.drive!r}, plant={self.plant!r}, encoder={self.encoder!r}, "
-                f"dac={self.dac!r}, servo_period_s={self.servo_period_s!r}, substeps={self.substeps})")
+                f"dac={self.dac!r}, switches={self.switches!r}, servo_period_s={self.servo_period_s!r}, "
+                f"substeps={self.substeps})")
 
     # -- control ----------------------------------------------------------------------------------
     def reset(self, angle_rad: float = 0.0) -> None:

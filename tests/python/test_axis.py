@@ -155,7 +155,7 @@ def test_signal_selection_and_result_object():
     with pytest.raises(AttributeError, match="not recorded"):
         run.volts
     assert "10 ticks" in repr(run)
-    assert len(sb.SIGNALS) == 20 and sb.SIGNAL_UNITS["torque_nm"] == "N*m"
+    assert len(sb.SIGNALS) == 27 and sb.SIGNAL_UNITS["torque_nm"] == "N*m"
 
 
 def test_demo_axis_tracks_a_move():

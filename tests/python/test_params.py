@@ -42,12 +42,55 @@ BAD = [
     (sb.TorqueDrive, "kt", [0, -0.1, NAN, INF], "> 0"),
     (sb.TorqueDrive, "current_limit_a", [0, -1, NAN], "> 0"),
     (sb.TorqueDrive, "current_bw_hz", [0, -5, NAN], "> 0"),
+    (sb.TorqueDrive, "torque_limit_nm", [0, -1, NAN], "> 0"),
+    (sb.TorqueDrive, "alarm_at_s", [-1, NAN], ">= 0"),
+    (sb.VelocityDrive, "speed_per_volt_rad_s", [0, -1, NAN, INF], "> 0"),
+    (sb.VelocityDrive, "kp_nms", [-1, NAN, INF], ">= 0"),
+    (sb.VelocityDrive, "ki_nm_per_rad", [-1, NAN, INF], ">= 0"),
+    (sb.VelocityDrive, "loop_rate_hz", [50, 2e6, NAN], "100..1000000"),
+    (sb.VelocityDrive, "kt", [0, NAN], "> 0"),
+    (sb.VelocityDrive, "current_limit_a", [0, NAN], "> 0"),
+    (sb.VelocityDrive, "torque_limit_nm", [0, -2, NAN], "> 0"),
+    (sb.VelocityDrive, "current_bw_hz", [0, NAN], "> 0"),
+    (sb.VelocityDrive, "alarm_at_s", [-1, NAN], ">= 0"),
     (sb.RigidPlant, "inertia_kgm2", [0, -1e-4, NAN, INF], "> 0"),
     (sb.RigidPlant, "viscous_nms", [-1e-3, NAN, INF], ">= 0"),
     (sb.RigidPlant, "coulomb_nm", [-0.1, NAN, INF], ">= 0"),
     (sb.RigidPlant, "load_nm", [NAN, INF, 2e6], "-1000000..1000000"),
+    (sb.RigidPlant, "static_nm", [-1, NAN], ">= 0"),
+    (sb.RigidPlant, "stribeck_speed_rad_s", [0, -1, NAN], "> 0"),
+    (sb.RigidPlant, "stribeck_exponent", [0.4, 5, NAN], "0.5..4"),
+    (sb.RigidPlant, "unbalance_nm", [NAN, INF], "-1000000..1000000"),
+    (sb.RigidPlant, "cogging_nm", [-1, NAN], "0..1000000"),
+    (sb.RigidPlant, "cogging_periods", [-1, 1001, 2.5, NAN], "0..1000"),
+    (sb.TwoMassPlant, "jm_kgm2", [0, -1, NAN], "> 0"),
+    (sb.TwoMassPlant, "jl_kgm2", [0, NAN, INF], "> 0"),
+    (sb.TwoMassPlant, "k_nm_per_rad", [0, -5, NAN], "> 0"),
+    (sb.TwoMassPlant, "c_nms_per_rad", [-1, NAN], ">= 0"),
+    (sb.TwoMassPlant, "motor_viscous_nms", [-1, NAN], ">= 0"),
+    (sb.TwoMassPlant, "motor_coulomb_nm", [-1, NAN], ">= 0"),
+    (sb.TwoMassPlant, "motor_static_nm", [-1, NAN], ">= 0"),
+    (sb.TwoMassPlant, "motor_stribeck_speed_rad_s", [0, NAN], "> 0"),
+    (sb.TwoMassPlant, "motor_stribeck_exponent", [0, 9, NAN], "0.5..4"),
+    (sb.TwoMassPlant, "load_viscous_nms", [-1, NAN], ">= 0"),
+    (sb.TwoMassPlant, "load_coulomb_nm", [-1, NAN], ">= 0"),
+    (sb.TwoMassPlant, "load_static_nm", [-1, NAN], ">= 0"),
+    (sb.TwoMassPlant, "load_stribeck_speed_rad_s", [0, NAN], "> 0"),
+    (sb.TwoMassPlant, "load_stribeck_exponent", [0, 9, NAN], "0.5..4"),
+    (sb.TwoMassPlant, "load_nm", [NAN, 2e6], "-1000000..1000000"),
+    (sb.TwoMassPlant, "unbalance_nm", [NAN], "-1000000..1000000"),
+    (sb.TwoMassPlant, "cogging_nm", [-1, NAN], "0..1000000"),
+    (sb.TwoMassPlant, "cogging_periods", [-1, 0.5], "0..1000"),
+    (sb.Switches, "home_min_rad", [NAN], "not a number"),
+    (sb.Switches, "home_max_rad", [NAN], "not a number"),
+    (sb.Switches, "pos_limit_rad", [NAN, -INF], "+inf"),
+    (sb.Switches, "neg_limit_rad", [NAN, INF], "-inf"),
     (sb.Encoder, "counts_per_rev", [0, -4, 1000.5, NAN, INF, 2**31 + 1], "1..2147483648"),
     (sb.Encoder, "quantize", [3], "0/False or 1/True"),
+    (sb.Encoder, "noise_counts", [-0.1, NAN, INF], ">= 0"),
+    (sb.Encoder, "seed", [-1, 2**32, 1.5, NAN], "0..4294967295"),
+    (sb.Encoder, "index_angle_rad", [NAN, INF], "-1000000..1000000"),
+    (sb.Encoder, "on_load", [2], "0/False or 1/True"),
     (sb.Dac, "bits", [7, 25, 16.5, NAN], "8..24"),
     (sb.Dac, "full_scale_v", [0, -10, 101, NAN], "0.001..100"),
     (sb.Dac, "quantize", [2, NAN], "0/False or 1/True"),
@@ -76,7 +119,8 @@ def test_setter_rejects_and_keeps_the_old_value(cls, field, bad, expect):
 
 def test_every_field_is_covered_by_a_bad_input_test():
     covered = {(c, f) for c, f, _v, _e in BAD}
-    for cls in (sb.GtServoLaw, sb.ApsServoLaw, sb.TorqueDrive, sb.RigidPlant, sb.Encoder, sb.Dac):
+    for cls in (sb.GtServoLaw, sb.ApsServoLaw, sb.TorqueDrive, sb.VelocityDrive, sb.RigidPlant, sb.TwoMassPlant,
+                sb.Encoder, sb.Dac, sb.Switches):
         for field in cls.FIELDS:
             assert (cls, field) in covered, f"{cls.__name__}.{field} has no bad-input test"
 
@@ -128,6 +172,30 @@ def test_axis_substeps(substeps):
 def test_axis_rejects_a_part_of_the_wrong_kind():
     with pytest.raises(TypeError, match="law must be a GtServoLaw or an ApsServoLaw"):
         sb.Axis(law=sb.RigidPlant())
+    with pytest.raises(TypeError, match="plant must be a RigidPlant or a TwoMassPlant"):
+        sb.Axis(plant=sb.TorqueDrive())
+    with pytest.raises(TypeError, match="drive must be a TorqueDrive or a VelocityDrive"):
+        sb.Axis(drive=sb.RigidPlant())
+
+
+def test_cross_field_rules():
+    with pytest.raises(ValueError, match="RigidPlant.static_nm = 0.01 must be 0 .* >= coulomb_nm"):
+        sb.RigidPlant(coulomb_nm=0.02, static_nm=0.01)
+    with pytest.raises(ValueError, match="TwoMassPlant.load_static_nm"):
+        sb.TwoMassPlant(load_coulomb_nm=0.02, load_static_nm=0.01)
+    with pytest.raises(ValueError, match="Switches.home_min_rad = 2 must be <= home_max_rad"):
+        sb.Switches(home_min_rad=2.0, home_max_rad=1.0)
+    with pytest.raises(ValueError, match="Switches.home_max_rad"):
+        sb.Switches(home_min_rad=1.0)
+    with pytest.raises(ValueError, match="Switches.neg_limit_rad = 5 must be below pos_limit_rad"):
+        sb.Switches(neg_limit_rad=5.0, pos_limit_rad=1.0)
+    with pytest.raises(ValueError, match="VelocityDrive.torque_limit_nm .* cannot both be inf"):
+        sb.VelocityDrive(current_limit_a=INF)
+    # The speed loop must run a whole number of times per servo tick: 20 kHz fits 200 us and 250 us, 3 kHz does not.
+    sb.Axis(drive=sb.VelocityDrive(loop_rate_hz=20000), servo_period_s=200e-6)
+    sb.Axis(law=sb.ApsServoLaw(), drive=sb.VelocityDrive(loop_rate_hz=20000))
+    with pytest.raises(ValueError, match="VelocityDrive.loop_rate_hz = 3000 must be a whole multiple of the servo rate"):
+        sb.Axis(drive=sb.VelocityDrive(loop_rate_hz=3000), servo_period_s=250e-6)
 
 
 @pytest.mark.parametrize("kwargs,field", [

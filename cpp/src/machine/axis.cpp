@@ -20,9 +20,10 @@ void AxisConfig::validate_and_complete() {
                                                               : "ADLINK servo cycle, manual L1733";
       },
       law);
-  drive.validate();
-  plant.validate();
+  std::visit([](const auto& d) { d.validate(); }, drive);
+  std::visit([](const auto& p) { p.validate(); }, plant);
   encoder.validate();
+  switches.validate();
   dac.validate();
   if (!servo_period_s) servo_period_s = def;
   check_range("Axis", "servo_period_s", *servo_period_s, lo, hi, source);
@@ -33,6 +34,10 @@ namespace {
 AxisConfig completed(AxisConfig c) {
   c.validate_and_complete();
   return c;
+}
+plant::Mechanics make_mechanics(const PlantParams& p) {
+  if (const auto* r = std::get_if<plant::RigidPlantParams>(&p)) return plant::rigid_mechanics(*r);
+  return plant::two_mass_mechanics(std::get<plant::TwoMassPlantParams>(p));
 }
 std::variant<control::GtServoLaw, control::ApsServoLaw> make_law(const LawParams& p) {
   if (const auto* gt = std::get_if<control::GtServoLawParams>(&p)) return control::GtServoLaw(*gt);
@@ -45,13 +50,15 @@ Axis::Axis(AxisConfig config)
       law_(make_law(config_.law)),
       dac_(config_.dac),
       encoder_(config_.encoder),
-      power_(config_.drive, config_.plant, *config_.servo_period_s / config_.substeps) {}
+      power_(config_.drive, make_mechanics(config_.plant), *config_.servo_period_s, config_.substeps) {}
 
 void Axis::reset(double angle_rad) {
   std::visit([](auto& law) { law.reset(); }, law_);
   slot0_.reset();
   slot1_.reset();
   power_.reset(angle_rad);
+  encoder_.reset();
+  prev_encoder_angle_ = angle_rad;
   pending_volts_ = 0.0;
   prev_cmd_ = prev_vel_ = 0.0;
   primed_ = false;
@@ -84,7 +91,7 @@ void Axis::run(const CommandInput& command, const Trace& trace) {
 template <class Law>
 void Axis::run_with(Law& law, const CommandInput& command, const Trace& tr) {
   const double ts = *config_.servo_period_s;
-  const int substeps = config_.substeps;
+  const plant::SwitchParams& sw = config_.switches;
   for (std::size_t k = 0; k < command.n; ++k) {
     const double r = command.pos[k];
     if (!primed_) {
@@ -98,7 +105,8 @@ void Axis::run_with(Law& law, const CommandInput& command, const Trace& tr) {
     prev_vel_ = v;
 
     power_.set_input(pending_volts_);  // the previous tick's output reaches the drive now
-    const double y = encoder_.read(power_.angle_rad());
+    const double enc_angle = encoder_angle();
+    const double y = encoder_.read(enc_angle);
     const control::LawTerms t = law.step(r, y, v, a);
     const double f0 = slot0_.step(t.total);
     const double f1 = slot1_.step(f0);
@@ -122,10 +130,19 @@ void Axis::run_with(Law& law, const CommandInput& command, const Trace& tr) {
     if (tr.volts) tr.volts[k] = volts;
     if (tr.current_a) tr.current_a[k] = power_.current_a();
     if (tr.torque_nm) tr.torque_nm[k] = power_.torque_nm();
-    if (tr.angle_rad) tr.angle_rad[k] = power_.angle_rad();
-    if (tr.speed_rad_s) tr.speed_rad_s[k] = power_.speed_rad_s();
+    if (tr.angle_rad) tr.angle_rad[k] = power_.motor_angle_rad();
+    if (tr.speed_rad_s) tr.speed_rad_s[k] = power_.motor_speed_rad_s();
+    if (tr.load_angle_rad) tr.load_angle_rad[k] = power_.load_angle_rad();
+    if (tr.load_speed_rad_s) tr.load_speed_rad_s[k] = power_.load_speed_rad_s();
+    if (tr.alarm) tr.alarm[k] = power_.alarm() ? 1.0 : 0.0;
+    if (tr.index) tr.index[k] = encoder_.index_between(prev_encoder_angle_, enc_angle) ? 1.0 : 0.0;
+    const double load = power_.load_angle_rad();
+    if (tr.home_sw) tr.home_sw[k] = sw.home(load) ? 1.0 : 0.0;
+    if (tr.pos_limit_sw) tr.pos_limit_sw[k] = sw.pos_limit(load) ? 1.0 : 0.0;
+    if (tr.neg_limit_sw) tr.neg_limit_sw[k] = sw.neg_limit(load) ? 1.0 : 0.0;
+    prev_encoder_angle_ = enc_angle;
 
-    for (int s = 0; s < substeps; ++s) power_.step();
+    power_.advance_tick();
     pending_volts_ = volts;
     ++tick_;
   }

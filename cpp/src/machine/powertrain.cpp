@@ -1,5 +1,7 @@
 #include "servobench/machine/powertrain.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "servobench/common/validate.hpp"
@@ -7,93 +9,275 @@
 
 namespace servobench::machine {
 
-PowerTrain::PowerTrain(const drive::TorqueDriveParams& drive, const plant::RigidPlantParams& plant, double substep_s)
-    : drive_(drive), plant_(plant) {
-  drive_.validate();
-  plant_.validate();
-  check_positive("PowerTrain", "substep_s", substep_s);
-  const drive::DriveLti d = torque_drive_lti(drive_);
-  const plant::PlantLti p = plant::rigid_plant_lti(plant_);
+namespace {
+drive::VelocityDriveParams speed_loop_params(const DriveParams& d) {
+  if (const auto* v = std::get_if<drive::VelocityDriveParams>(&d)) return *v;
+  drive::VelocityDriveParams unused;
+  return unused;
+}
+}  // namespace
+
+PowerTrain::PowerTrain(const DriveParams& drive, const plant::Mechanics& mechanics, double servo_period_s,
+                       int substeps)
+    : drive_(drive), mech_(mechanics), speed_loop_(speed_loop_params(drive)) {
+  check_positive("PowerTrain", "servo_period_s", servo_period_s);
+  check_integer("Axis", "substeps", substeps, 1, 1000);
+  double bw = 0.0;
+  if (const auto* t = std::get_if<drive::TorqueDriveParams>(&drive_)) {
+    t->validate();
+    kt_ = t->kt;
+    i_max_ = t->max_current_a();
+    amps_per_volt_ = t->amps_per_volt;
+    alarm_at_s_ = t->alarm_at_s;
+    bw = t->current_bw_hz;
+    n_sub_ = substeps;
+    loop_every_ = substeps;
+  } else {
+    const auto& v = std::get<drive::VelocityDriveParams>(drive_);
+    v.validate();
+    velocity_mode_ = true;
+    kt_ = v.kt;
+    alarm_at_s_ = v.alarm_at_s;
+    bw = v.current_bw_hz;
+    const double per_tick = servo_period_s * v.loop_rate_hz;
+    const double m = std::round(per_tick);
+    if (m < 1 || std::fabs(per_tick - m) > 1e-6 * m)
+      throw_invalid("VelocityDrive", "loop_rate_hz", v.loop_rate_hz,
+                    "must be a whole multiple of the servo rate " + format_value(1.0 / servo_period_s) +
+                        " Hz (the speed loop runs a whole number of times per servo tick)");
+    n_sub_ = static_cast<int>(m) * substeps;
+    loop_every_ = substeps;
+  }
+  h_ = servo_period_s / n_sub_;
+
+  const drive::DriveLti d = drive::current_loop_lti(kt_, bw);
   const Eigen::Index nd = d.a.rows();
-  const Eigen::Index np = p.a.rows();
+  const Eigen::Index np = mech_.a.rows();
   const Eigen::Index n = nd + np;
   if (n > kMaxStates) throw std::invalid_argument("PowerTrain: too many states");
   drive_states_ = static_cast<int>(nd);
-  angle_ = static_cast<int>(nd) + p.angle_index;
-  speed_ = static_cast<int>(nd) + p.speed_index;
+  const int off = drive_states_;
+  motor_angle_ = off + mech_.motor_angle;
+  motor_speed_ = off + mech_.motor_speed;
+  load_angle_ = off + mech_.load_angle;
+  load_speed_ = off + mech_.load_speed;
 
-  // Series connection: drive (i_cmd -> torque) feeds the plant's motor-torque input.
-  // Inputs of the whole: [i_cmd, torque_external].
+  // Series connection: the current loop (i_cmd -> torque) feeds the mechanics' motor-torque input.
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
-  Eigen::MatrixXd b = Eigen::MatrixXd::Zero(n, 2);
+  Eigen::MatrixXd b = Eigen::MatrixXd::Zero(n, 3);
   a.topLeftCorner(nd, nd) = d.a;
-  a.bottomLeftCorner(np, nd) = p.b.col(0) * d.c;
-  a.bottomRightCorner(np, np) = p.a;
+  a.bottomLeftCorner(np, nd) = mech_.b.col(0) * d.c;
+  a.bottomRightCorner(np, np) = mech_.a;
   b.topLeftCorner(nd, 1) = d.b;
-  b.bottomLeftCorner(np, 1) = p.b.col(0) * d.d;
-  b.bottomRightCorner(np, 1) = p.b.col(1);
-  const plant::Zoh full = plant::discretize_zoh(a, b, substep_s);
-
-  // Locked mechanics (stiction holds): only the drive's own states evolve.
-  phi_ = full.phi;
-  gamma_ = full.gamma;
-  if (nd > 0) {
-    const plant::Zoh locked = plant::discretize_zoh(d.a, d.b, substep_s);
-    phi_locked_ = locked.phi;
-    gamma_locked_ = locked.gamma;
-  }
+  b.bottomLeftCorner(np, 1) = mech_.b.col(0) * d.d;
+  b.bottomRightCorner(np, 2) = mech_.b.rightCols(2);
+  const plant::Zoh z = plant::discretize_zoh(a, b, h_);
+  phi_ = z.phi;
+  gamma_ = z.gamma;
   x_ = Vec::Zero(n);
-  u_ = Vec::Zero(2);
+  x_free_ = Vec::Zero(n);
+
+  for (const auto& body : mech_.bodies) {
+    BodyState s{off + body.angle_index, off + body.speed_index, body.torque_input, body.friction,
+                body.friction.breakaway_nm()};
+    bodies_.push_back(s);
+  }
+  if (bodies_.size() > 2) throw std::invalid_argument("PowerTrain: at most two bodies");
+  const unsigned masks = 1u << bodies_.size();
+  phi_locked_.assign(masks, phi_);
+  gamma_locked_.assign(masks, gamma_);
+  for (unsigned mask = 1; mask < masks; ++mask) {
+    Eigen::MatrixXd al = a, bl = b;
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      if (!(mask & (1u << i))) continue;
+      for (int r : {bodies_[i].angle, bodies_[i].speed}) {
+        al.row(r).setZero();
+        bl.row(r).setZero();
+      }
+    }
+    const plant::Zoh zl = plant::discretize_zoh(al, bl, h_);
+    Mat pl = zl.phi;
+    InMat gl = zl.gamma;
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      if (!(mask & (1u << i))) continue;
+      for (int r : {bodies_[i].angle, bodies_[i].speed}) {  // exactly frozen, not frozen up to rounding
+        pl.row(r).setZero();
+        pl(r, r) = 1.0;
+        gl.row(r).setZero();
+      }
+    }
+    phi_locked_[mask] = pl;
+    gamma_locked_[mask] = gl;
+  }
+  stuck_.assign(bodies_.size(), 1);
   reset();
 }
 
 void PowerTrain::reset(double angle_rad) {
   x_.setZero();
-  x_[angle_] = angle_rad;
+  x_[motor_angle_] = angle_rad;
+  x_[load_angle_] = angle_rad;
+  for (auto& s : stuck_) s = 1;
+  volts_ = 0.0;
   i_cmd_ = 0.0;
-  stuck_ = true;
+  alarm_ = false;
+  substep_count_ = 0;
+  speed_loop_.reset();
 }
 
-void PowerTrain::step() {
-  const double coulomb = plant_.coulomb_nm;
-  const double load = plant_.load_nm;
-  u_[0] = i_cmd_;
-  if (coulomb == 0.0) {
-    u_[1] = -load;
-    x_ = phi_ * x_ + gamma_ * u_;
-    stuck_ = false;
+void PowerTrain::set_state(double motor_angle_rad, double motor_speed_rad_s, double load_angle_rad,
+                           double load_speed_rad_s) {
+  for (double v : {motor_angle_rad, motor_speed_rad_s, load_angle_rad, load_speed_rad_s})
+    if (!std::isfinite(v)) throw_invalid("PowerTrain", "state", v, "is not a finite number");
+  if (mech_.rigid() && (load_angle_rad != motor_angle_rad || load_speed_rad_s != motor_speed_rad_s))
+    throw std::invalid_argument("PowerTrain.state: a rigid plant's load angle and speed equal the motor's");
+  x_[motor_angle_] = motor_angle_rad;
+  x_[motor_speed_] = motor_speed_rad_s;
+  x_[load_angle_] = load_angle_rad;
+  x_[load_speed_] = load_speed_rad_s;
+  for (std::size_t b = 0; b < bodies_.size(); ++b) stuck_[b] = x_[bodies_[b].speed] == 0.0;
+}
+
+void PowerTrain::set_input(double volts) {
+  volts_ = volts;
+  if (!velocity_mode_) {
+    const double i = amps_per_volt_ * volts;
+    i_cmd_ = alarm_ ? 0.0 : (i > i_max_ ? i_max_ : (i < -i_max_ ? -i_max_ : i));
+  }
+}
+
+void PowerTrain::advance_tick() {
+  for (int s = 0; s < n_sub_; ++s) substep();
+}
+
+void PowerTrain::substep() {
+  if (!alarm_ && static_cast<double>(substep_count_) * h_ >= alarm_at_s_) {
+    alarm_ = true;
+    speed_loop_.reset();
+  }
+  if (alarm_) {
+    i_cmd_ = 0.0;
+  } else if (velocity_mode_ && substep_count_ % loop_every_ == 0) {
+    i_cmd_ = speed_loop_.update(volts_, x_[motor_speed_]);
+  }
+  ++substep_count_;
+
+  // External torques held over the sub-step (N*m): motor-body and load-body columns.
+  const plant::Disturbances& dist = mech_.disturbances;
+  double t_motor = 0.0;
+  if (dist.cogging_nm != 0.0) t_motor = dist.cogging_nm * std::sin(dist.cogging_periods * x_[motor_angle_]);
+  double t_load = -dist.load_nm;
+  if (dist.unbalance_nm != 0.0) t_load -= dist.unbalance_nm * std::sin(x_[load_angle_]);
+
+  x_free_.noalias() = phi_ * x_;
+  x_free_ += gamma_.col(0) * i_cmd_ + gamma_.col(1) * t_motor + gamma_.col(2) * t_load;
+
+  const std::size_t nb = bodies_.size();
+  bool any_dry = false;
+  for (std::size_t b = 0; b < nb; ++b) any_dry = any_dry || bodies_[b].breakaway > 0.0;
+  if (!any_dry) {
+    x_.swap(x_free_);
     return;
   }
-  const double w0 = x_[speed_];
-  const double applied = torque_nm() - load;
-  double friction;
-  if (stuck_ || w0 == 0.0) {
-    if (applied <= coulomb && applied >= -coulomb) {
-      // Static friction balances the applied torque: the mechanism does not move.
-      if (drive_states_ > 0) {
-        const auto xd = x_.head(drive_states_).eval();
-        x_.head(drive_states_) = phi_locked_ * xd + gamma_locked_ * i_cmd_;
+  double f[2] = {0.0, 0.0};
+  bool stick[2] = {false, false};
+  solve_friction(gamma_, 0u, f, stick);
+  // Bodies at rest that static friction keeps at rest are integrated locked.
+  unsigned locked = 0;
+  for (std::size_t b = 0; b < nb; ++b)
+    if (stick[b] && stuck_[b] && x_[bodies_[b].speed] == 0.0) locked |= 1u << b;
+  const InMat* gamma = &gamma_;
+  if (locked != 0) {
+    gamma = &gamma_locked_[locked];
+    x_free_.noalias() = phi_locked_[locked] * x_;
+    x_free_ += gamma->col(0) * i_cmd_ + gamma->col(1) * t_motor + gamma->col(2) * t_load;
+    solve_friction(*gamma, locked, f, stick);
+  }
+  for (std::size_t b = 0; b < nb; ++b) {
+    const BodyState& s = bodies_[b];
+    if (locked & (1u << b)) {
+      stuck_[b] = 1;
+      continue;
+    }
+    if (f[b] != 0.0) x_free_ += gamma->col(s.input) * f[b];
+  }
+  for (std::size_t b = 0; b < nb; ++b) {
+    if (locked & (1u << b)) continue;
+    if (stick[b]) x_free_[bodies_[b].speed] = 0.0;  // stopped inside the sub-step (the residual is rounding)
+    stuck_[b] = stick[b] ? 1 : 0;
+  }
+  x_.swap(x_free_);
+}
+
+void PowerTrain::solve_friction(const InMat& gamma, unsigned locked, double* f, bool* stick) const {
+  const std::size_t nb = bodies_.size();
+  const int sweeps = nb > 1 ? 3 : 1;
+  for (std::size_t b = 0; b < nb; ++b) {
+    if (locked & (1u << b)) {
+      f[b] = 0.0;
+      stick[b] = true;
+    }
+  }
+  for (int sweep = 0; sweep < sweeps; ++sweep) {
+    for (std::size_t b = 0; b < nb; ++b) {
+      if (locked & (1u << b)) continue;
+      const BodyState& s = bodies_[b];
+      stick[b] = false;
+      if (s.breakaway <= 0.0) {
+        f[b] = 0.0;
+        continue;
       }
-      x_[speed_] = 0.0;
-      stuck_ = true;
-      return;
+      // End speed and displacement of this body without its own friction (the others' included).
+      double v_free = x_free_[s.speed];
+      double d = x_free_[s.angle] - x_[s.angle];
+      for (std::size_t o = 0; o < nb; ++o) {
+        if (o == b) continue;
+        v_free += gamma(s.speed, bodies_[o].input) * f[o];
+        d += gamma(s.angle, bodies_[o].input) * f[o];
+      }
+      const double g = gamma(s.speed, s.input);   // end speed per N*m of own friction
+      const double gth = gamma(s.angle, s.input); // displacement per N*m of own friction
+      const double v0 = x_[s.speed];
+      double fb;
+      bool st = false;
+      const double dir = v0 > 0 ? 1.0 : -1.0;
+      const double f_slip = -dir * s.friction.sliding_nm(v0);
+      if (v0 != 0.0 && (v_free + g * f_slip) * dir > 0.0) {
+        fb = f_slip;  // keeps sliding the same way
+      } else {
+        const double f_stick = -v_free / g;  // holds the body at rest at the sub-step's end
+        if (f_stick <= s.breakaway && f_stick >= -s.breakaway) {
+          fb = f_stick;
+          st = true;
+        } else {
+          fb = v_free > 0 ? -s.breakaway : s.breakaway;  // breaks away, or passes through zero, against Fs
+        }
+      }
+      // Sliding friction may only oppose the net displacement over the sub-step: f * (d + gth f) <= 0. (A hold
+      // from rest is integrated locked, with no work at all.)
+      if (!(st && v0 == 0.0) && fb * (d + gth * fb) > 0.0) {
+        st = false;
+        const double cap = gth > 0.0 ? std::fabs(d) / gth : 0.0;
+        fb = d == 0.0 ? 0.0 : (d > 0 ? -1.0 : 1.0) * std::min(std::fabs(fb), cap);
+      }
+      f[b] = fb;
+      stick[b] = st;
     }
-    friction = applied > 0 ? -coulomb : coulomb;  // breaks away
-    stuck_ = false;
-  } else {
-    friction = w0 > 0 ? -coulomb : coulomb;
   }
-  u_[1] = friction - load;
-  x_ = phi_ * x_ + gamma_ * u_;
-  const double w1 = x_[speed_];
-  if (w0 != 0.0 && (w1 == 0.0 || (w1 > 0) != (w0 > 0))) {
-    // The speed reached zero inside the sub-step: stop there unless the torque breaks it away again.
-    const double applied1 = torque_nm() - load;
-    if (applied1 <= coulomb && applied1 >= -coulomb) {
-      x_[speed_] = 0.0;
-      stuck_ = true;
-    }
+}
+
+double PowerTrain::mechanical_energy_j() const {
+  double e = 0.0;
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const double w = x_[bodies_[b].speed];
+    e += 0.5 * mech_.bodies[b].inertia_kgm2 * w * w;
   }
+  if (!mech_.rigid()) {
+    const double k = -mech_.a(mech_.load_speed, mech_.load_angle) * mech_.bodies.back().inertia_kgm2;
+    const double twist = x_[motor_angle_] - x_[load_angle_];
+    e += 0.5 * k * twist * twist;
+  }
+  return e;
 }
 
 }  // namespace servobench::machine

@@ -4,22 +4,40 @@
 
 namespace servobench::plant {
 
-void RigidPlantParams::validate() const {
-  check_positive("RigidPlant", "inertia_kgm2", inertia_kgm2);
-  check_nonnegative("RigidPlant", "viscous_nms", viscous_nms);
-  check_nonnegative("RigidPlant", "coulomb_nm", coulomb_nm);
-  check_range("RigidPlant", "load_nm", load_nm, -1e6, 1e6);
+void validate_disturbances(const char* owner, double load_nm, double unbalance_nm, double cogging_nm,
+                           double cogging_periods) {
+  check_range(owner, "load_nm", load_nm, -1e6, 1e6);
+  check_range(owner, "unbalance_nm", unbalance_nm, -1e6, 1e6);
+  check_range(owner, "cogging_nm", cogging_nm, 0, 1e6);
+  check_integer(owner, "cogging_periods", cogging_periods, 0, 1000);
 }
 
-PlantLti rigid_plant_lti(const RigidPlantParams& p) {
-  PlantLti m;
+void RigidPlantParams::validate() const {
+  check_positive("RigidPlant", "inertia_kgm2", inertia_kgm2);
+  friction().validate("RigidPlant", "");
+  validate_disturbances("RigidPlant", load_nm, unbalance_nm, cogging_nm, cogging_periods);
+}
+
+Mechanics rigid_mechanics(const RigidPlantParams& p) {
+  p.validate();
+  Mechanics m;
   const double j = p.inertia_kgm2;
   m.a.resize(2, 2);
   m.a << 0.0, 1.0,
          0.0, -p.viscous_nms / j;
-  m.b.resize(2, 2);
-  m.b << 0.0, 0.0,
-         1.0 / j, 1.0 / j;
+  m.b.resize(2, 3);
+  m.b << 0.0, 0.0, 0.0,
+         1.0 / j, 1.0 / j, 1.0 / j;
+  Body body;
+  body.angle_index = 0;
+  body.speed_index = 1;
+  body.torque_input = 1;
+  body.inertia_kgm2 = j;
+  body.friction = p.friction();
+  m.bodies = {body};
+  m.disturbances = Disturbances{p.load_nm, p.unbalance_nm, p.cogging_nm, p.cogging_periods};
+  m.motor_angle = m.load_angle = 0;
+  m.motor_speed = m.load_speed = 1;
   return m;
 }
 

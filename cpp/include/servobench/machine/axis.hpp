@@ -19,16 +19,20 @@
 #include "servobench/machine/trace.hpp"
 #include "servobench/plant/encoder.hpp"
 #include "servobench/plant/rigid.hpp"
+#include "servobench/plant/switches.hpp"
+#include "servobench/plant/two_mass.hpp"
 
 namespace servobench::machine {
 
 using LawParams = std::variant<control::GtServoLawParams, control::ApsServoLawParams>;
+using PlantParams = std::variant<plant::RigidPlantParams, plant::TwoMassPlantParams>;
 
 struct AxisConfig {
   LawParams law = control::GtServoLawParams{};
-  drive::TorqueDriveParams drive{};
-  plant::RigidPlantParams plant{};
+  DriveParams drive = drive::TorqueDriveParams{};
+  PlantParams plant = plant::RigidPlantParams{};
   plant::EncoderParams encoder{};
+  plant::SwitchParams switches{};
   drive::DacParams dac{};
   std::optional<double> servo_period_s;  // s; empty: the law's card default (GT 200 us, APS 250 us)
   int substeps = 1;             // plant integration sub-steps per tick, 1..1000 (bindings check the range)
@@ -62,13 +66,20 @@ class Axis {
   void run(const CommandInput& command, const Trace& trace);
 
   // Present state.
-  double feedback_pulse() const { return encoder_.read(power_.angle_rad()); }
-  double angle_rad() const { return power_.angle_rad(); }
-  double speed_rad_s() const { return power_.speed_rad_s(); }
+  double feedback_pulse() const { return encoder_.read_ideal(encoder_angle()); }
+  double angle_rad() const { return power_.motor_angle_rad(); }
+  double speed_rad_s() const { return power_.motor_speed_rad_s(); }
+  double load_angle_rad() const { return power_.load_angle_rad(); }
+  double load_speed_rad_s() const { return power_.load_speed_rad_s(); }
+  bool alarm() const { return power_.alarm(); }
+  const PowerTrain& power_train() const { return power_; }
 
  private:
   template <class Law>
   void run_with(Law& law, const CommandInput& command, const Trace& trace);
+  double encoder_angle() const {
+    return config_.encoder.on_load ? power_.load_angle_rad() : power_.motor_angle_rad();
+  }
 
   AxisConfig config_;
   std::variant<control::GtServoLaw, control::ApsServoLaw> law_;
@@ -78,6 +89,7 @@ class Axis {
   PowerTrain power_;
   double pending_volts_ = 0.0;  // DAC output of the previous tick, applied during this one
   double prev_cmd_ = 0.0, prev_vel_ = 0.0;
+  double prev_encoder_angle_ = 0.0;
   bool primed_ = false;
   long long tick_ = 0;
 };

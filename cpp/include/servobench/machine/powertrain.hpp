@@ -1,61 +1,101 @@
-// The drive and the mechanics integrated together over one sub-step.
+// The drive and the mechanics, integrated together over the sub-steps of one servo tick.
 //
-// The drive's linear part (current loop) and the plant's linear part (inertia, viscous friction) are put in
-// series and discretised exactly (zero-order hold on the drive's current command and on the external torque).
-// The nonlinear parts act on the inputs held over the sub-step: the current limit on the current command,
-// Coulomb friction and the load on the external torque. Stiction: a mechanism at rest stays at rest (its state
-// frozen, the drive still integrating) while |drive torque - load| <= coulomb; a moving mechanism whose speed
-// changes sign inside a sub-step is stopped there when the torque cannot break it away.
+// Linear part: the drive's current loop in series with the mechanics (inertias, shaft, viscous friction),
+// discretised exactly once (zero-order hold on the current command and on the external torques).
+// Nonlinear parts act on the inputs held over a sub-step:
+//  - the drive's input stage (torque mode: A/V and limits; velocity mode: a discrete PI speed loop run every
+//    1/loop_rate_hz), and the drive alarm (current command forced to zero once tripped);
+//  - position-dependent torques (cogging, unbalance) and the constant load, evaluated at the sub-step start;
+//  - dry friction of each body, solved implicitly (time-stepping): the friction torque held over the sub-step
+//    is the one that stops the body if static friction can (|needed| <= breakaway level), otherwise the
+//    sliding friction opposing the motion, and never more than what opposes the body's net displacement over
+//    the sub-step (so friction never does positive work). A body at rest that stays at rest is integrated with
+//    an exactly locked discretisation (no creep, no work); a body never reverses through friction alone.
 #pragma once
+
+#include <variant>
+#include <vector>
 
 #include <Eigen/Core>
 
 #include "servobench/drive/torque_drive.hpp"
-#include "servobench/plant/rigid.hpp"
+#include "servobench/drive/velocity_drive.hpp"
+#include "servobench/plant/mechanics.hpp"
 
 namespace servobench::machine {
+
+using DriveParams = std::variant<drive::TorqueDriveParams, drive::VelocityDriveParams>;
 
 class PowerTrain {
  public:
   static constexpr int kMaxStates = 8;
   using Vec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxStates, 1>;
   using Mat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxStates, kMaxStates>;
-  using InMat = Eigen::Matrix<double, Eigen::Dynamic, 2, 0, kMaxStates, 2>;
+  using InMat = Eigen::Matrix<double, Eigen::Dynamic, 3, 0, kMaxStates, 3>;
 
-  PowerTrain(const drive::TorqueDriveParams& drive, const plant::RigidPlantParams& plant, double substep_s);
+  // substeps: integration sub-steps per tick requested by the user; a velocity-mode drive multiplies them by
+  // its loop updates per tick (servo_period_s * loop_rate_hz must then be a whole number).
+  PowerTrain(const DriveParams& drive, const plant::Mechanics& mechanics, double servo_period_s, int substeps);
 
-  // At rest at the given angle, current zero.
+  // At rest, no shaft twist, motor angle = load angle = angle_rad, current zero, alarm cleared, time 0.
   void reset(double angle_rad = 0.0);
-  // Sets the drive's input voltage, held from now on (current limit applied here).
-  void set_input(double volts) { i_cmd_ = drive::torque_drive_current_command(drive_, volts); }
-  // Advances one sub-step with the held input.
-  void step();
-  void step(double volts) {
-    set_input(volts);
-    step();
-  }
+  // Sets the mechanical state (rad, rad/s); on a rigid plant the load values must equal the motor's.
+  void set_state(double motor_angle_rad, double motor_speed_rad_s, double load_angle_rad, double load_speed_rad_s);
+  // The drive's input voltage for the coming tick.
+  void set_input(double volts);
+  // Advances one servo tick (all sub-steps) with the held input.
+  void advance_tick();
 
-  double angle_rad() const { return x_[angle_]; }
-  double speed_rad_s() const { return x_[speed_]; }
-  // Motor current now, A. An ideal current loop follows the held input at once.
+  double motor_angle_rad() const { return x_[motor_angle_]; }
+  double motor_speed_rad_s() const { return x_[motor_speed_]; }
+  double load_angle_rad() const { return x_[load_angle_]; }
+  double load_speed_rad_s() const { return x_[load_speed_]; }
+  // Motor current now, A (an ideal current loop follows its command at once).
   double current_a() const { return drive_states_ > 0 ? x_[0] : i_cmd_; }
-  double torque_nm() const { return drive_.kt * current_a(); }
-  bool stuck() const { return stuck_; }
-
-  const drive::TorqueDriveParams& drive_params() const { return drive_; }
-  const plant::RigidPlantParams& plant_params() const { return plant_; }
+  double torque_nm() const { return kt_ * current_a(); }
+  bool alarm() const { return alarm_; }
+  int substeps_per_tick() const { return n_sub_; }
+  double substep_s() const { return h_; }
+  const plant::Mechanics& mechanics() const { return mech_; }
+  // Total mechanical energy (kinetic + shaft), J. For passivity checks.
+  double mechanical_energy_j() const;
+  // Bodies frozen by static friction now.
+  bool stuck(std::size_t body) const { return stuck_[body] != 0; }
 
  private:
-  drive::TorqueDriveParams drive_;
-  plant::RigidPlantParams plant_;
+  void substep();
+  // Decides the dry-friction torque of every body not in `locked` for the sub-step whose friction-free end state
+  // is x_free_, given the discretisation (phi, gamma) in use. See the class comment for the rules.
+  void solve_friction(const InMat& gamma, unsigned locked, double* f, bool* stick) const;
+
+  DriveParams drive_;
+  plant::Mechanics mech_;
+  bool velocity_mode_ = false;
+  double kt_ = 1.0;
+  double i_max_ = 0.0;
+  double amps_per_volt_ = 0.0;
+  double alarm_at_s_ = 0.0;
+  drive::SpeedLoop speed_loop_;
   int drive_states_ = 0;
-  int angle_ = 0, speed_ = 1;
-  Mat phi_, phi_locked_;       // whole system; drive alone (mechanics locked by stiction)
+  int motor_angle_ = 0, motor_speed_ = 1, load_angle_ = 0, load_speed_ = 1;
+  int n_sub_ = 1, loop_every_ = 1;
+  double h_ = 0.0;
+  Mat phi_;
   InMat gamma_;
-  Vec gamma_locked_;
-  Vec x_, u_;
-  double i_cmd_ = 0.0;
-  bool stuck_ = true;
+  // Discretisations with a subset of bodies locked by stiction (index = bit mask of locked bodies; 0 = none).
+  std::vector<Mat> phi_locked_;
+  std::vector<InMat> gamma_locked_;
+  Vec x_, x_free_;
+  struct BodyState {
+    int angle, speed, input;
+    plant::FrictionParams friction;
+    double breakaway;
+  };
+  std::vector<BodyState> bodies_;
+  std::vector<char> stuck_;
+  double volts_ = 0.0, i_cmd_ = 0.0;
+  bool alarm_ = false;
+  long long substep_count_ = 0;
 };
 
 }  // namespace servobench::machine

@@ -30,7 +30,14 @@
   X(current_a, "A", "motor current (ideal loop: the current held from this tick)")                                                             \
   X(torque_nm, "N*m", "motor torque")                                                            \
   X(angle_rad, "rad", "motor angle")                                                             \
-  X(speed_rad_s, "rad/s", "motor speed")
+  X(speed_rad_s, "rad/s", "motor speed")                                                         \
+  X(load_angle_rad, "rad", "load angle (= motor angle on a rigid plant)")                        \
+  X(load_speed_rad_s, "rad/s", "load speed")                                                     \
+  X(alarm, "bool", "drive alarm (1 once tripped)")                                               \
+  X(index, "bool", "1 if the encoder index mark passed since the previous tick")                 \
+  X(home_sw, "bool", "home switch state (load angle in the home window)")                        \
+  X(pos_limit_sw, "bool", "positive limit switch state")                                         \
+  X(neg_limit_sw, "bool", "negative limit switch state")
 
 namespace servobench::machine {
 

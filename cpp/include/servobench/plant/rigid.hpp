@@ -1,33 +1,33 @@
 // A rigid single-inertia mechanism in SI units (rad, rad/s, N*m, kg*m^2).
 //
-//   J * dw/dt = torque_motor - b*w - friction(w) - load_torque,   dtheta/dt = w
+//   J * dw/dt = torque_motor - T_friction(w) - load - unbalance*sin(theta) + cogging*sin(N*theta),  dtheta/dt = w
 //
-// Linear part: inertia J and viscous friction b. Coulomb friction and the constant load are torques held
-// over each integration sub-step by the machine layer, with stiction: at rest, the mechanism stays at rest
-// while |applied torque| <= coulomb_nm.
+// Friction: viscous + Coulomb + Stribeck with stiction (plant/friction.hpp). The motor and the load are one
+// body, so the encoder reads the same angle whether it is mounted on the motor or on the load.
 #pragma once
 
-#include <Eigen/Core>
+#include "servobench/plant/friction.hpp"
+#include "servobench/plant/mechanics.hpp"
 
 namespace servobench::plant {
 
 struct RigidPlantParams {
-  double inertia_kgm2 = 1.0e-4;  // total inertia seen by the motor, kg*m^2, > 0
-  double viscous_nms = 1.0e-4;   // viscous friction, N*m*s/rad, >= 0
-  double coulomb_nm = 0.0;       // Coulomb (and static) friction level, N*m, >= 0
-  double load_nm = 0.0;          // constant load torque (e.g. gravity on a vertical axis), N*m
+  double inertia_kgm2 = 1.0e-4;       // total inertia seen by the motor, kg*m^2, > 0
+  double viscous_nms = 1.0e-4;        // viscous friction, N*m*s/rad, >= 0
+  double coulomb_nm = 0.0;            // Coulomb (sliding) friction, N*m, >= 0
+  double static_nm = 0.0;             // breakaway (static) friction, N*m; 0 = equal to coulomb_nm
+  double stribeck_speed_rad_s = 0.01; // Stribeck speed, rad/s, > 0
+  double stribeck_exponent = 2.0;     // Stribeck shape exponent, 0.5..4
+  double load_nm = 0.0;               // constant load torque (e.g. gravity on a vertical screw axis), N*m
+  double unbalance_nm = 0.0;          // gravity torque of an unbalanced arm: -unbalance*sin(theta), N*m
+  double cogging_nm = 0.0;            // cogging ripple amplitude, N*m, >= 0
+  double cogging_periods = 0.0;       // cogging periods per revolution, whole number 0..1000
   void validate() const;
+  FrictionParams friction() const {
+    return FrictionParams{viscous_nms, coulomb_nm, static_nm, stribeck_speed_rad_s, stribeck_exponent};
+  }
 };
 
-// Continuous linear model: state [theta (rad), w (rad/s)], inputs [torque_motor, torque_external] (N*m),
-// where torque_external collects everything the machine layer holds constant over a sub-step
-// (-load, -Coulomb friction).
-struct PlantLti {
-  Eigen::MatrixXd a, b;
-  int angle_index = 0;  // index of the motor angle in the state
-  int speed_index = 1;  // index of the motor speed in the state
-};
-
-PlantLti rigid_plant_lti(const RigidPlantParams& params);
+Mechanics rigid_mechanics(const RigidPlantParams& params);
 
 }  // namespace servobench::plant

@@ -1,0 +1,42 @@
+// Friction of one moving body: viscous + Coulomb + Stribeck, with true stiction.
+//
+//   moving (w != 0):  T_f(w) = -sign(w) * (Fc + (Fs - Fc) * exp(-(|w|/ws)^delta)) - b*w
+//   at rest:          |T_f| <= Fs, whatever holds the body still (static friction)
+//
+// Fc = coulomb_nm, Fs = static_nm (breakaway level, >= Fc; 0 means "equal to Fc", no Stribeck peak),
+// ws = stribeck_speed_rad_s, delta = stribeck_exponent, b = viscous_nms. The viscous part is linear and goes into
+// the exact linear integration; the rest is solved implicitly over each sub-step by the machine layer.
+#pragma once
+
+#include <cmath>
+
+namespace servobench::plant {
+
+struct FrictionParams {
+  double viscous_nms = 0.0;           // N*m*s/rad, >= 0
+  double coulomb_nm = 0.0;            // Fc, N*m, >= 0
+  double static_nm = 0.0;             // Fs, N*m, 0 (= Fc) or >= Fc
+  double stribeck_speed_rad_s = 0.01; // ws, rad/s, > 0
+  double stribeck_exponent = 2.0;     // delta, 0.5..4
+  // owner: the parameter object's name for messages; prefix: field prefix ("" or "motor_"/"load_").
+  void validate(const char* owner, const char* prefix) const;
+
+  double breakaway_nm() const { return static_nm > coulomb_nm ? static_nm : coulomb_nm; }
+  bool has_dry_friction() const { return breakaway_nm() > 0.0; }
+  // Magnitude of the dry friction while sliding at |speed| (N*m): Fc + (Fs-Fc) exp(-(|w|/ws)^delta).
+  double sliding_nm(double speed_rad_s) const {
+    const double fs = breakaway_nm();
+    if (fs == coulomb_nm) return coulomb_nm;
+    const double r = std::fabs(speed_rad_s) / stribeck_speed_rad_s;
+    const double shape = stribeck_exponent == 2.0 ? r * r : std::pow(r, stribeck_exponent);
+    return coulomb_nm + (fs - coulomb_nm) * std::exp(-shape);
+  }
+  // The steady friction torque opposing motion at a given speed (N*m, sign of the speed), viscous included;
+  // at zero speed it returns 0 (static friction is whatever holds the body). For friction curves.
+  double steady_torque_nm(double speed_rad_s) const {
+    if (speed_rad_s == 0.0) return 0.0;
+    return (speed_rad_s > 0 ? 1.0 : -1.0) * sliding_nm(speed_rad_s) + viscous_nms * speed_rad_s;
+  }
+};
+
+}  // namespace servobench::plant
