@@ -49,3 +49,83 @@ def response(run, *, metrics=None, title: str | None = None, path: str | None = 
     if path is not None:
         fig.savefig(path, dpi=120)
     return fig
+
+
+def bode(freq_hz, responses, *, title: str | None = None, markers: dict | None = None, path: str | None = None,
+         unwrap: bool = True):
+    """Bode plot: gain (dB) and phase (deg) over log frequency (Hz).
+
+    freq_hz: array of frequencies, Hz. responses: a complex array, or a dict {label: complex array} to overlay
+    several responses on the same frequencies. markers: optional {label: frequency_hz} drawn as vertical lines
+    (e.g. resonances). Returns the matplotlib Figure; writes it to `path` if given.
+    """
+    plt = _pyplot()
+    f = np.asarray(freq_hz, dtype=float)
+    if not isinstance(responses, dict):
+        responses = {"response": responses}
+    fig, (ax_mag, ax_ph) = plt.subplots(2, 1, sharex=True, figsize=(8, 6), constrained_layout=True)
+    for label, h in responses.items():
+        h = np.asarray(h, dtype=complex)
+        if h.shape != f.shape:
+            raise ValueError(f"response '{label}' has shape {h.shape}; freq_hz has {f.shape}")
+        phase = np.angle(h)
+        phase = np.degrees(np.unwrap(phase) if unwrap else phase)
+        ax_mag.semilogx(f, 20 * np.log10(np.abs(h)), label=label)
+        ax_ph.semilogx(f, phase, label=label)
+    for label, fm in (markers or {}).items():
+        for ax in (ax_mag, ax_ph):
+            ax.axvline(fm, color="0.4", ls=":", lw=1)
+        ax_mag.annotate(f"{label}\n{fm:.4g} Hz", (fm, 1.0), xycoords=("data", "axes fraction"), fontsize=8,
+                        ha="left", va="top")
+    ax_mag.set_ylabel("gain [dB]")
+    ax_ph.set_ylabel("phase [deg]")
+    ax_ph.set_xlabel("frequency [Hz]")
+    for ax in (ax_mag, ax_ph):
+        ax.grid(True, which="both", alpha=0.3)
+    if len(responses) > 1:
+        ax_mag.legend()
+    if title:
+        fig.suptitle(title, fontsize=10)
+    if path is not None:
+        fig.savefig(path, dpi=120)
+    return fig
+
+
+def plant_bode(plant, freq_hz=None, *, period_s: float | None = None, path: str | None = None):
+    """Bode plot of a plant from motor torque (N*m) to angle (rad): for a two-mass plant, motor and load side,
+    with the anti-resonance and resonance marked. period_s: also overlay the zero-order-hold response sampled at
+    that period (s). freq_hz defaults to 1 Hz .. 0.45/period_s (or 10 kHz). Returns the Figure."""
+    f_hi = 0.45 / period_s if period_s else 1e4
+    f = np.logspace(0, np.log10(f_hi), 600) if freq_hz is None else np.asarray(freq_hz, dtype=float)
+    responses, markers = {}, {}
+    two_mass = hasattr(plant, "resonance_hz")
+    outputs = ("motor", "load") if two_mass else ("motor",)
+    for out in outputs:
+        kw = {"output": out} if two_mass else {}
+        responses[f"{out} angle / torque"] = plant.frequency_response(f, **kw)
+        if period_s:
+            responses[f"{out}, ZOH at {period_s * 1e6:g} us"] = plant.frequency_response(f, period_s=period_s, **kw)
+    if two_mass:
+        markers = {"anti-resonance": plant.antiresonance_hz, "resonance": plant.resonance_hz}
+    name = type(plant).__name__
+    return bode(f, responses, markers=markers, title=f"{name}: angle [rad] per torque [N*m]", path=path)
+
+
+def friction_curve(plant, speed_rad_s=None, *, side: str = "motor", path: str | None = None):
+    """Steady friction torque (N*m) against speed (rad/s): the Stribeck curve plus viscous friction, with the
+    breakaway level marked. `side` selects the motor or load side of a two-mass plant. Returns the Figure."""
+    plt = _pyplot()
+    w = np.linspace(-1.0, 1.0, 801) if speed_rad_s is None else np.asarray(speed_rad_s, dtype=float)
+    two_mass = hasattr(plant, "resonance_hz")
+    t = plant.friction_torque(w, side=side) if two_mass else plant.friction_torque(w)
+    fig, ax = plt.subplots(figsize=(7, 4), constrained_layout=True)
+    ax.plot(w, t, lw=1.5)
+    ax.axhline(0, color="0.5", lw=0.8)
+    ax.axvline(0, color="0.5", lw=0.8)
+    ax.set_xlabel("speed [rad/s]")
+    ax.set_ylabel("friction torque [N*m]")
+    ax.grid(True, alpha=0.3)
+    ax.set_title(f"{type(plant).__name__} friction ({side} side)" if two_mass else "RigidPlant friction", fontsize=10)
+    if path is not None:
+        fig.savefig(path, dpi=120)
+    return fig
