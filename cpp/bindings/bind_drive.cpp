@@ -1,5 +1,6 @@
 #include "param_class.hpp"
 #include "servobench/drive/dac.hpp"
+#include "servobench/drive/pulse_drive.hpp"
 #include "servobench/drive/torque_drive.hpp"
 #include "servobench/drive/velocity_drive.hpp"
 
@@ -9,6 +10,8 @@ void bind_drive(py::module_& m) {
   using drive::DacParams;
   using drive::TorqueDriveParams;
   using drive::VelocityDriveParams;
+  using drive::ServoPositionDriveParams;
+  using drive::StepperDriveParams;
 
   ParamClass<DacParams>(m, "Dac",
       "Bipolar DAC: saturates at +-full_scale_v and (if quantize) rounds to the nearest of the symmetric codes\n"
@@ -43,6 +46,34 @@ void bind_drive(py::module_& m) {
       .field("torque_limit_nm", &VelocityDriveParams::torque_limit_nm, "torque limit, N*m, > 0 (inf = none)")
       .field("current_bw_hz", &VelocityDriveParams::current_bw_hz, "current-loop bandwidth, Hz, > 0 (inf = ideal)")
       .field("alarm_at_s", &VelocityDriveParams::alarm_at_s, "drive alarm trip time, s, >= 0 (inf = never)")
+      .finish();
+
+  ParamClass<StepperDriveParams>(m, "StepperDrive",
+      "Pulse-input stepper motor and driver (for pulse-output cards). Each command pulse advances the current vector\n"
+      "one microstep; rotor torque T = holding_torque_nm*sin(N*(theta_cmd - theta)), N = full_steps_per_rev/4 rotor\n"
+      "teeth. Beyond the pull-out torque the rotor slips by whole tooth pitches (4 full steps): steps are lost.\n"
+      "Model the rotor inertia and friction in the plant.")
+      .field("full_steps_per_rev", &StepperDriveParams::full_steps_per_rev, "full steps per revolution, multiple of 4, 4..10000")
+      .field("microsteps", &StepperDriveParams::microsteps, "pulses per full step, 1..256")
+      .field("holding_torque_nm", &StepperDriveParams::holding_torque_nm, "peak of the torque-angle curve, N*m, > 0")
+      .field("alarm_at_s", &StepperDriveParams::alarm_at_s, "driver alarm trip time, s (inf = never)")
+      .finish();
+
+  ParamClass<ServoPositionDriveParams>(m, "ServoPositionDrive",
+      "Pulse-input servo amplifier in position mode: pulses -> angle command (pulses_per_rev), position loop\n"
+      "kpp_per_s plus speed_feedforward x the pulse rate, PI speed loop (kp_nms, ki_nm_per_rad) and current loop,\n"
+      "at loop_rate_hz (a whole multiple of the servo rate).")
+      .field("pulses_per_rev", &ServoPositionDriveParams::pulses_per_rev, "command pulses per motor revolution, > 0")
+      .field("kpp_per_s", &ServoPositionDriveParams::kpp_per_s, "position-loop gain, 1/s, >= 0")
+      .field("speed_feedforward", &ServoPositionDriveParams::speed_feedforward, "speed feed-forward fraction, 0..1")
+      .field("kp_nms", &ServoPositionDriveParams::kp_nms, "speed-loop P gain, N*m per rad/s, >= 0")
+      .field("ki_nm_per_rad", &ServoPositionDriveParams::ki_nm_per_rad, "speed-loop I gain, N*m per rad, >= 0")
+      .field("loop_rate_hz", &ServoPositionDriveParams::loop_rate_hz, "loop rate, Hz, 100..1e6")
+      .field("kt", &ServoPositionDriveParams::kt, "torque constant, N*m/A, > 0")
+      .field("current_limit_a", &ServoPositionDriveParams::current_limit_a, "current limit, A, > 0 (inf = none)")
+      .field("torque_limit_nm", &ServoPositionDriveParams::torque_limit_nm, "torque limit, N*m, > 0 (inf = none)")
+      .field("current_bw_hz", &ServoPositionDriveParams::current_bw_hz, "current-loop bandwidth, Hz (inf = ideal)")
+      .field("alarm_at_s", &ServoPositionDriveParams::alarm_at_s, "alarm trip time, s (inf = never)")
       .finish();
 }
 

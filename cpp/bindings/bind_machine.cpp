@@ -45,7 +45,10 @@ machine::PlantParams plant_from(const py::handle& p) {
 machine::DriveParams drive_from(const py::handle& d) {
   if (py::isinstance<drive::TorqueDriveParams>(d)) return d.cast<drive::TorqueDriveParams>();
   if (py::isinstance<drive::VelocityDriveParams>(d)) return d.cast<drive::VelocityDriveParams>();
-  throw py::type_error("drive must be a TorqueDrive or a VelocityDrive, got " + py::str(py::type::of(d)).cast<std::string>());
+  if (py::isinstance<drive::StepperDriveParams>(d)) return d.cast<drive::StepperDriveParams>();
+  if (py::isinstance<drive::ServoPositionDriveParams>(d)) return d.cast<drive::ServoPositionDriveParams>();
+  throw py::type_error("drive must be a TorqueDrive, VelocityDrive, StepperDrive or ServoPositionDrive, got " +
+                       py::str(py::type::of(d)).cast<std::string>());
 }
 
 machine::LawParams law_from(const py::handle& law) {

@@ -85,7 +85,9 @@ class Axis:
     law
         :class:`GtServoLaw` (default, the GT manual's defaults) or :class:`ApsServoLaw`.
     drive
-        :class:`TorqueDrive` (V -> A -> N*m) or :class:`VelocityDrive` (V -> rad/s command, own PI loop).
+        :class:`TorqueDrive` (V -> A -> N*m) or :class:`VelocityDrive` (V -> rad/s command, own PI loop);
+        for a pulse-output card :class:`StepperDrive` or :class:`ServoPositionDrive`, fed with the command
+        position as a step train of whole pulses (the servo law and the DAC are then bypassed).
     plant
         :class:`RigidPlant` or :class:`TwoMassPlant` (kg*m^2, N*m/rad, N*m*s/rad, N*m).
     encoder

@@ -131,3 +131,41 @@ def test_identical_configuration_gives_identical_runs():
                                           dwell_after=500)).fb_pos
 
     assert np.array_equal(go(), go())
+
+
+def stepper_axis(**plant_kw):
+    drive = sb.StepperDrive(full_steps_per_rev=200, microsteps=16, holding_torque_nm=0.5)
+    plant = sb.RigidPlant(inertia_kgm2=1e-5, viscous_nms=1e-3, **plant_kw)
+    return sb.Axis(drive=drive, plant=plant, substeps=4)
+
+
+def test_stepper_follows_the_step_train_below_pull_out():
+    axis = stepper_axis()
+    move = sb.trapezoid_move(distance_pulse=3200, vel_pulse_per_tick=1.0, acc_pulse_per_tick2=0.01, dwell_after=2000)
+    run = axis.run(move)
+    assert np.all(run.volts == 0) and np.all(run.u == 0)  # pulse output: no servo law, no DAC
+    lag = move.pos * 2 * np.pi / 3200 - run.angle_rad
+    assert np.max(np.abs(lag)) < 0.25 * (2 * np.pi / 200)  # never a quarter full step behind
+    assert run.angle_rad[-1] == pytest.approx(2 * np.pi, abs=1e-4)  # one revolution, no step lost
+
+
+def test_stepper_loses_whole_teeth_beyond_pull_out():
+    axis = stepper_axis(coulomb_nm=0.02)
+    # 3 pulse/tick^2 needs J*alpha = 1e-5 * 3 * (2 pi/3200) / (200 us)^2 = 1.5 N*m, three times the holding torque.
+    move = sb.trapezoid_move(distance_pulse=32000, vel_pulse_per_tick=60, acc_pulse_per_tick2=3.0, dwell_after=5000)
+    run = axis.run(move)
+    pitch = 2 * np.pi / 50  # one rotor tooth = 4 full steps
+    lost = (move.pos[-1] * 2 * np.pi / 3200 - run.angle_rad[-1]) / pitch
+    assert abs(lost) >= 1  # steps were lost ...
+    assert abs(lost - round(lost)) < 0.05  # ... by whole tooth pitches (the rotor re-locks on a tooth)
+
+
+def test_servo_position_drive_tracks_pulses():
+    drive = sb.ServoPositionDrive(pulses_per_rev=10000, kpp_per_s=300, kp_nms=0.03, ki_nm_per_rad=3.0)
+    axis = sb.Axis(drive=drive, plant=sb.RigidPlant(inertia_kgm2=1e-4, viscous_nms=1e-4, coulomb_nm=0.005))
+    move = sb.trapezoid_move(distance_pulse=10000, vel_pulse_per_tick=20, acc_pulse_per_tick2=0.1, dwell_after=2000)
+    run = axis.run(move)
+    assert abs(run.fb_pos[-1] - 10000) <= 1
+    assert np.max(np.abs(run.error)) < 60  # pulses of lag while moving, with the speed feed-forward
+    no_ff = sb.Axis(drive=drive.replace(speed_feedforward=0.0), plant=axis.plant).run(move)
+    assert np.max(np.abs(no_ff.error)) > 5 * np.max(np.abs(run.error))

@@ -53,6 +53,22 @@ BAD = [
     (sb.VelocityDrive, "torque_limit_nm", [0, -2, NAN], "> 0"),
     (sb.VelocityDrive, "current_bw_hz", [0, NAN], "> 0"),
     (sb.VelocityDrive, "alarm_at_s", [-1, NAN], ">= 0"),
+    (sb.StepperDrive, "full_steps_per_rev", [3, 10004, 200.5, NAN], "4..10000"),
+    (sb.StepperDrive, "full_steps_per_rev", [202], "multiple of 4"),
+    (sb.StepperDrive, "microsteps", [0, 257, 1.5, NAN], "1..256"),
+    (sb.StepperDrive, "holding_torque_nm", [0, -1, NAN, INF], "> 0"),
+    (sb.StepperDrive, "alarm_at_s", [-1, NAN], ">= 0"),
+    (sb.ServoPositionDrive, "pulses_per_rev", [0, -1, NAN, INF], "> 0"),
+    (sb.ServoPositionDrive, "kpp_per_s", [-1, NAN, INF], ">= 0"),
+    (sb.ServoPositionDrive, "speed_feedforward", [-0.1, 1.1, NAN], "0..1"),
+    (sb.ServoPositionDrive, "kp_nms", [-1, NAN], ">= 0"),
+    (sb.ServoPositionDrive, "ki_nm_per_rad", [-1, NAN], ">= 0"),
+    (sb.ServoPositionDrive, "loop_rate_hz", [50, 2e6, NAN], "100..1000000"),
+    (sb.ServoPositionDrive, "kt", [0, NAN], "> 0"),
+    (sb.ServoPositionDrive, "current_limit_a", [0, NAN], "> 0"),
+    (sb.ServoPositionDrive, "torque_limit_nm", [0, NAN], "> 0"),
+    (sb.ServoPositionDrive, "current_bw_hz", [0, NAN], "> 0"),
+    (sb.ServoPositionDrive, "alarm_at_s", [-1, NAN], ">= 0"),
     (sb.RigidPlant, "inertia_kgm2", [0, -1e-4, NAN, INF], "> 0"),
     (sb.RigidPlant, "viscous_nms", [-1e-3, NAN, INF], ">= 0"),
     (sb.RigidPlant, "coulomb_nm", [-0.1, NAN, INF], ">= 0"),
@@ -119,7 +135,8 @@ def test_setter_rejects_and_keeps_the_old_value(cls, field, bad, expect):
 
 def test_every_field_is_covered_by_a_bad_input_test():
     covered = {(c, f) for c, f, _v, _e in BAD}
-    for cls in (sb.GtServoLaw, sb.ApsServoLaw, sb.TorqueDrive, sb.VelocityDrive, sb.RigidPlant, sb.TwoMassPlant,
+    for cls in (sb.GtServoLaw, sb.ApsServoLaw, sb.TorqueDrive, sb.VelocityDrive, sb.StepperDrive,
+                sb.ServoPositionDrive, sb.RigidPlant, sb.TwoMassPlant,
                 sb.Encoder, sb.Dac, sb.Switches):
         for field in cls.FIELDS:
             assert (cls, field) in covered, f"{cls.__name__}.{field} has no bad-input test"
@@ -174,7 +191,7 @@ def test_axis_rejects_a_part_of_the_wrong_kind():
         sb.Axis(law=sb.RigidPlant())
     with pytest.raises(TypeError, match="plant must be a RigidPlant or a TwoMassPlant"):
         sb.Axis(plant=sb.TorqueDrive())
-    with pytest.raises(TypeError, match="drive must be a TorqueDrive or a VelocityDrive"):
+    with pytest.raises(TypeError, match="drive must be a TorqueDrive, VelocityDrive, StepperDrive or ServoPositionDrive"):
         sb.Axis(drive=sb.RigidPlant())
 
 

@@ -1,5 +1,6 @@
 #include "servobench/machine/axis.hpp"
 
+#include <cmath>
 #include <type_traits>
 
 #include "servobench/common/validate.hpp"
@@ -92,6 +93,7 @@ template <class Law>
 void Axis::run_with(Law& law, const CommandInput& command, const Trace& tr) {
   const double ts = *config_.servo_period_s;
   const plant::SwitchParams& sw = config_.switches;
+  const bool pulse_output = power_.pulse_input();
   for (std::size_t k = 0; k < command.n; ++k) {
     const double r = command.pos[k];
     if (!primed_) {
@@ -104,13 +106,22 @@ void Axis::run_with(Law& law, const CommandInput& command, const Trace& tr) {
     prev_cmd_ = r;
     prev_vel_ = v;
 
-    power_.set_input(pending_volts_);  // the previous tick's output reaches the drive now
     const double enc_angle = encoder_angle();
     const double y = encoder_.read(enc_angle);
-    const control::LawTerms t = law.step(r, y, v, a);
-    const double f0 = slot0_.step(t.total);
-    const double f1 = slot1_.step(f0);
-    const double volts = dac_.convert(law.counts_to_volts(f1));
+    control::LawTerms t;
+    double f0 = 0.0, f1 = 0.0, volts = 0.0;
+    if (pulse_output) {
+      // Pulse-output card: the command goes out as a step train of whole pulses; no servo law, no DAC.
+      power_.set_pulse_input(std::nearbyint(r));
+      t.vel = v;
+      t.acc = a;
+    } else {
+      power_.set_input(pending_volts_);  // the previous tick's output reaches the drive now
+      t = law.step(r, y, v, a);
+      f0 = slot0_.step(t.total);
+      f1 = slot1_.step(f0);
+      volts = dac_.convert(law.counts_to_volts(f1));
+    }
 
     if (tr.time_s) tr.time_s[k] = static_cast<double>(tick_) * ts;
     if (tr.cmd_pos) tr.cmd_pos[k] = r;

@@ -12,8 +12,20 @@ namespace servobench::machine {
 namespace {
 drive::VelocityDriveParams speed_loop_params(const DriveParams& d) {
   if (const auto* v = std::get_if<drive::VelocityDriveParams>(&d)) return *v;
+  if (const auto* sp = std::get_if<drive::ServoPositionDriveParams>(&d)) return sp->speed_loop();
   drive::VelocityDriveParams unused;
   return unused;
+}
+
+// Speed-loop updates per servo tick; the servo period must hold a whole number of them.
+int loop_updates_per_tick(const char* owner, double loop_rate_hz, double servo_period_s) {
+  const double per_tick = servo_period_s * loop_rate_hz;
+  const double m = std::round(per_tick);
+  if (m < 1 || std::fabs(per_tick - m) > 1e-6 * m)
+    throw_invalid(owner, "loop_rate_hz", loop_rate_hz,
+                  "must be a whole multiple of the servo rate " + format_value(1.0 / servo_period_s) +
+                      " Hz (the speed loop runs a whole number of times per servo tick)");
+  return static_cast<int>(m);
 }
 }  // namespace
 
@@ -22,6 +34,7 @@ PowerTrain::PowerTrain(const DriveParams& drive, const plant::Mechanics& mechani
     : drive_(drive), mech_(mechanics), speed_loop_(speed_loop_params(drive)) {
   check_positive("PowerTrain", "servo_period_s", servo_period_s);
   check_integer("Axis", "substeps", substeps, 1, 1000);
+  servo_period_s_ = servo_period_s;
   double bw = 0.0;
   if (const auto* t = std::get_if<drive::TorqueDriveParams>(&drive_)) {
     t->validate();
@@ -32,20 +45,38 @@ PowerTrain::PowerTrain(const DriveParams& drive, const plant::Mechanics& mechani
     bw = t->current_bw_hz;
     n_sub_ = substeps;
     loop_every_ = substeps;
-  } else {
-    const auto& v = std::get<drive::VelocityDriveParams>(drive_);
-    v.validate();
+  } else if (const auto* v = std::get_if<drive::VelocityDriveParams>(&drive_)) {
+    v->validate();
+    mode_ = Mode::kVelocity;
     velocity_mode_ = true;
-    kt_ = v.kt;
-    alarm_at_s_ = v.alarm_at_s;
-    bw = v.current_bw_hz;
-    const double per_tick = servo_period_s * v.loop_rate_hz;
-    const double m = std::round(per_tick);
-    if (m < 1 || std::fabs(per_tick - m) > 1e-6 * m)
-      throw_invalid("VelocityDrive", "loop_rate_hz", v.loop_rate_hz,
-                    "must be a whole multiple of the servo rate " + format_value(1.0 / servo_period_s) +
-                        " Hz (the speed loop runs a whole number of times per servo tick)");
-    n_sub_ = static_cast<int>(m) * substeps;
+    kt_ = v->kt;
+    alarm_at_s_ = v->alarm_at_s;
+    bw = v->current_bw_hz;
+    n_sub_ = loop_updates_per_tick("VelocityDrive", v->loop_rate_hz, servo_period_s) * substeps;
+    loop_every_ = substeps;
+  } else if (const auto* st = std::get_if<drive::StepperDriveParams>(&drive_)) {
+    st->validate();
+    mode_ = Mode::kStepper;
+    kt_ = 1.0;
+    bw = drive::kInf;  // no current-loop state: the torque-angle curve acts directly
+    alarm_at_s_ = st->alarm_at_s;
+    rad_per_pulse_ = 2.0 * M_PI / st->pulses_per_rev();
+    stepper_teeth_ = st->teeth();
+    holding_torque_ = st->holding_torque_nm;
+    n_sub_ = substeps;
+    loop_every_ = substeps;
+  } else {
+    const auto& sp = std::get<drive::ServoPositionDriveParams>(drive_);
+    sp.validate();
+    mode_ = Mode::kServoPosition;
+    velocity_mode_ = true;
+    kt_ = sp.kt;
+    alarm_at_s_ = sp.alarm_at_s;
+    bw = sp.current_bw_hz;
+    rad_per_pulse_ = 2.0 * M_PI / sp.pulses_per_rev;
+    kpp_ = sp.kpp_per_s;
+    speed_ff_ = sp.speed_feedforward;
+    n_sub_ = loop_updates_per_tick("ServoPositionDrive", sp.loop_rate_hz, servo_period_s) * substeps;
     loop_every_ = substeps;
   }
   h_ = servo_period_s / n_sub_;
@@ -123,6 +154,19 @@ void PowerTrain::reset(double angle_rad) {
   alarm_ = false;
   substep_count_ = 0;
   speed_loop_.reset();
+  cmd_start_ = cmd_end_ = cmd_angle_ = angle_origin_ = angle_rad;
+  pulse_primed_ = false;
+  stepper_torque_ = 0.0;
+}
+
+void PowerTrain::set_pulse_input(double pulses) {
+  if (!pulse_primed_) {  // the first command pulse count is where the axis stands
+    angle_origin_ = x_[motor_angle_] - pulses * rad_per_pulse_;
+    pulse_primed_ = true;
+    cmd_end_ = x_[motor_angle_];
+  }
+  cmd_start_ = cmd_end_;
+  cmd_end_ = angle_origin_ + pulses * rad_per_pulse_;
 }
 
 void PowerTrain::set_state(double motor_angle_rad, double motor_speed_rad_s, double load_angle_rad,
@@ -147,7 +191,10 @@ void PowerTrain::set_input(double volts) {
 }
 
 void PowerTrain::advance_tick() {
-  for (int s = 0; s < n_sub_; ++s) substep();
+  for (int s = 0; s < n_sub_; ++s) {
+    sub_in_tick_ = s;
+    substep();
+  }
 }
 
 void PowerTrain::substep() {
@@ -155,10 +202,18 @@ void PowerTrain::substep() {
     alarm_ = true;
     speed_loop_.reset();
   }
+  if (pulse_input()) {  // the step train arrives evenly over the tick
+    cmd_angle_ = cmd_start_ + (cmd_end_ - cmd_start_) * (static_cast<double>(sub_in_tick_ + 1) / n_sub_);
+  }
   if (alarm_) {
     i_cmd_ = 0.0;
   } else if (velocity_mode_ && substep_count_ % loop_every_ == 0) {
-    i_cmd_ = speed_loop_.update(volts_, x_[motor_speed_]);
+    if (mode_ == Mode::kServoPosition) {
+      const double ff = speed_ff_ * (cmd_end_ - cmd_start_) / servo_period_s_;
+      i_cmd_ = speed_loop_.update_speed(kpp_ * (cmd_angle_ - x_[motor_angle_]) + ff, x_[motor_speed_]);
+    } else {
+      i_cmd_ = speed_loop_.update(volts_, x_[motor_speed_]);
+    }
   }
   ++substep_count_;
 
@@ -166,6 +221,10 @@ void PowerTrain::substep() {
   const plant::Disturbances& dist = mech_.disturbances;
   double t_motor = 0.0;
   if (dist.cogging_nm != 0.0) t_motor = dist.cogging_nm * std::sin(dist.cogging_periods * x_[motor_angle_]);
+  if (mode_ == Mode::kStepper) {  // the stepper's torque-angle curve
+    stepper_torque_ = alarm_ ? 0.0 : holding_torque_ * std::sin(stepper_teeth_ * (cmd_angle_ - x_[motor_angle_]));
+    t_motor += stepper_torque_;
+  }
   double t_load = -dist.load_nm;
   if (dist.unbalance_nm != 0.0) t_load -= dist.unbalance_nm * std::sin(x_[load_angle_]);
 

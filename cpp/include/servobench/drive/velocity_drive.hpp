@@ -32,8 +32,10 @@ class SpeedLoop {
   explicit SpeedLoop(const VelocityDriveParams& p);
   void reset() { integral_ = 0.0; }
   // One loop update: returns the current command, A.
-  double update(double volts, double speed_rad_s) {
-    const double e = p_.speed_per_volt_rad_s * volts - speed_rad_s;
+  double update(double volts, double speed_rad_s) { return update_speed(p_.speed_per_volt_rad_s * volts, speed_rad_s); }
+  // The same with the speed command given directly, rad/s.
+  double update_speed(double speed_cmd_rad_s, double speed_rad_s) {
+    const double e = speed_cmd_rad_s - speed_rad_s;
     double integ = integral_ + ki_td_ * e;
     integ = integ > tmax_ ? tmax_ : (integ < -tmax_ ? -tmax_ : integ);
     integral_ = integ;

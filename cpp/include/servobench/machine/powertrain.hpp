@@ -18,13 +18,15 @@
 
 #include <Eigen/Core>
 
+#include "servobench/drive/pulse_drive.hpp"
 #include "servobench/drive/torque_drive.hpp"
 #include "servobench/drive/velocity_drive.hpp"
 #include "servobench/plant/mechanics.hpp"
 
 namespace servobench::machine {
 
-using DriveParams = std::variant<drive::TorqueDriveParams, drive::VelocityDriveParams>;
+using DriveParams = std::variant<drive::TorqueDriveParams, drive::VelocityDriveParams, drive::StepperDriveParams,
+                                 drive::ServoPositionDriveParams>;
 
 class PowerTrain {
  public:
@@ -41,8 +43,13 @@ class PowerTrain {
   void reset(double angle_rad = 0.0);
   // Sets the mechanical state (rad, rad/s); on a rigid plant the load values must equal the motor's.
   void set_state(double motor_angle_rad, double motor_speed_rad_s, double load_angle_rad, double load_speed_rad_s);
-  // The drive's input voltage for the coming tick.
+  // The drive's input voltage for the coming tick (voltage-input drives).
   void set_input(double volts);
+  // The card's command position for the coming tick, in whole pulses (pulse-input drives); the step train is spread
+  // evenly over the tick.
+  void set_pulse_input(double pulses);
+  // True for drives fed with a step train (stepper, servo in position mode) instead of a voltage.
+  bool pulse_input() const { return mode_ == Mode::kStepper || mode_ == Mode::kServoPosition; }
   // Advances one servo tick (all sub-steps) with the held input.
   void advance_tick();
 
@@ -51,8 +58,11 @@ class PowerTrain {
   double load_angle_rad() const { return x_[load_angle_]; }
   double load_speed_rad_s() const { return x_[load_speed_]; }
   // Motor current now, A (an ideal current loop follows its command at once).
-  double current_a() const { return drive_states_ > 0 ? x_[0] : i_cmd_; }
-  double torque_nm() const { return kt_ * current_a(); }
+  double current_a() const { return mode_ == Mode::kStepper ? 0.0 : (drive_states_ > 0 ? x_[0] : i_cmd_); }
+  // Motor (electromagnetic) torque now, N*m.
+  double torque_nm() const { return mode_ == Mode::kStepper ? stepper_torque_ : kt_ * current_a(); }
+  // The drive's commanded motor angle (pulse-input drives), rad.
+  double command_angle_rad() const { return cmd_angle_; }
   bool alarm() const { return alarm_; }
   int substeps_per_tick() const { return n_sub_; }
   double substep_s() const { return h_; }
@@ -68,9 +78,17 @@ class PowerTrain {
   // is x_free_, given the discretisation (phi, gamma) in use. See the class comment for the rules.
   void solve_friction(const InMat& gamma, unsigned locked, double* f, bool* stick) const;
 
+  enum class Mode { kTorque, kVelocity, kStepper, kServoPosition };
   DriveParams drive_;
   plant::Mechanics mech_;
-  bool velocity_mode_ = false;
+  Mode mode_ = Mode::kTorque;
+  bool velocity_mode_ = false;  // a speed loop runs in the drive (velocity and servo position modes)
+  // Pulse input: rad per pulse, commanded angle at the tick's start and end, stepper parameters.
+  double rad_per_pulse_ = 0.0, cmd_start_ = 0.0, cmd_end_ = 0.0, cmd_angle_ = 0.0, angle_origin_ = 0.0;
+  bool pulse_primed_ = false;
+  double kpp_ = 0.0, speed_ff_ = 0.0, servo_period_s_ = 0.0;
+  double stepper_teeth_ = 0.0, holding_torque_ = 0.0, stepper_torque_ = 0.0;
+  int sub_in_tick_ = 0;
   double kt_ = 1.0;
   double i_max_ = 0.0;
   double amps_per_volt_ = 0.0;
