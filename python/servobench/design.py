@@ -89,7 +89,7 @@ def notch(center_hz: float, sample_time_s: float, *, q: float | None = None, low
     ts = _num(o, "sample_time_s", sample_time_s)
     c = _num(o, "center_hz", center_hz)
     band = (low_hz is not None) or (high_hz is not None)
-    if (q is None) == band or (band and (low_hz is None or high_hz is None)):
+    if (q is not None) == band or (band and (low_hz is None or high_hz is None)):
         raise ValueError("notch: give either q (quality factor) or both low_hz and high_hz (the -3 dB edges, Hz)")
     if band:
         return _d.notch_band(c, _num(o, "low_hz", low_hz), _num(o, "high_hz", high_hz), ts, bool(prewarp))
