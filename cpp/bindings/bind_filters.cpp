@@ -33,6 +33,23 @@ py::object response(const P& p, const py::object& freq_hz, std::optional<double>
   return std::move(out);
 }
 
+// Runs the filter (the same control::Biquad the Axis runs) over x from rest; returns y, same length.
+template <class P>
+py::array_t<double> filter_of(const P& p, const py::object& x) {
+  using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+  Array a = Array::ensure(x);
+  if (!a || a.ndim() != 1) throw py::value_error("x must be a 1-D array of numbers (one sample per tick)");
+  py::array_t<double> out(a.shape(0));
+  const double* in = a.data();
+  double* o = out.mutable_data();
+  control::Biquad b(p);
+  {
+    py::gil_scoped_release release;
+    for (py::ssize_t k = 0; k < a.shape(0); ++k) o[k] = b.step(in[k]);
+  }
+  return out;
+}
+
 template <class P>
 py::tuple poles_of(const P& p) {
   const auto r = control::poles(p);
@@ -72,6 +89,9 @@ void bind_filters(py::module_& m) {
            "the others trunc(coef*DIV) (adlink.md §3.6; reproduces the manual's integers L1919, L1948). Raises\n"
            "ValueError if the integers cannot hold the design (coefficient > 32767, numerator truncated to 0,\n"
            "quantised poles on or outside the unit circle).")
+      .def("filter", &filter_of<FloatBiquadParams>, py::arg("x"),
+           "Runs the filter from rest over the samples x (1-D, one per tick) and returns its output, the same\n"
+           "arithmetic the Axis uses every tick. Releases the GIL.")
       .def("poles", &poles_of<FloatBiquadParams>, "The two poles (complex z), roots of z^2 + a1 z + a2.")
       .def("is_stable", [](const FloatBiquadParams& p) { return control::is_stable(p); },
            "True if both poles are strictly inside the unit circle.")
@@ -97,6 +117,9 @@ void bind_filters(py::module_& m) {
            py::arg("sample_time_s") = py::none(), kResponseDoc)
       .def("to_float", &AdlinkBiquadParams::to_float,
            "The same filter as a FloatBiquad: b_i = B_i/DIV, a1 = -A1/DIV, a2 = -A2/DIV.")
+      .def("filter", &filter_of<AdlinkBiquadParams>, py::arg("x"),
+           "Runs the filter from rest over the samples x (1-D, one per tick) and returns its output, the same\n"
+           "arithmetic the Axis uses every tick. Releases the GIL.")
       .def("poles", &poles_of<AdlinkBiquadParams>, "The two poles (complex z), roots of DIV z^2 - A1 z - A2.")
       .def("is_stable", [](const AdlinkBiquadParams& p) { return control::is_stable(p); },
            "True if both poles are strictly inside the unit circle (exact integer test).")

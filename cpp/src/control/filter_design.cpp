@@ -20,10 +20,10 @@ void check_sample_time(const char* owner, double ts) {
 // 0 < f < Nyquist = 1/(2 ts).
 void check_frequency(const char* owner, const char* field, double f, double ts) {
   const double nyquist = 0.5 / ts;
-  const std::string range = "the allowed range is 0 < f < " + format_value(nyquist) +
-                            " Hz (the Nyquist frequency 1/(2*sample_time_s))";
-  if (!std::isfinite(f)) throw_invalid(owner, field, f, "is not a finite number; " + range);
-  if (!(f > 0.0) || !(f < nyquist)) throw_invalid(owner, field, f, "is outside " + range);
+  const std::string range =
+      "0 < f < " + format_value(nyquist) + " Hz (the Nyquist frequency 1/(2*sample_time_s))";
+  if (!std::isfinite(f)) throw_invalid(owner, field, f, "is not a finite number; the allowed range is " + range);
+  if (!(f > 0.0) || !(f < nyquist)) throw_invalid(owner, field, f, "is outside the allowed range " + range);
 }
 
 // Bilinear constant c: s = c (z-1)/(z+1); c = 2/ts, or w/tan(w ts/2) pre-warped at w = 2 pi prewarp_hz.
