@@ -150,3 +150,17 @@ TEST(Biquad, StabilityIsExactForIntegers) {
   EXPECT_NEAR(std::abs(poles(manual_lowpass()).first), 0.6513, 5e-5);
   EXPECT_THROW(require_stable(p, "x"), std::invalid_argument);
 }
+
+TEST(Biquad, PassThroughBypassKeepsTheSameHistory) {
+  // The default pass-through skips the arithmetic; B0 = DIV = 2 is the same filter evaluated in full (exact for
+  // these inputs: multiplying and dividing by 2 are exact). After switching both to the manual's low-pass (the
+  // card's parameter update keeps the history), they must agree bit for bit.
+  AdlinkBiquadParams two;
+  two.b0 = 2;
+  two.div = 2;
+  Biquad bypass{AdlinkBiquadParams{}}, full(two);
+  for (double x : {3.0, -7.5, 12.25, 100.0}) EXPECT_EQ(bypass.step(x), full.step(x));
+  bypass.set_params(manual_lowpass());
+  full.set_params(manual_lowpass());
+  for (double x : {0.0, 5.0, -2.0, 1000.0, 0.0, 0.0}) EXPECT_EQ(bypass.step(x), full.step(x));
+}

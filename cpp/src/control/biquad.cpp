@@ -133,6 +133,7 @@ void Biquad::set_params(const BiquadParams& params) {
     f2_ = -f.a2;
     div_ = 1.0;
   }
+  bypass_ = n0_ == 1.0 && div_ == 1.0 && n1_ == 0.0 && n2_ == 0.0 && f1_ == 0.0 && f2_ == 0.0;
 }
 
 }  // namespace servobench::control

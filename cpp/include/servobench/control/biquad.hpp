@@ -77,7 +77,10 @@ class Biquad {
   void reset() { x1_ = x2_ = y1_ = y2_ = 0.0; }
 
   double step(double x) {
-    const double y = (n0_ * x + n1_ * x1_ + n2_ * x2_ + f1_ * y1_ + f2_ * y2_) / div_;
+    // Pass-through (B0 = DIV = 1, all else 0: the card's default): y = x, which is exactly what the full expression
+    // gives (1*x + 0*... = x, /1 exact); skips the division on the tick's critical path. The history is kept current,
+    // so coefficients set later see the same past as if the expression had been evaluated.
+    const double y = bypass_ ? x : (n0_ * x + n1_ * x1_ + n2_ * x2_ + f1_ * y1_ + f2_ * y2_) / div_;
     x2_ = x1_;
     x1_ = x;
     y2_ = y1_;
@@ -87,6 +90,7 @@ class Biquad {
 
  private:
   double n0_ = 1, n1_ = 0, n2_ = 0, f1_ = 0, f2_ = 0, div_ = 1;
+  bool bypass_ = true;
   double x1_ = 0, x2_ = 0, y1_ = 0, y2_ = 0;
 };
 
