@@ -80,7 +80,12 @@ class Biquad {
     // Pass-through (B0 = DIV = 1, all else 0: the card's default): y = x, which is exactly what the full expression
     // gives (1*x + 0*... = x, /1 exact); skips the division on the tick's critical path. The history is kept current,
     // so coefficients set later see the same past as if the expression had been evaluated.
-    const double y = bypass_ ? x : (n0_ * x + n1_ * x1_ + n2_ * x2_ + f1_ * y1_ + f2_ * y2_) / div_;
+    // Dividing by DIV = 1 (every float-form filter) is exact, so it is skipped too.
+    double y = x;
+    if (!bypass_) {
+      y = n0_ * x + n1_ * x1_ + n2_ * x2_ + f1_ * y1_ + f2_ * y2_;
+      if (div_ != 1.0) y /= div_;
+    }
     x2_ = x1_;
     x1_ = x;
     y2_ = y1_;
