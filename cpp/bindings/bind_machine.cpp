@@ -2,6 +2,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -57,6 +58,32 @@ machine::LawParams law_from(const py::handle& law) {
   throw py::type_error("law must be a GtServoLaw or an ApsServoLaw, got " + py::str(py::type::of(law)).cast<std::string>());
 }
 
+control::BiquadParams filter_from(const py::handle& f, std::size_t index) {
+  if (f.is_none()) return control::AdlinkBiquadParams{};
+  if (py::isinstance<control::FloatBiquadParams>(f)) return f.cast<control::FloatBiquadParams>();
+  if (py::isinstance<control::AdlinkBiquadParams>(f)) return f.cast<control::AdlinkBiquadParams>();
+  throw py::type_error("filters[" + std::to_string(index) + "] must be None, a FloatBiquad or an AdlinkBiquad, got " +
+                       py::str(py::type::of(f)).cast<std::string>());
+}
+
+std::array<control::BiquadParams, 2> filters_from(const py::object& filters) {
+  std::array<control::BiquadParams, 2> out{control::AdlinkBiquadParams{}, control::AdlinkBiquadParams{}};
+  if (filters.is_none()) return out;
+  if (!py::isinstance<py::sequence>(filters) || py::isinstance<py::str>(filters))
+    throw py::type_error("filters must be a pair (filter 0, filter 1), each None, a FloatBiquad or an AdlinkBiquad");
+  const py::sequence seq = filters;
+  if (seq.size() != 2)
+    throw py::value_error("filters must hold exactly 2 entries (biquad 0, biquad 1; ADLINK L1735), got " +
+                          std::to_string(seq.size()));
+  for (std::size_t i = 0; i < 2; ++i) out[i] = filter_from(seq[i], i);
+  return out;
+}
+
+py::tuple filters_to_python(const std::array<control::BiquadParams, 2>& filters) {
+  return py::make_tuple(std::visit([](const auto& p) { return py::cast(p); }, filters[0]),
+                        std::visit([](const auto& p) { return py::cast(p); }, filters[1]));
+}
+
 Array checked_array(const py::handle& obj, const char* name, py::ssize_t expected) {
   Array a = Array::ensure(obj);
   if (!a) throw py::type_error(std::string(name) + " must be a 1-D array of numbers");
@@ -85,7 +112,7 @@ void bind_machine(py::module_& m) {
   py::class_<Axis>(m, "Axis", "One simulated servo axis (C++ core). Use servobench.Axis.")
       .def(py::init([](const py::object& law, const py::object& drv, const py::object& plant,
                        const plant::EncoderParams& enc, const drive::DacParams& dac, const plant::SwitchParams& sw,
-                       std::optional<double> servo_period_s, double substeps) {
+                       std::optional<double> servo_period_s, double substeps, const py::object& filters) {
              check_integer("Axis", "substeps", substeps, 1, 1000);
              AxisConfig c;
              c.law = law_from(law);
@@ -96,10 +123,12 @@ void bind_machine(py::module_& m) {
              c.dac = dac;
              c.servo_period_s = servo_period_s;
              c.substeps = static_cast<int>(substeps);
+             c.filters = filters_from(filters);
              return Axis(c);
            }),
            py::kw_only(), py::arg("law"), py::arg("drive"), py::arg("plant"), py::arg("encoder"), py::arg("dac"),
-           py::arg("switches"), py::arg("servo_period_s") = py::none(), py::arg("substeps") = 1.0)
+           py::arg("switches"), py::arg("servo_period_s") = py::none(), py::arg("substeps") = 1.0,
+           py::arg("filters") = py::none())
       .def("reset", &Axis::reset, py::arg("angle_rad") = 0.0)
       .def("set_law", [](Axis& a, const py::object& law) { a.set_law(law_from(law)); }, py::arg("law"))
       .def_property_readonly("law", [](const Axis& a) -> py::object {
@@ -112,6 +141,8 @@ void bind_machine(py::module_& m) {
         return std::visit([](const auto& p) { return py::cast(p); }, a.config().plant);
       })
       .def_property_readonly("switches", [](const Axis& a) { return a.config().switches; })
+      .def("set_filters", [](Axis& a, const py::object& f) { a.set_filters(filters_from(f)); }, py::arg("filters"))
+      .def_property_readonly("filters", [](const Axis& a) { return filters_to_python(a.config().filters); })
       .def_property_readonly("encoder", [](const Axis& a) { return a.config().encoder; })
       .def_property_readonly("dac", [](const Axis& a) { return a.config().dac; })
       .def_property_readonly("servo_period_s", &Axis::servo_period_s)

@@ -5,6 +5,7 @@ namespace py = pybind11;
 
 namespace servobench::bindings {
 void bind_control(py::module_& m);
+void bind_filters(py::module_& m);
 void bind_drive(py::module_& m);
 void bind_plant(py::module_& m);
 void bind_motion(py::module_& m);
@@ -21,6 +22,7 @@ PYBIND11_MODULE(_core, m) {
     }
   });
   servobench::bindings::bind_control(m);
+  servobench::bindings::bind_filters(m);
   servobench::bindings::bind_drive(m);
   servobench::bindings::bind_plant(m);
   servobench::bindings::bind_motion(m);

@@ -17,9 +17,11 @@ Quick use::
 """
 
 from ._core import (
+    AdlinkBiquad,
     ApsServoLaw,
     Dac,
     Encoder,
+    FloatBiquad,
     GtServoLaw,
     RigidPlant,
     ServoPositionDrive,
@@ -33,16 +35,18 @@ from .axis import Axis, AxisRun, SIGNALS, SIGNAL_UNITS
 from .trajectory import Trajectory, trapezoid_move
 from .metrics import MoveMetrics, move_metrics
 from .examples import demo_axis
-from . import plot
+from . import design, plot
 
 __version__ = "0.1.0"
 
 __all__ = [
+    "AdlinkBiquad",
     "ApsServoLaw",
     "Axis",
     "AxisRun",
     "Dac",
     "Encoder",
+    "FloatBiquad",
     "GtServoLaw",
     "MoveMetrics",
     "RigidPlant",
@@ -56,6 +60,7 @@ __all__ = [
     "VelocityDrive",
     "Trajectory",
     "demo_axis",
+    "design",
     "move_metrics",
     "plot",
     "trapezoid_move",

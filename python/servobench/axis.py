@@ -25,7 +25,7 @@ class AxisRun:
 
     ``time_s`` s; ``cmd_pos`` pulse; ``cmd_vel`` pulse/tick; ``cmd_acc`` pulse/tick^2; ``fb_pos`` pulse;
     ``error`` pulse (cmd_pos - fb_pos); law terms ``p``, ``i``, ``d``, ``vff``, ``aff``, ``bias`` and the law
-    output ``u`` in DAC counts; filter-slot outputs ``biquad0``, ``biquad1`` in counts; ``volts`` V (computed at
+    output ``u`` in DAC counts; biquad outputs ``biquad0``, ``biquad1`` in counts; ``volts`` V (computed at
     the tick, applied from the next); ``current_a`` A; ``torque_nm`` N*m; ``angle_rad`` rad; ``speed_rad_s`` rad/s
     (motor); ``load_angle_rad`` rad; ``load_speed_rad_s`` rad/s; flags (0/1): ``alarm`` (drive alarm), ``index``
     (encoder index passed since the previous tick), ``home_sw``, ``pos_limit_sw``, ``neg_limit_sw``.
@@ -78,7 +78,7 @@ class AxisRun:
 
 
 class Axis:
-    """One simulated servo axis: servo law -> two filter slots -> DAC -> drive -> plant -> encoder.
+    """One simulated servo axis: servo law -> biquad 0 -> biquad 1 -> DAC -> drive -> plant -> encoder.
 
     Parameters (keyword only; each part is a validated parameter object):
 
@@ -103,13 +103,18 @@ class Axis:
         integration sub-steps per tick (1..1000); the linear dynamics are exact for any value, more sub-steps
         resolve friction events more finely. A velocity-mode drive multiplies them by its speed-loop updates per
         tick.
+    filters
+        the two biquads after the law, ``(f0, f1)``; each ``None`` (the card's pass-through, B0 = DIV = 1), a
+        :class:`FloatBiquad` or an :class:`AdlinkBiquad` (see :mod:`servobench.design`). Each must be stable, and a
+        filter bound to a sample time must be bound to this axis's servo period. Their outputs are recorded as
+        ``biquad0`` and ``biquad1`` (counts).
 
     The controller output computed at tick k reaches the drive at tick k+1 (one-tick computation delay).
     The axis keeps its state between :meth:`run` calls; :meth:`reset` returns it to power-on.
     """
 
     def __init__(self, *, law=None, drive=None, plant=None, encoder=None, dac=None, switches=None,
-                 servo_period_s=None, substeps: int = 1):
+                 servo_period_s=None, substeps: int = 1, filters=None):
         self._axis = _core.Axis(
             law=_core.GtServoLaw() if law is None else law,
             drive=_core.TorqueDrive() if drive is None else drive,
@@ -119,6 +124,7 @@ class Axis:
             switches=_core.Switches() if switches is None else switches,
             servo_period_s=servo_period_s,
             substeps=substeps,
+            filters=filters,
         )
 
     # -- parts ------------------------------------------------------------------------------------
@@ -130,6 +136,7 @@ class Axis:
     switches = property(lambda self: self._axis.switches, doc="The switch positions.")
     servo_period_s = property(lambda self: self._axis.servo_period_s, doc="Servo period Ts, s.")
     substeps = property(lambda self: self._axis.substeps, doc="Plant integration sub-steps per tick.")
+    filters = property(lambda self: self._axis.filters, doc="The two biquads (f0, f1) after the law.")
     tick = property(lambda self: self._axis.tick, doc="Ticks run since power-on/reset.")
     feedback_pulse = property(lambda self: self._axis.feedback_pulse, doc="Encoder reading now, pulse.")
     angle_rad = property(lambda self: self._axis.angle_rad, doc="Motor angle now, rad.")
@@ -145,7 +152,7 @@ class Axis:
     def __repr__(self) -> str:
         return (f"Axis(law={self.law!r}, drive={self.drive!r}, plant={self.plant!r}, encoder={self.encoder!r}, "
                 f"dac={self.dac!r}, switches={self.switches!r}, servo_period_s={self.servo_period_s!r}, "
-                f"substeps={self.substeps})")
+                f"substeps={self.substeps}, filters={self.filters!r})")
 
     # -- control ----------------------------------------------------------------------------------
     def reset(self, angle_rad: float = 0.0) -> None:
@@ -155,6 +162,11 @@ class Axis:
     def set_law(self, law) -> None:
         """Replaces the servo-law parameters from the next tick on (the card's Update)."""
         self._axis.set_law(law)
+
+    def set_filters(self, filters) -> None:
+        """Replaces both biquads' coefficients from the next tick on, ``(f0, f1)`` as in the constructor; their
+        histories are kept (the card's parameter update)."""
+        self._axis.set_filters(filters)
 
     def run(self, command, *, velocities=None, accelerations=None, signals: Iterable[str] | None = None) -> AxisRun:
         """Runs one servo tick per command sample and returns what was recorded.

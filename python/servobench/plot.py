@@ -129,3 +129,46 @@ def friction_curve(plant, speed_rad_s=None, *, side: str = "motor", path: str | 
     if path is not None:
         fig.savefig(path, dpi=120)
     return fig
+
+
+def filter_response(*filters, freq_hz=None, sample_time_s: float | None = None, labels=None,
+                    title: str | None = None, path: str | None = None):
+    """Bode plot of one or more biquads (:class:`FloatBiquad` or :class:`AdlinkBiquad`): magnitude in dB and
+    phase in degrees over frequency in Hz (log axis).
+
+    freq_hz
+        frequencies in Hz; default 2000 points log-spaced from Nyquist/10^4 to just below Nyquist.
+    sample_time_s
+        sample time in s for filters not bound to one (``sample_time_s == 0``); default: each filter's own.
+    labels
+        legend entries, one per filter (default: the class name and index).
+
+    Returns the matplotlib Figure; writes it to `path` if given.
+    """
+    if not filters:
+        raise ValueError("filter_response: give at least one filter")
+    plt = _pyplot()
+    ts_all = [sample_time_s or f.sample_time_s for f in filters]
+    if any(not ts for ts in ts_all):
+        raise ValueError("filter_response: a filter is not bound to a sample time; pass sample_time_s (s)")
+    if freq_hz is None:
+        nyq = 0.5 / min(ts_all)
+        freq_hz = np.logspace(np.log10(nyq * 1e-4), np.log10(nyq * 0.999), 2000)
+    freq_hz = np.asarray(freq_hz, dtype=float)
+    if labels is None:
+        labels = [f"{type(f).__name__} {i}" for i, f in enumerate(filters)]
+    fig, (ax_m, ax_p) = plt.subplots(2, 1, sharex=True, figsize=(8, 6), constrained_layout=True)
+    for f, ts, label in zip(filters, ts_all, labels):
+        h = np.asarray(f.frequency_response(freq_hz, ts))
+        ax_m.semilogx(freq_hz, 20 * np.log10(np.maximum(np.abs(h), 1e-12)), label=label, lw=1.2)
+        ax_p.semilogx(freq_hz, np.degrees(np.angle(h)), label=label, lw=1.2)
+    ax_m.set_ylabel("magnitude [dB]")
+    ax_p.set_ylabel("phase [deg]")
+    ax_p.set_xlabel("frequency [Hz]")
+    for ax in (ax_m, ax_p):
+        ax.grid(True, which="both", alpha=0.3)
+    ax_m.legend(loc="best", fontsize=8)
+    fig.suptitle(title or "servobench: biquad frequency response", fontsize=10)
+    if path is not None:
+        fig.savefig(path, dpi=120)
+    return fig

@@ -1,6 +1,7 @@
 #include "servobench/machine/axis.hpp"
 
 #include <cmath>
+#include <string>
 #include <type_traits>
 
 #include "servobench/common/validate.hpp"
@@ -29,6 +30,22 @@ void AxisConfig::validate_and_complete() {
   if (!servo_period_s) servo_period_s = def;
   check_range("Axis", "servo_period_s", *servo_period_s, lo, hi, source);
   check_integer("Axis", "substeps", substeps, 1, 1000);
+  validate_filters(filters, *servo_period_s);
+}
+
+void validate_filters(const std::array<control::BiquadParams, 2>& filters, double servo_period_s) {
+  for (std::size_t i = 0; i < filters.size(); ++i) {
+    const std::string owner = "Axis.filters[" + std::to_string(i) + "]";
+    std::visit([](const auto& f) { f.validate(); }, filters[i]);
+    control::require_stable(filters[i], owner.c_str());
+    const double ts = std::visit([](const auto& f) { return f.sample_time_s; }, filters[i]);
+    if (ts != 0.0 && std::fabs(ts - servo_period_s) > 1e-9 * servo_period_s) {
+      throw_invalid(owner.c_str(), "sample_time_s", ts,
+                    "does not match the axis servo period " + format_value(servo_period_s) +
+                        " s: the filter was designed for another sample time (redesign it for the axis period, or "
+                        "use sample_time_s = 0 to apply the coefficients as they are)");
+    }
+  }
 }
 
 namespace {
@@ -51,12 +68,13 @@ Axis::Axis(AxisConfig config)
       law_(make_law(config_.law)),
       dac_(config_.dac),
       encoder_(config_.encoder),
-      power_(config_.drive, make_mechanics(config_.plant), *config_.servo_period_s, config_.substeps) {}
+      power_(config_.drive, make_mechanics(config_.plant), *config_.servo_period_s, config_.substeps) {
+  for (std::size_t i = 0; i < biquads_.size(); ++i) biquads_[i].set_params(config_.filters[i]);
+}
 
 void Axis::reset(double angle_rad) {
   std::visit([](auto& law) { law.reset(); }, law_);
-  slot0_.reset();
-  slot1_.reset();
+  for (auto& b : biquads_) b.reset();
   power_.reset(angle_rad);
   encoder_.reset();
   prev_encoder_angle_ = angle_rad;
@@ -83,6 +101,12 @@ void Axis::set_law(const LawParams& law) {
       },
       law_);
   config_.law = law;
+}
+
+void Axis::set_filters(const std::array<control::BiquadParams, 2>& filters) {
+  validate_filters(filters, *config_.servo_period_s);
+  config_.filters = filters;
+  for (std::size_t i = 0; i < biquads_.size(); ++i) biquads_[i].set_params(filters[i]);
 }
 
 void Axis::run(const CommandInput& command, const Trace& trace) {
@@ -118,8 +142,8 @@ void Axis::run_with(Law& law, const CommandInput& command, const Trace& tr) {
     } else {
       power_.set_input(pending_volts_);  // the previous tick's output reaches the drive now
       t = law.step(r, y, v, a);
-      f0 = slot0_.step(t.total);
-      f1 = slot1_.step(f0);
+      f0 = biquads_[0].step(t.total);
+      f1 = biquads_[1].step(f0);
       volts = dac_.convert(law.counts_to_volts(f1));
     }
 

@@ -1,17 +1,18 @@
 // Axis: one simulated servo axis, composed of the layers and stepped one servo tick at a time.
 //
 // The tick (docs/decisions.md, "order inside a tick"):
-//   command -> encoder read -> servo law -> filter slot 0 -> filter slot 1 -> output stage and DAC,
+//   command -> encoder read -> servo law -> biquad 0 -> biquad 1 -> output stage and DAC,
 //   then the drive and mechanics advance over Ts (in `substeps` equal sub-steps) with the DAC voltage of the
 //   previous tick: the controller's output takes effect one tick later, as on the cards' DSPs.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <variant>
 
 #include "servobench/control/aps_servo_law.hpp"
-#include "servobench/control/filter_slot.hpp"
+#include "servobench/control/biquad.hpp"
 #include "servobench/control/gt_servo_law.hpp"
 #include "servobench/drive/dac.hpp"
 #include "servobench/drive/torque_drive.hpp"
@@ -36,9 +37,15 @@ struct AxisConfig {
   drive::DacParams dac{};
   std::optional<double> servo_period_s;  // s; empty: the law's card default (GT 200 us, APS 250 us)
   int substeps = 1;             // plant integration sub-steps per tick, 1..1000 (bindings check the range)
+  // The two biquads after the law (ADLINK L1735, L1873-1887), float or ADLINK integer form; default: the card's
+  // pass-through (B0 = DIV = 1). Each must be stable and, if bound to a sample time, bound to this axis's period.
+  std::array<control::BiquadParams, 2> filters{control::AdlinkBiquadParams{}, control::AdlinkBiquadParams{}};
   // Validates every part and the servo period against the law's card range; fills the default period.
   void validate_and_complete();
 };
+
+// Validates both filters for an axis with the given servo period (s): parameters, stability, sample time.
+void validate_filters(const std::array<control::BiquadParams, 2>& filters, double servo_period_s);
 
 // Command input for `run`: n positions (pulse); velocities/accelerations optional (null: backward
 // differences of the positions, pulse/tick and pulse/tick^2).
@@ -61,6 +68,8 @@ class Axis {
   void reset(double angle_rad = 0.0);
   // Replaces the servo-law parameters at the next tick (the card's Update); the law keeps its memories.
   void set_law(const LawParams& law);
+  // Replaces both biquads' coefficients at the next tick; their histories are kept (validated first).
+  void set_filters(const std::array<control::BiquadParams, 2>& filters);
 
   // Runs n ticks; continues from the current state. Fills the non-null buffers of `trace`.
   void run(const CommandInput& command, const Trace& trace);
@@ -83,7 +92,7 @@ class Axis {
 
   AxisConfig config_;
   std::variant<control::GtServoLaw, control::ApsServoLaw> law_;
-  control::FilterSlot slot0_, slot1_;
+  std::array<control::Biquad, 2> biquads_;
   drive::Dac dac_;
   plant::Encoder encoder_;
   PowerTrain power_;
