@@ -40,7 +40,8 @@ Profile plan_t_curve(const MotionState& from, double target, const TCurveLimits&
     d_change = w * w / (2.0 * A);
   }
   double cruise = vp > 0.0 ? (D - d_change) / vp : 0.0;
-  if (cruise < 0.0) cruise = 0.0;
+  // A triangle (vp below V, reached by accelerating) has no cruise; a rounding residue is not one.
+  if (cruise < 0.0 || (vp < V && vp > w)) cruise = 0.0;
   prof.push_with_acc(std::fabs(vp - w) / A, vp >= w ? s * A : -s * A, 0.0);
   prof.push_with_acc(cruise, 0.0, 0.0);
   prof.push_with_acc(vp / A, -s * A, 0.0);
