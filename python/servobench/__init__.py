@@ -28,11 +28,36 @@ from .axis import Axis, AxisRun, SIGNALS, SIGNAL_UNITS
 from .trajectory import Trajectory, trapezoid_move
 from .metrics import MoveMetrics, move_metrics
 from .examples import demo_axis
-from . import plot
+from . import motion, plot
+from .motion import (
+    AdlinkPtp,
+    GeJog,
+    GeSCurve,
+    GeTCurve,
+    GtJog,
+    GtSCurve,
+    GtTCurve,
+    MotionCommandRefused,
+    ProfileGenerator,
+    jog_trajectory,
+    move_trajectory,
+)
 
 __version__ = "0.1.0"
 
 __all__ = [
+    "AdlinkPtp",
+    "GeJog",
+    "GeSCurve",
+    "GeTCurve",
+    "GtJog",
+    "GtSCurve",
+    "GtTCurve",
+    "MotionCommandRefused",
+    "ProfileGenerator",
+    "jog_trajectory",
+    "motion",
+    "move_trajectory",
     "ApsServoLaw",
     "Axis",
     "AxisRun",

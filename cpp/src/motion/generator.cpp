@@ -20,8 +20,51 @@ const char* to_string(ProfileMode mode) {
   return "?";
 }
 
-ProfileGenerator::ProfileGenerator(double start_pos) : profile_(Profile::rest(start_pos)) {
+ProfileGenerator::ProfileGenerator(double start_pos, double period_s)
+    : profile_(Profile::rest(start_pos)), period_s_(period_s) {
+  if (!std::isfinite(start_pos)) throw_invalid("ProfileGenerator", "start_pos", start_pos, "must be a finite number");
+  check_range("ProfileGenerator", "period_s", period_s, 1e-6, 1.0, "s");
   state_ = profile_.start();
+}
+
+void ProfileGenerator::command(const GtTCurveParams& p) {
+  p.validate();
+  move_t_curve(p.pos, p.limits());
+}
+void ProfileGenerator::command(const GtSCurveParams& p) {
+  p.validate();
+  move_s_curve(p.pos, p.limits());
+}
+void ProfileGenerator::command(const GtJogParams& p) {
+  p.validate();
+  jog(p.vel, p.acc);
+}
+void ProfileGenerator::command(const GeTCurveParams& p) {
+  p.validate();
+  move_t_curve(p.pos, p.limits(period_s_));
+}
+void ProfileGenerator::command(const GeSCurveParams& p) {
+  p.validate();
+  move_s_curve(p.pos, p.limits(period_s_));
+}
+void ProfileGenerator::command(const GeJogParams& p) {
+  p.validate();
+  jog(p.vel_per_tick(period_s_), p.acc_per_tick(period_s_));
+}
+void ProfileGenerator::command(const AdlinkPtpParams& p) {
+  p.validate();
+  move_adlink_ptp(p.pos, p.limits(period_s_));
+}
+void ProfileGenerator::adlink_velocity(double vel_pulse_per_s, const AdlinkPtpParams& p) {
+  p.validate();
+  check_range("adlink_velocity", "vel_pulse_per_s", vel_pulse_per_s, -p.vm, p.vm, "-vm..vm");
+  move_adlink_velocity(vel_pulse_per_s * period_s_, p.limits(period_s_));
+}
+void ProfileGenerator::adlink_stop_move(const AdlinkPtpParams& p) {
+  p.validate();
+  if (!moving()) return;
+  const double dec = p.sd_dec_per_tick(period_s_);
+  smooth_stop_with(dec, adlink_ramp_jerk(state_.vel, dec, p.sf));
 }
 
 bool ProfileGenerator::moving() const {

@@ -1,6 +1,7 @@
 // Range checks for motion parameters, on top of servobench/common/validate.hpp.
 #pragma once
 
+#include <cmath>
 #include <string>
 
 #include "servobench/common/validate.hpp"
@@ -11,9 +12,10 @@ namespace servobench::motion {
 // acceleration is inside the manuals' ranges but a move planned with it never finishes).
 inline void check_motion_value(const char* owner, const char* field, double value, double lo, double hi,
                                const char* source, bool nonzero = true, bool open_hi = false) {
-  check_range(owner, field, value, lo, hi, source);
   const std::string range = format_value(lo) + (open_hi ? " <= x < " : "..") + format_value(hi) + " (" + source + ")";
-  if (open_hi && value >= hi) throw_invalid(owner, field, value, "is outside the allowed range " + range);
+  if (!std::isfinite(value)) throw_invalid(owner, field, value, "is not a finite number; the allowed range is " + range);
+  if (value < lo || value > hi || (open_hi && value >= hi))
+    throw_invalid(owner, field, value, "is outside the allowed range " + range);
   if (nonzero && value == 0.0)
     throw_invalid(owner, field, value, "must be non-zero for a move to finish; the manual's range is " + range);
 }

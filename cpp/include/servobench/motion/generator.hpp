@@ -18,6 +18,7 @@
 #include <string>
 
 #include "servobench/motion/adlink_profile.hpp"
+#include "servobench/motion/jog.hpp"
 #include "servobench/motion/profile.hpp"
 #include "servobench/motion/s_curve.hpp"
 #include "servobench/motion/t_curve.hpp"
@@ -35,7 +36,23 @@ const char* to_string(ProfileMode mode);
 
 class ProfileGenerator {
  public:
-  explicit ProfileGenerator(double start_pos = 0.0);
+  // period_s: the tick in seconds, used to convert the pulse/ms (GE, GUC-ECAT, iDEABOX) and pulse/s (ADLINK)
+  // parameters; GT parameters are per tick already.
+  explicit ProfileGenerator(double start_pos = 0.0, double period_s = 200e-6);
+
+  // The manuals' commands with their own parameter sets (validated, converted to ticks, then as below).
+  void command(const GtTCurveParams& p);
+  void command(const GtSCurveParams& p);
+  void command(const GtJogParams& p);
+  void command(const GeTCurveParams& p);
+  void command(const GeSCurveParams& p);
+  void command(const GeJogParams& p);
+  void command(const AdlinkPtpParams& p);
+  // ADLINK APS_vel: velocity move to the signed `vel_pulse_per_s` with p's ACC, DEC and S-factor.
+  void adlink_velocity(double vel_pulse_per_s, const AdlinkPtpParams& p);
+  // ADLINK APS_stop_move: decelerate at PRA_SD_DEC (p.sd_dec, or p.dec if 0) with p's S-factor.
+  void adlink_stop_move(const AdlinkPtpParams& p);
+  double period_s() const { return period_s_; }
 
   // GT/GE T-curve: start a move to `target` (pulse), or change target/velocity on the fly.
   void move_t_curve(double target, const TCurveLimits& lim);
@@ -78,6 +95,7 @@ class ProfileGenerator {
   Profile profile_;
   MotionState state_;
   double t_ = 0.0;
+  double period_s_ = 200e-6;
   ProfileMode mode_ = ProfileMode::TCurve;  // reset default: T-curve (GT HardRst [5], L4130)
   bool stopping_ = false;
   TCurveLimits t_lim_{};
