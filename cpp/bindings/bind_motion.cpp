@@ -6,6 +6,7 @@
 #include "param_class.hpp"
 #include "servobench/common/validate.hpp"
 #include "servobench/motion/adlink_profile.hpp"
+#include "servobench/motion/gear.hpp"
 #include "servobench/motion/generator.hpp"
 #include "servobench/motion/jog.hpp"
 #include "servobench/motion/s_curve.hpp"
@@ -169,6 +170,37 @@ void bind_motion(py::module_& m) {
         return "ProfileGenerator(mode=" + std::string(to_string(g.mode())) + ", pos=" + format_value(g.state().pos) +
                ", vel=" + format_value(g.state().vel) + " pulse/tick, moving=" + (g.moving() ? "True" : "False") + ")";
       });
+
+  ParamClass<GtGearParams>(m, "GtGear",
+      "GT_PrflG(master) + GT_SetRatio electronic gear (GT manual L1029-1090): slave increment = ratio x master\n"
+      "increment.")
+      .field("master", &GtGearParams::master, "master: 1-4 axes, 5-6 auxiliary encoders (L1042)")
+      .field("ratio", &GtGearParams::ratio, "gear ratio, -16384..16384; negative reverses (L1043)")
+      .finish();
+  py::class_<ElectronicGear>(m, "ElectronicGear",
+      "Electronic gear slave (GT L1029-1090), stepped once per tick with the master's whole-pulse position.\n"
+      "Drift-free: slave = base + ratio * (master - master_base); the fraction of a pulse stays inside.")
+      .def(py::init<double, long long, double>(), py::kw_only(), py::arg("ratio"), py::arg("master_pos") = 0,
+           py::arg("slave_pos") = 0.0)
+      .def("set_ratio", &ElectronicGear::set_ratio, py::arg("ratio"), py::arg("master_pos"),
+           "Change the ratio from now on, rebasing at master_pos (pulse): no jump.")
+      .def("step", [](ElectronicGear& g, long long master_pos) { return state_tuple(g.step(master_pos)); },
+           py::arg("master_pos"), "One tick: returns (pos pulse, vel pulse/tick, acc pulse/tick^2, jerk).")
+      .def("follow", [](ElectronicGear& g, py::array_t<long long, py::array::c_style | py::array::forcecast> master) {
+             py::array_t<double> out(master.size());
+             {
+               py::gil_scoped_release release;
+               for (py::ssize_t i = 0; i < master.size(); ++i) {
+                 g.step(master.data()[i]);
+                 out.mutable_data()[i] = static_cast<double>(g.reported_pos());
+               }
+             }
+             return out;
+           }, py::arg("master_pos"), "Steps once per master sample (whole pulses); returns the slave's whole pulses.")
+      .def_property_readonly("ratio", &ElectronicGear::ratio)
+      .def_property_readonly("reported_pos", &ElectronicGear::reported_pos)
+      .def_property_readonly("remainder", &ElectronicGear::remainder, "fraction of a pulse not yet reported")
+      .def_property_readonly("state", [](const ElectronicGear& g) { return state_tuple(g.state()); });
 
   m.def(
       "plan_s_curve_batch",

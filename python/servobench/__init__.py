@@ -31,6 +31,8 @@ from .examples import demo_axis
 from . import motion, plot
 from .motion import (
     AdlinkPtp,
+    ElectronicGear,
+    GtGear,
     GeJog,
     GeSCurve,
     GeTCurve,
@@ -47,6 +49,8 @@ __version__ = "0.1.0"
 
 __all__ = [
     "AdlinkPtp",
+    "ElectronicGear",
+    "GtGear",
     "GeJog",
     "GeSCurve",
     "GeTCurve",

@@ -21,6 +21,8 @@ import numpy as np
 from . import _core
 from ._core import (
     AdlinkPtp,
+    ElectronicGear,
+    GtGear,
     GeJog,
     GeSCurve,
     GeTCurve,
@@ -36,7 +38,7 @@ from ._core import (
 from .trajectory import Trajectory
 
 __all__ = [
-    "AdlinkPtp", "GeJog", "GeSCurve", "GeTCurve", "GtJog", "GtSCurve", "GtTCurve", "MotionCommandRefused",
+    "AdlinkPtp", "ElectronicGear", "GtGear", "GeJog", "GeSCurve", "GeTCurve", "GtJog", "GtSCurve", "GtTCurve", "MotionCommandRefused",
     "ProfileGenerator", "jog_trajectory", "move_trajectory", "plan_s_curve_batch", "s_curve_min_time",
     "t_curve_min_time", "trajectory_from_samples",
 ]

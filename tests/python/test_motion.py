@@ -20,6 +20,7 @@ GOOD = {
     sb.GeSCurve: dict(pos=1000, vel=10, macc=1, jerk=0.1),
     sb.GeJog: dict(vel=10, acc=1),
     sb.AdlinkPtp: dict(pos=1000, vs=0, vm=1000, ve=0, acc=1e4, dec=1e4, sf=0.5, sd_dec=0),
+    sb.GtGear: dict(master=2, ratio=-1),
 }
 
 # (class, field, bad values, text expected in the message); ranges: GT L854-858, L929-930, L994-995;
@@ -51,6 +52,8 @@ BAD = [
     (sb.AdlinkPtp, "dec", [0, NAN], "0..1e+12"),
     (sb.AdlinkPtp, "sf", [-0.1, 1.1, NAN], "0..1 (ADLINK L2213-2219)"),
     (sb.AdlinkPtp, "sd_dec", [-1, 2e12], "0..1e+12"),
+    (sb.GtGear, "master", [0, 7, 1.5, NAN], "1..6 (GT L1042)"),
+    (sb.GtGear, "ratio", [16384.5, -16385, INF], "-16384..16384 (GT L1043)"),
 ]
 
 
@@ -168,3 +171,14 @@ def test_batch_planner_matches_the_closed_form():
         assert d[i] == pytest.approx(sb.motion.s_curve_min_time(target[i], vel[i], acc[i], jerk[i]), rel=1e-12)
     with pytest.raises(ValueError, match="index 3"):
         sb.motion.plan_s_curve_batch(start[:5], target[:5], vel[:5], np.array([1, 1, 1, 0, 1.0]), jerk[:5])
+
+
+def test_gear_tv10_tv11_from_python():
+    # GT TV10 (000 L1055-1059) and TV11 (000 L4425-4435): ratio -1; chained -1.5 then 0.5.
+    master = sb.move_trajectory(sb.GtTCurve(pos=40000, vel=7, acc=0.1)).pos.astype(np.int64)
+    s1 = sb.ElectronicGear(ratio=-1.5).follow(master)
+    s3 = sb.ElectronicGear(ratio=0.5).follow(s1.astype(np.int64))
+    assert s1[-1] == -60000 and s3[-1] == -30000
+    assert np.array_equal(sb.ElectronicGear(ratio=-1).follow(master), -master)
+    with pytest.raises(ValueError, match="ElectronicGear.ratio = 20000"):
+        sb.ElectronicGear(ratio=20000)
