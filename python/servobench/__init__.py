@@ -36,11 +36,41 @@ from .trajectory import Trajectory, trapezoid_move
 from .metrics import MoveMetrics, move_metrics
 from .examples import demo_axis
 from . import design, plot
+from . import motion
+from .motion import (
+    AdlinkPtp,
+    ElectronicGear,
+    GtGear,
+    GeJog,
+    GeSCurve,
+    GeTCurve,
+    GtJog,
+    GtSCurve,
+    GtTCurve,
+    MotionCommandRefused,
+    ProfileGenerator,
+    jog_trajectory,
+    move_trajectory,
+)
 
 __version__ = "0.1.0"
 
 __all__ = [
     "AdlinkBiquad",
+    "AdlinkPtp",
+    "ElectronicGear",
+    "GtGear",
+    "GeJog",
+    "GeSCurve",
+    "GeTCurve",
+    "GtJog",
+    "GtSCurve",
+    "GtTCurve",
+    "MotionCommandRefused",
+    "ProfileGenerator",
+    "jog_trajectory",
+    "motion",
+    "move_trajectory",
     "ApsServoLaw",
     "Axis",
     "AxisRun",

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Optional
 
 import numpy as np
 
@@ -12,15 +13,17 @@ from . import _core
 @dataclass(frozen=True)
 class Trajectory:
     """A command sampled once per servo tick: position (pulse), velocity (pulse/tick), acceleration
-    (pulse/tick^2), as NumPy arrays of equal length."""
+    (pulse/tick^2), as NumPy arrays of equal length; optionally the jerk (pulse/tick^3) for the motion
+    generators' trajectories."""
 
     pos: np.ndarray
     vel: np.ndarray
     acc: np.ndarray
+    jerk: Optional[np.ndarray] = None
 
     def __post_init__(self):
         n = len(self.pos)
-        if len(self.vel) != n or len(self.acc) != n:
+        if len(self.vel) != n or len(self.acc) != n or (self.jerk is not None and len(self.jerk) != n):
             raise ValueError(f"Trajectory: pos, vel and acc must have equal lengths, got {n}, {len(self.vel)}, "
                              f"{len(self.acc)}")
 

@@ -1,0 +1,182 @@
+#include "servobench/motion/generator.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "servobench/common/validate.hpp"
+#include "servobench/motion/jog.hpp"
+#include "servobench/motion/stop.hpp"
+
+namespace servobench::motion {
+
+const char* to_string(ProfileMode mode) {
+  switch (mode) {
+    case ProfileMode::TCurve: return "t_curve";
+    case ProfileMode::SCurve: return "s_curve";
+    case ProfileMode::Jog: return "jog";
+    case ProfileMode::AdlinkPtp: return "adlink_ptp";
+    case ProfileMode::AdlinkVelocity: return "adlink_velocity";
+  }
+  return "?";
+}
+
+ProfileGenerator::ProfileGenerator(double start_pos, double period_s)
+    : profile_(Profile::rest(start_pos)), period_s_(period_s) {
+  if (!std::isfinite(start_pos)) throw_invalid("ProfileGenerator", "start_pos", start_pos, "must be a finite number");
+  check_range("ProfileGenerator", "period_s", period_s, 1e-6, 1.0, "s");
+  state_ = profile_.start();
+}
+
+void ProfileGenerator::command(const GtTCurveParams& p) {
+  p.validate();
+  move_t_curve(p.pos, p.limits());
+}
+void ProfileGenerator::command(const GtSCurveParams& p) {
+  p.validate();
+  move_s_curve(p.pos, p.limits());
+}
+void ProfileGenerator::command(const GtJogParams& p) {
+  p.validate();
+  jog(p.vel, p.acc);
+}
+void ProfileGenerator::command(const GeTCurveParams& p) {
+  p.validate();
+  move_t_curve(p.pos, p.limits(period_s_));
+}
+void ProfileGenerator::command(const GeSCurveParams& p) {
+  p.validate();
+  move_s_curve(p.pos, p.limits(period_s_));
+}
+void ProfileGenerator::command(const GeJogParams& p) {
+  p.validate();
+  jog(p.vel_per_tick(period_s_), p.acc_per_tick(period_s_));
+}
+void ProfileGenerator::command(const AdlinkPtpParams& p) {
+  p.validate();
+  move_adlink_ptp(p.pos, p.limits(period_s_));
+}
+void ProfileGenerator::adlink_velocity(double vel_pulse_per_s, const AdlinkPtpParams& p) {
+  p.validate();
+  check_range("adlink_velocity", "vel_pulse_per_s", vel_pulse_per_s, -p.vm, p.vm, "-vm..vm");
+  move_adlink_velocity(vel_pulse_per_s * period_s_, p.limits(period_s_));
+}
+void ProfileGenerator::adlink_stop_move(const AdlinkPtpParams& p) {
+  p.validate();
+  if (!moving()) return;
+  const double dec = p.sd_dec_per_tick(period_s_);
+  smooth_stop_with(dec, adlink_ramp_jerk(state_.vel, dec, p.sf));
+}
+
+bool ProfileGenerator::moving() const {
+  if (profile_.open_ended()) return true;
+  return t_ < profile_.duration();
+}
+
+long long ProfileGenerator::reported_pos() const { return std::llround(state_.pos); }
+
+void ProfileGenerator::start(const Profile& p) {
+  profile_ = p;
+  t_ = 0.0;
+  state_ = profile_.at(0.0);
+}
+
+void ProfileGenerator::refuse_if_other_mode_moving(ProfileMode wanted, const char* cmd) const {
+  if (!moving()) return;
+  if (stopping_)
+    throw MotionCommandRefused(std::string(cmd) +
+                               ": refused during a smooth stop; new motion parameters only after it completes "
+                               "(GE L1312)");
+  if (mode_ != wanted)
+    throw MotionCommandRefused(std::string(cmd) + ": refused, the axis is moving in " + to_string(mode_) +
+                               " mode; the mode can change only when the motion has ended (GT L837, GE L310)");
+}
+
+void ProfileGenerator::move_t_curve(double target, const TCurveLimits& lim) {
+  lim.validate();
+  refuse_if_other_mode_moving(ProfileMode::TCurve, "move_t_curve");
+  if (moving() && lim.acc != t_lim_.acc)
+    throw MotionCommandRefused("move_t_curve: the acceleration may not change during a T-curve motion (GE L315, "
+                               "L1067-1071); only the target and the velocity may");
+  mode_ = ProfileMode::TCurve;
+  t_lim_ = lim;
+  start(plan_t_curve(state_, target, lim));
+}
+
+void ProfileGenerator::move_s_curve(double target, const SCurveLimits& lim) {
+  lim.validate();
+  refuse_if_other_mode_moving(ProfileMode::SCurve, "move_s_curve");
+  if (moving() && (lim.vel != s_lim_.vel || lim.acc != s_lim_.acc || lim.jerk != s_lim_.jerk))
+    throw MotionCommandRefused("move_s_curve: only the target position may change during an S-curve motion "
+                               "(GT L909, GE L1179-1183)");
+  mode_ = ProfileMode::SCurve;
+  s_lim_ = lim;
+  start(plan_s_curve(state_, target, lim));
+}
+
+void ProfileGenerator::jog(double vel, double acc) {
+  check_positive("jog", "acc", acc);
+  if (!std::isfinite(vel)) throw_invalid("jog", "vel", vel, "must be a finite number");
+  refuse_if_other_mode_moving(ProfileMode::Jog, "jog");
+  mode_ = ProfileMode::Jog;
+  jog_acc_ = acc;
+  start(plan_jog(state_, vel, acc));
+}
+
+void ProfileGenerator::move_adlink_ptp(double target, const AdlinkLimits& lim) {
+  if (moving())
+    throw MotionCommandRefused(
+        "move_adlink_ptp: on-the-fly ADLINK changes (L2757-2767) are not implemented yet; wait for the motion to end");
+  mode_ = ProfileMode::AdlinkPtp;
+  adlink_ = lim;
+  start(plan_adlink_ptp(state_.pos, target, lim));
+}
+
+void ProfileGenerator::move_adlink_velocity(double vel, const AdlinkLimits& lim) {
+  refuse_if_other_mode_moving(ProfileMode::AdlinkVelocity, "move_adlink_velocity");
+  mode_ = ProfileMode::AdlinkVelocity;
+  adlink_ = lim;
+  start(plan_adlink_velocity(state_, vel, lim));
+}
+
+void ProfileGenerator::smooth_stop() {
+  if (!moving()) return;
+  const double inf = std::numeric_limits<double>::infinity();
+  switch (mode_) {
+    case ProfileMode::TCurve: smooth_stop_with(t_lim_.acc, inf); break;
+    case ProfileMode::SCurve: smooth_stop_with(s_lim_.acc, s_lim_.jerk); break;
+    case ProfileMode::Jog: smooth_stop_with(jog_acc_, inf); break;
+    case ProfileMode::AdlinkPtp:
+    case ProfileMode::AdlinkVelocity:
+      stopping_ = true;
+      start(plan_adlink_stop(state_, adlink_.dec, adlink_.sf));
+      break;
+  }
+}
+
+void ProfileGenerator::smooth_stop_with(double acc, double jerk) {
+  check_positive("smooth_stop", "acc", acc);
+  if (!(jerk > 0)) throw_invalid("smooth_stop", "jerk", jerk, "must be > 0 (inf = linear ramp)");
+  if (!moving()) return;
+  stopping_ = true;
+  start(plan_smooth_stop(state_, acc, jerk));
+}
+
+void ProfileGenerator::abrupt_stop() {
+  stopping_ = false;
+  start(plan_abrupt_stop(state_));
+}
+
+void ProfileGenerator::set_position(double pos) {
+  if (!std::isfinite(pos)) throw_invalid("set_position", "pos", pos, "must be a finite number");
+  if (moving()) throw MotionCommandRefused("set_position: only at rest (GT L1429, L4617)");
+  start(Profile::rest(pos));
+}
+
+const MotionState& ProfileGenerator::step() {
+  t_ += 1.0;
+  state_ = profile_.at(t_);
+  if (stopping_ && !moving()) stopping_ = false;
+  return state_;
+}
+
+}  // namespace servobench::motion
