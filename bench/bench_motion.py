@@ -17,6 +17,7 @@ from __future__ import annotations
 import argparse
 import datetime
 import os
+import importlib
 import pathlib
 import platform
 import subprocess
@@ -43,6 +44,7 @@ def import_ruckig():
         except ImportError:
             subprocess.check_call([sys.executable, "-m", "pip", "install", "--quiet", "--target", str(DEPS),
                                    "ruckig"])
+            importlib.invalidate_caches()  # the path entry was cached before the install created the package
             import ruckig  # noqa: F401
     import ruckig
     return ruckig
