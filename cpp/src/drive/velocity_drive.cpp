@@ -7,8 +7,7 @@
 
 namespace servobench::drive {
 
-void VelocityDriveParams::validate() const {
-  constexpr const char* owner = "VelocityDrive";
+void VelocityDriveParams::validate(const char* owner) const {
   check_positive(owner, "speed_per_volt_rad_s", speed_per_volt_rad_s);
   check_nonnegative(owner, "kp_nms", kp_nms);
   check_nonnegative(owner, "ki_nm_per_rad", ki_nm_per_rad);

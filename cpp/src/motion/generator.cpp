@@ -125,7 +125,7 @@ void ProfileGenerator::jog(double vel, double acc) {
 void ProfileGenerator::move_adlink_ptp(double target, const AdlinkLimits& lim) {
   if (moving())
     throw MotionCommandRefused(
-        "move_adlink_ptp: on-the-fly ADLINK changes (L2757-2767) are not implemented yet; wait for the motion to end");
+        "move_adlink_ptp: this version refuses on-the-fly ADLINK changes (L2757-2767); wait for the motion to end");
   mode_ = ProfileMode::AdlinkPtp;
   adlink_ = lim;
   start(plan_adlink_ptp(state_.pos, target, lim));

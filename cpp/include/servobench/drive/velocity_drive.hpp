@@ -22,7 +22,8 @@ struct VelocityDriveParams {
   double torque_limit_nm = kInf;   // N*m, > 0 (inf = none)
   double current_bw_hz = 1500.0;   // current-loop bandwidth, Hz (inf = ideal)
   double alarm_at_s = kInf;        // drive alarm trip time, s (inf = never)
-  void validate() const;
+  // owner: the parameter object named in messages (a position-mode drive validates its speed loop as its own).
+  void validate(const char* owner = "VelocityDrive") const;
   double max_torque_nm() const;
 };
 

@@ -60,7 +60,7 @@ class ProfileGenerator {
   void move_s_curve(double target, const SCurveLimits& lim);
   // GT/GE jog: ramp at `acc` (pulse/tick^2, linear) to the signed `vel` (pulse/tick) and hold it.
   void jog(double vel, double acc);
-  // ADLINK point to point from rest (on-the-fly ADLINK changes are not implemented yet: refused).
+  // ADLINK point to point from rest (on-the-fly ADLINK changes are refused in this version).
   void move_adlink_ptp(double target, const AdlinkLimits& lim);
   // ADLINK velocity move: ramp (S-factor) to the signed `vel` and hold; may change on the fly.
   void move_adlink_velocity(double vel, const AdlinkLimits& lim);
