@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "servobench/motion/check.hpp"
+#include "servobench/motion/jog.hpp"
 #include "servobench/motion/units.hpp"
 #include "servobench/motion/velocity_change.hpp"
 
@@ -65,19 +66,9 @@ Profile plan_adlink_ptp(double start_pos, double target, const AdlinkLimits& lim
 }
 
 Profile plan_adlink_velocity(const MotionState& from, double vel, const AdlinkLimits& lim) {
-  MotionState start = from;
-  start.jerk = 0.0;
-  Profile prof(start);
-  const double dv = vel - from.vel;
+  // The jog profile with the ADLINK rate (ACC speeding up, DEC slowing down) and the S-factor's jerk.
   const double rate = std::fabs(vel) >= std::fabs(from.vel) ? lim.acc : lim.dec;
-  push_velocity_change(prof, vel, rate, adlink_ramp_jerk(dv, rate, lim.sf));
-  prof.settle_acc();
-  if (vel != 0.0) {
-    prof.push(std::numeric_limits<double>::infinity(), 0.0);
-  } else {
-    prof.finish_at_rest(prof.end().pos);
-  }
-  return prof;
+  return plan_jog(from, vel, rate, adlink_ramp_jerk(vel - from.vel, rate, lim.sf));
 }
 
 Profile plan_adlink_stop(const MotionState& from, double sd_dec, double sf) {
