@@ -156,12 +156,16 @@ void bind_machine(py::module_& m) {
       .def_property_readonly("alarm", &Axis::alarm)
       .def_property_readonly("substeps_per_tick", [](const Axis& a) { return a.power_train().substeps_per_tick(); })
       .def_property_readonly("mechanical_energy_j", [](const Axis& a) { return a.power_train().mechanical_energy_j(); })
+      .def_property_readonly("servo_on", &Axis::servo_on)
+      .def("set_servo_on", &Axis::set_servo_on, py::arg("on"))
+      .def_property_readonly("last_command_pulse", &Axis::last_command_pulse)
       .def(
           "run",
-          [](Axis& axis, const py::object& pos, const py::object& vel, const py::object& acc, const py::object& signals) {
+          [](Axis& axis, const py::object& pos, const py::object& vel, const py::object& acc, const py::object& signals,
+             const py::object& injection, double error_limit, bool stop_on_alarm) {
             Array p = checked_array(pos, "positions", -1);
             const py::ssize_t n = p.shape(0);
-            Array v, a;
+            Array v, a, inj;
             machine::CommandInput in;
             in.pos = p.data();
             in.n = static_cast<std::size_t>(n);
@@ -173,6 +177,15 @@ void bind_machine(py::module_& m) {
               a = checked_array(acc, "accelerations", n);
               in.acc = a.data();
             }
+            if (!injection.is_none()) {
+              inj = checked_array(injection, "injection_v", n);
+              in.volts_add = inj.data();
+            }
+            if (!(error_limit >= 0) || !std::isfinite(error_limit))
+              throw_invalid("Axis.run", "error_limit_pulse", error_limit, "must be finite and >= 0 (0 = off)");
+            machine::RunGuard guard;
+            guard.error_limit_pulse = error_limit;
+            guard.stop_on_alarm = stop_on_alarm;
             std::vector<std::string> wanted;
             if (signals.is_none()) {
               wanted = signal_names();
@@ -192,15 +205,27 @@ void bind_machine(py::module_& m) {
               *slot = buf.mutable_data();
               out[py::str(name)] = buf;
             }
+            machine::RunOutcome outcome;
             {
               py::gil_scoped_release release;
-              axis.run(in, trace);
+              outcome = axis.run(in, trace, guard);
             }
-            return out;
+            const char* stop = outcome.stop == machine::RunStop::kCompleted  ? ""
+                               : outcome.stop == machine::RunStop::kErrorLimit ? "error_limit"
+                                                                               : "drive_alarm";
+            if (outcome.ticks < static_cast<std::size_t>(n)) {
+              py::dict cut;
+              for (auto item : out) cut[item.first] = item.second.cast<py::array_t<double>>()[py::slice(
+                  0, static_cast<py::ssize_t>(outcome.ticks), 1)];
+              out = cut;
+            }
+            return py::make_tuple(out, stop, outcome.error_pulse);
           },
           py::arg("positions"), py::arg("velocities") = py::none(), py::arg("accelerations") = py::none(),
-          py::arg("signals") = py::none(),
-          "Runs one tick per position (pulse); returns {signal: array}. Releases the GIL.");
+          py::arg("signals") = py::none(), py::arg("injection_v") = py::none(), py::arg("error_limit_pulse") = 0.0,
+          py::arg("stop_on_alarm") = false,
+          "Runs one tick per position (pulse); returns ({signal: array}, stop reason or '', error at the stop). "
+          "Releases the GIL.");
 }
 
 }  // namespace servobench::bindings

@@ -35,6 +35,11 @@ class AxisRun:
     signals: Mapping[str, np.ndarray]
     servo_period_s: float
     law: object = field(default=None, repr=False)
+    #: Why the run ended early: ``None`` (it ran every tick), ``"error_limit"`` (|error| exceeded
+    #: ``error_limit_pulse``) or ``"drive_alarm"``; the servo was then turned off at the last recorded tick.
+    stopped: str | None = None
+    #: The following error (pulse) at the tick that tripped the error limit.
+    stop_error_pulse: float = 0.0
 
     def __getattr__(self, name: str) -> np.ndarray:
         signals = object.__getattribute__(self, "signals")
@@ -168,7 +173,18 @@ class Axis:
         histories are kept (the card's parameter update)."""
         self._axis.set_filters(filters)
 
-    def run(self, command, *, velocities=None, accelerations=None, signals: Iterable[str] | None = None) -> AxisRun:
+    servo_on = property(lambda self: self._axis.servo_on,
+                        doc="True while the servo loop is closed (the card's servo ON / GT_AxisOn).")
+    last_command_pulse = property(lambda self: self._axis.last_command_pulse,
+                                  doc="Command position of the last tick run, pulse (the feedback before any run).")
+
+    def set_servo_on(self, on: bool) -> None:
+        """Servo on (True) or off (False). Off: the law is not evaluated and the output is 0 V (plus any injection);
+        on again: the law and the filters restart from power-on memories (the card's GT_AxisOn / servo ON)."""
+        self._axis.set_servo_on(bool(on))
+
+    def run(self, command, *, velocities=None, accelerations=None, signals: Iterable[str] | None = None,
+            injection_v=None, error_limit_pulse: float = 0.0, stop_on_alarm: bool = False) -> AxisRun:
         """Runs one servo tick per command sample and returns what was recorded.
 
         command
@@ -180,6 +196,16 @@ class Axis:
             differences, as its manual defines CmdVel and CmdAcc.
         signals
             names of the signals to record (default all, see :data:`SIGNALS`); fewer is faster.
+        injection_v
+            optional voltage added to the controller's output before the DAC, V, one per tick (an injection at the
+            plant input, for open-loop and disturbance-injection experiments; with the servo off it is the whole
+            output). Like the law's output it reaches the drive one tick later.
+        error_limit_pulse
+            position-error protection (ADLINK ERR_POS_LEVEL, the Bode tool's deviation limit), pulse; 0 = off.
+            When |cmd_pos - fb_pos| exceeds it the servo is turned off at that tick and the run ends there:
+            :attr:`AxisRun.stopped` is ``"error_limit"`` and the arrays end at that tick.
+        stop_on_alarm
+            end the run, servo off, at the first tick with the drive alarm set (``stopped = "drive_alarm"``).
 
         Releases the GIL while it runs.
         """
@@ -192,5 +218,8 @@ class Axis:
         positions = np.asarray(positions, dtype=float)
         if positions.ndim == 0:
             raise ValueError("command must be a 1-D array of positions (pulse), one per tick")
-        rec = self._axis.run(positions, velocities, accelerations, None if signals is None else list(signals))
-        return AxisRun(signals=rec, servo_period_s=self.servo_period_s, law=self.law)
+        rec, stop, stop_error = self._axis.run(positions, velocities, accelerations,
+                                               None if signals is None else list(signals), injection_v,
+                                               float(error_limit_pulse), bool(stop_on_alarm))
+        return AxisRun(signals=rec, servo_period_s=self.servo_period_s, law=self.law, stopped=stop or None,
+                       stop_error_pulse=float(stop_error))

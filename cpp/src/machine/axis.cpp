@@ -81,6 +81,7 @@ void Axis::reset(double angle_rad) {
   pending_volts_ = 0.0;
   prev_cmd_ = prev_vel_ = 0.0;
   primed_ = false;
+  servo_on_ = true;
   tick_ = 0;
 }
 
@@ -109,12 +110,22 @@ void Axis::set_filters(const std::array<control::BiquadParams, 2>& filters) {
   for (std::size_t i = 0; i < biquads_.size(); ++i) biquads_[i].set_params(filters[i]);
 }
 
-void Axis::run(const CommandInput& command, const Trace& trace) {
-  std::visit([&](auto& law) { run_with(law, command, trace); }, law_);
+void Axis::set_servo_on(bool on) {
+  if (on && !servo_on_) {
+    std::visit([](auto& law) { law.reset(); }, law_);
+    for (auto& b : biquads_) b.reset();
+  }
+  servo_on_ = on;
+}
+
+RunOutcome Axis::run(const CommandInput& command, const Trace& trace, const RunGuard& guard) {
+  return std::visit([&](auto& law) { return run_with(law, command, trace, guard); }, law_);
 }
 
 template <class Law>
-void Axis::run_with(Law& law, const CommandInput& command, const Trace& tr) {
+RunOutcome Axis::run_with(Law& law, const CommandInput& command, const Trace& tr, const RunGuard& guard) {
+  RunOutcome outcome;
+  const bool guarded = guard.error_limit_pulse > 0.0 || guard.stop_on_alarm;
   const double ts = *config_.servo_period_s;
   const plant::SwitchParams& sw = config_.switches;
   const bool pulse_output = power_.pulse_input();
@@ -132,9 +143,29 @@ void Axis::run_with(Law& law, const CommandInput& command, const Trace& tr) {
 
     const double enc_angle = encoder_angle();
     const double y = encoder_.read(enc_angle);
+    bool trip = false;
+    if (guarded) {
+      if (guard.error_limit_pulse > 0.0 && std::fabs(r - y) > guard.error_limit_pulse) {
+        trip = true;
+        outcome.stop = RunStop::kErrorLimit;
+      } else if (guard.stop_on_alarm && power_.alarm()) {
+        trip = true;
+        outcome.stop = RunStop::kDriveAlarm;
+      }
+      if (trip) {
+        outcome.error_pulse = r - y;
+        servo_on_ = false;
+      }
+    }
     control::LawTerms t;
     double f0 = 0.0, f1 = 0.0, volts = 0.0;
-    if (pulse_output) {
+    if (!servo_on_ && !pulse_output) {
+      // Servo off: no law, no filters; the output stage gives 0 V (plus any injection).
+      power_.set_input(pending_volts_);
+      t.vel = v;
+      t.acc = a;
+      if (command.volts_add) volts = dac_.convert(command.volts_add[k]);
+    } else if (pulse_output) {
       // Pulse-output card: the command goes out as a step train of whole pulses; no servo law, no DAC.
       power_.set_pulse_input(std::nearbyint(r));
       t.vel = v;
@@ -144,7 +175,8 @@ void Axis::run_with(Law& law, const CommandInput& command, const Trace& tr) {
       t = law.step(r, y, v, a);
       f0 = biquads_[0].step(t.total);
       f1 = biquads_[1].step(f0);
-      volts = dac_.convert(law.counts_to_volts(f1));
+      const double request = law.counts_to_volts(f1);
+      volts = dac_.convert(command.volts_add ? request + command.volts_add[k] : request);
     }
 
     if (tr.time_s) tr.time_s[k] = static_cast<double>(tick_) * ts;
@@ -180,7 +212,13 @@ void Axis::run_with(Law& law, const CommandInput& command, const Trace& tr) {
     power_.advance_tick();
     pending_volts_ = volts;
     ++tick_;
+    if (trip) {
+      outcome.ticks = k + 1;
+      return outcome;
+    }
   }
+  outcome.ticks = command.n;
+  return outcome;
 }
 
 }  // namespace servobench::machine

@@ -325,6 +325,59 @@ void PowerTrain::solve_friction(const InMat& gamma, unsigned locked, double* f, 
   }
 }
 
+TickModel PowerTrain::linear_tick_model() const {
+  if (pulse_input())
+    throw std::invalid_argument(
+        "PowerTrain.linear_tick_model: a pulse-input drive (stepper, servo in position mode) has no voltage input");
+  const Eigen::Index n = x_.size();
+  const bool speed_loop = mode_ == Mode::kVelocity;
+  const Eigen::Index na = n + (speed_loop ? 2 : 0);  // [x; speed-loop integrator; held current command]
+  const Eigen::MatrixXd phi = phi_;
+  const Eigen::VectorXd g = gamma_.col(0);
+  // One sub-step with the current command held, and (velocity mode) one with a speed-loop update first.
+  Eigen::MatrixXd a_hold = Eigen::MatrixXd::Identity(na, na), a_upd;
+  Eigen::VectorXd b_hold = Eigen::VectorXd::Zero(na), b_upd;
+  a_hold.topLeftCorner(n, n) = phi;
+  if (!speed_loop) {
+    b_hold.head(n) = g * amps_per_volt_;  // i_cmd = A/V * v, the same in every sub-step
+  } else {
+    const drive::VelocityDriveParams p = speed_loop_params(drive_);
+    const double kitd = p.ki_nm_per_rad / p.loop_rate_hz, kv = p.speed_per_volt_rad_s;
+    const Eigen::Index integ = n, hold = n + 1;
+    a_hold.block(0, hold, n, 1) = g;  // x' = phi x + g i_hold
+    // Update: e = kv v - w; integ' = integ + kitd e; i = (kp e + integ') / kt; i_hold' = i; x' = phi x + g i.
+    Eigen::RowVectorXd i_row = Eigen::RowVectorXd::Zero(na);  // i as a function of z (the v part in i_v)
+    i_row(motor_speed_) = -(p.kp_nms + kitd) / p.kt;
+    i_row(integ) = 1.0 / p.kt;
+    const double i_v = (p.kp_nms + kitd) * kv / p.kt;
+    a_upd = Eigen::MatrixXd::Zero(na, na);
+    b_upd = Eigen::VectorXd::Zero(na);
+    a_upd.topLeftCorner(n, n) = phi;
+    a_upd.topRows(n) += g * i_row;
+    b_upd.head(n) = g * i_v;
+    a_upd(integ, integ) = 1.0;
+    a_upd(integ, motor_speed_) = -kitd;
+    b_upd(integ) = kitd * kv;
+    a_upd.row(hold) = i_row;
+    b_upd(hold) = i_v;
+  }
+  TickModel m;
+  m.a = Eigen::MatrixXd::Identity(na, na);
+  m.b = Eigen::MatrixXd::Zero(na, 1);
+  for (int s = 0; s < n_sub_; ++s) {
+    const bool update = speed_loop && s % loop_every_ == 0;
+    const Eigen::MatrixXd& as = update ? a_upd : a_hold;
+    const Eigen::VectorXd& bs = update ? b_upd : b_hold;
+    m.a = (as * m.a).eval();
+    m.b = (as * m.b + bs).eval();
+  }
+  m.c_motor = Eigen::MatrixXd::Zero(1, na);
+  m.c_load = Eigen::MatrixXd::Zero(1, na);
+  m.c_motor(0, motor_angle_) = 1.0;
+  m.c_load(0, load_angle_) = 1.0;
+  return m;
+}
+
 double PowerTrain::mechanical_energy_j() const {
   double e = 0.0;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {

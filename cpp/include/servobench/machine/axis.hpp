@@ -49,11 +49,30 @@ void validate_filters(const std::array<control::BiquadParams, 2>& filters, doubl
 
 // Command input for `run`: n positions (pulse); velocities/accelerations optional (null: backward
 // differences of the positions, pulse/tick and pulse/tick^2).
+// volts_add: optional voltage added to the output stage's request before the DAC, V (an injection at the plant
+// input, as for open-loop or disturbance-injection experiments); it reaches the drive one tick later like the rest.
 struct CommandInput {
   const double* pos = nullptr;
   const double* vel = nullptr;
   const double* acc = nullptr;
+  const double* volts_add = nullptr;
   std::size_t n = 0;
+};
+
+// Protections checked every tick of a run (the card's position-error protection, ADLINK ERR_POS_LEVEL L4012-4023
+// and the Bode tool's deviation limit L2031): when one trips, the servo is turned off at that tick (its output is
+// 0 V from then on) and the run ends after it.
+struct RunGuard {
+  double error_limit_pulse = 0.0;  // |cmd_pos - fb_pos| above this turns the servo off, pulse; 0 = off
+  bool stop_on_alarm = false;      // a drive alarm turns the servo off and ends the run
+};
+
+enum class RunStop { kCompleted, kErrorLimit, kDriveAlarm };
+
+struct RunOutcome {
+  std::size_t ticks = 0;  // ticks actually run (== n unless a guard tripped; the tripping tick included)
+  RunStop stop = RunStop::kCompleted;
+  double error_pulse = 0.0;  // the following error at the tick that tripped, pulse
 };
 
 class Axis {
@@ -71,8 +90,17 @@ class Axis {
   // Replaces both biquads' coefficients at the next tick; their histories are kept (validated first).
   void set_filters(const std::array<control::BiquadParams, 2>& filters);
 
-  // Runs n ticks; continues from the current state. Fills the non-null buffers of `trace`.
-  void run(const CommandInput& command, const Trace& trace);
+  // Servo on/off (the card's AxisOn/AxisOff, servo ON/OFF). Off: the law is not evaluated and the output is 0 V
+  // (plus any injection); turning it on starts the law and the filters from power-on memories.
+  void set_servo_on(bool on);
+  bool servo_on() const { return servo_on_; }
+
+  // Runs n ticks; continues from the current state. Fills the non-null buffers of `trace` (the first
+  // outcome.ticks entries when a guard trips).
+  RunOutcome run(const CommandInput& command, const Trace& trace, const RunGuard& guard = {});
+
+  // The command position of the last tick run, pulse (the feedback position before the first run).
+  double last_command_pulse() const { return primed_ ? prev_cmd_ : feedback_pulse(); }
 
   // Present state.
   double feedback_pulse() const { return encoder_.read_ideal(encoder_angle()); }
@@ -85,7 +113,7 @@ class Axis {
 
  private:
   template <class Law>
-  void run_with(Law& law, const CommandInput& command, const Trace& trace);
+  RunOutcome run_with(Law& law, const CommandInput& command, const Trace& trace, const RunGuard& guard);
   double encoder_angle() const {
     return config_.encoder.on_load ? power_.load_angle_rad() : power_.motor_angle_rad();
   }
@@ -100,6 +128,7 @@ class Axis {
   double prev_cmd_ = 0.0, prev_vel_ = 0.0;
   double prev_encoder_angle_ = 0.0;
   bool primed_ = false;
+  bool servo_on_ = true;
   long long tick_ = 0;
 };
 

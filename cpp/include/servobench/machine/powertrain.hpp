@@ -28,6 +28,17 @@ namespace servobench::machine {
 using DriveParams = std::variant<drive::TorqueDriveParams, drive::VelocityDriveParams, drive::StepperDriveParams,
                                  drive::ServoPositionDriveParams>;
 
+// The linear part of a power train over one servo tick, as a discrete system at the servo rate:
+//   z[k+1] = a z[k] + b v[k],   motor angle = c_motor z,   load angle = c_load z   (rad)
+// v: the drive's input voltage held over the tick (V). z: the power train's states (current loop, mechanics) and,
+// for a velocity-mode drive, its speed-loop integrator (N*m) and held current command (A). The sub-steps and the
+// speed loop's updates inside the tick are composed exactly (the lifted system), so this is what a sampled
+// controller sees. Left out: current and torque limits, dry friction, disturbances and the alarm -- exact for a
+// linear configuration.
+struct TickModel {
+  Eigen::MatrixXd a, b, c_motor, c_load;
+};
+
 class PowerTrain {
  public:
   static constexpr int kMaxStates = 8;
@@ -69,6 +80,8 @@ class PowerTrain {
   const plant::Mechanics& mechanics() const { return mech_; }
   // Total mechanical energy (kinetic + shaft), J. For passivity checks.
   double mechanical_energy_j() const;
+  // The servo-rate linear model (see TickModel). Only for voltage-input drives (torque and velocity mode).
+  TickModel linear_tick_model() const;
   // Bodies frozen by static friction now.
   bool stuck(std::size_t body) const { return stuck_[body] != 0; }
 

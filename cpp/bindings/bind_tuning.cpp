@@ -1,0 +1,168 @@
+// Bindings of the tuning layer: analytic loop response, stepped-sine sweep, margins. Thin: arrays in and out.
+#include <pybind11/complex.h>
+#include <pybind11/functional.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "servobench/common/validate.hpp"
+#include "servobench/tuning/loop_response.hpp"
+#include "servobench/tuning/margins.hpp"
+#include "servobench/tuning/sine_sweep.hpp"
+
+namespace servobench::bindings {
+
+namespace py = pybind11;
+
+namespace {
+using CArray = py::array_t<std::complex<double>>;
+
+CArray to_array(const std::vector<std::complex<double>>& v) {
+  CArray a(static_cast<py::ssize_t>(v.size()));
+  std::copy(v.begin(), v.end(), a.mutable_data());
+  return a;
+}
+template <class T>
+py::array_t<T> to_array(const std::vector<T>& v) {
+  py::array_t<T> a(static_cast<py::ssize_t>(v.size()));
+  std::copy(v.begin(), v.end(), a.mutable_data());
+  return a;
+}
+
+std::vector<double> real_vector(const py::handle& obj, const char* name) {
+  auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(obj);
+  if (!a || a.ndim() != 1) throw py::value_error(std::string(name) + " must be a 1-D array of numbers");
+  return std::vector<double>(a.data(), a.data() + a.shape(0));
+}
+std::vector<std::complex<double>> complex_vector(const py::handle& obj, const char* name) {
+  auto a = py::array_t<std::complex<double>, py::array::c_style | py::array::forcecast>::ensure(obj);
+  if (!a || a.ndim() != 1) throw py::value_error(std::string(name) + " must be a 1-D array of complex numbers");
+  return std::vector<std::complex<double>>(a.data(), a.data() + a.shape(0));
+}
+
+const char* status_name(tuning::SweepStatus s) {
+  switch (s) {
+    case tuning::SweepStatus::kCompleted: return "completed";
+    case tuning::SweepStatus::kDeviationExceeded: return "deviation_exceeded";
+    case tuning::SweepStatus::kDriveAlarm: return "drive_alarm";
+    case tuning::SweepStatus::kStopped: return "stopped";
+  }
+  return "?";
+}
+}  // namespace
+
+void bind_tuning(py::module_& m) {
+  m.def(
+      "loop_response",
+      [](const machine::Axis& axis, const py::object& freq, bool feedforward, bool filters) {
+        const std::vector<double> f = real_vector(freq, "freq_hz");
+        tuning::LoopOptions o;
+        o.feedforward = feedforward;
+        o.filters = filters;
+        tuning::LoopResponse r;
+        {
+          py::gil_scoped_release release;
+          r = tuning::loop_response(axis.config(), f, o);
+        }
+        py::dict d;
+        d["freq_hz"] = to_array(r.freq_hz);
+        d["controller"] = to_array(r.controller);
+        d["feedforward"] = to_array(r.feedforward);
+        d["filters"] = to_array(r.filters);
+        d["plant"] = to_array(r.plant);
+        d["loop_gain"] = to_array(r.loop_gain);
+        d["open_loop"] = to_array(r.open_loop);
+        d["closed_loop"] = to_array(r.closed_loop);
+        d["sensitivity"] = to_array(r.sensitivity);
+        return d;
+      },
+      py::arg("axis"), py::arg("freq_hz"), py::arg("feedforward") = false, py::arg("filters") = true,
+      "Analytic responses of the axis's loop at freq_hz (Hz); returns {name: complex array}.");
+
+  m.def(
+      "sine_sweep",
+      [](machine::Axis& axis, double start_hz, double end_hz, double amplitude_pulse, double points, double update_s,
+         double deviation_limit_pulse, double settle_fraction, bool feedforward, bool filters,
+         const py::object& progress) {
+        tuning::SineSweepOptions o;
+        o.start_hz = start_hz;
+        o.end_hz = end_hz;
+        o.amplitude_pulse = amplitude_pulse;
+        check_integer("SineSweep", "points", points, 2, 100000, "ADLINK Bode tool, L2038-2045");
+        o.points = static_cast<int>(points);
+        o.update_s = update_s;
+        o.deviation_limit_pulse = deviation_limit_pulse;
+        o.settle_fraction = settle_fraction;
+        o.loop.feedforward = feedforward;
+        o.loop.filters = filters;
+        o.validate(axis.servo_period_s());
+        tuning::SweepProgress cb;
+        if (!progress.is_none()) {
+          cb = [progress](int done, int total) {
+            py::gil_scoped_acquire gil;
+            py::object r = progress(done, total);
+            return r.is_none() || r.cast<bool>();
+          };
+        }
+        tuning::SineSweepResult r;
+        {
+          py::gil_scoped_release release;
+          r = tuning::sine_sweep(axis, o, cb);
+        }
+        py::dict d;
+        d["status"] = status_name(r.status);
+        d["message"] = r.message;
+        d["freq_hz"] = to_array(r.freq_hz);
+        d["r"] = to_array(r.r);
+        d["e"] = to_array(r.e);
+        d["u"] = to_array(r.u);
+        d["y"] = to_array(r.y);
+        d["coherence"] = to_array(r.coherence);
+        d["distortion"] = to_array(r.distortion);
+        d["periods"] = to_array(r.periods);
+        d["window"] = to_array(r.window);
+        d["ticks"] = r.ticks;
+        d["stop_time_s"] = r.stop_time_s;
+        d["stop_error_pulse"] = r.stop_error_pulse;
+        return d;
+      },
+      py::arg("axis"), py::kw_only(), py::arg("start_hz"), py::arg("end_hz"), py::arg("amplitude_pulse"),
+      py::arg("points"), py::arg("update_s"), py::arg("deviation_limit_pulse"), py::arg("settle_fraction"),
+      py::arg("feedforward"), py::arg("filters"), py::arg("progress") = py::none(),
+      "Stepped-sine sweep on the axis (ADLINK Bode tool). Releases the GIL.");
+
+  m.def(
+      "margins",
+      [](const py::object& freq, const py::object& loop_gain, const py::object& closed_loop) {
+        const auto f = real_vector(freq, "freq_hz");
+        const auto l = complex_vector(loop_gain, "loop_gain");
+        std::vector<std::complex<double>> t;
+        if (!closed_loop.is_none()) t = complex_vector(closed_loop, "closed_loop");
+        const tuning::Margins mg = tuning::margins(f, l, t);
+        py::dict d;
+        d["gain_margin_db"] = mg.gain_margin_db;
+        d["gm_freq_hz"] = mg.gm_freq_hz;
+        d["lower_gain_margin_db"] = mg.lower_gain_margin_db;
+        d["lower_gm_freq_hz"] = mg.lower_gm_freq_hz;
+        d["phase_margin_deg"] = mg.phase_margin_deg;
+        d["pm_freq_hz"] = mg.pm_freq_hz;
+        d["delay_margin_s"] = mg.delay_margin_s;
+        d["bandwidth_hz"] = mg.bandwidth_hz;
+        d["ms"] = mg.ms;
+        d["ms_freq_hz"] = mg.ms_freq_hz;
+        return d;
+      },
+      py::arg("freq_hz"), py::arg("loop_gain"), py::arg("closed_loop") = py::none(),
+      "Gain/phase/delay margins, closed-loop bandwidth and peak sensitivity from frequency-response data.");
+
+  m.def(
+      "unwrapped_phase_deg",
+      [](const py::object& h) { return to_array(tuning::unwrapped_phase_deg(complex_vector(h, "response"))); },
+      py::arg("response"), "Phase in degrees, unwrapped point to point from the first point.");
+}
+
+}  // namespace servobench::bindings

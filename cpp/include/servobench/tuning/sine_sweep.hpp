@@ -1,0 +1,71 @@
+// The stepped-sine frequency-response measurement of the ADLINK card's Bode tool (ADLINK L1978-2045, adlink.md §5),
+// run on a simulated axis.
+//
+// A sine of `amplitude_pulse` is added to the command position (R) at each of `points` log-spaced frequencies from
+// start_hz to end_hz, for `update_s` seconds each; the phase runs on continuously from one frequency to the next,
+// so the command never jumps. At every point the first `settle_fraction` of the samples is discarded (less if that would leave
+// under one whole period), and from the rest the longest window of whole periods (the one whose length comes closest to a whole number of samples) is
+// analysed: each signal's fundamental is fitted by least squares on cos, sin and a constant, which over whole
+// periods is the single-bin DFT. The signals (L1992-1996): R command sine, E = R - Y following error, U the DAC
+// input (the second biquad's output, counts), Y the encoder (pulse). The three response types are ratios of the
+// same run's fundamentals: plant Y/U, open loop Y/E, closed loop Y/R (L2000-2003).
+//
+// Per point the quality is reported as the coherence of Y (the share of Y's variance about its mean that the
+// fundamental explains, 1 for a pure sine) and its harmonic distortion (2nd..5th harmonic amplitude over the
+// fundamental's). A deviation limit > 0 turns the servo off the tick |E| exceeds it and ends the sweep; a drive
+// alarm does the same (L2031).
+#pragma once
+
+#include <complex>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "servobench/machine/axis.hpp"
+#include "servobench/tuning/loop_response.hpp"
+
+namespace servobench::tuning {
+
+struct SineSweepOptions {
+  double start_hz = 10.0;            // first frequency, Hz, > 0 and below Nyquist (manual: about 10 Hz, L2015)
+  double end_hz = 100.0;             // last frequency, Hz, > 0 and below Nyquist (manual: keep <= 500 Hz, L2015)
+  double amplitude_pulse = 300.0;    // sine amplitude, pulse, > 0 (manual: about 300 for 10000 pulse/rev, L2019)
+  int points = 100;                  // data length: number of log-spaced frequencies, 2..100000 (L2038-2045: > 1)
+  double update_s = 0.1;             // time per frequency point, s, > 0 (L2023)
+  double deviation_limit_pulse = 0;  // |E| above this turns the servo off, pulse; 0 = off (L2031)
+  double settle_fraction = 0.25;     // share of each point's samples discarded before the analysis, 0..0.9; cut
+                                     // short where it would leave less than one whole period
+  LoopOptions loop;                  // feed-forward and filters in the loop (docs/decisions.md B1-B2)
+  // Throws std::invalid_argument naming the field and its range; the update time must hold at least one whole
+  // period of the lowest frequency.
+  void validate(double servo_period_s) const;
+  // The frequencies the sweep measures, Hz: f_i = start (end/start)^(i/(points-1)).
+  std::vector<double> frequencies_hz() const;
+};
+
+enum class SweepStatus { kCompleted, kDeviationExceeded, kDriveAlarm, kStopped };
+
+struct SineSweepResult {
+  SweepStatus status = SweepStatus::kCompleted;
+  std::string message;                 // what ended the sweep, in words
+  std::vector<double> freq_hz;         // the points measured (fewer than requested if the sweep ended early)
+  std::vector<std::complex<double>> r, e, u, y;  // fundamentals: R, E (pulse), U (counts), Y (pulse)
+  std::vector<double> coherence;       // of Y, 0..1
+  std::vector<double> distortion;      // harmonic distortion of Y, amplitude ratio
+  std::vector<int> periods;            // whole periods analysed per point
+  std::vector<int> window;             // samples analysed per point
+  long long ticks = 0;                 // servo ticks run in total
+  double stop_time_s = 0;              // time from the sweep's start at which it ended, s
+  double stop_error_pulse = 0;         // the following error that tripped the deviation limit, pulse
+};
+
+// Called after each point with (points done, points requested); returning false stops the sweep (the user's
+// Stop): the servo stays on and the status says so.
+using SweepProgress = std::function<bool(int, int)>;
+
+// Runs the sweep on `axis` from its present state, around its last command position. The law's feed-forward and
+// the biquads are set for the measurement (options.loop) and restored afterwards; the axis is left where the
+// sweep ended (servo off if a protection tripped).
+SineSweepResult sine_sweep(machine::Axis& axis, const SineSweepOptions& options, const SweepProgress& progress = {});
+
+}  // namespace servobench::tuning

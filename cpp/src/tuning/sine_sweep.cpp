@@ -1,0 +1,232 @@
+#include "servobench/tuning/sine_sweep.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Dense>
+
+#include "servobench/common/validate.hpp"
+
+namespace servobench::tuning {
+
+namespace {
+constexpr const char* kOwner = "SineSweep";
+constexpr const char* kManual = "ADLINK Bode tool, L2038-2045";
+
+// Number of whole periods m (<= m_max) whose length m*P samples comes closest to a whole number, preferring long
+// windows: searched over the upper half of 1..m_max.
+int best_periods(double samples_per_period, int m_max) {
+  int best = m_max;
+  double best_err = 1e300;
+  for (int m = m_max; m >= std::max(1, m_max / 2); --m) {
+    const double len = m * samples_per_period;
+    const double err = std::fabs(len - std::round(len)) / len;
+    if (err < best_err - 1e-15) {
+      best_err = err;
+      best = m;
+    }
+  }
+  return best;
+}
+
+// cos(w k) and sin(w k) for k = 0..n-1 by rotation, re-anchored on the exact values every 256 samples (the
+// rotation's rounding error stays below 1e-13; a sin/cos call per sample would dominate the sweep's cost).
+void unit_phasors(double w, int n, double* c, double* s) {
+  const double cw = std::cos(w), sw = std::sin(w);
+  double a = 1.0, b = 0.0;
+  for (int k = 0; k < n; ++k) {
+    if ((k & 255) == 0) {
+      a = std::cos(w * k);
+      b = std::sin(w * k);
+    }
+    c[k] = a;
+    s[k] = b;
+    const double a2 = a * cw - b * sw;
+    b = b * cw + a * sw;
+    a = a2;
+  }
+}
+
+// Least-squares fit of x[n] = re*cos(w n) + im*(-sin(w n)) + c on the window, returned as the phasor re + j im
+// (x = Re(X e^{j w n}) + c). Over whole periods this is the single-bin DFT 2/N sum x e^{-j w n}.
+struct SineFit {
+  Eigen::Matrix3d gram_inv;
+  std::vector<double> cs, sn;
+  SineFit(double w, int n) : cs(n), sn(n) {
+    unit_phasors(w, n, cs.data(), sn.data());
+    Eigen::Matrix3d g = Eigen::Matrix3d::Zero();
+    for (int k = 0; k < n; ++k) {
+      sn[k] = -sn[k];
+      const Eigen::Vector3d b(cs[k], sn[k], 1.0);
+      g += b * b.transpose();
+    }
+    gram_inv = g.inverse();
+  }
+  // Returns the phasor and sets `residual_share` = residual variance / variance about the mean.
+  std::complex<double> fit(const double* x, double* residual_share = nullptr) const {
+    const int n = static_cast<int>(cs.size());
+    Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+    double mean = 0.0;
+    for (int k = 0; k < n; ++k) {
+      rhs += Eigen::Vector3d(cs[k], sn[k], 1.0) * x[k];
+      mean += x[k];
+    }
+    mean /= n;
+    const Eigen::Vector3d c = gram_inv * rhs;
+    if (residual_share) {
+      double res = 0.0, var = 0.0;
+      for (int k = 0; k < n; ++k) {
+        const double e = x[k] - (c[0] * cs[k] + c[1] * sn[k] + c[2]);
+        res += e * e;
+        var += (x[k] - mean) * (x[k] - mean);
+      }
+      *residual_share = var > 0 ? res / var : 0.0;
+    }
+    return {c[0], c[1]};
+  }
+};
+
+// Amplitude of the h-th harmonic over the window (whole periods of the fundamental, so whole periods of each
+// harmonic): single-bin DFT by the Goertzel recursion.
+double harmonic_amplitude(const double* x, int n, double w) {
+  const double coeff = 2.0 * std::cos(w);
+  double s1 = 0.0, s2 = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const double s0 = x[k] + coeff * s1 - s2;
+    s2 = s1;
+    s1 = s0;
+  }
+  const double power = s1 * s1 + s2 * s2 - coeff * s1 * s2;  // |sum x e^{-j w k}|^2
+  return 2.0 * std::sqrt(std::max(power, 0.0)) / n;
+}
+}  // namespace
+
+void SineSweepOptions::validate(double ts) const {
+  const double nyquist = 0.5 / ts;
+  const std::string nyq = "must be > 0 and below the Nyquist frequency 1/(2 Ts) = " + format_value(nyquist) + " Hz";
+  if (!(start_hz > 0) || !(start_hz < nyquist)) throw_invalid(kOwner, "start_hz", start_hz, nyq);
+  if (!(end_hz > 0) || !(end_hz < nyquist)) throw_invalid(kOwner, "end_hz", end_hz, nyq);
+  check_positive(kOwner, "amplitude_pulse", amplitude_pulse);
+  check_integer(kOwner, "points", points, 2, 100000, kManual);
+  check_positive(kOwner, "update_s", update_s);
+  check_nonnegative(kOwner, "deviation_limit_pulse", deviation_limit_pulse);
+  check_range(kOwner, "settle_fraction", settle_fraction, 0.0, 0.9);
+  const double f_low = std::min(start_hz, end_hz);
+  const double ticks = std::round(update_s / ts);
+  if (ticks * ts * f_low < 1.0 - 1e-9)
+    throw_invalid(kOwner, "update_s", update_s,
+                  "is too short: each point must hold at least one whole period of the lowest frequency " +
+                      format_value(f_low) + " Hz, i.e. update_s >= " + format_value(1.0 / f_low) + " s");
+}
+
+std::vector<double> SineSweepOptions::frequencies_hz() const {
+  std::vector<double> f(points);
+  for (int i = 0; i < points; ++i)
+    f[i] = start_hz * std::pow(end_hz / start_hz, static_cast<double>(i) / (points - 1));
+  f.back() = end_hz;
+  return f;
+}
+
+SineSweepResult sine_sweep(machine::Axis& axis, const SineSweepOptions& options, const SweepProgress& progress) {
+  const double ts = axis.servo_period_s();
+  options.validate(ts);
+  if (axis.power_train().pulse_input())
+    throw std::invalid_argument("SineSweep: a pulse-output axis (stepper or servo in position mode) has no position "
+                                "loop on the card to measure");
+  const machine::AxisConfig saved = axis.config();
+  axis.set_law(law_for_measurement(saved.law, options.loop));
+  axis.set_filters(filters_for_measurement(saved.filters, options.loop));
+
+  const std::vector<double> freqs = options.frequencies_hz();
+  const auto n_tick = static_cast<std::size_t>(std::llround(options.update_s / ts));
+  const auto settle = static_cast<std::size_t>(std::floor(options.settle_fraction * static_cast<double>(n_tick)));
+  std::vector<double> cmd(n_tick), y(n_tick), e(n_tick), u(n_tick);
+  machine::Trace trace;
+  trace.fb_pos = y.data();
+  trace.error = e.data();
+  trace.biquad1 = u.data();
+  machine::RunGuard guard;
+  guard.error_limit_pulse = options.deviation_limit_pulse;
+  guard.stop_on_alarm = true;
+
+  SineSweepResult res;
+  const double base = axis.last_command_pulse();
+  const double amp = options.amplitude_pulse;
+  double phase = 0.0;  // of the command sine, continuous across points
+  for (std::size_t i = 0; i < freqs.size(); ++i) {
+    const double f = freqs[i];
+    const double w = 2.0 * M_PI * f * ts;  // rad per tick
+    const double phase0 = phase;
+    {
+      // sin(phase0 + w k) = sin(phase0) cos(w k) + cos(phase0) sin(w k)
+      unit_phasors(w, static_cast<int>(n_tick), y.data(), e.data());  // scratch, overwritten by the run
+      const double s0 = std::sin(phase0), c0 = std::cos(phase0);
+      for (std::size_t k = 0; k < n_tick; ++k) cmd[k] = base + amp * (s0 * y[k] + c0 * e[k]);
+    }
+    phase = std::fmod(phase0 + w * static_cast<double>(n_tick), 2.0 * M_PI);
+    machine::CommandInput in;
+    in.pos = cmd.data();
+    in.n = n_tick;
+    const machine::RunOutcome out = axis.run(in, trace, guard);
+    res.ticks += static_cast<long long>(out.ticks);
+    if (out.stop != machine::RunStop::kCompleted) {
+      res.stop_time_s = static_cast<double>(res.ticks) * ts;
+      if (out.stop == machine::RunStop::kErrorLimit) {
+        res.status = SweepStatus::kDeviationExceeded;
+        res.stop_error_pulse = out.error_pulse;
+        res.message = "deviation limit exceeded at " + format_value(f) + " Hz: |E| = " +
+                      format_value(std::fabs(out.error_pulse)) + " pulse > " +
+                      format_value(options.deviation_limit_pulse) + " pulse; servo turned off";
+      } else {
+        res.status = SweepStatus::kDriveAlarm;
+        res.message = "drive alarm at " + format_value(f) + " Hz; servo turned off";
+      }
+      break;
+    }
+    // Analysis window: the last whole periods after the settling share.
+    const double per = 1.0 / (f * ts);  // samples per period
+    // The settling share is cut short where it would leave less than one whole period (decisions B4).
+    const double usable = std::max(static_cast<double>(n_tick - settle), std::min(per, static_cast<double>(n_tick)));
+    const int m_max = static_cast<int>(std::floor(usable / per + 1e-9));
+    const int m = best_periods(per, std::max(m_max, 1));
+    const int len = std::min(static_cast<int>(n_tick), std::max(3, static_cast<int>(std::lround(m * per))));
+    const std::size_t start = n_tick - static_cast<std::size_t>(len);
+    const SineFit fit(w, len);
+    for (int k = 0; k < len; ++k) cmd[static_cast<std::size_t>(k)] = cmd[start + static_cast<std::size_t>(k)] - base;
+    double resid = 0.0;
+    res.freq_hz.push_back(f);
+    res.r.push_back(fit.fit(cmd.data()));
+    res.e.push_back(fit.fit(e.data() + start));
+    res.u.push_back(fit.fit(u.data() + start));
+    res.y.push_back(fit.fit(y.data() + start, &resid));
+    res.coherence.push_back(std::clamp(1.0 - resid, 0.0, 1.0));
+    double harm = 0.0;
+    for (int h = 2; h <= 5 && h * f < 0.5 / ts; ++h) {
+      const double a = harmonic_amplitude(y.data() + start, len, h * w);
+      harm += a * a;
+    }
+    const double fund = std::abs(res.y.back());
+    res.distortion.push_back(fund > 0 ? std::sqrt(harm) / fund : 0.0);
+    res.periods.push_back(m);
+    res.window.push_back(len);
+    if (progress && !progress(static_cast<int>(i + 1), static_cast<int>(freqs.size()))) {
+      if (i + 1 < freqs.size()) {
+        res.status = SweepStatus::kStopped;
+        res.message = "stopped by the user after " + std::to_string(i + 1) + " of " + std::to_string(freqs.size()) +
+                      " points";
+        res.stop_time_s = static_cast<double>(res.ticks) * ts;
+        break;
+      }
+    }
+  }
+  if (res.status == SweepStatus::kCompleted) {
+    res.stop_time_s = static_cast<double>(res.ticks) * ts;
+    res.message = "completed " + std::to_string(res.freq_hz.size()) + " points in " + format_value(res.stop_time_s) +
+                  " s of card time";
+  }
+  axis.set_law(saved.law);
+  axis.set_filters(saved.filters);
+  return res;
+}
+
+}  // namespace servobench::tuning

@@ -1,0 +1,565 @@
+"""Frequency responses of a simulated axis: the card's stepped-sine Bode sweep, fast broadband measurements, the
+analytic response of the same loop, and the figures of merit read from them.
+
+The loop and its signals (ADLINK Bode tool, L1978-2045)::
+
+    R --(+)--E--> law C --(+)--> biquad 0 -> biquad 1 --U--> DAC -> drive -> plant -> encoder --Y-->
+         ^-              ^ feed-forward Cff on R                                               |
+         '-------------------------------------------------------------------------------------'
+
+R the command sine (pulse), E = R - Y the following error (pulse), U the DAC input (the second biquad's output,
+DAC counts, 32767 counts = 10 V), Y the encoder (pulse). Response types: plant Y/U (pulse/count: DAC, drive,
+motor and mechanics, with the one-tick output delay), open loop Y/E (pulse/pulse) and closed loop Y/R
+(pulse/pulse), all three from the same closed-loop run.
+
+What is in the loop during a measurement is explicit: ``feedforward`` (default False: Kvff/Kaff zeroed, so that
+Y/E is the loop gain the margins need) and ``filters`` (default True: the biquads stay, they shape the loop);
+docs/decisions.md B1-B2 give the reasons.
+"""
+
+from __future__ import annotations
+
+import sys
+from dataclasses import dataclass, field
+from typing import Callable
+
+import numpy as np
+
+from . import _core
+
+__all__ = [
+    "FrequencyResponse",
+    "Margins",
+    "Peak",
+    "analytic_response",
+    "broadband_response",
+    "chirp",
+    "margins",
+    "multisine",
+    "resonances",
+    "sine_sweep",
+]
+
+_RESPONSES = ("plant", "open_loop", "closed_loop")
+
+
+# ----------------------------------------------------------------------------------------------------------------
+# Figures of merit
+# ----------------------------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Margins:
+    """Stability margins and loop figures of merit (from :func:`margins`).
+
+    gain_margin_db, gm_freq_hz
+        how far the loop gain may rise before instability, dB, and the phase crossover (angle L = -180 deg,
+        |L| < 1) where it is read, Hz. ``inf`` / NaN if the data has no such crossover.
+    lower_gain_margin_db, lower_gm_freq_hz
+        how far the gain may fall (negative dB) for a conditionally stable loop (a PID on an integrating plant has
+        one at low frequency); ``-inf`` / NaN if none.
+    phase_margin_deg, pm_freq_hz
+        180 deg + angle L at the gain crossover |L| = 1, deg, and that crossover frequency, Hz.
+    delay_margin_s
+        extra dead time the loop tolerates, phase margin / (360 deg * crossover), s.
+    bandwidth_hz
+        closed-loop -3 dB bandwidth (first frequency where |Y/R| is 3 dB below its value at the lowest
+        frequency), Hz; NaN if not reached in the data.
+    ms, ms_freq_hz
+        peak sensitivity max |1/(1 + L)| and its frequency, Hz (1/Ms is the distance of L from -1; Ms < 2 is the
+        usual robustness goal).
+    """
+
+    gain_margin_db: float
+    gm_freq_hz: float
+    lower_gain_margin_db: float
+    lower_gm_freq_hz: float
+    phase_margin_deg: float
+    pm_freq_hz: float
+    delay_margin_s: float
+    bandwidth_hz: float
+    ms: float
+    ms_freq_hz: float
+
+    def __str__(self) -> str:
+        def hz(x):
+            return "-" if not np.isfinite(x) else f"{x:.4g} Hz"
+
+        lines = [
+            f"phase margin {self.phase_margin_deg:.3g} deg at {hz(self.pm_freq_hz)} "
+            f"(delay margin {self.delay_margin_s * 1e3:.3g} ms)",
+            f"gain margin {self.gain_margin_db:.3g} dB at {hz(self.gm_freq_hz)}",
+        ]
+        if np.isfinite(self.lower_gain_margin_db):
+            lines.append(f"lower gain margin {self.lower_gain_margin_db:.3g} dB at {hz(self.lower_gm_freq_hz)}")
+        lines.append(f"closed-loop bandwidth (-3 dB) {hz(self.bandwidth_hz)}")
+        lines.append(f"peak sensitivity Ms {self.ms:.3g} at {hz(self.ms_freq_hz)}")
+        return "\n".join(lines)
+
+
+def margins(freq_hz, loop_gain, closed_loop=None) -> Margins:
+    """Gain, phase and delay margins, closed-loop bandwidth and peak sensitivity from frequency-response data.
+
+    freq_hz
+        increasing frequencies, Hz.
+    loop_gain
+        the loop gain L (complex, pulse/pulse): the analytic ``loop_gain`` or a measured open loop Y/E taken with
+        the feed-forward off.
+    closed_loop
+        Y/R for the bandwidth (complex); default L/(1 + L).
+
+    Crossings are interpolated linearly in log frequency (gain in dB, phase unwrapped from the lowest frequency),
+    so the figures are as good as the grid is dense around them. Margins alone do not prove stability (a loop
+    with a resonance can cross 0 dB several times: the smallest phase margin is reported).
+    """
+    d = _core.margins(np.asarray(freq_hz, dtype=float), np.asarray(loop_gain, dtype=complex),
+                      None if closed_loop is None else np.asarray(closed_loop, dtype=complex))
+    return Margins(**d)
+
+
+@dataclass(frozen=True)
+class Peak:
+    """A resonance (``kind = "resonance"``, a peak) or anti-resonance (``"antiresonance"``, a dip) of a response:
+    its frequency (Hz), gain (dB) and prominence above/below the response's trend (dB)."""
+
+    kind: str
+    freq_hz: float
+    gain_db: float
+    prominence_db: float
+
+
+def resonances(freq_hz, response, *, min_prominence_db: float = 3.0, max_width_decades: float = 0.5) -> list[Peak]:
+    """Resonance peaks and anti-resonance dips of a response (typically the plant Y/U), sorted by frequency.
+
+    The gain in dB is detrended by its least-squares line in log frequency (a rigid axis falls 40 dB/decade;
+    what stands out of that line is mechanics), then every local maximum/minimum whose prominence exceeds
+    `min_prominence_db` (dB, > 0) is reported. Prominence is measured as in ``scipy.signal.peak_prominences``:
+    the height above the higher of the two lowest points that separate the peak from higher ground. Peaks wider
+    than `max_width_decades` at half prominence are bends of the trend, not modes, and are left out.
+    """
+    f = np.asarray(freq_hz, dtype=float)
+    h = np.asarray(response, dtype=complex)
+    if f.ndim != 1 or f.shape != h.shape or f.size < 3:
+        raise ValueError("freq_hz and response must be 1-D arrays of the same length (at least 3 points)")
+    if not min_prominence_db > 0:
+        raise ValueError(f"min_prominence_db = {min_prominence_db} must be > 0 dB")
+    g = 20 * np.log10(np.abs(h))
+    x = np.log10(f)
+    slope, offset = np.polyfit(x, g, 1)
+    flat = g - (slope * x + offset)
+    out: list[Peak] = []
+    for kind, sign in (("resonance", 1.0), ("antiresonance", -1.0)):
+        y = sign * flat
+        for i in range(1, len(y) - 1):
+            if not (y[i] > y[i - 1] and y[i] >= y[i + 1]):
+                continue
+            left = y[: i + 1][::-1]
+            higher = np.nonzero(left > y[i])[0]
+            left_min = left[: higher[0]].min() if higher.size else left.min()
+            right = y[i:]
+            higher = np.nonzero(right > y[i])[0]
+            right_min = right[: higher[0]].min() if higher.size else right.min()
+            prom = y[i] - max(left_min, right_min)
+            if prom < min_prominence_db:
+                continue
+            # Width at half prominence, in decades: a mechanical mode is sharp; a broad bend of the trend
+            # (a current loop's lag, the hold) is not a resonance.
+            level = y[i] - 0.5 * prom
+            lo = i
+            while lo > 0 and y[lo] > level:
+                lo -= 1
+            hi = i
+            while hi < len(y) - 1 and y[hi] > level:
+                hi += 1
+            if x[hi] - x[lo] > max_width_decades:
+                continue
+            out.append(Peak(kind, float(f[i]), float(g[i]), float(prom)))
+    return sorted(out, key=lambda p: p.freq_hz)
+
+
+# ----------------------------------------------------------------------------------------------------------------
+# The response container
+# ----------------------------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class FrequencyResponse:
+    """The three responses of one loop at a set of frequencies, measured or analytic.
+
+    freq_hz
+        frequencies, Hz.
+    plant, open_loop, closed_loop
+        complex responses Y/U (pulse per DAC count), Y/E and Y/R (pulse/pulse).
+    method
+        ``"stepped sine"``, ``"multisine"``, ``"chirp"`` or ``"analytic"``.
+    coherence
+        measured: per point 0..1 (stepped sine: share of Y's variance explained by the fundamental; broadband:
+        the magnitude-squared coherence between R and Y); None for analytic data.
+    distortion
+        stepped sine: harmonic distortion of Y (2nd..5th over the fundamental); else None.
+    loop_gain, sensitivity
+        analytic only: L = F C P and E/R.
+    feedforward, filters
+        whether the feed-forward and the biquads were in the loop.
+    status, message
+        how the measurement ended (``"completed"``, ``"deviation_exceeded"``, ``"drive_alarm"``, ``"stopped"``).
+    signals
+        stepped sine: the fundamentals of R, E, U, Y per point (complex; pulse, pulse, counts, pulse).
+    servo_period_s
+        the servo period, s.
+    """
+
+    freq_hz: np.ndarray
+    plant: np.ndarray
+    open_loop: np.ndarray
+    closed_loop: np.ndarray
+    method: str
+    servo_period_s: float
+    feedforward: bool = False
+    filters: bool = True
+    coherence: np.ndarray | None = None
+    distortion: np.ndarray | None = None
+    loop_gain: np.ndarray | None = None
+    sensitivity: np.ndarray | None = None
+    status: str = "completed"
+    message: str = ""
+    signals: dict = field(default_factory=dict, repr=False)
+
+    def __len__(self) -> int:
+        return len(self.freq_hz)
+
+    def __repr__(self) -> str:
+        f = self.freq_hz
+        span = f"{f[0]:.4g}..{f[-1]:.4g} Hz" if len(f) else "empty"
+        return f"FrequencyResponse({self.method}, {len(f)} points, {span}, status={self.status!r})"
+
+    def response(self, which: str) -> np.ndarray:
+        """The complex response named `which`: "plant", "open_loop", "closed_loop" (or "loop_gain",
+        "sensitivity" for analytic data)."""
+        if which not in (*_RESPONSES, "loop_gain", "sensitivity"):
+            raise ValueError(f"which = {which!r} must be one of plant, open_loop, closed_loop, loop_gain, sensitivity")
+        h = getattr(self, which)
+        if h is None:
+            raise ValueError(f"{which} is only available from analytic data (servobench.frequency.analytic_response)")
+        return h
+
+    def gain_db(self, which: str = "open_loop") -> np.ndarray:
+        """Gain of a response, dB."""
+        return 20 * np.log10(np.abs(self.response(which)))
+
+    def phase_deg(self, which: str = "open_loop") -> np.ndarray:
+        """Phase of a response, deg, unwrapped point to point from the lowest frequency."""
+        return _core.unwrapped_phase_deg(self.response(which))
+
+    def margins(self) -> Margins:
+        """Margins of the loop: from the analytic loop gain, or from the measured Y/E (which is the loop gain only
+        when the feed-forward was off during the measurement, else ValueError)."""
+        if self.loop_gain is not None:
+            return margins(self.freq_hz, self.loop_gain, self.closed_loop)
+        if self.feedforward:
+            raise ValueError("this open loop Y/E was measured with the feed-forward on, so it is not the loop gain; "
+                             "measure with feedforward=False to read margins")
+        return margins(self.freq_hz, self.open_loop, self.closed_loop)
+
+    def resonances(self, which: str = "plant", *, min_prominence_db: float = 3.0) -> list[Peak]:
+        """Resonances and anti-resonances of a response (default the plant); see :func:`resonances`."""
+        return resonances(self.freq_hz, self.response(which), min_prominence_db=min_prominence_db)
+
+    def to_frd(self, which: str = "open_loop"):
+        """The response as a python-control ``FrequencyResponseData`` (frequencies in rad/s). Needs the
+        ``control`` package (``pip install control``)."""
+        try:
+            import control
+        except ImportError as exc:  # pragma: no cover - depends on the environment
+            raise ImportError("to_frd needs python-control: pip install control") from exc
+        return control.frd(self.response(which), 2 * np.pi * self.freq_hz)
+
+    def plot(self, which=("plant", "open_loop", "closed_loop"), *, path: str | None = None, title: str | None = None):
+        """Bode plot of the chosen responses (see :func:`servobench.plot.bode`); margins are annotated when the open
+        loop is drawn. Returns the Figure."""
+        from . import plot
+
+        return plot.bode(self, which=which, path=path, title=title)
+
+
+# ----------------------------------------------------------------------------------------------------------------
+# Progress
+# ----------------------------------------------------------------------------------------------------------------
+def _progress_callback(progress, label: str) -> Callable[[int, int], bool] | None:
+    if progress is None or progress is False:
+        return None
+    if callable(progress):
+        return progress
+    if progress is True:
+        def bar(done: int, total: int) -> bool:
+            width = 30
+            filled = int(width * done / total)
+            sys.stderr.write(f"\r{label} [{'#' * filled}{'.' * (width - filled)}] {done}/{total}")
+            if done == total:
+                sys.stderr.write("\n")
+            sys.stderr.flush()
+            return True
+        return bar
+    raise TypeError("progress must be None, True (a text bar on stderr) or a callable(done, total) -> bool")
+
+
+def _core_axis(axis):
+    return getattr(axis, "_axis", axis)
+
+
+# ----------------------------------------------------------------------------------------------------------------
+# Measurements
+# ----------------------------------------------------------------------------------------------------------------
+def sine_sweep(axis, *, start_hz: float = 10.0, end_hz: float = 100.0, amplitude_pulse: float = 300.0,
+               points: int = 100, update_s: float = 0.1, deviation_limit_pulse: float = 0.0,
+               feedforward: bool = False, filters: bool = True, settle_fraction: float = 0.25,
+               progress=None) -> FrequencyResponse:
+    """The ADLINK Bode tool's stepped-sine measurement on a simulated axis (L1978-2045). Defaults are the manual's
+    example (L2023, L2035): 10-100 Hz, 100 points, 300 pulse, 0.1 s per point.
+
+    axis
+        a :class:`servobench.Axis` (voltage-output: torque or velocity drive). The sweep runs from its present
+        state around its last command position and continues it; it is left where the sweep ended.
+    start_hz, end_hz
+        first and last frequency, Hz (> 0, below the Nyquist frequency 1/(2 Ts); the manual keeps the end <= 500 Hz
+        for real drives, L2015).
+    amplitude_pulse
+        sine amplitude added to the command, pulse (> 0).
+    points
+        data length: number of log-spaced frequencies (2..100000).
+    update_s
+        time per frequency point, s; the first `settle_fraction` (0..0.9) of it is discarded, the rest analysed over
+        whole periods (it must hold at least one period of the lowest frequency).
+    deviation_limit_pulse
+        |E| above this turns the servo off and ends the sweep (status ``"deviation_exceeded"``), pulse; 0 = off. A
+        drive alarm also ends it (``"drive_alarm"``).
+    feedforward, filters
+        feed-forward and biquads in the loop during the sweep (restored afterwards); see the module doc.
+    progress
+        None, True (a text bar on stderr) or a callable(done, total) returning False to stop (status
+        ``"stopped"``).
+
+    Releases the GIL while it runs; deterministic (no randomness unless the encoder has noise, seeded).
+    """
+    d = _core.sine_sweep(_core_axis(axis), start_hz=float(start_hz), end_hz=float(end_hz),
+                         amplitude_pulse=float(amplitude_pulse), points=float(points), update_s=float(update_s),
+                         deviation_limit_pulse=float(deviation_limit_pulse), settle_fraction=float(settle_fraction),
+                         feedforward=bool(feedforward), filters=bool(filters),
+                         progress=_progress_callback(progress, "Bode sweep"))
+    r, e, u, y = d["r"], d["e"], d["u"], d["y"]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return FrequencyResponse(
+            freq_hz=d["freq_hz"], plant=y / u, open_loop=y / e, closed_loop=y / r, method="stepped sine",
+            servo_period_s=axis.servo_period_s, feedforward=bool(feedforward), filters=bool(filters),
+            coherence=d["coherence"], distortion=d["distortion"], status=d["status"], message=d["message"],
+            signals={"r": r, "e": e, "u": u, "y": y, "periods": d["periods"], "window": d["window"],
+                     "ticks": d["ticks"], "stop_time_s": d["stop_time_s"],
+                     "stop_error_pulse": d["stop_error_pulse"]})
+
+
+def analytic_response(axis, freq_hz, *, feedforward: bool = False, filters: bool = True) -> FrequencyResponse:
+    """The analytic frequency response of the axis's loop at `freq_hz` (Hz, > 0, below Nyquist), computed from the
+    same parameter objects the simulator runs: the law in z, both biquads, the one-tick output delay, the output
+    stage (10 V per 32767 counts, ADLINK V_INVERSE), the drive (current loop; velocity mode: its discrete speed
+    loop) and the zero-order-hold mechanics lifted exactly to the servo rate, the encoder's counts per radian.
+    Exact for a linear configuration (no friction, saturation, quantisation or noise): a stepped-sine sweep of
+    such an axis agrees with it (tests/python/test_bode.py). Also returns ``loop_gain`` and ``sensitivity``.
+    """
+    f = np.atleast_1d(np.asarray(freq_hz, dtype=float))
+    d = _core.loop_response(_core_axis(axis), f, bool(feedforward), bool(filters))
+    return FrequencyResponse(freq_hz=d["freq_hz"], plant=d["plant"], open_loop=d["open_loop"],
+                             closed_loop=d["closed_loop"], method="analytic", servo_period_s=axis.servo_period_s,
+                             feedforward=bool(feedforward), filters=bool(filters), loop_gain=d["loop_gain"],
+                             sensitivity=d["sensitivity"],
+                             signals={"controller": d["controller"], "feedforward": d["feedforward"],
+                                      "filters": d["filters"]})
+
+
+# ----------------------------------------------------------------------------------------------------------------
+# Broadband excitations and the H1 estimate
+# ----------------------------------------------------------------------------------------------------------------
+def chirp(*, start_hz: float, end_hz: float, duration_s: float, servo_period_s: float, amplitude: float = 1.0,
+          kind: str = "log") -> np.ndarray:
+    """A swept sine of `amplitude` (any unit: pulse for a command, V for an injection) sampled every
+    `servo_period_s` (s) for `duration_s` (s), sweeping from `start_hz` to `end_hz` (Hz, below Nyquist);
+    ``kind = "log"`` (exponential, equal time per decade) or ``"linear"``. Starts at phase 0 (value 0)."""
+    ts = float(servo_period_s)
+    _check_band(start_hz, end_hz, ts)
+    if not duration_s > 0:
+        raise ValueError(f"duration_s = {duration_s} must be > 0 s")
+    t = np.arange(int(round(duration_s / ts))) * ts
+    if kind == "log":
+        k = np.log(end_hz / start_hz) / duration_s
+        phase = 2 * np.pi * start_hz * np.expm1(k * t) / k if k != 0 else 2 * np.pi * start_hz * t
+    elif kind == "linear":
+        phase = 2 * np.pi * (start_hz * t + 0.5 * (end_hz - start_hz) / duration_s * t * t)
+    else:
+        raise ValueError(f"kind = {kind!r} must be 'log' or 'linear'")
+    return amplitude * np.sin(phase)
+
+
+def multisine(*, start_hz: float, end_hz: float, period_ticks: int, servo_period_s: float, amplitude: float = 1.0,
+              lines: int | None = None, periods: int = 1) -> tuple[np.ndarray, np.ndarray]:
+    """A periodic multisine with Schroeder phases (low crest factor), scaled to a peak of `amplitude`.
+
+    One period is `period_ticks` samples at `servo_period_s` (s); its lines are the DFT bins k*fs/period_ticks
+    between `start_hz` and `end_hz` (Hz): all of them, or `lines` of them log-spaced (distinct bins). Returns
+    ``(signal, line_bins)``: `periods` repetitions of the period, and the excited bin numbers.
+    """
+    ts = float(servo_period_s)
+    _check_band(start_hz, end_hz, ts)
+    n = int(period_ticks)
+    if n < 8:
+        raise ValueError(f"period_ticks = {period_ticks} must be >= 8")
+    df = 1.0 / (n * ts)
+    k_lo = max(1, int(np.ceil(start_hz / df - 1e-9)))
+    k_hi = min(n // 2 - 1, int(np.floor(end_hz / df + 1e-9)))
+    if k_hi < k_lo:
+        raise ValueError(f"no DFT line of a {n}-tick period (spacing {df:.4g} Hz) lies in {start_hz}..{end_hz} Hz: "
+                         "lengthen period_ticks")
+    bins = np.arange(k_lo, k_hi + 1)
+    if lines is not None:
+        if lines < 1:
+            raise ValueError(f"lines = {lines} must be >= 1")
+        pick = np.unique(np.round(np.geomspace(k_lo, k_hi, int(lines))).astype(int))
+        bins = pick
+    m = len(bins)
+    phases = -np.pi * np.arange(m) * (np.arange(m) + 1) / m  # Schroeder
+    spec = np.zeros(n // 2 + 1, dtype=complex)
+    spec[bins] = np.exp(1j * phases)
+    x = np.fft.irfft(spec, n)
+    x *= amplitude / np.max(np.abs(x))
+    return np.tile(x, int(periods)), bins
+
+
+def _check_band(start_hz, end_hz, ts):
+    nyq = 0.5 / ts
+    for name, v in (("start_hz", start_hz), ("end_hz", end_hz)):
+        if not (0 < v < nyq):
+            raise ValueError(f"{name} = {v} must be > 0 and below the Nyquist frequency {nyq:g} Hz")
+    if not end_hz > start_hz:
+        raise ValueError(f"end_hz = {end_hz} must be above start_hz = {start_hz}")
+
+
+def _measure_with(axis, feedforward: bool, filters: bool):
+    """Context: the law's feed-forward and the biquads set for a measurement, restored afterwards."""
+    import contextlib
+
+    @contextlib.contextmanager
+    def ctx():
+        law, flt = axis.law, axis.filters
+        meas_law = law if feedforward else law.replace(kvff=0, kaff=0)
+        axis.set_law(meas_law)
+        if not filters:
+            axis.set_filters((None, None))
+        try:
+            yield
+        finally:
+            axis.set_law(law)
+            axis.set_filters(flt)
+
+    return ctx()
+
+
+def broadband_response(axis, *, excitation: str = "multisine", start_hz: float = 10.0, end_hz: float | None = None,
+                       amplitude_pulse: float = 10.0, lines: int | None = 1000, period_ticks: int | None = None,
+                       periods: int = 4, duration_s: float = 2.0, rest_s: float = 0.5,
+                       feedforward: bool = False, filters: bool = True) -> FrequencyResponse:
+    """A whole frequency response from one closed-loop run with a broadband command R (the fast alternative to
+    the stepped sine). The H1 estimates use R as the reference: Y/R = S_RY/S_RR, Y/E = S_RY/S_RE,
+    Y/U = S_RY/S_RU (the indirect closed-loop method: unbiased by anything that enters the loop after R).
+
+    excitation
+        ``"multisine"``: a periodic Schroeder multisine of `period_ticks` ticks (default: the shortest period
+        whose line spacing puts `lines` distinct log-spaced lines between start_hz and end_hz, at least
+        fs/start_hz); one period is run to settle, then `periods` periods are averaged; results at the excited
+        lines. Exact in steady state (no leakage). Coherence from the spread between periods.
+        ``"chirp"``: a logarithmic chirp of `duration_s` s, tapered to start and end at rest, followed by `rest_s` s
+        for the loop to settle; the record is run `periods` times from rest and the spectra of the whole records
+        averaged (the response must die out within the rest for the estimate to be exact). Results at the record's
+        DFT lines between start_hz and end_hz, thinned to `lines` log-spaced ones.
+    start_hz, end_hz
+        band, Hz (end default 0.4/Ts).
+    amplitude_pulse
+        peak amplitude of R, pulse.
+    feedforward, filters
+        as for :func:`sine_sweep`.
+
+    The axis continues from its present state around its last command position. Returns a
+    :class:`FrequencyResponse` with ``coherence`` (magnitude-squared, R to Y).
+    """
+    ts = axis.servo_period_s
+    fs = 1.0 / ts
+    if end_hz is None:
+        end_hz = 0.4 * fs
+    _check_band(start_hz, end_hz, ts)
+    if not amplitude_pulse > 0:
+        raise ValueError(f"amplitude_pulse = {amplitude_pulse} must be > 0 pulse")
+    if int(periods) < 1:
+        raise ValueError(f"periods = {periods} must be >= 1")
+    base = axis.last_command_pulse
+    with _measure_with(axis, feedforward, filters):
+        if excitation == "multisine":
+            if period_ticks is None:
+                n_min = int(np.ceil(fs / start_hz))
+                if lines is not None and lines > 1:
+                    # log-spaced lines need spacing df <= start*(r - 1), r = (end/start)^(1/(lines-1))
+                    r = (end_hz / start_hz) ** (1.0 / (lines - 1))
+                    n_min = max(n_min, int(np.ceil(fs / (start_hz * (r - 1.0)))))
+                period_ticks = n_min
+            x, bins = multisine(start_hz=start_hz, end_hz=end_hz, period_ticks=period_ticks, servo_period_s=ts,
+                                amplitude=amplitude_pulse, lines=lines, periods=int(periods) + 1)
+            run = axis.run(base + x, signals=("fb_pos", "error", "biquad1"))
+            n = int(period_ticks)
+            seg = slice(n, None)  # drop the settling period
+
+            def spectra(sig):
+                s = np.asarray(sig, dtype=float)[seg].reshape(int(periods), n)
+                return np.fft.rfft(s, axis=1)[:, bins]
+
+            R, E, U, Y = (spectra(s) for s in (x, run.error, run.biquad1, run.fb_pos))
+            s_ry = np.sum(np.conj(R) * Y, axis=0)
+            s_re = np.sum(np.conj(R) * E, axis=0)
+            s_ru = np.sum(np.conj(R) * U, axis=0)
+            s_rr = np.sum(np.abs(R) ** 2, axis=0)
+            s_yy = np.sum(np.abs(Y) ** 2, axis=0)
+            freq = bins * fs / n
+            coh = np.abs(s_ry) ** 2 / (s_rr * s_yy) if periods > 1 else np.ones(len(bins))
+        elif excitation == "chirp":
+            n_chirp = int(round(duration_s / ts))
+            n_rest = int(round(rest_s / ts))
+            x1 = chirp(start_hz=start_hz, end_hz=end_hz, duration_s=duration_s, servo_period_s=ts,
+                       amplitude=amplitude_pulse)
+            # Taper: half-cosine ramps of one start-frequency period at the start and 20 end-frequency periods at
+            # the end, so R starts and ends at rest; then a rest for the loop to settle back.
+            ramp_in = min(n_chirp // 4, int(round(fs / start_hz)))
+            ramp_out = min(n_chirp // 4, int(round(20 * fs / end_hz)))
+            taper = np.ones(n_chirp)
+            taper[:ramp_in] = 0.5 - 0.5 * np.cos(np.pi * np.arange(ramp_in) / ramp_in)
+            taper[n_chirp - ramp_out:] = 0.5 + 0.5 * np.cos(np.pi * np.arange(1, ramp_out + 1) / ramp_out)
+            record = np.concatenate([x1 * taper, np.zeros(n_rest)])
+            n = len(record)
+            axis.run(np.full(n_rest, base), signals=())  # settle whatever ran before, at the base position
+            x = np.tile(record, int(periods))
+            run = axis.run(base + x, signals=("fb_pos", "error", "biquad1"))
+            freq_all = np.fft.rfftfreq(n, ts)
+            in_band = np.nonzero((freq_all >= start_hz) & (freq_all <= end_hz))[0]
+            if lines is not None and lines < len(in_band):
+                want = np.geomspace(freq_all[in_band[0]], freq_all[in_band[-1]], int(lines))
+                in_band = np.unique(np.searchsorted(freq_all, want).clip(in_band[0], in_band[-1]))
+            freq = freq_all[in_band]
+
+            def spectra(sig):
+                s = np.asarray(sig, dtype=float).reshape(int(periods), n)
+                s = s - s[:, :1]  # each repetition starts at rest: its first sample is the offset
+                return np.fft.rfft(s, axis=1)[:, in_band]
+
+            R, E, U, Y = (spectra(s) for s in (x, run.error, run.biquad1, run.fb_pos - base))
+            s_ry = np.sum(np.conj(R) * Y, axis=0)
+            s_re = np.sum(np.conj(R) * E, axis=0)
+            s_ru = np.sum(np.conj(R) * U, axis=0)
+            s_rr = np.sum(np.abs(R) ** 2, axis=0)
+            s_yy = np.sum(np.abs(Y) ** 2, axis=0)
+            coh = np.abs(s_ry) ** 2 / (s_rr * s_yy) if periods > 1 else np.ones(len(freq))
+        else:
+            raise ValueError(f"excitation = {excitation!r} must be 'multisine' or 'chirp'")
+    return FrequencyResponse(freq_hz=freq, plant=s_ry / s_ru, open_loop=s_ry / s_re, closed_loop=s_ry / s_rr,
+                             method=excitation, servo_period_s=ts, feedforward=bool(feedforward),
+                             filters=bool(filters), coherence=np.clip(coh, 0.0, 1.0), status="completed",
+                             message=f"{excitation}: {len(freq)} lines, {len(x)} ticks")
