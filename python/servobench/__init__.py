@@ -36,6 +36,8 @@ from .trajectory import Trajectory, trapezoid_move
 from .metrics import MoveMetrics, move_metrics
 from .examples import demo_axis
 from . import design, plot
+from . import frequency
+from .frequency import FrequencyResponse, Margins, analytic_response, broadband_response, sine_sweep
 from . import motion
 from .motion import (
     AdlinkPtp,
@@ -58,6 +60,12 @@ __version__ = "0.1.0"
 __all__ = [
     "AdlinkBiquad",
     "AdlinkPtp",
+    "FrequencyResponse",
+    "Margins",
+    "analytic_response",
+    "broadband_response",
+    "frequency",
+    "sine_sweep",
     "ElectronicGear",
     "GtGear",
     "GeJog",

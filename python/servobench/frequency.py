@@ -459,7 +459,7 @@ def _measure_with(axis, feedforward: bool, filters: bool):
 
 def broadband_response(axis, *, excitation: str = "multisine", start_hz: float = 10.0, end_hz: float | None = None,
                        amplitude_pulse: float = 10.0, lines: int | None = 1000, period_ticks: int | None = None,
-                       periods: int = 4, duration_s: float = 2.0, rest_s: float = 0.5,
+                       periods: int = 4, duration_s: float | None = None, rest_s: float = 0.5,
                        feedforward: bool = False, filters: bool = True) -> FrequencyResponse:
     """A whole frequency response from one closed-loop run with a broadband command R (the fast alternative to
     the stepped sine). The H1 estimates use R as the reference: Y/R = S_RY/S_RR, Y/E = S_RY/S_RE,
@@ -470,7 +470,7 @@ def broadband_response(axis, *, excitation: str = "multisine", start_hz: float =
         whose line spacing puts `lines` distinct log-spaced lines between start_hz and end_hz, at least
         fs/start_hz); one period is run to settle, then `periods` periods are averaged; results at the excited
         lines. Exact in steady state (no leakage). Coherence from the spread between periods.
-        ``"chirp"``: a logarithmic chirp of `duration_s` s, tapered to start and end at rest, followed by `rest_s` s
+        ``"chirp"``: a logarithmic chirp of `duration_s` s (default: what `lines` distinct lines need), tapered to start and end at rest, followed by `rest_s` s
         for the loop to settle; the record is run `periods` times from rest and the spectra of the whole records
         averaged (the response must die out within the rest for the estimate to be exact). Results at the record's
         DFT lines between start_hz and end_hz, thinned to `lines` log-spaced ones.
@@ -494,14 +494,15 @@ def broadband_response(axis, *, excitation: str = "multisine", start_hz: float =
     if int(periods) < 1:
         raise ValueError(f"periods = {periods} must be >= 1")
     base = axis.last_command_pulse
+    # The record length that gives `lines` distinct log-spaced DFT lines: spacing df <= start*(r - 1),
+    # r = (end/start)^(1/(lines-1)); at least one period of start_hz.
+    n_min = int(np.ceil(fs / start_hz))
+    if lines is not None and lines > 1:
+        r = (end_hz / start_hz) ** (1.0 / (lines - 1))
+        n_min = max(n_min, int(np.ceil(fs / (start_hz * (r - 1.0)))))
     with _measure_with(axis, feedforward, filters):
         if excitation == "multisine":
             if period_ticks is None:
-                n_min = int(np.ceil(fs / start_hz))
-                if lines is not None and lines > 1:
-                    # log-spaced lines need spacing df <= start*(r - 1), r = (end/start)^(1/(lines-1))
-                    r = (end_hz / start_hz) ** (1.0 / (lines - 1))
-                    n_min = max(n_min, int(np.ceil(fs / (start_hz * (r - 1.0)))))
                 period_ticks = n_min
             x, bins = multisine(start_hz=start_hz, end_hz=end_hz, period_ticks=period_ticks, servo_period_s=ts,
                                 amplitude=amplitude_pulse, lines=lines, periods=int(periods) + 1)
@@ -522,6 +523,10 @@ def broadband_response(axis, *, excitation: str = "multisine", start_hz: float =
             freq = bins * fs / n
             coh = np.abs(s_ry) ** 2 / (s_rr * s_yy) if periods > 1 else np.ones(len(bins))
         elif excitation == "chirp":
+            if duration_s is None:
+                duration_s = max(n_min * ts - rest_s, 10.0 / start_hz)
+            if not duration_s > 0:
+                raise ValueError(f"duration_s = {duration_s} must be > 0 s")
             n_chirp = int(round(duration_s / ts))
             n_rest = int(round(rest_s / ts))
             x1 = chirp(start_hz=start_hz, end_hz=end_hz, duration_s=duration_s, servo_period_s=ts,

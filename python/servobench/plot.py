@@ -51,41 +51,168 @@ def response(run, *, metrics=None, title: str | None = None, path: str | None = 
     return fig
 
 
-def bode(freq_hz, responses, *, title: str | None = None, markers: dict | None = None, path: str | None = None,
-         unwrap: bool = True):
-    """Bode plot: gain (dB) and phase (deg) over log frequency (Hz).
+_LABELS = {"plant": "plant Y/U", "open_loop": "open loop Y/E", "closed_loop": "closed loop Y/R",
+           "loop_gain": "loop gain L", "sensitivity": "sensitivity E/R"}
 
-    freq_hz: array of frequencies, Hz. responses: a complex array, or a dict {label: complex array} to overlay
-    several responses on the same frequencies. markers: optional {label: frequency_hz} drawn as vertical lines
-    (e.g. resonances). Returns the matplotlib Figure; writes it to `path` if given.
-    """
-    plt = _pyplot()
+
+def _series(freq_hz, responses, which):
+    """Normalises bode()'s inputs to a list of (label, freq, H, measured?)."""
+    from .frequency import FrequencyResponse
+
+    def from_fr(fr, prefix):
+        out = []
+        names = (which,) if isinstance(which, str) else tuple(which)
+        for w in names:
+            label = _LABELS.get(w, w) if not prefix else f"{prefix}: {_LABELS.get(w, w)}"
+            out.append((label, fr.freq_hz, fr.response(w), fr.method != "analytic"))
+        return out
+
+    if isinstance(freq_hz, FrequencyResponse):
+        return from_fr(freq_hz, "" if responses is None else str(responses)), [freq_hz]
+    if isinstance(freq_hz, (list, tuple)) and freq_hz and all(isinstance(x, FrequencyResponse) for x in freq_hz):
+        return [s for fr in freq_hz for s in from_fr(fr, fr.method)], list(freq_hz)
     f = np.asarray(freq_hz, dtype=float)
+    if responses is None:
+        raise ValueError("bode(freq_hz, responses): responses is missing")
     if not isinstance(responses, dict):
         responses = {"response": responses}
-    fig, (ax_mag, ax_ph) = plt.subplots(2, 1, sharex=True, figsize=(8, 6), constrained_layout=True)
+    out, frs = [], []
     for label, h in responses.items():
-        h = np.asarray(h, dtype=complex)
-        if h.shape != f.shape:
-            raise ValueError(f"response '{label}' has shape {h.shape}; freq_hz has {f.shape}")
+        if isinstance(h, FrequencyResponse):
+            w = which if isinstance(which, str) else "open_loop"
+            out.append((label, h.freq_hz, h.response(w), h.method != "analytic"))
+            frs.append(h)
+            continue
+        if isinstance(h, tuple) and len(h) == 2:
+            fh, hh = np.asarray(h[0], dtype=float), np.asarray(h[1], dtype=complex)
+        else:
+            fh, hh = f, np.asarray(h, dtype=complex)
+        if hh.shape != fh.shape:
+            raise ValueError(f"response '{label}' has shape {hh.shape}; its frequencies have {fh.shape}")
+        out.append((label, fh, hh, False))
+    return out, frs
+
+
+def bode(freq_hz, responses=None, *, which=("plant", "open_loop", "closed_loop"), title: str | None = None,
+         markers: dict | None = None, margins=None, path: str | None = None, unwrap: bool = True):
+    """Bode plot: gain (dB) and phase (deg) over log frequency (Hz), several responses overlaid.
+
+    Accepted inputs:
+
+    - ``bode(freq_hz, H)`` or ``bode(freq_hz, {label: H, ...})``: complex arrays on the frequencies `freq_hz` (Hz);
+      a dict value may also be a ``(freq_hz, H)`` pair or a :class:`servobench.frequency.FrequencyResponse`.
+    - ``bode(response)`` or ``bode([measured, analytic, ...])``: :class:`FrequencyResponse` objects; `which` picks
+      the responses to draw ("plant", "open_loop", "closed_loop", and for analytic data "loop_gain",
+      "sensitivity"). Measured data are drawn as dots, analytic data as lines, so a measurement sits on its
+      model.
+
+    margins
+        None (default: annotate when an open loop is drawn from a FrequencyResponse), False, True, or a
+        :class:`servobench.frequency.Margins`: the gain and phase crossovers are marked and the margins written.
+    markers
+        optional {label: frequency_hz} drawn as vertical lines (e.g. resonances).
+
+    Returns the matplotlib Figure; writes it to `path` (PNG, SVG, ...) if given.
+    """
+    from .frequency import Margins
+
+    plt = _pyplot()
+    series, frs = _series(freq_hz, responses, which)
+    fig, (ax_mag, ax_ph) = plt.subplots(2, 1, sharex=True, figsize=(8, 6), constrained_layout=True)
+    for i, (label, f, h, measured) in enumerate(series):
         phase = np.angle(h)
         phase = np.degrees(np.unwrap(phase) if unwrap else phase)
-        ax_mag.semilogx(f, 20 * np.log10(np.abs(h)), label=label)
-        ax_ph.semilogx(f, phase, label=label)
+        style = dict(ls="none", marker="o", ms=3.5, mfc="none") if measured else dict(lw=1.4)
+        ax_mag.semilogx(f, 20 * np.log10(np.abs(h)), label=label, **style)
+        ax_ph.semilogx(f, phase, label=label, **style)
     for label, fm in (markers or {}).items():
         for ax in (ax_mag, ax_ph):
             ax.axvline(fm, color="0.4", ls=":", lw=1)
         ax_mag.annotate(f"{label}\n{fm:.4g} Hz", (fm, 1.0), xycoords=("data", "axes fraction"), fontsize=8,
                         ha="left", va="top")
+    m = None
+    if isinstance(margins, Margins):
+        m = margins
+    elif margins is None or margins is True:
+        draws_open = (isinstance(which, str) and which in ("open_loop", "loop_gain")) or \
+            (not isinstance(which, str) and ("open_loop" in which or "loop_gain" in which))
+        if frs and draws_open:
+            try:
+                m = frs[-1].margins()
+            except ValueError:
+                m = None
+        if margins is True and m is None:
+            raise ValueError("margins=True needs a FrequencyResponse with an open loop taken without feed-forward")
+    if m is not None:
+        if np.isfinite(m.pm_freq_hz):
+            ax_mag.axvline(m.pm_freq_hz, color="C3", ls="--", lw=0.9)
+            ax_ph.axvline(m.pm_freq_hz, color="C3", ls="--", lw=0.9)
+            ax_ph.plot([m.pm_freq_hz, m.pm_freq_hz], [-180, -180 + m.phase_margin_deg], color="C3", lw=2.5)
+        if np.isfinite(m.gm_freq_hz):
+            ax_mag.axvline(m.gm_freq_hz, color="C4", ls="--", lw=0.9)
+            ax_ph.axvline(m.gm_freq_hz, color="C4", ls="--", lw=0.9)
+            ax_mag.plot([m.gm_freq_hz, m.gm_freq_hz], [0, -m.gain_margin_db], color="C4", lw=2.5)
+        ax_ph.axhline(-180, color="0.5", lw=0.8)
+        ax_mag.axhline(0, color="0.5", lw=0.8)
+        text = (f"PM {m.phase_margin_deg:.1f} deg @ {m.pm_freq_hz:.4g} Hz\n"
+                f"GM {m.gain_margin_db:.1f} dB @ {m.gm_freq_hz:.4g} Hz\n"
+                f"BW {m.bandwidth_hz:.4g} Hz, Ms {m.ms:.2f}")
+        ax_mag.text(0.01, 0.02, text, transform=ax_mag.transAxes, fontsize=8, va="bottom", ha="left",
+                    bbox=dict(boxstyle="round", fc="white", alpha=0.8))
     ax_mag.set_ylabel("gain [dB]")
     ax_ph.set_ylabel("phase [deg]")
     ax_ph.set_xlabel("frequency [Hz]")
     for ax in (ax_mag, ax_ph):
         ax.grid(True, which="both", alpha=0.3)
-    if len(responses) > 1:
-        ax_mag.legend()
+    if len(series) > 1:
+        ax_mag.legend(fontsize=8)
     if title:
         fig.suptitle(title, fontsize=10)
+    if path is not None:
+        fig.savefig(path, dpi=120)
+    return fig
+
+
+def nyquist(response, *, which: str = "loop_gain", title: str | None = None, path: str | None = None):
+    """Nyquist plot of a loop gain: Re/Im of L over the frequencies given, with the critical point -1 and the
+    circle of radius 1/Ms around it (the stability margin in one number).
+
+    response: a :class:`servobench.frequency.FrequencyResponse` (analytic: "loop_gain" by default; measured: use
+    ``which="open_loop"``), a list of them (overlaid), or a pair ``(freq_hz, L)``. Returns the Figure.
+    """
+    from .frequency import FrequencyResponse, margins as _margins
+
+    plt = _pyplot()
+    items = response if isinstance(response, (list, tuple)) and response and \
+        isinstance(response[0], FrequencyResponse) else [response]
+    fig, ax = plt.subplots(figsize=(6, 6), constrained_layout=True)
+    ms = None
+    for item in items:
+        if isinstance(item, FrequencyResponse):
+            w = which if (which != "loop_gain" or item.loop_gain is not None) else "open_loop"
+            f, l_, label = item.freq_hz, item.response(w), f"{item.method}: {_LABELS.get(w, w)}"
+            measured = item.method != "analytic"
+        else:
+            f, l_ = (np.asarray(item[0], dtype=float), np.asarray(item[1], dtype=complex))
+            label, measured = "L", False
+        style = dict(ls="none", marker="o", ms=3, mfc="none") if measured else dict(lw=1.4)
+        ax.plot(l_.real, l_.imag, label=label, **style)
+        ax.plot(l_.real, -l_.imag, color="0.6", lw=0.6, ls=":")
+        ms = _margins(f, l_).ms if ms is None else ms
+    ax.plot([-1], [0], "r+", ms=12, mew=2)
+    if ms and np.isfinite(ms) and ms > 0:
+        t = np.linspace(0, 2 * np.pi, 200)
+        ax.plot(-1 + np.cos(t) / ms, np.sin(t) / ms, "r--", lw=0.8, label=f"1/Ms = {1 / ms:.2f}")
+    ax.set_xlim(-3, 1.5)
+    ax.set_ylim(-2.5, 2.5)
+    ax.set_aspect("equal")
+    ax.axhline(0, color="0.5", lw=0.6)
+    ax.axvline(0, color="0.5", lw=0.6)
+    ax.set_xlabel("Re L")
+    ax.set_ylabel("Im L")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8, loc="lower right")
+    ax.set_title(title or "Nyquist plot of the loop gain", fontsize=10)
     if path is not None:
         fig.savefig(path, dpi=120)
     return fig
