@@ -1,5 +1,6 @@
 // Bindings of the tuning layer: analytic loop response, stepped-sine sweep, margins. Thin: arrays in and out.
 #include <pybind11/complex.h>
+#include <pybind11/eigen.h>
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -158,6 +159,16 @@ void bind_tuning(py::module_& m) {
       },
       py::arg("freq_hz"), py::arg("loop_gain"), py::arg("closed_loop") = py::none(),
       "Gain/phase/delay margins, closed-loop bandwidth and peak sensitivity from frequency-response data.");
+
+  m.def(
+      "tick_model",
+      [](const machine::Axis& axis) {
+        const machine::TickModel tm = axis.power_train().linear_tick_model();
+        return py::make_tuple(tm.a, tm.b, tm.c_motor, tm.c_load);
+      },
+      py::arg("axis"),
+      "The power train's linear model at the servo rate: (A, B, C_motor, C_load), volts held over a tick in, "
+      "angles (rad) out.");
 
   m.def(
       "unwrapped_phase_deg",

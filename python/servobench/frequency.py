@@ -33,6 +33,7 @@ __all__ = [
     "Peak",
     "analytic_response",
     "broadband_response",
+    "linear_model",
     "chirp",
     "margins",
     "multisine",
@@ -568,3 +569,54 @@ def broadband_response(axis, *, excitation: str = "multisine", start_hz: float =
                              method=excitation, servo_period_s=ts, feedforward=bool(feedforward),
                              filters=bool(filters), coherence=np.clip(coh, 0.0, 1.0), status="completed",
                              message=f"{excitation}: {len(freq)} lines, {len(x)} ticks")
+
+
+# ----------------------------------------------------------------------------------------------------------------
+# The same loop as python-control systems
+# ----------------------------------------------------------------------------------------------------------------
+def linear_model(axis, *, feedforward: bool = False, filters: bool = True) -> dict:
+    """The axis's loop as discrete-time python-control systems (dt = the servo period, s), built from the same
+    parameters as :func:`analytic_response`: ``controller`` C(z) (counts/pulse), ``feedforward`` Cff(z),
+    ``filters`` F(z) (both biquads), all three as state-space systems, ``plant`` P(z) (DAC counts to encoder pulses, with the one-tick delay; a
+    state-space system from the lifted power train), ``loop_gain`` F C P and ``closed_loop`` Y/R. Needs the
+    ``control`` package. For analysis with python-control's tools (step responses, root locus, margins)."""
+    import control
+
+    ts = axis.servo_period_s
+    law = axis.law
+    gt = isinstance(law, _core.GtServoLaw)
+    if gt:
+        kp, ki, kd = law.kp, (0.0 if law.ilmt == 0 else law.ki / 256.0), law.kd
+        kvff, kaff, vpc = law.kvff, law.kaff, 10.0 / 32767.0
+    else:
+        def eff(k, shift):
+            return k * 2.0 ** (shift + law.pid_shift)
+        kp, kd = eff(law.kp, law.kp_shift), eff(law.kd, law.kd_shift)
+        ki = 0.0 if law.integral_limit == 0 else eff(law.ki, law.ki_shift)
+        kvff, kaff = eff(law.kvff, law.kvff_shift), eff(law.kaff, law.kaff_shift)
+        vpc = (-1.0 if law.v_inverse else 1.0) * 10.0 / 32767.0
+    if not feedforward:
+        kvff = kaff = 0.0
+    # C(z) = kp + ki z/(z-1) + kd (z-1)/z = [(kp+ki+kd) z^2 - (kp+2kd) z + kd] / (z^2 - z)
+    c = control.tf([kp + ki + kd, -(kp + 2 * kd), kd], [1, -1, 0], ts)
+    # Cff(z) = kvff (1 - z^-1) + kaff (1 - z^-1)^2 = [(kvff+kaff) z^2 - (kvff+2kaff) z + kaff] / z^2
+    cff = control.tf([kvff + kaff, -(kvff + 2 * kaff), kaff], [1, 0, 0], ts)
+    f = control.tf([1], [1], ts)
+    if filters:
+        for flt in axis.filters:
+            if flt is None:
+                continue
+            q = flt.to_float() if hasattr(flt, "to_float") else flt
+            f = f * control.tf([q.b0, q.b1, q.b2], [1, q.a1, q.a2], ts)
+    a, b, c_motor, c_load = _core.tick_model(_core_axis(axis))
+    out = c_load if axis.encoder.on_load else c_motor
+    scale = axis.encoder.counts_per_rev / (2 * np.pi) * vpc
+    delay = control.tf([1], [1, 0], ts)
+    p = control.ss(a, b, scale * out, 0, ts) * delay
+    # Products in state space (polynomial products of this order lose digits).
+    c, cff, f = control.ss(c), control.ss(cff), control.ss(f)
+    loop = f * c * p
+    # Y/R = F (C + Cff) P / (1 + L)
+    closed = control.feedback(loop, 1) if not feedforward else (f * (c + cff) * p) * control.feedback(1, loop)
+    return {"controller": c, "feedforward": cff, "filters": f, "plant": p, "loop_gain": loop,
+            "closed_loop": closed}

@@ -354,3 +354,23 @@ def test_axis_injection_servo_off_and_error_guard():
     with pytest.raises(ValueError, match="injection_v"):
         axis.run(np.zeros(3), injection_v=np.zeros(4))
     assert axis.last_command_pulse == 1000.0
+
+
+@pytest.mark.filterwarnings("ignore:stability_margins. Falling back:UserWarning")
+@pytest.mark.parametrize("feedforward", [False, True])
+def test_linear_model_for_python_control_matches_the_analytic_response(feedforward):
+    control = pytest.importorskip("control")
+    notch = sb.design.notch(550, TS, q=4.0)
+    axis = linear_axis("aps", "two_mass", filters=(notch, None), kvff=20, kaff=100)
+    model = fr.linear_model(axis, feedforward=feedforward)
+    f = np.geomspace(10, 4000, 50)
+    ana = fr.analytic_response(axis, f, feedforward=feedforward)
+    z = np.exp(2j * np.pi * f * TS)
+    for name in ("plant", "loop_gain", "closed_loop"):
+        assert model[name].dt == TS
+        assert np.allclose(model[name](z), ana.response(name), rtol=1e-8, atol=0)
+    # python-control's own margins on the exported loop agree with ours.
+    gm, pm, _sm, _wpc, wgc, _wms = control.stability_margins(model["loop_gain"])
+    m = fr.analytic_response(axis, np.geomspace(10, 4900, 20000)).margins()
+    assert m.phase_margin_deg == pytest.approx(pm, abs=0.05)
+    assert m.pm_freq_hz == pytest.approx(wgc / (2 * np.pi), rel=1e-3)
