@@ -10,6 +10,7 @@ void bind_drive(py::module_& m);
 void bind_plant(py::module_& m);
 void bind_motion(py::module_& m);
 void bind_machine(py::module_& m);
+void bind_homing(py::module_& m);
 }  // namespace servobench::bindings
 
 PYBIND11_MODULE(_core, m) {
@@ -27,4 +28,5 @@ PYBIND11_MODULE(_core, m) {
   servobench::bindings::bind_plant(m);
   servobench::bindings::bind_motion(m);
   servobench::bindings::bind_machine(m);
+  servobench::bindings::bind_homing(m);
 }

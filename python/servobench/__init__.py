@@ -37,6 +37,8 @@ from .metrics import MoveMetrics, move_metrics
 from .examples import demo_axis
 from . import design, plot
 from . import motion
+from . import homing
+from .homing import AdlinkHome, AdlinkJog, GtHome, HomingResult, LoopRun, MotionLoop, home
 from .motion import (
     AdlinkPtp,
     ElectronicGear,
@@ -57,7 +59,15 @@ __version__ = "0.1.0"
 
 __all__ = [
     "AdlinkBiquad",
+    "AdlinkHome",
+    "AdlinkJog",
     "AdlinkPtp",
+    "GtHome",
+    "HomingResult",
+    "LoopRun",
+    "MotionLoop",
+    "home",
+    "homing",
     "ElectronicGear",
     "GtGear",
     "GeJog",
