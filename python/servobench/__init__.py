@@ -38,6 +38,8 @@ from .examples import demo_axis
 from . import design, plot
 from . import motion
 from . import homing
+from . import gearing
+from .gearing import gear_trajectory
 from .homing import AdlinkHome, AdlinkJog, GtHome, HomingResult, LoopRun, MotionLoop, home
 from .motion import (
     AdlinkPtp,
@@ -67,6 +69,8 @@ __all__ = [
     "LoopRun",
     "MotionLoop",
     "home",
+    "gear_trajectory",
+    "gearing",
     "homing",
     "ElectronicGear",
     "GtGear",
