@@ -11,6 +11,7 @@ void bind_plant(py::module_& m);
 void bind_motion(py::module_& m);
 void bind_machine(py::module_& m);
 void bind_tuning(py::module_& m);
+void bind_homing(py::module_& m);
 }  // namespace servobench::bindings
 
 PYBIND11_MODULE(_core, m) {
@@ -29,4 +30,5 @@ PYBIND11_MODULE(_core, m) {
   servobench::bindings::bind_motion(m);
   servobench::bindings::bind_machine(m);
   servobench::bindings::bind_tuning(m);
+  servobench::bindings::bind_homing(m);
 }

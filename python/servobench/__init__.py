@@ -39,6 +39,10 @@ from . import design, plot
 from . import frequency
 from .frequency import FrequencyResponse, Margins, analytic_response, broadband_response, sine_sweep
 from . import motion
+from . import homing
+from . import gearing
+from .gearing import gear_trajectory
+from .homing import AdlinkHome, AdlinkJog, GtHome, HomingResult, LoopRun, MotionLoop, home
 from .motion import (
     AdlinkPtp,
     ElectronicGear,
@@ -59,6 +63,8 @@ __version__ = "0.1.0"
 
 __all__ = [
     "AdlinkBiquad",
+    "AdlinkHome",
+    "AdlinkJog",
     "AdlinkPtp",
     "FrequencyResponse",
     "Margins",
@@ -66,6 +72,14 @@ __all__ = [
     "broadband_response",
     "frequency",
     "sine_sweep",
+    "GtHome",
+    "HomingResult",
+    "LoopRun",
+    "MotionLoop",
+    "home",
+    "gear_trajectory",
+    "gearing",
+    "homing",
     "ElectronicGear",
     "GtGear",
     "GeJog",

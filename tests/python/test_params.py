@@ -110,6 +110,29 @@ BAD = [
     (sb.Dac, "bits", [7, 25, 16.5, NAN], "8..24"),
     (sb.Dac, "full_scale_v", [0, -10, 101, NAN], "0.001..100"),
     (sb.Dac, "quantize", [2, NAN], "0/False or 1/True"),
+    # Homing and jog: ADLINK L2268-2278, L2333-2337, L2677-2688; GT L4152-4213, L854, L929-930.
+    (sb.AdlinkHome, "mode", [-1, 3, 0.5, NAN], "0..2"),
+    (sb.AdlinkHome, "dir", [-1, 2, 0.5, NAN], "0..1"),
+    (sb.AdlinkHome, "curve", [-0.1, 1.1, NAN], "0..1"),
+    (sb.AdlinkHome, "acc", [0, -1, 2e12, NAN, INF], "0..1e+12"),
+    (sb.AdlinkHome, "vm", [0, -1, 2e9, NAN], "0..1000000000"),
+    (sb.AdlinkHome, "vo", [0, -1, 2e5, NAN], "0..100000"),
+    (sb.AdlinkHome, "shift", [3e9, -3e9, NAN], "-2147483647..2147483647"),
+    (sb.AdlinkHome, "eza", [2, -1, 0.5], "0/False or 1/True"),
+    (sb.AdlinkHome, "pos", [3e9, NAN, INF], "-2147483647..2147483647"),
+    (sb.GtHome, "pos", [2**30, -(2**30) - 1, 0.5, NAN], "-1073741824..1073741823"),
+    (sb.GtHome, "vel", [0, -1, 16385, NAN], "0..16384"),
+    (sb.GtHome, "acc", [0, -1, 16385, NAN], "0..16384"),
+    (sb.GtHome, "index", [2, 0.5], "0/False or 1/True"),
+    (sb.GtHome, "zero", [2, -1], "0/False or 1/True"),
+    (sb.AdlinkJog, "mode", [-1, 2, 0.5, NAN], "0..1"),
+    (sb.AdlinkJog, "dir", [-1, 2, NAN], "0..1"),
+    (sb.AdlinkJog, "sf", [-0.1, 1.5, NAN], "0..1"),
+    (sb.AdlinkJog, "acc", [0, -1, 2e12, NAN], "0..1e+12"),
+    (sb.AdlinkJog, "dec", [0, -1, 2e12, NAN], "0..1e+12"),
+    (sb.AdlinkJog, "vm", [0, -1, 2e9, NAN], "0..1000000000"),
+    (sb.AdlinkJog, "offset", [0, -1, 3e9, NAN], "0..2147483647"),
+    (sb.AdlinkJog, "delay_us", [-1, 1e7 + 1, NAN], "0..10000000"),
 ]
 
 
@@ -137,7 +160,7 @@ def test_every_field_is_covered_by_a_bad_input_test():
     covered = {(c, f) for c, f, _v, _e in BAD}
     for cls in (sb.GtServoLaw, sb.ApsServoLaw, sb.TorqueDrive, sb.VelocityDrive, sb.StepperDrive,
                 sb.ServoPositionDrive, sb.RigidPlant, sb.TwoMassPlant,
-                sb.Encoder, sb.Dac, sb.Switches):
+                sb.Encoder, sb.Dac, sb.Switches, sb.AdlinkHome, sb.GtHome, sb.AdlinkJog):
         for field in cls.FIELDS:
             assert (cls, field) in covered, f"{cls.__name__}.{field} has no bad-input test"
 

@@ -1,9 +1,11 @@
 #include "servobench/motion/generator.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "servobench/common/validate.hpp"
+#include "servobench/motion/adlink_replan.hpp"
 #include "servobench/motion/jog.hpp"
 #include "servobench/motion/stop.hpp"
 
@@ -75,6 +77,7 @@ bool ProfileGenerator::moving() const {
 long long ProfileGenerator::reported_pos() const { return std::llround(state_.pos); }
 
 void ProfileGenerator::start(const Profile& p) {
+  pending_ = false;
   profile_ = p;
   t_ = 0.0;
   state_ = profile_.at(0.0);
@@ -123,12 +126,49 @@ void ProfileGenerator::jog(double vel, double acc) {
 }
 
 void ProfileGenerator::move_adlink_ptp(double target, const AdlinkLimits& lim) {
-  if (moving())
-    throw MotionCommandRefused(
-        "move_adlink_ptp: this version refuses on-the-fly ADLINK changes (L2757-2767); wait for the motion to end");
+  if (!moving()) {
+    mode_ = ProfileMode::AdlinkPtp;
+    adlink_ = lim;
+    start(plan_adlink_ptp(state_.pos, target, lim));
+    return;
+  }
+  if (stopping_)
+    throw MotionCommandRefused("move_adlink_ptp: refused during a stop; a new move only after it completes");
+  if (mode_ != ProfileMode::AdlinkPtp && mode_ != ProfileMode::AdlinkVelocity)
+    throw MotionCommandRefused(std::string("move_adlink_ptp: refused, the axis is moving in ") + to_string(mode_) +
+                               " mode; the mode can change only when the motion has ended");
+  // On the fly (ADLINK L2757-2767): replan at the next instant of zero acceleration.
+  const double at = next_zero_acc_time();
   mode_ = ProfileMode::AdlinkPtp;
   adlink_ = lim;
-  start(plan_adlink_ptp(state_.pos, target, lim));
+  if (at <= t_) {
+    MotionState s = state_;
+    s.acc = 0.0;
+    start(plan_adlink_ptp_from(s, target, lim));
+    return;
+  }
+  pending_ = true;
+  pending_ptp_ = {at, target, lim};
+}
+
+double ProfileGenerator::next_zero_acc_time() const {
+  if (adlink_.sf == 0.0) return t_;  // T ramps: the acceleration may step, replan now
+  if (state_.acc == 0.0 && state_.jerk == 0.0) return t_;
+  // Segment boundaries after now where the acceleration is (numerically) zero.
+  const double scale = std::max(adlink_.acc, adlink_.dec);
+  double t0 = 0.0;
+  for (int i = 0; i < profile_.size(); ++i) {
+    const Segment& g = profile_.segment(i);
+    const double t1 = t0 + g.duration;
+    if (t1 > t_) {
+      if (std::isinf(t1)) return std::max(t0, t_);
+      const double a_end = g.at(g.duration).acc;
+      const bool next_starts_flat = i + 1 >= profile_.size() || profile_.segment(i + 1).a == 0.0;
+      if (std::fabs(a_end) <= 1e-9 * scale && next_starts_flat) return t1;
+    }
+    t0 = t1;
+  }
+  return std::max(t_, profile_.duration());
 }
 
 void ProfileGenerator::move_adlink_velocity(double vel, const AdlinkLimits& lim) {
@@ -173,6 +213,16 @@ void ProfileGenerator::set_position(double pos) {
 }
 
 const MotionState& ProfileGenerator::step() {
+  if (pending_ && t_ + 1.0 >= pending_ptp_.at) {
+    // The deferred on-the-fly PTP change starts at the instant the ramp ended (between two ticks).
+    MotionState s = profile_.at(pending_ptp_.at);
+    s.acc = 0.0;
+    const double tau = t_ + 1.0 - pending_ptp_.at;
+    start(plan_adlink_ptp_from(s, pending_ptp_.target, pending_ptp_.lim));
+    t_ = tau;
+    state_ = profile_.at(t_);
+    return state_;
+  }
   t_ += 1.0;
   state_ = profile_.at(t_);
   if (stopping_ && !moving()) stopping_ = false;

@@ -60,7 +60,9 @@ class ProfileGenerator {
   void move_s_curve(double target, const SCurveLimits& lim);
   // GT/GE jog: ramp at `acc` (pulse/tick^2, linear) to the signed `vel` (pulse/tick) and hold it.
   void jog(double vel, double acc);
-  // ADLINK point to point from rest (on-the-fly ADLINK changes are refused in this version).
+  // ADLINK point to point; during an ADLINK PTP or velocity move it changes the move on the fly (new target,
+  // new speeds, or both: L2757-2767, L2564-2566), taking effect at the next instant the acceleration is zero
+  // (at once on a T-curve or a cruise; at the end of the running S ramp otherwise; decision M44).
   void move_adlink_ptp(double target, const AdlinkLimits& lim);
   // ADLINK velocity move: ramp (S-factor) to the signed `vel` and hold; may change on the fly.
   void move_adlink_velocity(double vel, const AdlinkLimits& lim);
@@ -90,6 +92,8 @@ class ProfileGenerator {
 
  private:
   void start(const Profile& p);
+  // Time (ticks, >= t_) of the first instant from now at which the current profile's acceleration is zero.
+  double next_zero_acc_time() const;
   void refuse_if_other_mode_moving(ProfileMode wanted, const char* cmd) const;
 
   Profile profile_;
@@ -102,6 +106,14 @@ class ProfileGenerator {
   SCurveLimits s_lim_{};
   double jog_acc_ = 0.0;
   AdlinkLimits adlink_{};
+  // An ADLINK on-the-fly PTP change waiting for the running S ramp to end (at profile time `at`, ticks).
+  struct PendingPtp {
+    double at = 0.0;
+    double target = 0.0;
+    AdlinkLimits lim{};
+  };
+  bool pending_ = false;
+  PendingPtp pending_ptp_{};
 };
 
 }  // namespace servobench::motion
