@@ -110,6 +110,17 @@ BAD = [
     (sb.Dac, "bits", [7, 25, 16.5, NAN], "8..24"),
     (sb.Dac, "full_scale_v", [0, -10, 101, NAN], "0.001..100"),
     (sb.Dac, "quantize", [2, NAN], "0/False or 1/True"),
+    # FollowEx set-up, iDEABOX (seed 003) L475-550, L6173-6199, L7212-7417
+    (sb.FollowExSetup, "dir", [2, -2, 0.5, NAN], "-1..1 (0 both, 1 positive, -1 negative; iDEABOX L6185)"),
+    (sb.FollowExSetup, "master_type", [0, 4, 1.5, NAN], "1..3"),
+    (sb.FollowExSetup, "master_item", [-1, 2, 0.5, NAN], "0..1"),
+    (sb.FollowExSetup, "memory", [-1, 3, 0.5, NAN], "0..2 (0: 16, 1: 512, 2: dynamic"),
+    (sb.FollowExSetup, "max_segment", [-1, 2**31, 1.5, NAN], "0..2147483647"),
+    (sb.FollowExSetup, "event", [0, 3, 1.5, NAN], "1..2 (1 START, 2 PASS"),
+    (sb.FollowExSetup, "master_dir", [2, -2, NAN], "-1..1"),
+    (sb.FollowExSetup, "master_dir", [0], "must be 1 or -1"),
+    (sb.FollowExSetup, "event_pos", [2**31, -(2**31) - 1, 0.5, NAN], "-2147483648..2147483647"),
+    (sb.FollowExSetup, "loop", [32768, -32769, 1.5, INF], "-32768..32767"),
 ]
 
 
@@ -137,7 +148,7 @@ def test_every_field_is_covered_by_a_bad_input_test():
     covered = {(c, f) for c, f, _v, _e in BAD}
     for cls in (sb.GtServoLaw, sb.ApsServoLaw, sb.TorqueDrive, sb.VelocityDrive, sb.StepperDrive,
                 sb.ServoPositionDrive, sb.RigidPlant, sb.TwoMassPlant,
-                sb.Encoder, sb.Dac, sb.Switches):
+                sb.Encoder, sb.Dac, sb.Switches, sb.FollowExSetup):
         for field in cls.FIELDS:
             assert (cls, field) in covered, f"{cls.__name__}.{field} has no bad-input test"
 
