@@ -54,7 +54,7 @@ __all__ = [
 
 
 def pvt_trajectory(table, *, period_s: float = 1e-3, table_id: int = 1, loop: int = 1, start_pos: float = 0.0,
-                   dwell_after: int = 0, whole_pulses: bool = True, max_ticks: int = 10**8) -> Trajectory:
+                   dwell_after: int = 0, whole_pulses: bool = True, max_ticks: int | None = None) -> Trajectory:
     """Runs a PVT table on a fresh :class:`PvtAxis` at ticks of ``period_s`` seconds and returns the sampled
     :class:`~servobench.Trajectory` (sample 0 = the start, at rest at ``start_pos`` pulse; the start delay
     and ``loop`` passes follow, then ``dwell_after`` ticks at the end).
@@ -63,6 +63,10 @@ def pvt_trajectory(table, *, period_s: float = 1e-3, table_id: int = 1, loop: in
     :class:`PvtTables` whose ``table_id`` is used. ``loop`` = 0 (infinite) needs ``max_ticks``. Units: pulse,
     pulse/tick, pulse/tick^2, pulse/tick^3.
     """
+    if loop == 0 and max_ticks is None:
+        raise ValueError("pvt_trajectory: loop = 0 repeats the table forever; give max_ticks (ticks to sample)")
+    if max_ticks is None:
+        max_ticks = 10**8
     if isinstance(table, PvtCurve):
         tables = PvtTables()
         tables.download(table_id, table)

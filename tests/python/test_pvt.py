@@ -76,6 +76,8 @@ def test_guc_tab4_16_loop_start_delay_and_status():
     rest = ax.run_until_done()
     assert len(rest) and ax.state[0] == pytest.approx(40000) and not ax.moving and ax.loop_count == 2
     assert ax.loop == 2 and ax.table_id == 1
+    endless = sb.pvt_trajectory(tables, loop=0, max_ticks=7000)
+    assert len(endless) == 7001 and endless.pos[-1] == 40000  # 1000 ms delay + 2 passes, still going
 
 
 def test_two_axes_share_one_table_and_start_together():
@@ -142,6 +144,8 @@ def test_table_limits_and_refusals():
     (lambda: sb.PvtAxis(sb.PvtTables()).set_loop(-1), r"PvtAxis.loop = -1 is outside the allowed range 0..2147483647"),
     (lambda: sb.PvtAxis(sb.PvtTables()).select(0.5), r"PvtTable.table_id = 0.5"),
     (lambda: sb.PvtAxis(sb.PvtTables()).run(-1), r"run.ticks = -1"),
+    (lambda: sb.pvt_trajectory(sb.pvt_table(time_ms=[0, 1], pos=[0, 1], vel=[0, 0]), loop=0),
+     r"loop = 0 repeats the table forever; give max_ticks"),
 ])
 def test_bad_input_names_the_parameter(call, match):
     with pytest.raises(ValueError, match=match):
