@@ -9,6 +9,7 @@ void bind_filters(py::module_& m);
 void bind_drive(py::module_& m);
 void bind_plant(py::module_& m);
 void bind_motion(py::module_& m);
+void bind_pvt(py::module_& m);
 void bind_machine(py::module_& m);
 void bind_tuning(py::module_& m);
 void bind_homing(py::module_& m);
@@ -28,6 +29,7 @@ PYBIND11_MODULE(_core, m) {
   servobench::bindings::bind_drive(m);
   servobench::bindings::bind_plant(m);
   servobench::bindings::bind_motion(m);
+  servobench::bindings::bind_pvt(m);
   servobench::bindings::bind_machine(m);
   servobench::bindings::bind_tuning(m);
   servobench::bindings::bind_homing(m);

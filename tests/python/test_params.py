@@ -133,6 +133,17 @@ BAD = [
     (sb.AdlinkJog, "vm", [0, -1, 2e9, NAN], "0..1000000000"),
     (sb.AdlinkJog, "offset", [0, -1, 3e9, NAN], "0..2147483647"),
     (sb.AdlinkJog, "delay_us", [-1, 1e7 + 1, NAN], "0..10000000"),
+    # FollowEx set-up, iDEABOX (seed 003) L475-550, L6173-6199, L7212-7417
+    (sb.FollowExSetup, "dir", [2, -2, 0.5, NAN], "-1..1 (0 both, 1 positive, -1 negative; iDEABOX L6185)"),
+    (sb.FollowExSetup, "master_type", [0, 4, 1.5, NAN], "1..3"),
+    (sb.FollowExSetup, "master_item", [-1, 2, 0.5, NAN], "0..1"),
+    (sb.FollowExSetup, "memory", [-1, 3, 0.5, NAN], "0..2 (0: 16, 1: 512, 2: dynamic"),
+    (sb.FollowExSetup, "max_segment", [-1, 2**31, 1.5, NAN], "0..2147483647"),
+    (sb.FollowExSetup, "event", [0, 3, 1.5, NAN], "1..2 (1 START, 2 PASS"),
+    (sb.FollowExSetup, "master_dir", [2, -2, NAN], "-1..1"),
+    (sb.FollowExSetup, "master_dir", [0], "must be 1 or -1"),
+    (sb.FollowExSetup, "event_pos", [2**31, -(2**31) - 1, 0.5, NAN], "-2147483648..2147483647"),
+    (sb.FollowExSetup, "loop", [32768, -32769, 1.5, INF], "-32768..32767"),
 ]
 
 
@@ -160,7 +171,7 @@ def test_every_field_is_covered_by_a_bad_input_test():
     covered = {(c, f) for c, f, _v, _e in BAD}
     for cls in (sb.GtServoLaw, sb.ApsServoLaw, sb.TorqueDrive, sb.VelocityDrive, sb.StepperDrive,
                 sb.ServoPositionDrive, sb.RigidPlant, sb.TwoMassPlant,
-                sb.Encoder, sb.Dac, sb.Switches, sb.AdlinkHome, sb.GtHome, sb.AdlinkJog):
+                sb.Encoder, sb.Dac, sb.Switches, sb.AdlinkHome, sb.GtHome, sb.AdlinkJog, sb.FollowExSetup):
         for field in cls.FIELDS:
             assert (cls, field) in covered, f"{cls.__name__}.{field} has no bad-input test"
 
