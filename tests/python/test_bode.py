@@ -357,6 +357,7 @@ def test_axis_injection_servo_off_and_error_guard():
 
 
 @pytest.mark.filterwarnings("ignore:stability_margins. Falling back:UserWarning")
+@pytest.mark.filterwarnings("ignore:Badly conditioned filter coefficients")
 @pytest.mark.parametrize("feedforward", [False, True])
 def test_linear_model_for_python_control_matches_the_analytic_response(feedforward):
     control = pytest.importorskip("control")
