@@ -245,8 +245,10 @@ class FrequencyResponse:
         return 20 * np.log10(np.abs(self.response(which)))
 
     def phase_deg(self, which: str = "open_loop") -> np.ndarray:
-        """Phase of a response, deg, unwrapped point to point from the lowest frequency."""
-        return _core.unwrapped_phase_deg(self.response(which))
+        """Phase of a response, deg, unwrapped point to point from the lowest frequency and shifted by whole
+        turns so that the first point lies in (-270, 90] (as the Bode plots draw it)."""
+        ph = np.asarray(_core.unwrapped_phase_deg(self.response(which)))
+        return ph - 360.0 * np.ceil((ph[0] - 90.0) / 360.0) if ph.size else ph
 
     def margins(self) -> Margins:
         """Margins of the loop: from the analytic loop gain, or from the measured Y/E (which is the loop gain only

@@ -55,6 +55,15 @@ _LABELS = {"plant": "plant Y/U", "open_loop": "open loop Y/E", "closed_loop": "c
            "loop_gain": "loop gain L", "sensitivity": "sensitivity E/R"}
 
 
+def _phase_deg(h, unwrap: bool = True) -> np.ndarray:
+    """Phase in degrees, unwrapped and shifted by whole turns so that the first point lies in (-270, 90] (a PID
+    loop on an integrating plant then starts near -180 deg, not +180)."""
+    ph = np.degrees(np.unwrap(np.angle(h)) if unwrap else np.angle(h))
+    if unwrap and ph.size:
+        ph = ph - 360.0 * np.ceil((ph[0] - 90.0) / 360.0)
+    return ph
+
+
 def _series(freq_hz, responses, which):
     """Normalises bode()'s inputs to a list of (label, freq, H, measured?)."""
     from .frequency import FrequencyResponse
@@ -120,8 +129,7 @@ def bode(freq_hz, responses=None, *, which=("plant", "open_loop", "closed_loop")
     series, frs = _series(freq_hz, responses, which)
     fig, (ax_mag, ax_ph) = plt.subplots(2, 1, sharex=True, figsize=(8, 6), constrained_layout=True)
     for i, (label, f, h, measured) in enumerate(series):
-        phase = np.angle(h)
-        phase = np.degrees(np.unwrap(phase) if unwrap else phase)
+        phase = _phase_deg(h, unwrap)
         style = dict(ls="none", marker="o", ms=3.5, mfc="none") if measured else dict(lw=1.4)
         ax_mag.semilogx(f, 20 * np.log10(np.abs(h)), label=label, **style)
         ax_ph.semilogx(f, phase, label=label, **style)
