@@ -13,6 +13,7 @@
 #include "servobench/common/validate.hpp"
 #include "servobench/tuning/loop_response.hpp"
 #include "servobench/tuning/margins.hpp"
+#include "servobench/tuning/relay_autotune.hpp"
 #include "servobench/tuning/sine_sweep.hpp"
 
 namespace servobench::bindings {
@@ -159,6 +160,70 @@ void bind_tuning(py::module_& m) {
       },
       py::arg("freq_hz"), py::arg("loop_gain"), py::arg("closed_loop") = py::none(),
       "Gain/phase/delay margins, closed-loop bandwidth and peak sensitivity from frequency-response data.");
+
+  m.def(
+      "relay_autotune",
+      [](machine::Axis& axis, double amplitude_v, double hysteresis_pulse, double data_length, double sampling_time_s,
+         double deviation_limit_pulse, double max_spread, double phase_margin_deg, double alpha, double settle_cycles,
+         double max_cycle_s, const py::object& progress) {
+        tuning::RelayTuneOptions o;
+        o.amplitude_v = amplitude_v;
+        o.hysteresis_pulse = hysteresis_pulse;
+        check_integer("RelayTune", "data_length", data_length, 1, 100000, "ADLINK auto-tuning, L1845");
+        o.data_length = static_cast<int>(data_length);
+        o.sampling_time_s = sampling_time_s;
+        o.deviation_limit_pulse = deviation_limit_pulse;
+        o.max_spread = max_spread;
+        o.phase_margin_deg = phase_margin_deg;
+        o.alpha = alpha;
+        check_integer("RelayTune", "settle_cycles", settle_cycles, 0, 1000);
+        o.settle_cycles = static_cast<int>(settle_cycles);
+        o.max_cycle_s = max_cycle_s;
+        o.validate();
+        tuning::TuneProgress cb;
+        if (!progress.is_none()) {
+          cb = [progress](int done, int total) {
+            py::gil_scoped_acquire gil;
+            py::object r = progress(done, total);
+            return r.is_none() || r.cast<bool>();
+          };
+        }
+        tuning::RelayTuneResult r;
+        {
+          py::gil_scoped_release release;
+          r = tuning::relay_autotune(axis, o, cb);
+        }
+        static const char* names[] = {"completed", "user_stop", "limit_or_alarm", "deviation_exceeded",
+                                      "spread_too_large", "no_oscillation"};
+        py::dict d;
+        d["status"] = names[static_cast<int>(r.status)];
+        d["message"] = r.message;
+        d["sampling_time_s"] = r.sampling_time_s;
+        d["period_s"] = to_array(r.period_s);
+        d["amplitude_pulse"] = to_array(r.amplitude_pulse);
+        d["peak_pulse"] = to_array(r.peak_pulse);
+        d["center_pulse"] = to_array(r.center_pulse);
+        d["gain_pulse_per_v"] = to_array(r.gain_pulse_per_v);
+        d["phase_deg"] = to_array(r.phase_deg);
+        d["kp"] = to_array(r.kp);
+        d["ki"] = to_array(r.ki);
+        d["kd"] = to_array(r.kd);
+        d["error_pulse"] = to_array(r.error_pulse);
+        d["output_v"] = to_array(r.output_v);
+        d["mean"] = py::dict(py::arg("kc") = r.mean.kc, py::arg("ti_s") = r.mean.ti_s, py::arg("td_s") = r.mean.td_s,
+                             py::arg("kp") = r.mean.kp, py::arg("ki") = r.mean.ki, py::arg("kd") = r.mean.kd);
+        d["kp_spread"] = r.kp_spread;
+        d["ki_spread"] = r.ki_spread;
+        d["kd_spread"] = r.kd_spread;
+        d["ultimate_freq_hz"] = r.ultimate_freq_hz;
+        d["ultimate_gain_v_per_pulse"] = r.ultimate_gain_v_per_pulse;
+        d["ticks"] = r.ticks;
+        return d;
+      },
+      py::arg("axis"), py::kw_only(), py::arg("amplitude_v"), py::arg("hysteresis_pulse"), py::arg("data_length"),
+      py::arg("sampling_time_s"), py::arg("deviation_limit_pulse"), py::arg("max_spread"),
+      py::arg("phase_margin_deg"), py::arg("alpha"), py::arg("settle_cycles"), py::arg("max_cycle_s"),
+      py::arg("progress") = py::none(), "Relay auto-tuning (ADLINK L1764-1847). Releases the GIL.");
 
   m.def(
       "tick_model",

@@ -165,6 +165,12 @@ RunOutcome Axis::run_with(Law& law, const CommandInput& command, const Trace& tr
       t.vel = v;
       t.acc = a;
       if (command.volts_add) volts = dac_.convert(command.volts_add[k]);
+    } else if (command.external) {
+      power_.set_input(pending_volts_);
+      t.vel = v;
+      t.acc = a;
+      const double request = (*command.external)(k, r, y);
+      volts = dac_.convert(command.volts_add ? request + command.volts_add[k] : request);
     } else if (pulse_output) {
       // Pulse-output card: the command goes out as a step train of whole pulses; no servo law, no DAC.
       power_.set_pulse_input(std::nearbyint(r));

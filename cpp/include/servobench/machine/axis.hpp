@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <variant>
 
@@ -51,11 +52,16 @@ void validate_filters(const std::array<control::BiquadParams, 2>& filters, doubl
 // differences of the positions, pulse/tick and pulse/tick^2).
 // volts_add: optional voltage added to the output stage's request before the DAC, V (an injection at the plant
 // input, as for open-loop or disturbance-injection experiments); it reaches the drive one tick later like the rest.
+// external: optional outside controller in place of the servo law and the biquads (a tuning relay, a user's
+// experiment): called every tick after the encoder read with (tick index in this run, command pulse, feedback
+// pulse), it returns the voltage request (V) for the DAC; the servo must be on. The output still reaches the drive
+// one tick later.
 struct CommandInput {
   const double* pos = nullptr;
   const double* vel = nullptr;
   const double* acc = nullptr;
   const double* volts_add = nullptr;
+  const std::function<double(std::size_t, double, double)>* external = nullptr;
   std::size_t n = 0;
 };
 
