@@ -37,6 +37,8 @@ from .metrics import MoveMetrics, move_metrics
 from .examples import demo_axis
 from . import design, plot
 from . import frequency
+from . import autotune
+from .autotune import RelayTuneResult, relay_autotune
 from .frequency import FrequencyResponse, Margins, analytic_response, broadband_response, sine_sweep
 from . import motion
 from . import homing
@@ -90,6 +92,9 @@ __all__ = [
     "AdlinkJog",
     "AdlinkPtp",
     "FrequencyResponse",
+    "RelayTuneResult",
+    "autotune",
+    "relay_autotune",
     "Margins",
     "analytic_response",
     "broadband_response",

@@ -1,0 +1,157 @@
+"""Relay auto-tuning with hysteresis, the ADLINK card's procedure (manual L1764-1847), done right: the describing
+function of a relay *with* hysteresis, a PID designed for a phase margin on the card's own discrete law.
+
+Work in progress for issue 6: the experiment, the identification, the design and the classic rules are here; the
+model-based rule and the docs page come next.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from . import _core
+
+__all__ = ["RelayTuneResult", "relay_autotune"]
+
+
+@dataclass(frozen=True)
+class RelayTuneResult:
+    """The outcome of :func:`relay_autotune`.
+
+    status, message
+        ``"completed"`` or why it stopped (manual L1826-1831): ``"user_stop"``, ``"limit_or_alarm"`` (PEL/MEL,
+        ALM), ``"deviation_exceeded"``, ``"spread_too_large"`` (fluctuation above 10 %), ``"no_oscillation"``.
+    kp, ki, kd
+        the mean per-tick gains (counts/pulse; ki per pulse*tick), the card law's units.
+    kc, ti_s, td_s
+        the same as a continuous PID kc (1 + 1/(ti s) + td s), kc in counts/pulse, times in s.
+    kp_spread, ki_spread, kd_spread
+        relative standard deviation of each gain over the sets (the manual's "fluctuation").
+    ultimate_freq_hz, ultimate_gain_v_per_pulse
+        mean identified point: 1/Tu and 4 d / (pi a).
+    cycles
+        per-cycle arrays: period_s, amplitude_pulse (fundamental of e), peak_pulse, center_pulse,
+        gain_pulse_per_v and phase_deg (the describing-function point), kp, ki, kd.
+    error_pulse, output_v
+        the experiment's record per servo tick.
+    """
+
+    status: str
+    message: str
+    kp: float
+    ki: float
+    kd: float
+    kc: float
+    ti_s: float
+    td_s: float
+    kp_spread: float
+    ki_spread: float
+    kd_spread: float
+    ultimate_freq_hz: float
+    ultimate_gain_v_per_pulse: float
+    sampling_time_s: float
+    servo_period_s: float
+    cycles: dict = field(repr=False)
+    error_pulse: np.ndarray = field(repr=False)
+    output_v: np.ndarray = field(repr=False)
+
+    def gt_law(self, base=None):
+        """The result as GT servo-filter gains (Kp, Ki with its /256, Kd; feed-forward 0), integers in 0..32767
+        (ValueError naming the gain that does not fit)."""
+        return _law(self, "gt", base)
+
+    def aps_law(self, base=None):
+        """The result as ADLINK gains: integers 0..65535 with per-term shifts chosen to keep the most digits
+        (PID_SHIFT -5; feed-forward 0)."""
+        return _law(self, "aps", base)
+
+    def apply(self, axis) -> None:
+        """The manual's "Set final" (L1820): writes the gains to the axis's law, switches feed-forward and filters
+        off, and turns the servo on."""
+        law = self.gt_law(axis.law) if isinstance(axis.law, _core.GtServoLaw) else self.aps_law(axis.law)
+        axis.set_law(law)
+        axis.set_filters((None, None))
+        axis.set_servo_on(True)
+
+
+def _law(res, kind, base):
+    kp, ki, kd = res.kp, res.ki, res.kd
+    if kind == "gt":
+        base = base if isinstance(base, _core.GtServoLaw) else _core.GtServoLaw()
+        out = {}
+        for name, v in (("kp", kp), ("ki", ki * 256.0), ("kd", kd)):
+            r = round(v)
+            if not 0 <= r <= 32767:
+                raise ValueError(f"GtServoLaw.{name} = {r} does not fit the GT gain range 0..32767 "
+                                 "(GT manual Table 3-4): use the ADLINK form or a slower design")
+            out[name] = float(r)
+        return base.replace(kvff=0, kaff=0, **out)
+    base = base if isinstance(base, _core.ApsServoLaw) else _core.ApsServoLaw()
+    out = {"pid_shift": -5.0}
+    for name, g in (("kp", kp), ("ki", ki), ("kd", kd)):
+        if g == 0:
+            out[name], out[f"{name}_shift"] = 0.0, 0.0
+            continue
+        e = int(np.ceil(np.log2(g / 65535.0)))
+        k = round(g / 2.0 ** e)
+        if k > 65535:
+            e += 1
+            k = round(g / 2.0 ** e)
+        shift = e + 5
+        if not -31 <= shift <= 31:
+            raise ValueError(f"ApsServoLaw.{name}: the gain {g:g} needs a shift {shift} outside -31..31")
+        out[name], out[f"{name}_shift"] = float(k), float(shift)
+    return base.replace(kvff=0, kaff=0, **out)
+
+
+def relay_autotune(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 50.0, data_length: int = 200,
+                   sampling_time_s: float = 500e-6, deviation_limit_pulse: float = 2000.0, max_spread: float = 0.10,
+                   phase_margin_deg: float = 60.0, alpha: float = 4.0, settle_cycles: int = 3,
+                   max_cycle_s: float = 10.0, progress=None) -> RelayTuneResult:
+    """Relay auto-tuning on a simulated axis, with the ADLINK card's parameters and defaults (L1842-1847).
+
+    amplitude_v
+        relay output +-d, V (0 < d <= 10, default 1).
+    hysteresis_pulse
+        relay hysteresis eps on the position error, pulse (> 0, default 50).
+    data_length
+        gain sets (limit cycles) to compute, default 200.
+    sampling_time_s
+        relay sampling time, s (100..1000 us, default 500 us); rounded to whole servo ticks.
+    deviation_limit_pulse
+        |position error| above this stops the tuning, servo off, pulse (0 = off, default 2000).
+    max_spread
+        accepted relative standard deviation of each gain (the manual's 10 %).
+    phase_margin_deg, alpha
+        design target (deg, 10..89, default 60) and Ti = alpha * Td (default 4).
+    settle_cycles
+        first limit cycles discarded; max_cycle_s: give up when no cycle completes within this time, s.
+    progress
+        None, True (text bar on stderr) or callable(done, total) -> bool (False: the user's Stop).
+
+    The servo law is replaced by the relay during the experiment and the servo is left off at the end (apply the
+    result with :meth:`RelayTuneResult.apply`). A relay with hysteresis needs a plant whose phase lies above -180
+    deg somewhere: a velocity-mode drive (an integrating plant), as the manual's procedure assumes; a lightly
+    damped torque-mode axis (a double integrator) has no steady limit cycle and ends with a clear status.
+    Releases the GIL; deterministic.
+    """
+    from .frequency import _progress_callback
+
+    d = _core.relay_autotune(getattr(axis, "_axis", axis), amplitude_v=float(amplitude_v),
+                             hysteresis_pulse=float(hysteresis_pulse), data_length=float(data_length),
+                             sampling_time_s=float(sampling_time_s), deviation_limit_pulse=float(deviation_limit_pulse),
+                             max_spread=float(max_spread), phase_margin_deg=float(phase_margin_deg),
+                             alpha=float(alpha), settle_cycles=float(settle_cycles), max_cycle_s=float(max_cycle_s),
+                             progress=_progress_callback(progress, "Relay tuning"))
+    m = d["mean"]
+    cycles = {k: d[k] for k in ("period_s", "amplitude_pulse", "peak_pulse", "center_pulse", "gain_pulse_per_v",
+                                "phase_deg", "kp", "ki", "kd")}
+    return RelayTuneResult(status=d["status"], message=d["message"], kp=m["kp"], ki=m["ki"], kd=m["kd"],
+                           kc=m["kc"], ti_s=m["ti_s"], td_s=m["td_s"], kp_spread=d["kp_spread"],
+                           ki_spread=d["ki_spread"], kd_spread=d["kd_spread"],
+                           ultimate_freq_hz=d["ultimate_freq_hz"],
+                           ultimate_gain_v_per_pulse=d["ultimate_gain_v_per_pulse"],
+                           sampling_time_s=d["sampling_time_s"], servo_period_s=axis.servo_period_s, cycles=cycles,
+                           error_pulse=d["error_pulse"], output_v=d["output_v"])

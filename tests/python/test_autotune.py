@@ -1,0 +1,94 @@
+"""Relay auto-tuning (issue 6, in progress): ADLINK auto servo tuning, seed 004 L1764-1847 (adlink.md §4)."""
+
+import numpy as np
+import pytest
+
+import servobench as sb
+from servobench import frequency as fr
+
+
+def velocity_axis(plant="rigid", ts=100e-6):
+    p = sb.RigidPlant(inertia_kgm2=1e-4, viscous_nms=1e-4) if plant == "rigid" else \
+        sb.TwoMassPlant(jm_kgm2=5e-5, jl_kgm2=5e-5, k_nm_per_rad=300, c_nms_per_rad=0.01)
+    return sb.Axis(law=sb.ApsServoLaw(), plant=p,
+                   drive=sb.VelocityDrive(speed_per_volt_rad_s=31.4, current_limit_a=float("inf"),
+                                          torque_limit_nm=1e9),
+                   encoder=sb.Encoder(counts_per_rev=10000, quantize=False), dac=sb.Dac(quantize=False),
+                   servo_period_s=ts)
+
+
+def test_defaults_are_the_manuals_T10():
+    # adlink.md §10 T10 (L1842-1847): deviation 2000 pulse, amplitude 1 V, data length 200, hysteresis 50 pulse,
+    # sampling 500 us.
+    import inspect
+    sig = inspect.signature(sb.relay_autotune)
+    assert sig.parameters["deviation_limit_pulse"].default == 2000
+    assert sig.parameters["amplitude_v"].default == 1.0
+    assert sig.parameters["data_length"].default == 200
+    assert sig.parameters["hysteresis_pulse"].default == 50
+    assert sig.parameters["sampling_time_s"].default == 500e-6
+    assert sig.parameters["max_spread"].default == 0.10  # T11, L1794
+
+
+@pytest.mark.parametrize("plant", ["rigid", "two_mass"])
+@pytest.mark.parametrize("eps", [150, 450])
+def test_tuned_loop_has_sixty_degrees_measured_by_the_bode_sweep(plant, eps):
+    axis = velocity_axis(plant)
+    res = sb.relay_autotune(axis, hysteresis_pulse=eps, sampling_time_s=100e-6)
+    assert res.status == "completed", res.message
+    assert len(res.cycles["kp"]) == 200
+    res.apply(axis)
+    # "Set final" (L1820): gains written, feed-forward and filters off, servo on.
+    assert axis.servo_on and axis.law.kvff == 0 and axis.law.kaff == 0
+    assert axis.filters == (sb.AdlinkBiquad(), sb.AdlinkBiquad())
+    meas = fr.sine_sweep(axis, start_hz=5, end_hz=2000, amplitude_pulse=2, points=150, update_s=0.4)
+    assert meas.status == "completed"
+    pm = meas.margins().phase_margin_deg
+    assert pm == pytest.approx(60, abs=5)
+
+
+def test_bandwidth_falls_as_hysteresis_rises():
+    # The manual's trend (L1796-1802): larger hysteresis, lower bandwidth, phase margin kept.
+    bws = []
+    for eps in (50, 150, 250, 450):
+        axis = velocity_axis()
+        res = sb.relay_autotune(axis, hysteresis_pulse=eps, sampling_time_s=100e-6, data_length=20)
+        res.apply(axis)
+        bws.append(fr.analytic_response(axis, np.geomspace(1, 4000, 4000)).margins().bandwidth_hz)
+    assert all(b1 > b2 for b1, b2 in zip(bws, bws[1:])), bws
+
+
+def test_card_laws_from_the_result():
+    res = sb.relay_autotune(velocity_axis(), hysteresis_pulse=150, sampling_time_s=100e-6, data_length=10)
+    aps = res.aps_law()
+    assert aps.kp <= 65535 and aps.pid_shift == -5 and aps.kvff == 0
+    assert aps.kp * 2.0 ** (aps.kp_shift + aps.pid_shift) == pytest.approx(res.kp, rel=2e-5)
+    gt = res.gt_law()
+    assert gt.kp == round(res.kp) and gt.ki == round(256 * res.ki)
+    assert res.ti_s == pytest.approx(4 * res.td_s)
+
+
+def test_stop_reasons_and_bad_input():
+    axis = velocity_axis(ts=250e-6)
+    res = sb.relay_autotune(axis, deviation_limit_pulse=100)
+    assert res.status == "deviation_exceeded" and not axis.servo_on
+    res = sb.relay_autotune(velocity_axis(ts=250e-6), progress=lambda done, total: done < 3)
+    assert res.status == "user_stop" and len(res.cycles["kp"]) == 3
+    for kw, name in ((dict(amplitude_v=0), "amplitude_v"), (dict(amplitude_v=10.5), "amplitude_v"),
+                     (dict(hysteresis_pulse=0), "hysteresis_pulse"), (dict(data_length=0), "data_length"),
+                     (dict(sampling_time_s=50e-6), "sampling_time_s"),
+                     (dict(sampling_time_s=2e-3), "sampling_time_s"),
+                     (dict(deviation_limit_pulse=-1), "deviation_limit_pulse"),
+                     (dict(phase_margin_deg=95), "phase_margin_deg")):
+        with pytest.raises(ValueError, match=name):
+            sb.relay_autotune(velocity_axis(), **kw)
+
+
+def test_torque_mode_double_integrator_has_no_steady_cycle():
+    # A relay with hysteresis needs phase above -180 deg: an undamped double integrator never settles.
+    axis = sb.Axis(law=sb.ApsServoLaw(), plant=sb.TwoMassPlant(jm_kgm2=5e-4, jl_kgm2=5e-4, k_nm_per_rad=3000),
+                   drive=sb.TorqueDrive(current_limit_a=float("inf")),
+                   encoder=sb.Encoder(quantize=False), dac=sb.Dac(quantize=False), servo_period_s=250e-6)
+    res = sb.relay_autotune(axis, amplitude_v=0.5, hysteresis_pulse=150, deviation_limit_pulse=0, data_length=20)
+    assert res.status == "spread_too_large"
+    assert np.all(np.diff(res.cycles["amplitude_pulse"]) > 0)  # the oscillation grows cycle after cycle
