@@ -46,6 +46,16 @@ std::vector<std::complex<double>> complex_vector(const py::handle& obj, const ch
   return std::vector<std::complex<double>>(a.data(), a.data() + a.shape(0));
 }
 
+// A Python callable(done, total) -> bool|None as a C++ progress callback (the GIL taken for the call); empty if None.
+std::function<bool(int, int)> progress_callback(const py::object& progress) {
+  if (progress.is_none()) return {};
+  return [progress](int done, int total) {
+    py::gil_scoped_acquire gil;
+    py::object r = progress(done, total);
+    return r.is_none() || r.cast<bool>();
+  };
+}
+
 const char* status_name(tuning::SweepStatus s) {
   switch (s) {
     case tuning::SweepStatus::kCompleted: return "completed";
@@ -102,14 +112,7 @@ void bind_tuning(py::module_& m) {
         o.loop.feedforward = feedforward;
         o.loop.filters = filters;
         o.validate(axis.servo_period_s());
-        tuning::SweepProgress cb;
-        if (!progress.is_none()) {
-          cb = [progress](int done, int total) {
-            py::gil_scoped_acquire gil;
-            py::object r = progress(done, total);
-            return r.is_none() || r.cast<bool>();
-          };
-        }
+        const tuning::SweepProgress cb = progress_callback(progress);
         tuning::SineSweepResult r;
         {
           py::gil_scoped_release release;
@@ -180,14 +183,7 @@ void bind_tuning(py::module_& m) {
         o.settle_cycles = static_cast<int>(settle_cycles);
         o.max_cycle_s = max_cycle_s;
         o.validate();
-        tuning::TuneProgress cb;
-        if (!progress.is_none()) {
-          cb = [progress](int done, int total) {
-            py::gil_scoped_acquire gil;
-            py::object r = progress(done, total);
-            return r.is_none() || r.cast<bool>();
-          };
-        }
+        const tuning::TuneProgress cb = progress_callback(progress);
         tuning::RelayTuneResult r;
         {
           py::gil_scoped_release release;
@@ -224,6 +220,20 @@ void bind_tuning(py::module_& m) {
       py::arg("sampling_time_s"), py::arg("deviation_limit_pulse"), py::arg("max_spread"),
       py::arg("phase_margin_deg"), py::arg("alpha"), py::arg("settle_cycles"), py::arg("max_cycle_s"),
       py::arg("progress") = py::none(), "Relay auto-tuning (ADLINK L1764-1847). Releases the GIL.");
+
+  m.def(
+      "pid_to_law",
+      [](double kp, double ki, double kd, const py::object& base) -> py::object {
+        tuning::PidDesign d;
+        d.kp = kp;
+        d.ki = ki;
+        d.kd = kd;
+        if (py::isinstance<control::GtServoLawParams>(base))
+          return py::cast(tuning::to_gt_law(d, base.cast<control::GtServoLawParams>()));
+        return py::cast(tuning::to_aps_law(d, base.cast<control::ApsServoLawParams>()));
+      },
+      py::arg("kp"), py::arg("ki"), py::arg("kd"), py::arg("base"),
+      "Per-tick PID gains (counts/pulse) as the card law of `base`'s type (GT integers; ADLINK integers with shifts).");
 
   m.def(
       "tick_model",

@@ -77,33 +77,11 @@ class RelayTuneResult:
 
 
 def _law(res, kind, base):
-    kp, ki, kd = res.kp, res.ki, res.kd
     if kind == "gt":
         base = base if isinstance(base, _core.GtServoLaw) else _core.GtServoLaw()
-        out = {}
-        for name, v in (("kp", kp), ("ki", ki * 256.0), ("kd", kd)):
-            r = round(v)
-            if not 0 <= r <= 32767:
-                raise ValueError(f"GtServoLaw.{name} = {r} does not fit the GT gain range 0..32767 "
-                                 "(GT manual Table 3-4): use the ADLINK form or a slower design")
-            out[name] = float(r)
-        return base.replace(kvff=0, kaff=0, **out)
-    base = base if isinstance(base, _core.ApsServoLaw) else _core.ApsServoLaw()
-    out = {"pid_shift": -5.0}
-    for name, g in (("kp", kp), ("ki", ki), ("kd", kd)):
-        if g == 0:
-            out[name], out[f"{name}_shift"] = 0.0, 0.0
-            continue
-        e = int(np.ceil(np.log2(g / 65535.0)))
-        k = round(g / 2.0 ** e)
-        if k > 65535:
-            e += 1
-            k = round(g / 2.0 ** e)
-        shift = e + 5
-        if not -31 <= shift <= 31:
-            raise ValueError(f"ApsServoLaw.{name}: the gain {g:g} needs a shift {shift} outside -31..31")
-        out[name], out[f"{name}_shift"] = float(k), float(shift)
-    return base.replace(kvff=0, kaff=0, **out)
+    else:
+        base = base if isinstance(base, _core.ApsServoLaw) else _core.ApsServoLaw()
+    return _core.pid_to_law(res.kp, res.ki, res.kd, base)
 
 
 def relay_autotune(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 50.0, data_length: int = 200,
