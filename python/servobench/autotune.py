@@ -13,7 +13,7 @@ import numpy as np
 
 from . import _core
 
-__all__ = ["RelayTuneResult", "relay_autotune"]
+__all__ = ["RelayTuneResult", "predicted_limit_cycle", "relay_autotune"]
 
 
 @dataclass(frozen=True)
@@ -133,3 +133,52 @@ def relay_autotune(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 
                            ultimate_gain_v_per_pulse=d["ultimate_gain_v_per_pulse"],
                            sampling_time_s=d["sampling_time_s"], servo_period_s=axis.servo_period_s, cycles=cycles,
                            error_pulse=d["error_pulse"], output_v=d["output_v"])
+
+
+def predicted_limit_cycle(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 50.0,
+                          sampling_time_s: float = 500e-6) -> dict:
+    """The limit cycle the describing function predicts for the relay experiment on this axis, computed from the
+    analytic plant (the same lifted model as :func:`servobench.frequency.analytic_response`): the frequency wu where
+    angle P(j wu) = -180 deg + asin(eps / a) with a = (4 d / pi) |P(j wu)|. P is the plant from the relay's volts to
+    the encoder with the one-tick delay, shifted by the sampled relay's mean switching delay (docs/decisions.md R4).
+
+    Returns {"freq_hz", "amplitude_pulse", "ultimate_gain_v_per_pulse" (= 1/|P|)}; ValueError if the plant's phase
+    never reaches the needed value (no limit cycle: e.g. an undamped double integrator with hysteresis).
+    """
+    from .frequency import analytic_response
+
+    ts = axis.servo_period_s
+    tr = max(1, round(sampling_time_s / ts)) * ts
+    d, eps = float(amplitude_v), float(hysteresis_pulse)
+    law = axis.law
+    sign = -1.0 if isinstance(law, _core.ApsServoLaw) and law.v_inverse else 1.0
+
+    def point(f):
+        f = np.atleast_1d(np.asarray(f, dtype=float))
+        p = analytic_response(axis, f).plant * (32767.0 / 10.0) * sign  # pulse per volt
+        return p * np.exp(-1j * 2 * np.pi * f * (tr - ts) / 2)
+
+    def mismatch(f):
+        p = point(f)
+        a = 4 * d / np.pi * np.abs(p)
+        with np.errstate(invalid="ignore"):
+            want = -np.pi + np.arcsin(np.clip(eps / a, -1.0, 1.0))
+        m = np.angle(p * np.exp(-1j * want))  # angle P - want, wrapped to (-pi, pi]
+        m[a <= eps] = np.nan
+        return m
+
+    f = np.geomspace(0.1, 0.45 / ts, 20000)
+    m = mismatch(f)
+    ok = np.isfinite(m[:-1]) & np.isfinite(m[1:]) & (m[:-1] > 0) & (m[1:] <= 0) & (np.abs(m[:-1] - m[1:]) < 1)
+    idx = np.nonzero(ok)[0]
+    if not idx.size:
+        raise ValueError("the plant's phase never reaches -180 deg + asin(eps/a): the describing function predicts "
+                         "no limit cycle for this relay (a velocity-mode drive gives an integrating plant that has one)")
+    lo, hi = f[idx[0]], f[idx[0] + 1]
+    for _ in range(60):
+        mid = np.sqrt(lo * hi)
+        (lo, hi) = (mid, hi) if mismatch(mid)[0] > 0 else (lo, mid)
+    fu = np.sqrt(lo * hi)
+    p = point(fu)[0]
+    return {"freq_hz": float(fu), "amplitude_pulse": float(4 * d / np.pi * abs(p)),
+            "ultimate_gain_v_per_pulse": float(1 / abs(p))}

@@ -92,3 +92,26 @@ def test_torque_mode_double_integrator_has_no_steady_cycle():
     res = sb.relay_autotune(axis, amplitude_v=0.5, hysteresis_pulse=150, deviation_limit_pulse=0, data_length=20)
     assert res.status == "spread_too_large"
     assert np.all(np.diff(res.cycles["amplitude_pulse"]) > 0)  # the oscillation grows cycle after cycle
+
+
+@pytest.mark.parametrize("plant", ["rigid", "two_mass"])
+@pytest.mark.parametrize("eps", [150, 450])
+def test_identified_ultimate_point_matches_the_analytic_prediction(plant, eps):
+    # Issue 6 point 5: estimated ultimate gain within 2 %, frequency within 1 % of the simulated loop's analytic
+    # values (the describing-function prediction from the analytic plant). At 100 us sampling on a 10 kHz axis.
+    axis = velocity_axis(plant)
+    pred = sb.autotune.predicted_limit_cycle(axis, amplitude_v=1.0, hysteresis_pulse=eps, sampling_time_s=100e-6)
+    res = sb.relay_autotune(axis, hysteresis_pulse=eps, sampling_time_s=100e-6, data_length=50)
+    assert res.status == "completed"
+    assert res.ultimate_freq_hz == pytest.approx(pred["freq_hz"], rel=0.01)
+    assert res.ultimate_gain_v_per_pulse == pytest.approx(pred["ultimate_gain_v_per_pulse"], rel=0.02)
+    assert np.mean(res.cycles["amplitude_pulse"]) == pytest.approx(pred["amplitude_pulse"], rel=0.02)
+
+
+def test_no_limit_cycle_predicted_for_an_undamped_double_integrator():
+    axis = sb.Axis(law=sb.ApsServoLaw(), plant=sb.TwoMassPlant(jm_kgm2=5e-4, jl_kgm2=5e-4, k_nm_per_rad=3000,
+                                                                motor_viscous_nms=0, load_viscous_nms=0),
+                   drive=sb.TorqueDrive(current_limit_a=float("inf")), encoder=sb.Encoder(quantize=False),
+                   dac=sb.Dac(quantize=False), servo_period_s=250e-6)
+    with pytest.raises(ValueError, match="no limit cycle"):
+        sb.autotune.predicted_limit_cycle(axis, hysteresis_pulse=150)
