@@ -236,6 +236,26 @@ void bind_tuning(py::module_& m) {
       "Per-tick PID gains (counts/pulse) as the card law of `base`'s type (GT integers; ADLINK integers with shifts).");
 
   m.def(
+      "classic_rule",
+      [](const std::string& rule, double ku, double tu_s, double ts_s) {
+        if (!(ku > 0) || !std::isfinite(ku)) throw_invalid("classic_rule", "ku", ku, "must be finite and > 0");
+        if (!(tu_s > 0) || !std::isfinite(tu_s)) throw_invalid("classic_rule", "tu_s", tu_s, "must be finite and > 0");
+        if (!(ts_s > 0) || !std::isfinite(ts_s)) throw_invalid("classic_rule", "ts_s", ts_s, "must be finite and > 0");
+        tuning::PidDesign d;
+        if (rule == "ziegler_nichols") {
+          d = tuning::ziegler_nichols(ku, tu_s, ts_s);
+        } else if (rule == "tyreus_luyben") {
+          d = tuning::tyreus_luyben(ku, tu_s, ts_s);
+        } else {
+          throw py::value_error("rule = '" + rule + "' must be 'ziegler_nichols' or 'tyreus_luyben'");
+        }
+        return py::dict(py::arg("kc") = d.kc, py::arg("ti_s") = d.ti_s, py::arg("td_s") = d.td_s,
+                        py::arg("kp") = d.kp, py::arg("ki") = d.ki, py::arg("kd") = d.kd);
+      },
+      py::arg("rule"), py::arg("ku"), py::arg("tu_s"), py::arg("ts_s"),
+      "Classic PID rule from an ultimate point (ku counts/pulse, tu s) as per-tick gains at ts_s.");
+
+  m.def(
       "tick_model",
       [](const machine::Axis& axis) {
         const machine::TickModel tm = axis.power_train().linear_tick_model();

@@ -67,6 +67,19 @@ class RelayTuneResult:
         (PID_SHIFT -5; feed-forward 0)."""
         return _law(self, "aps", base)
 
+    def rule(self, name: str) -> "RelayTuneResult":
+        """The same experiment's gains by a classic rule from the mean ultimate point (Ku = 4d/(pi a), Tu):
+        ``"ziegler_nichols"`` (0.6 Ku, Tu/2, Tu/8) or ``"tyreus_luyben"`` (Ku/2.2, 2.2 Tu, Tu/6.3); ``"phase_margin"``
+        is this result. Returns a copy with those gains (fluctuations and cycles kept)."""
+        import dataclasses
+
+        if name == "phase_margin":
+            return self
+        ku = self.ultimate_gain_v_per_pulse * 32767.0 / 10.0  # counts per pulse
+        g = _core.classic_rule(name, ku, 1.0 / self.ultimate_freq_hz, self.servo_period_s)
+        return dataclasses.replace(self, kp=g["kp"], ki=g["ki"], kd=g["kd"], kc=g["kc"], ti_s=g["ti_s"],
+                                   td_s=g["td_s"], message=f"{name} rule from the same experiment")
+
     def apply(self, axis) -> None:
         """The manual's "Set final" (L1820): writes the gains to the axis's law, switches feed-forward and filters
         off, and turns the servo on."""
