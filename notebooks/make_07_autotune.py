@@ -1,0 +1,69 @@
+"""Writes notebooks/07_autotune.ipynb (no outputs stored). Run: python notebooks/make_07_autotune.py"""
+
+import pathlib
+
+import nbformat as nbf
+
+cells = [
+    nbf.v4.new_markdown_cell(
+        "# 07 Relay auto-tuning: tune, verify with Bode, compare rules\n\n"
+        "The ADLINK card's auto-tuning (manual L1764-1847) makes the axis oscillate under a relay with hysteresis,\n"
+        "computes a gain set per oscillation and keeps the mean when the gains' fluctuation is under 10 %. Here the\n"
+        "same experiment on a simulated velocity-mode axis, with the describing function of a relay *with*\n"
+        "hysteresis and a PID placed at 60 deg of phase margin on the card's discrete law."),
+    nbf.v4.new_code_cell(
+        "import numpy as np\nimport matplotlib.pyplot as plt\nimport servobench as sb\n"
+        "from servobench import frequency as fr\n\n"
+        "def make_axis(law=None):\n"
+        "    return sb.Axis(law=law or sb.ApsServoLaw(kp=8000, kd=2000),  # a timid hand tuning to start from\n"
+        "                   plant=sb.TwoMassPlant(jm_kgm2=5e-5, jl_kgm2=5e-5, k_nm_per_rad=300, c_nms_per_rad=0.01),\n"
+        "                   drive=sb.VelocityDrive(speed_per_volt_rad_s=31.4),\n"
+        "                   encoder=sb.Encoder(counts_per_rev=10000, noise_counts=2, seed=4), servo_period_s=100e-6)\n"
+        "axis = make_axis()\nbefore = axis.law\nprint(before)"),
+    nbf.v4.new_markdown_cell("## The experiment (the manual's defaults, hysteresis raised to 150 pulse)"),
+    nbf.v4.new_code_cell(
+        "res = sb.relay_autotune(axis, hysteresis_pulse=150, sampling_time_s=100e-6)\n"
+        "print(res.status, '-', res.message)\n"
+        "print(f'ultimate point: {res.ultimate_freq_hz:.2f} Hz, {res.ultimate_gain_v_per_pulse*1e3:.3f} mV/pulse')\n"
+        "print(f'PID: kc {res.kc:.2f} counts/pulse, Ti {res.ti_s*1e3:.2f} ms, Td {res.td_s*1e3:.2f} ms')\n"
+        "print('ADLINK law:', res.aps_law())\n"
+        "t = np.arange(len(res.error_pulse)) * 100e-6\n"
+        "fig, ax = plt.subplots(2, 1, sharex=True, figsize=(8, 4))\n"
+        "ax[0].plot(t[:2000] * 1e3, res.error_pulse[:2000]); ax[0].set_ylabel('error [pulse]')\n"
+        "ax[1].plot(t[:2000] * 1e3, res.output_v[:2000]); ax[1].set_ylabel('relay [V]'); ax[1].set_xlabel('ms')\n"
+        "plt.show()\n"
+        "plt.plot(res.cycles['kp'], '.', label='KP per cycle'); plt.xlabel('cycle'); plt.legend(); plt.show()"),
+    nbf.v4.new_markdown_cell("## Verify with the Bode sweep (\"Set final\": feed-forward and filters off)"),
+    nbf.v4.new_code_cell(
+        "pred = sb.autotune.predicted_limit_cycle(axis, hysteresis_pulse=150, sampling_time_s=100e-6)\n"
+        "print(f\"identified {res.ultimate_freq_hz:.2f} Hz vs predicted from the analytic plant {pred['freq_hz']:.2f} Hz\")\n"
+        "res.apply(axis)\n"
+        "meas = fr.sine_sweep(axis, start_hz=5, end_hz=2000, amplitude_pulse=20, points=80, update_s=0.4)\n"
+        "ana = fr.analytic_response(axis, np.geomspace(5, 2000, 2000))\n"
+        "print(meas.margins())\n"
+        "sb.plot.bode([meas, ana], which='open_loop', title='tuned loop: measured and analytic')\nplt.show()"),
+    nbf.v4.new_markdown_cell("## Step response before and after"),
+    nbf.v4.new_code_cell(
+        "move = sb.trapezoid_move(distance_pulse=2000, vel_pulse_per_tick=5, acc_pulse_per_tick2=0.05,\n"
+        "                         dwell_before=20, dwell_after=3000)\n"
+        "for label, law in (('before', before), ('after', axis.law)):\n"
+        "    a = make_axis(law)\n    run = a.run(move)\n"
+        "    print(label, sb.move_metrics(run, settle_band_pulse=10))\n"
+        "    plt.plot(run.time_s * 1e3, run.error, label=label)\n"
+        "plt.ylabel('following error [pulse]'); plt.xlabel('ms'); plt.legend(); plt.show()"),
+    nbf.v4.new_markdown_cell(
+        "## The rules compared on the same experiment\nZiegler-Nichols and Tyreus-Luyben ignore the hysteresis's\n"
+        "phase shift and carry no margin guarantee; the phase-margin design lands where it was asked to."),
+    nbf.v4.new_code_cell(
+        "for name in ('phase_margin', 'ziegler_nichols', 'tyreus_luyben'):\n"
+        "    a = make_axis()\n    r = res.rule(name)\n    r.apply(a)\n"
+        "    m = fr.analytic_response(a, np.geomspace(1, 4900, 4000)).margins()\n"
+        "    print(f'{name:16s} PM {m.phase_margin_deg:5.1f} deg  GM {m.gain_margin_db:5.1f} dB  '\n"
+        "          f'BW {m.bandwidth_hz:5.1f} Hz  Ms {m.ms:.2f}')"),
+]
+
+nb = nbf.v4.new_notebook(cells=cells, metadata={"kernelspec": {"name": "python3", "display_name": "Python 3",
+                                                               "language": "python"}})
+path = pathlib.Path(__file__).with_name("07_autotune.ipynb")
+nbf.write(nb, path)
+print("wrote", path)
