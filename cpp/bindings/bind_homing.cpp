@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "arrays.hpp"
 #include "param_class.hpp"
 #include "servobench/common/validate.hpp"
 #include "servobench/machine/motion_loop.hpp"
@@ -92,10 +93,7 @@ py::dict run_loop(MotionLoop& loop, double ticks, bool until_done, const py::obj
   }
   py::dict out;
   for (const auto& name : wanted) {
-    const auto& v = buf[name];
-    py::array_t<double> a(static_cast<py::ssize_t>(v.size()));
-    std::copy(v.begin(), v.end(), a.mutable_data());
-    out[py::str(name)] = a;
+    out[py::str(name)] = to_array(buf[name]);
   }
   return out;
 }

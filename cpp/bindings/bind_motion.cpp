@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "arrays.hpp"
 #include "param_class.hpp"
 #include "servobench/common/validate.hpp"
 #include "servobench/motion/adlink_profile.hpp"
@@ -17,41 +18,6 @@ namespace servobench::bindings {
 
 namespace py = pybind11;
 
-namespace {
-py::array_t<double> to_array(const std::vector<double>& v) {
-  py::array_t<double> a(static_cast<py::ssize_t>(v.size()));
-  std::copy(v.begin(), v.end(), a.mutable_data());
-  return a;
-}
-
-// Steps the generator `ticks` times (or until it stops, if until_done) and returns the samples as arrays.
-py::dict run_generator(motion::ProfileGenerator& g, double ticks, bool until_done) {
-  check_integer("ProfileGenerator.run", "ticks", ticks, 0, 1e8);
-  std::vector<double> pos, exact, vel, acc, jerk;
-  {
-    py::gil_scoped_release release;
-    const auto n = static_cast<std::size_t>(ticks);
-    for (std::size_t k = 0; k < n; ++k) {
-      if (until_done && !g.moving()) break;
-      const auto& s = g.step();
-      pos.push_back(static_cast<double>(g.reported_pos()));
-      exact.push_back(s.pos);
-      vel.push_back(s.vel);
-      acc.push_back(s.acc);
-      jerk.push_back(s.jerk);
-    }
-  }
-  py::dict d;
-  d["pos"] = to_array(pos);
-  d["pos_exact"] = to_array(exact);
-  d["vel"] = to_array(vel);
-  d["acc"] = to_array(acc);
-  d["jerk"] = to_array(jerk);
-  return d;
-}
-
-py::tuple state_tuple(const motion::MotionState& s) { return py::make_tuple(s.pos, s.vel, s.acc, s.jerk); }
-}  // namespace
 
 void bind_motion(py::module_& m) {
   using namespace motion;
@@ -152,10 +118,10 @@ void bind_motion(py::module_& m) {
            "Set the profile position, pulse; only at rest (GT_SetAtlPos, GT_ZeroPos).")
       .def("step", [](ProfileGenerator& g) { return state_tuple(g.step()); },
            "Advance one tick; returns (pos pulse, vel pulse/tick, acc pulse/tick^2, jerk pulse/tick^3).")
-      .def("run", [](ProfileGenerator& g, double ticks) { return run_generator(g, ticks, false); }, py::arg("ticks"),
+      .def("run", [](ProfileGenerator& g, double ticks) { return run_ticks("ProfileGenerator.run", ticks, false, [&]() -> const motion::MotionState& { return g.step(); }, [&] { return g.moving(); }, [&] { return g.reported_pos(); }); }, py::arg("ticks"),
            "Step `ticks` times; dict of arrays pos (whole pulses), pos_exact (pulse), vel (pulse/tick),\n"
            "acc (pulse/tick^2), jerk (pulse/tick^3), one sample per tick after each step.")
-      .def("run_until_done", [](ProfileGenerator& g, double max_ticks) { return run_generator(g, max_ticks, true); },
+      .def("run_until_done", [](ProfileGenerator& g, double max_ticks) { return run_ticks("ProfileGenerator.run", max_ticks, true, [&]() -> const motion::MotionState& { return g.step(); }, [&] { return g.moving(); }, [&] { return g.reported_pos(); }); },
            py::arg("max_ticks") = 1e8, "As run(), stopping when the motion has ended.")
       .def_property_readonly("state", [](const ProfileGenerator& g) { return state_tuple(g.state()); },
                              "(pos pulse, vel pulse/tick, acc pulse/tick^2, jerk pulse/tick^3) now")

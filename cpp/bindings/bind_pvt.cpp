@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "arrays.hpp"
 #include "param_class.hpp"
 #include "servobench/common/validate.hpp"
 #include "servobench/motion/follow_ex.hpp"
@@ -29,12 +30,6 @@ std::vector<double> vec(const Arr& a, const char* owner, const char* name) {
   return std::vector<double>(a.data(), a.data() + a.size());
 }
 
-py::array_t<double> arr(const std::vector<double>& v) {
-  py::array_t<double> a(static_cast<py::ssize_t>(v.size()));
-  std::copy(v.begin(), v.end(), a.mutable_data());
-  return a;
-}
-
 motion::ContinuousAcc meaning_of(const std::string& s) {
   if (s == "peak") return motion::ContinuousAcc::Peak;
   if (s == "average") return motion::ContinuousAcc::Average;
@@ -51,34 +46,6 @@ motion::ContinuousPoints continuous_points(const Arr& pos, const Arr& vel, const
           vec(dec, o, "dec")};
 }
 
-// Steps `stepper` n times; arrays of pos (whole pulses), pos_exact, vel, acc, jerk.
-template <class F, class G>
-py::dict run_ticks(double ticks, bool until_done, F step, G moving, const std::function<long long()>& reported) {
-  check_integer("run", "ticks", ticks, 0, 1e8);
-  std::vector<double> pos, exact, vel, acc, jerk;
-  {
-    py::gil_scoped_release release;
-    const auto n = static_cast<std::size_t>(ticks);
-    for (std::size_t k = 0; k < n; ++k) {
-      if (until_done && !moving()) break;
-      const motion::MotionState& s = step();
-      pos.push_back(static_cast<double>(reported()));
-      exact.push_back(s.pos);
-      vel.push_back(s.vel);
-      acc.push_back(s.acc);
-      jerk.push_back(s.jerk);
-    }
-  }
-  py::dict d;
-  d["pos"] = arr(pos);
-  d["pos_exact"] = arr(exact);
-  d["vel"] = arr(vel);
-  d["acc"] = arr(acc);
-  d["jerk"] = arr(jerk);
-  return d;
-}
-
-py::tuple state_tuple(const motion::MotionState& s) { return py::make_tuple(s.pos, s.vel, s.acc, s.jerk); }
 
 int segment_type(const py::object& t) {
   const double v = py::int_(t).cast<double>();
@@ -108,9 +75,9 @@ void bind_pvt(py::module_& m) {
       "A compiled PVT table: the points (time_ms ms, pos pulse, vel pulse/ms at each point) and the cubic pieces\n"
       "between them. `evaluate(t_ms)` samples it in the manual's units.")
       .def_property_readonly("mode", [](const PvtCurve& c) { return std::string(to_string(c.mode)); })
-      .def_property_readonly("time_ms", [](const PvtCurve& c) { return arr(c.time_ms); }, "point times, ms")
-      .def_property_readonly("pos", [](const PvtCurve& c) { return arr(c.pos); }, "point positions, pulse")
-      .def_property_readonly("vel", [](const PvtCurve& c) { return arr(c.vel); },
+      .def_property_readonly("time_ms", [](const PvtCurve& c) { return to_array(c.time_ms); }, "point times, ms")
+      .def_property_readonly("pos", [](const PvtCurve& c) { return to_array(c.pos); }, "point positions, pulse")
+      .def_property_readonly("vel", [](const PvtCurve& c) { return to_array(c.vel); },
                              "velocity at each point, pulse/ms (computed for Complete and Percent)")
       .def_property_readonly("blocks", &PvtCurve::blocks, "memory blocks the table uses (<= 1024)")
       .def_property_readonly("blocks_per_point", [](const PvtCurve& c) { return c.blocks_per_point; })
@@ -125,10 +92,10 @@ void bind_pvt(py::module_& m) {
                p[i] = s.pos, v[i] = s.vel, a[i] = s.acc, j[i] = s.jerk;
              }
              py::dict d;
-             d["pos"] = arr(p);
-             d["vel"] = arr(v);
-             d["acc"] = arr(a);
-             d["jerk"] = arr(j);
+             d["pos"] = to_array(p);
+             d["vel"] = to_array(v);
+             d["acc"] = to_array(a);
+             d["jerk"] = to_array(j);
              return d;
            }, py::arg("t_ms"),
            "Samples the table at times t_ms (ms): dict of pos pulse, vel pulse/ms, acc pulse/ms^2, jerk pulse/ms^3.")
@@ -154,13 +121,13 @@ void bind_pvt(py::module_& m) {
       "Complete mode (GT_PvtTableComplete): times ms and positions pulse; the interior velocities make velocity\n"
       "and acceleration continuous (clamped C2 spline, vel_begin/vel_end pulse/ms at the ends).");
   m.def("pvt_complete_calculate", [](const Arr& t, const Arr& p, double vb, double ve) {
-        return arr(pvt_complete_velocities(vec(t, "PvtTableComplete", "time_ms"), vec(p, "PvtTableComplete", "pos"),
+        return to_array(pvt_complete_velocities(vec(t, "PvtTableComplete", "time_ms"), vec(p, "PvtTableComplete", "pos"),
                                            vb, ve));
       }, py::kw_only(), py::arg("time_ms"), py::arg("pos"), py::arg("vel_begin") = 0.0, py::arg("vel_end") = 0.0,
       "The Complete mode's node velocities, pulse/ms, without a table.");
   m.def("pvt_percent_calculate", [](const Arr& t, const Arr& p, const Arr& q, double vb) {
         const char* o = "PvtTablePercent";
-        return arr(pvt_percent_calculate(vec(t, o, "time_ms"), vec(p, o, "pos"), vec(q, o, "percent"), vb));
+        return to_array(pvt_percent_calculate(vec(t, o, "time_ms"), vec(p, o, "pos"), vec(q, o, "percent"), vb));
       }, py::kw_only(), py::arg("time_ms"), py::arg("pos"), py::arg("percent"), py::arg("vel_begin") = 0.0,
       "GT_PvtPercentCalculate: node velocities (pulse/ms) v[i+1] = 2(p[i+1]-p[i])/(t[i+1]-t[i]) - v[i];\n"
       "percent (0..100) does not change them.");
@@ -173,7 +140,7 @@ void bind_pvt(py::module_& m) {
   m.def("pvt_continuous_calculate",
         [](const Arr& p, const Arr& v, const Arr& q, const Arr& vm, const Arr& a, const Arr& d,
            const std::string& meaning) {
-          return arr(pvt_continuous_calculate(continuous_points(p, v, q, q, vm, a, d), meaning_of(meaning)));
+          return to_array(pvt_continuous_calculate(continuous_points(p, v, q, q, vm, a, d), meaning_of(meaning)));
         }, py::kw_only(), py::arg("pos"), py::arg("vel"), py::arg("percent"), py::arg("vel_max"), py::arg("acc"),
         py::arg("dec"), py::arg("acc_meaning") = "peak",
         "GT_PvtContinuousCalculate: the point times in ms (time[0] = 0) for positions pulse, velocities at the\n"
@@ -235,12 +202,12 @@ void bind_pvt(py::module_& m) {
       .def("step", [](PvtAxis& a) { return state_tuple(a.step()); },
            "One tick: (pos pulse, vel pulse/tick, acc pulse/tick^2, jerk pulse/tick^3).")
       .def("run", [](PvtAxis& a, double ticks) {
-             return run_ticks(ticks, false, [&] { return a.step(); }, [&] { return a.moving(); },
+             return run_ticks("PvtAxis.run", ticks, false, [&]() -> const motion::MotionState& { return a.step(); }, [&] { return a.moving(); },
                               [&] { return a.reported_pos(); });
            }, py::arg("ticks"),
            "Step `ticks` times; dict of arrays pos (whole pulses), pos_exact, vel, acc, jerk (per tick units).")
       .def("run_until_done", [](PvtAxis& a, double max_ticks) {
-             return run_ticks(max_ticks, true, [&] { return a.step(); }, [&] { return a.moving(); },
+             return run_ticks("PvtAxis.run", max_ticks, true, [&]() -> const motion::MotionState& { return a.step(); }, [&] { return a.moving(); },
                               [&] { return a.reported_pos(); });
            }, py::arg("max_ticks") = 1e8, "As run(), stopping when the PVT motion has ended.")
       .def_property_readonly("state", [](const PvtAxis& a) { return state_tuple(a.state()); })
@@ -327,11 +294,11 @@ void bind_pvt(py::module_& m) {
                }
              }
              py::dict d;
-             d["pos"] = arr(pos);
-             d["pos_exact"] = arr(exact);
-             d["vel"] = arr(vel);
-             d["acc"] = arr(acc);
-             d["ratio"] = arr(ratio);
+             d["pos"] = to_array(pos);
+             d["pos_exact"] = to_array(exact);
+             d["vel"] = to_array(vel);
+             d["acc"] = to_array(acc);
+             d["ratio"] = to_array(ratio);
              return d;
            }, py::arg("master_pos"),
            "Steps once per master sample (pulse); dict of arrays pos (whole pulses), pos_exact, vel pulse/tick,\n"
@@ -370,8 +337,8 @@ void bind_pvt(py::module_& m) {
         }
         const auto cam = plan_follow_cam(segs, entry_ratio);
         py::dict d;
-        d["ratio_begin"] = arr(cam.ratio_begin);
-        d["ratio_end"] = arr(cam.ratio_end);
+        d["ratio_begin"] = to_array(cam.ratio_begin);
+        d["ratio_end"] = to_array(cam.ratio_end);
         d["length"] = cam.length;
         d["slave_length"] = cam.slave_length;
         return d;

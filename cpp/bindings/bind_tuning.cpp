@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "arrays.hpp"
 #include "servobench/common/validate.hpp"
 #include "servobench/tuning/loop_response.hpp"
 #include "servobench/tuning/margins.hpp"
@@ -21,19 +22,6 @@ namespace servobench::bindings {
 namespace py = pybind11;
 
 namespace {
-using CArray = py::array_t<std::complex<double>>;
-
-CArray to_array(const std::vector<std::complex<double>>& v) {
-  CArray a(static_cast<py::ssize_t>(v.size()));
-  std::copy(v.begin(), v.end(), a.mutable_data());
-  return a;
-}
-template <class T>
-py::array_t<T> to_array(const std::vector<T>& v) {
-  py::array_t<T> a(static_cast<py::ssize_t>(v.size()));
-  std::copy(v.begin(), v.end(), a.mutable_data());
-  return a;
-}
 
 std::vector<double> real_vector(const py::handle& obj, const char* name) {
   auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(obj);

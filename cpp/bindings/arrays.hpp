@@ -1,0 +1,56 @@
+// Helpers shared by the binding files: vectors to NumPy arrays, a motion state as a tuple, and the tick-by-tick
+// recorder of a profile generator (any object with step(), moving() and a reported position).
+#pragma once
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "servobench/common/validate.hpp"
+#include "servobench/motion/profile.hpp"
+
+namespace servobench::bindings {
+
+template <class T>
+pybind11::array_t<T> to_array(const std::vector<T>& v) {
+  pybind11::array_t<T> a(static_cast<pybind11::ssize_t>(v.size()));
+  std::copy(v.begin(), v.end(), a.mutable_data());
+  return a;
+}
+
+inline pybind11::tuple state_tuple(const motion::MotionState& s) {
+  return pybind11::make_tuple(s.pos, s.vel, s.acc, s.jerk);
+}
+
+// Steps `ticks` times (or until the motion ends, if until_done), the GIL released; returns arrays pos (whole
+// pulses, as reported), pos_exact, vel, acc, jerk in per-tick units.
+template <class Step, class Moving, class Reported>
+pybind11::dict run_ticks(const char* owner, double ticks, bool until_done, Step step, Moving moving,
+                         Reported reported) {
+  check_integer(owner, "ticks", ticks, 0, 1e8);
+  std::vector<double> pos, exact, vel, acc, jerk;
+  {
+    pybind11::gil_scoped_release release;
+    const auto n = static_cast<std::size_t>(ticks);
+    for (std::size_t k = 0; k < n; ++k) {
+      if (until_done && !moving()) break;
+      const motion::MotionState& s = step();
+      pos.push_back(static_cast<double>(reported()));
+      exact.push_back(s.pos);
+      vel.push_back(s.vel);
+      acc.push_back(s.acc);
+      jerk.push_back(s.jerk);
+    }
+  }
+  pybind11::dict d;
+  d["pos"] = to_array(pos);
+  d["pos_exact"] = to_array(exact);
+  d["vel"] = to_array(vel);
+  d["acc"] = to_array(acc);
+  d["jerk"] = to_array(jerk);
+  return d;
+}
+
+}  // namespace servobench::bindings
