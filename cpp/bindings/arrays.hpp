@@ -2,10 +2,14 @@
 // recorder of a profile generator (any object with step(), moving() and a reported position).
 #pragma once
 
+#include <pybind11/complex.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
 #include <algorithm>
+#include <complex>
+#include <functional>
+#include <string>
 #include <vector>
 
 #include "servobench/common/validate.hpp"
@@ -18,6 +22,27 @@ pybind11::array_t<T> to_array(const std::vector<T>& v) {
   pybind11::array_t<T> a(static_cast<pybind11::ssize_t>(v.size()));
   std::copy(v.begin(), v.end(), a.mutable_data());
   return a;
+}
+
+inline std::vector<double> real_vector(const pybind11::handle& obj, const char* name) {
+  auto a = pybind11::array_t<double, pybind11::array::c_style | pybind11::array::forcecast>::ensure(obj);
+  if (!a || a.ndim() != 1) throw pybind11::value_error(std::string(name) + " must be a 1-D array of numbers");
+  return std::vector<double>(a.data(), a.data() + a.shape(0));
+}
+inline std::vector<std::complex<double>> complex_vector(const pybind11::handle& obj, const char* name) {
+  auto a = pybind11::array_t<std::complex<double>, pybind11::array::c_style | pybind11::array::forcecast>::ensure(obj);
+  if (!a || a.ndim() != 1) throw pybind11::value_error(std::string(name) + " must be a 1-D array of complex numbers");
+  return std::vector<std::complex<double>>(a.data(), a.data() + a.shape(0));
+}
+
+// A Python callable(done, total) -> bool|None as a C++ progress callback (the GIL taken for the call); empty if None.
+inline std::function<bool(int, int)> progress_callback(const pybind11::object& progress) {
+  if (progress.is_none()) return {};
+  return [progress](int done, int total) {
+    pybind11::gil_scoped_acquire gil;
+    pybind11::object r = progress(done, total);
+    return r.is_none() || r.cast<bool>();
+  };
 }
 
 inline pybind11::tuple state_tuple(const motion::MotionState& s) {

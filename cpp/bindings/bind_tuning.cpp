@@ -23,27 +23,6 @@ namespace py = pybind11;
 
 namespace {
 
-std::vector<double> real_vector(const py::handle& obj, const char* name) {
-  auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(obj);
-  if (!a || a.ndim() != 1) throw py::value_error(std::string(name) + " must be a 1-D array of numbers");
-  return std::vector<double>(a.data(), a.data() + a.shape(0));
-}
-std::vector<std::complex<double>> complex_vector(const py::handle& obj, const char* name) {
-  auto a = py::array_t<std::complex<double>, py::array::c_style | py::array::forcecast>::ensure(obj);
-  if (!a || a.ndim() != 1) throw py::value_error(std::string(name) + " must be a 1-D array of complex numbers");
-  return std::vector<std::complex<double>>(a.data(), a.data() + a.shape(0));
-}
-
-// A Python callable(done, total) -> bool|None as a C++ progress callback (the GIL taken for the call); empty if None.
-std::function<bool(int, int)> progress_callback(const py::object& progress) {
-  if (progress.is_none()) return {};
-  return [progress](int done, int total) {
-    py::gil_scoped_acquire gil;
-    py::object r = progress(done, total);
-    return r.is_none() || r.cast<bool>();
-  };
-}
-
 const char* status_name(tuning::SweepStatus s) {
   switch (s) {
     case tuning::SweepStatus::kCompleted: return "completed";

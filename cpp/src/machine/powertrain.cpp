@@ -108,20 +108,21 @@ PowerTrain::PowerTrain(const DriveParams& drive, const plant::Mechanics& mechani
   x_ = Vec::Zero(n);
   x_free_ = Vec::Zero(n);
 
-  for (const auto& body : mech_.bodies) {
-    BodyState s{off + body.angle_index, off + body.speed_index, body.torque_input, body.friction,
-                body.friction.breakaway_nm()};
-    bodies_.push_back(s);
+  if (mech_.bodies.size() > 2) throw std::invalid_argument("PowerTrain: at most two bodies");
+  nb_ = mech_.bodies.size();
+  for (std::size_t i = 0; i < nb_; ++i) {
+    const plant::Body& body = mech_.bodies[i];
+    body_index_[i] = plant::BodyIndex{off + body.angle_index, off + body.speed_index, body.torque_input};
+    dry_[i] = body.friction.dry();
   }
-  if (bodies_.size() > 2) throw std::invalid_argument("PowerTrain: at most two bodies");
-  const unsigned masks = 1u << bodies_.size();
+  const unsigned masks = 1u << nb_;
   phi_locked_.assign(masks, phi_);
   gamma_locked_.assign(masks, gamma_);
   for (unsigned mask = 1; mask < masks; ++mask) {
     Eigen::MatrixXd al = a, bl = b;
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    for (std::size_t i = 0; i < nb_; ++i) {
       if (!(mask & (1u << i))) continue;
-      for (int r : {bodies_[i].angle, bodies_[i].speed}) {
+      for (int r : {body_index_[i].angle, body_index_[i].speed}) {
         al.row(r).setZero();
         bl.row(r).setZero();
       }
@@ -129,9 +130,9 @@ PowerTrain::PowerTrain(const DriveParams& drive, const plant::Mechanics& mechani
     const plant::Zoh zl = plant::discretize_zoh(al, bl, h_);
     Mat pl = zl.phi;
     InMat gl = zl.gamma;
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    for (std::size_t i = 0; i < nb_; ++i) {
       if (!(mask & (1u << i))) continue;
-      for (int r : {bodies_[i].angle, bodies_[i].speed}) {  // exactly frozen, not frozen up to rounding
+      for (int r : {body_index_[i].angle, body_index_[i].speed}) {  // exactly frozen, not frozen up to rounding
         pl.row(r).setZero();
         pl(r, r) = 1.0;
         gl.row(r).setZero();
@@ -140,7 +141,7 @@ PowerTrain::PowerTrain(const DriveParams& drive, const plant::Mechanics& mechani
     phi_locked_[mask] = pl;
     gamma_locked_[mask] = gl;
   }
-  stuck_.assign(bodies_.size(), 1);
+  stuck_.assign(nb_, 1);
   reset();
 }
 
@@ -179,7 +180,7 @@ void PowerTrain::set_state(double motor_angle_rad, double motor_speed_rad_s, dou
   x_[motor_speed_] = motor_speed_rad_s;
   x_[load_angle_] = load_angle_rad;
   x_[load_speed_] = load_speed_rad_s;
-  for (std::size_t b = 0; b < bodies_.size(); ++b) stuck_[b] = x_[bodies_[b].speed] == 0.0;
+  for (std::size_t b = 0; b < nb_; ++b) stuck_[b] = x_[body_index_[b].speed] == 0.0;
 }
 
 void PowerTrain::set_input(double volts) {
@@ -228,101 +229,8 @@ void PowerTrain::substep() {
   double t_load = -dist.load_nm;
   if (dist.unbalance_nm != 0.0) t_load -= dist.unbalance_nm * std::sin(x_[load_angle_]);
 
-  x_free_.noalias() = phi_ * x_;
-  x_free_ += gamma_.col(0) * i_cmd_ + gamma_.col(1) * t_motor + gamma_.col(2) * t_load;
-
-  const std::size_t nb = bodies_.size();
-  bool any_dry = false;
-  for (std::size_t b = 0; b < nb; ++b) any_dry = any_dry || bodies_[b].breakaway > 0.0;
-  if (!any_dry) {
-    x_.swap(x_free_);
-    return;
-  }
-  double f[2] = {0.0, 0.0};
-  bool stick[2] = {false, false};
-  solve_friction(gamma_, 0u, f, stick);
-  // Bodies at rest that static friction keeps at rest are integrated locked.
-  unsigned locked = 0;
-  for (std::size_t b = 0; b < nb; ++b)
-    if (stick[b] && stuck_[b] && x_[bodies_[b].speed] == 0.0) locked |= 1u << b;
-  const InMat* gamma = &gamma_;
-  if (locked != 0) {
-    gamma = &gamma_locked_[locked];
-    x_free_.noalias() = phi_locked_[locked] * x_;
-    x_free_ += gamma->col(0) * i_cmd_ + gamma->col(1) * t_motor + gamma->col(2) * t_load;
-    solve_friction(*gamma, locked, f, stick);
-  }
-  for (std::size_t b = 0; b < nb; ++b) {
-    const BodyState& s = bodies_[b];
-    if (locked & (1u << b)) {
-      stuck_[b] = 1;
-      continue;
-    }
-    if (f[b] != 0.0) x_free_ += gamma->col(s.input) * f[b];
-  }
-  for (std::size_t b = 0; b < nb; ++b) {
-    if (locked & (1u << b)) continue;
-    if (stick[b]) x_free_[bodies_[b].speed] = 0.0;  // stopped inside the sub-step (the residual is rounding)
-    stuck_[b] = stick[b] ? 1 : 0;
-  }
-  x_.swap(x_free_);
-}
-
-void PowerTrain::solve_friction(const InMat& gamma, unsigned locked, double* f, bool* stick) const {
-  const std::size_t nb = bodies_.size();
-  const int sweeps = nb > 1 ? 3 : 1;
-  for (std::size_t b = 0; b < nb; ++b) {
-    if (locked & (1u << b)) {
-      f[b] = 0.0;
-      stick[b] = true;
-    }
-  }
-  for (int sweep = 0; sweep < sweeps; ++sweep) {
-    for (std::size_t b = 0; b < nb; ++b) {
-      if (locked & (1u << b)) continue;
-      const BodyState& s = bodies_[b];
-      stick[b] = false;
-      if (s.breakaway <= 0.0) {
-        f[b] = 0.0;
-        continue;
-      }
-      // End speed and displacement of this body without its own friction (the others' included).
-      double v_free = x_free_[s.speed];
-      double d = x_free_[s.angle] - x_[s.angle];
-      for (std::size_t o = 0; o < nb; ++o) {
-        if (o == b) continue;
-        v_free += gamma(s.speed, bodies_[o].input) * f[o];
-        d += gamma(s.angle, bodies_[o].input) * f[o];
-      }
-      const double g = gamma(s.speed, s.input);   // end speed per N*m of own friction
-      const double gth = gamma(s.angle, s.input); // displacement per N*m of own friction
-      const double v0 = x_[s.speed];
-      double fb;
-      bool st = false;
-      const double dir = v0 > 0 ? 1.0 : -1.0;
-      const double f_slip = -dir * s.friction.sliding_nm(v0);
-      if (v0 != 0.0 && (v_free + g * f_slip) * dir > 0.0) {
-        fb = f_slip;  // keeps sliding the same way
-      } else {
-        const double f_stick = -v_free / g;  // holds the body at rest at the sub-step's end
-        if (f_stick <= s.breakaway && f_stick >= -s.breakaway) {
-          fb = f_stick;
-          st = true;
-        } else {
-          fb = v_free > 0 ? -s.breakaway : s.breakaway;  // breaks away, or passes through zero, against Fs
-        }
-      }
-      // Sliding friction may only oppose the net displacement over the sub-step: f * (d + gth f) <= 0. (A hold
-      // from rest is integrated locked, with no work at all.)
-      if (!(st && v0 == 0.0) && fb * (d + gth * fb) > 0.0) {
-        st = false;
-        const double cap = gth > 0.0 ? std::fabs(d) / gth : 0.0;
-        fb = d == 0.0 ? 0.0 : (d > 0 ? -1.0 : 1.0) * std::min(std::fabs(fb), cap);
-      }
-      f[b] = fb;
-      stick[b] = st;
-    }
-  }
+  plant::advance_with_dry_friction(nb_, body_index_, dry_, phi_locked_, gamma_locked_, i_cmd_, t_motor, t_load, x_,
+                                   x_free_, stuck_.data());
 }
 
 TickModel PowerTrain::linear_tick_model() const {
@@ -380,8 +288,8 @@ TickModel PowerTrain::linear_tick_model() const {
 
 double PowerTrain::mechanical_energy_j() const {
   double e = 0.0;
-  for (std::size_t b = 0; b < bodies_.size(); ++b) {
-    const double w = x_[bodies_[b].speed];
+  for (std::size_t b = 0; b < nb_; ++b) {
+    const double w = x_[body_index_[b].speed];
     e += 0.5 * mech_.bodies[b].inertia_kgm2 * w * w;
   }
   if (!mech_.rigid()) {

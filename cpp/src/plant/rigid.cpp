@@ -23,11 +23,8 @@ Mechanics rigid_mechanics(const RigidPlantParams& p) {
   Mechanics m;
   const double j = p.inertia_kgm2;
   m.a.resize(2, 2);
-  m.a << 0.0, 1.0,
-         0.0, -p.viscous_nms / j;
   m.b.resize(2, 3);
-  m.b << 0.0, 0.0, 0.0,
-         1.0 / j, 1.0 / j, 1.0 / j;
+  rigid_linear(j, p.viscous_nms, m.a, m.b);
   Body body;
   body.angle_index = 0;
   body.speed_index = 1;

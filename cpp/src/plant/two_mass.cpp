@@ -33,15 +33,8 @@ Mechanics two_mass_mechanics(const TwoMassPlantParams& p) {
   const double bm = p.motor_viscous_nms, bl = p.load_viscous_nms;
   // x = [theta_m, w_m, theta_l, w_l]
   m.a.resize(4, 4);
-  m.a << 0.0, 1.0, 0.0, 0.0,
-         -k / jm, -(c + bm) / jm, k / jm, c / jm,
-         0.0, 0.0, 0.0, 1.0,
-         k / jl, c / jl, -k / jl, -(c + bl) / jl;
   m.b.resize(4, 3);
-  m.b << 0.0, 0.0, 0.0,
-         1.0 / jm, 1.0 / jm, 0.0,
-         0.0, 0.0, 0.0,
-         0.0, 0.0, 1.0 / jl;
+  two_mass_linear(jm, jl, k, c, bm, bl, m.a, m.b);
   Body motor{0, 1, 1, jm, p.motor_friction()};
   Body load{2, 3, 2, jl, p.load_friction()};
   m.bodies = {motor, load};

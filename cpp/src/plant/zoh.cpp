@@ -47,4 +47,35 @@ Zoh discretize_zoh(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, double h)
   return Zoh{e.topLeftCorner(n, n), e.topRightCorner(n, m)};
 }
 
+namespace {
+Eigen::MatrixXd balanced_exp(const Eigen::MatrixXd& block) {
+  const Eigen::VectorXd d = balance(block);
+  const Eigen::MatrixXd scaled = d.cwiseInverse().asDiagonal() * block * d.asDiagonal();
+  return d.asDiagonal() * scaled.exp() * d.cwiseInverse().asDiagonal();
+}
+}  // namespace
+
+ZohDerivatives discretize_zoh_with_derivatives(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b,
+                                               const std::vector<Eigen::MatrixXd>& da,
+                                               const std::vector<Eigen::MatrixXd>& db, double h) {
+  const Eigen::Index n = a.rows();
+  const Eigen::Index m = b.cols();
+  const Eigen::Index q = n + m;
+  ZohDerivatives r;
+  r.zoh = discretize_zoh(a, b, h);
+  Eigen::MatrixXd big = Eigen::MatrixXd::Zero(2 * q, 2 * q);
+  big.block(0, 0, n, n) = a * h;
+  big.block(0, n, n, m) = b * h;
+  big.block(q, q, n, n) = a * h;
+  big.block(q, q + n, n, m) = b * h;
+  for (std::size_t k = 0; k < da.size(); ++k) {
+    big.block(0, q, n, n) = da[k] * h;
+    big.block(0, q + n, n, m) = db[k] * h;
+    const Eigen::MatrixXd e = balanced_exp(big);
+    r.dphi.push_back(e.block(0, q, n, n));
+    r.dgamma.push_back(e.block(0, q + n, n, m));
+  }
+  return r;
+}
+
 }  // namespace servobench::plant

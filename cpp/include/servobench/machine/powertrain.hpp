@@ -21,6 +21,7 @@
 #include "servobench/drive/pulse_drive.hpp"
 #include "servobench/drive/torque_drive.hpp"
 #include "servobench/drive/velocity_drive.hpp"
+#include "servobench/plant/dry_friction.hpp"
 #include "servobench/plant/mechanics.hpp"
 
 namespace servobench::machine {
@@ -87,9 +88,6 @@ class PowerTrain {
 
  private:
   void substep();
-  // Decides the dry-friction torque of every body not in `locked` for the sub-step whose friction-free end state
-  // is x_free_, given the discretisation (phi, gamma) in use. See the class comment for the rules.
-  void solve_friction(const InMat& gamma, unsigned locked, double* f, bool* stick) const;
 
   enum class Mode { kTorque, kVelocity, kStepper, kServoPosition };
   DriveParams drive_;
@@ -117,12 +115,10 @@ class PowerTrain {
   std::vector<Mat> phi_locked_;
   std::vector<InMat> gamma_locked_;
   Vec x_, x_free_;
-  struct BodyState {
-    int angle, speed, input;
-    plant::FrictionParams friction;
-    double breakaway;
-  };
-  std::vector<BodyState> bodies_;
+  // The bodies' places in x_ and their dry friction (plant/dry_friction.hpp); nb_ bodies (1 or 2).
+  std::size_t nb_ = 0;
+  plant::BodyIndex body_index_[2];
+  plant::DryFriction<double> dry_[2];
   std::vector<char> stuck_;
   double volts_ = 0.0, i_cmd_ = 0.0;
   bool alarm_ = false;

@@ -10,6 +10,8 @@
 
 #include <cmath>
 
+#include "servobench/plant/dry_friction.hpp"
+
 namespace servobench::plant {
 
 struct FrictionParams {
@@ -24,12 +26,10 @@ struct FrictionParams {
   double breakaway_nm() const { return static_nm > coulomb_nm ? static_nm : coulomb_nm; }
   bool has_dry_friction() const { return breakaway_nm() > 0.0; }
   // Magnitude of the dry friction while sliding at |speed| (N*m): Fc + (Fs-Fc) exp(-(|w|/ws)^delta).
-  double sliding_nm(double speed_rad_s) const {
-    const double fs = breakaway_nm();
-    if (fs == coulomb_nm) return coulomb_nm;
-    const double r = std::fabs(speed_rad_s) / stribeck_speed_rad_s;
-    const double shape = stribeck_exponent == 2.0 ? r * r : std::pow(r, stribeck_exponent);
-    return coulomb_nm + (fs - coulomb_nm) * std::exp(-shape);
+  double sliding_nm(double speed_rad_s) const { return sliding_friction_nm(dry(), speed_rad_s); }
+  // The dry part in the form the sub-step integrator uses (plant/dry_friction.hpp).
+  DryFriction<double> dry() const {
+    return DryFriction<double>{coulomb_nm, breakaway_nm(), stribeck_speed_rad_s, stribeck_exponent};
   }
   // The steady friction torque opposing motion at a given speed (N*m, sign of the speed), viscous included;
   // at zero speed it returns 0 (static friction is whatever holds the body). For friction curves.

@@ -30,4 +30,18 @@ struct RigidPlantParams {
 
 Mechanics rigid_mechanics(const RigidPlantParams& params);
 
+// The linear part x' = A x + B u of a rigid body, x = [angle, speed], u = [motor torque, external torque on the
+// body, load torque], in any scalar type (the simulator on double, the identification on Jets). a: 2x2, b: 2x3.
+template <class T, class MatA, class MatB>
+void rigid_linear(const T& inertia_kgm2, const T& viscous_nms, MatA& a, MatB& b) {
+  const T inv_j = T(1.0) / inertia_kgm2;
+  a.setZero();
+  b.setZero();
+  a(0, 1) = T(1.0);
+  a(1, 1) = -viscous_nms * inv_j;
+  b(1, 0) = inv_j;
+  b(1, 1) = inv_j;
+  b(1, 2) = inv_j;
+}
+
 }  // namespace servobench::plant

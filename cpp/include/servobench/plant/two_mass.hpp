@@ -45,4 +45,27 @@ struct TwoMassPlantParams {
 
 Mechanics two_mass_mechanics(const TwoMassPlantParams& params);
 
+// The linear part x' = A x + B u of the two-mass mechanism, x = [motor angle, motor speed, load angle, load speed],
+// u = [motor torque, external torque on the motor, external torque on the load], in any scalar type (the simulator
+// on double, the identification on Jets). a: 4x4, b: 4x3.
+template <class T, class MatA, class MatB>
+void two_mass_linear(const T& jm, const T& jl, const T& k, const T& c, const T& motor_viscous, const T& load_viscous,
+                     MatA& a, MatB& b) {
+  a.setZero();
+  b.setZero();
+  a(0, 1) = T(1.0);
+  a(1, 0) = -k / jm;
+  a(1, 1) = -(c + motor_viscous) / jm;
+  a(1, 2) = k / jm;
+  a(1, 3) = c / jm;
+  a(2, 3) = T(1.0);
+  a(3, 0) = k / jl;
+  a(3, 1) = c / jl;
+  a(3, 2) = -k / jl;
+  a(3, 3) = -(c + load_viscous) / jl;
+  b(1, 0) = T(1.0) / jm;
+  b(1, 1) = T(1.0) / jm;
+  b(3, 2) = T(1.0) / jl;
+}
+
 }  // namespace servobench::plant

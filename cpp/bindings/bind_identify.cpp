@@ -1,0 +1,217 @@
+// Bindings of the identification layer: time-domain and frequency-domain fits. Thin: arrays in, dicts out.
+#include <pybind11/functional.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <string>
+#include <vector>
+
+#include "arrays.hpp"
+#include "servobench/common/validate.hpp"
+#include "servobench/identify/frequency_fit.hpp"
+#include "servobench/identify/time_fit.hpp"
+
+namespace servobench::bindings {
+
+namespace py = pybind11;
+
+namespace {
+
+identify::PlantModel model_of(const std::string& name) {
+  if (name == "rigid") return identify::PlantModel::kRigid;
+  if (name == "two_mass") return identify::PlantModel::kTwoMass;
+  throw py::value_error("model = '" + name + "' is not one of 'rigid', 'two_mass'");
+}
+
+identify::Loss loss_of(const std::string& name) {
+  if (name == "none") return identify::Loss::kNone;
+  if (name == "huber") return identify::Loss::kHuber;
+  if (name == "soft_l1") return identify::Loss::kSoftLOne;
+  if (name == "cauchy") return identify::Loss::kCauchy;
+  throw py::value_error("loss = '" + name + "' is not one of 'none', 'huber', 'soft_l1', 'cauchy'");
+}
+
+identify::ParameterSetup setup_of(const py::handle& initial, const std::vector<bool>& fixed, const py::handle& lower,
+                                  const py::handle& upper) {
+  identify::ParameterSetup s;
+  s.initial = real_vector(initial, "initial");
+  s.fixed = fixed;
+  s.lower = real_vector(lower, "lower");
+  s.upper = real_vector(upper, "upper");
+  return s;
+}
+
+py::list estimates(const std::vector<identify::ParameterEstimate>& ps) {
+  py::list out;
+  for (const auto& e : ps)
+    out.append(py::dict(py::arg("name") = e.name, py::arg("unit") = e.unit, py::arg("value") = e.value,
+                        py::arg("initial") = e.initial, py::arg("std_error") = e.std_error,
+                        py::arg("lower") = e.lower, py::arg("upper") = e.upper, py::arg("fixed") = e.fixed,
+                        py::arg("at_bound") = e.at_bound));
+  return out;
+}
+
+py::dict summary(const identify::FitSummary& s) {
+  return py::dict(py::arg("converged") = s.converged, py::arg("termination") = s.termination,
+                  py::arg("iterations") = s.iterations, py::arg("initial_cost") = s.initial_cost,
+                  py::arg("final_cost") = s.final_cost, py::arg("seconds") = s.seconds,
+                  py::arg("residuals") = s.residuals, py::arg("free_parameters") = s.free_parameters,
+                  py::arg("nuisance_parameters") = s.nuisance_parameters, py::arg("residual_rms") = s.residual_rms,
+                  py::arg("nrmse") = s.nrmse, py::arg("not_identifiable") = s.not_identifiable,
+                  py::arg("report") = s.report);
+}
+
+// An iteration callback (iteration, cost) -> bool|None, the GIL taken for the call; empty if None.
+std::function<bool(int, double)> iteration_callback(const py::object& f) {
+  if (f.is_none()) return {};
+  return [f](int it, double cost) {
+    py::gil_scoped_acquire gil;
+    py::object r = f(it, cost);
+    return r.is_none() || r.cast<bool>();
+  };
+}
+
+identify::TimeFitOptions time_options(const std::string& model, double segment_samples, double substeps,
+                                      double current_bw_hz, double stribeck_exponent, double measurement_scale,
+                                      double continuity_weight, const std::string& loss, double loss_scale, double max_iterations,
+                                      double num_threads, double max_relative_std_error) {
+  identify::TimeFitOptions o;
+  o.model = model_of(model);
+  check_integer("TimeFitOptions", "segment_samples", segment_samples, 10, 100000);
+  check_integer("TimeFitOptions", "substeps", substeps, 1, 1000);
+  check_integer("TimeFitOptions", "max_iterations", max_iterations, 1, 10000);
+  check_integer("TimeFitOptions", "num_threads", num_threads, 1, 64);
+  o.segment_samples = static_cast<int>(segment_samples);
+  o.substeps = static_cast<int>(substeps);
+  o.current_bw_hz = current_bw_hz;
+  o.stribeck_exponent = stribeck_exponent;
+  o.measurement_scale = measurement_scale;
+  o.continuity_weight = continuity_weight;
+  o.loss = loss_of(loss);
+  o.loss_scale = loss_scale;
+  o.max_iterations = static_cast<int>(max_iterations);
+  o.num_threads = static_cast<int>(num_threads);
+  o.max_relative_std_error = max_relative_std_error;
+  o.validate();
+  return o;
+}
+
+}  // namespace
+
+void bind_identify(py::module_& m) {
+  m.def(
+      "identify_parameters",
+      [](const std::string& model) {
+        py::list out;
+        for (const auto& p : identify::model_parameters(model_of(model)))
+          out.append(py::dict(py::arg("name") = p.name, py::arg("unit") = p.unit, py::arg("lower") = p.lower,
+                              py::arg("linear") = p.linear, py::arg("meaning") = p.meaning));
+        return out;
+      },
+      py::arg("model"), "The parameters of a plant model ('rigid' or 'two_mass'), in the order of its vector.");
+
+  m.def(
+      "identify_time",
+      [](const py::handle& torque_nm, const py::handle& measured, double sample_period_s, bool measured_is_speed,
+         bool measured_on_load, const std::string& model, const py::handle& initial, const std::vector<bool>& fixed,
+         const py::handle& lower, const py::handle& upper, double segment_samples, double substeps,
+         double current_bw_hz, double stribeck_exponent, double measurement_scale, double continuity_weight,
+         const std::string& loss, double loss_scale, double max_iterations, double num_threads,
+         double max_relative_std_error, const py::object& progress) {
+        identify::TimeLog log;
+        log.sample_period_s = sample_period_s;
+        log.torque_nm = real_vector(torque_nm, "torque_nm");
+        log.measured = real_vector(measured, "measured");
+        log.measured_is_speed = measured_is_speed;
+        log.measured_on_load = measured_on_load;
+        identify::TimeFitOptions o =
+            time_options(model, segment_samples, substeps, current_bw_hz, stribeck_exponent, measurement_scale,
+                         continuity_weight, loss, loss_scale, max_iterations, num_threads, max_relative_std_error);
+        o.progress = iteration_callback(progress);
+        const identify::ParameterSetup s = setup_of(initial, fixed, lower, upper);
+        identify::TimeFitResult r;
+        {
+          py::gil_scoped_release release;
+          r = identify::fit_time_domain(log, s, o);
+        }
+        py::dict d;
+        d["parameters"] = estimates(r.parameters);
+        d["summary"] = summary(r.summary);
+        d["predicted"] = to_array(r.predicted);
+        d["residual"] = to_array(r.residual);
+        d["segment_start"] = to_array(r.segment_start);
+        return d;
+      },
+      py::arg("torque_nm"), py::arg("measured"), py::kw_only(), py::arg("sample_period_s"),
+      py::arg("measured_is_speed"), py::arg("measured_on_load"), py::arg("model"), py::arg("initial"),
+      py::arg("fixed"), py::arg("lower"), py::arg("upper"), py::arg("segment_samples"), py::arg("substeps"),
+      py::arg("current_bw_hz"), py::arg("stribeck_exponent"), py::arg("measurement_scale"), py::arg("continuity_weight"), py::arg("loss"),
+      py::arg("loss_scale"), py::arg("max_iterations"), py::arg("num_threads"), py::arg("max_relative_std_error"),
+      py::arg("progress") = py::none(), "Time-domain grey-box fit of the plant (Ceres). Releases the GIL.");
+
+  m.def(
+      "identify_simulate",
+      [](const py::handle& torque_nm, double sample_period_s, bool measured_is_speed, bool measured_on_load,
+         const std::string& model, const py::handle& parameters, const py::handle& initial_state, double substeps,
+         double current_bw_hz, double stribeck_exponent) {
+        identify::TimeLog log;
+        log.sample_period_s = sample_period_s;
+        log.torque_nm = real_vector(torque_nm, "torque_nm");
+        log.measured_is_speed = measured_is_speed;
+        log.measured_on_load = measured_on_load;
+        identify::TimeFitOptions o = time_options(model, 200, substeps, current_bw_hz, stribeck_exponent, 1.0, 0.0,
+                                                  "none", 1.0, 100, 1, 0.2);
+        std::vector<double> out;
+        const auto p = real_vector(parameters, "parameters");
+        const auto x0 = real_vector(initial_state, "initial_state");
+        {
+          py::gil_scoped_release release;
+          out = identify::simulate_model(log, p, x0, o);
+        }
+        return to_array(out);
+      },
+      py::arg("torque_nm"), py::kw_only(), py::arg("sample_period_s"), py::arg("measured_is_speed"),
+      py::arg("measured_on_load"), py::arg("model"), py::arg("parameters"), py::arg("initial_state"),
+      py::arg("substeps"), py::arg("current_bw_hz"), py::arg("stribeck_exponent"),
+      "The identification model run open loop over a torque log (the code the fit differentiates, on double).");
+
+  m.def(
+      "identify_frequency",
+      [](const machine::Axis& axis, const py::handle& freq_hz, const py::handle& response, const py::handle& weight,
+         const std::string& model, const py::handle& initial, const std::vector<bool>& fixed, const py::handle& lower,
+         const py::handle& upper, bool fit_delay, double delay_initial_s, double max_iterations,
+         double max_relative_std_error, const py::object& progress) {
+        identify::FrequencyData data;
+        data.freq_hz = real_vector(freq_hz, "freq_hz");
+        data.response = complex_vector(response, "response");
+        data.weight = real_vector(weight, "weight");
+        identify::FrequencyFitOptions o;
+        o.model = model_of(model);
+        o.fit_delay = fit_delay;
+        o.delay_initial_s = delay_initial_s;
+        check_integer("FrequencyFitOptions", "max_iterations", max_iterations, 1, 10000);
+        o.max_iterations = static_cast<int>(max_iterations);
+        o.max_relative_std_error = max_relative_std_error;
+        o.validate();
+        o.progress = iteration_callback(progress);
+        const identify::ParameterSetup s = setup_of(initial, fixed, lower, upper);
+        identify::FrequencyFitResult r;
+        {
+          py::gil_scoped_release release;
+          r = identify::fit_frequency_response(axis.config(), data, s, o);
+        }
+        py::dict d;
+        d["parameters"] = estimates(r.parameters);
+        d["summary"] = summary(r.summary);
+        d["predicted"] = to_array(r.predicted);
+        return d;
+      },
+      py::arg("axis"), py::arg("freq_hz"), py::arg("response"), py::kw_only(), py::arg("weight"), py::arg("model"),
+      py::arg("initial"), py::arg("fixed"), py::arg("lower"), py::arg("upper"), py::arg("fit_delay"),
+      py::arg("delay_initial_s"), py::arg("max_iterations"), py::arg("max_relative_std_error"),
+      py::arg("progress") = py::none(),
+      "Frequency-domain fit of the plant to a measured Y/U (U counts -> Y pulse). Releases the GIL.");
+}
+
+}  // namespace servobench::bindings

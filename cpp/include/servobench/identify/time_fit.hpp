@@ -1,0 +1,80 @@
+// Time-domain grey-box identification of the plant from a log, solved with Ceres.
+//
+// The log holds, per sample k (period Ts): the torque command held over [t_k, t_k+1) and the measured position (or
+// speed) at t_k. The model is the simulator's own plant (identify/plant_model.hpp: the same matrices, the same exact
+// zero-order hold, the same implicit dry-friction sub-step), driven through the known current loop. The fit is an
+// output-error fit by multiple shooting: the log is cut into segments of `segment_samples`; each segment starts from
+// its own free initial mechanical state (nuisance parameters) and is simulated from the logged torque; the residual
+// is the measured minus the simulated output, divided by `measurement_scale`. Short segments keep the problem
+// well-conditioned (an open-loop simulation of an integrating plant drifts) and the initial states absorb the
+// quantisation offset. Derivatives: Ceres automatic differentiation (Jets) through the sub-step; the discretisation's
+// derivatives by Van Loan's block exponential.
+#pragma once
+
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "servobench/identify/fit_report.hpp"
+#include "servobench/identify/plant_model.hpp"
+
+namespace servobench::identify {
+
+struct TimeLog {
+  double sample_period_s = 0.0;   // Ts, s (> 0)
+  std::vector<double> torque_nm;  // torque command held over [t_k, t_k+1), N*m
+  std::vector<double> measured;   // position (rad) or speed (rad/s) at t_k
+  bool measured_is_speed = false; // measured holds speeds
+  bool measured_on_load = false;  // measured on the load side (two-mass; the same body when rigid)
+};
+
+enum class Loss { kNone = 0, kHuber = 1, kSoftLOne = 2, kCauchy = 3 };
+
+struct TimeFitOptions {
+  PlantModel model = PlantModel::kRigid;
+  int segment_samples = 200;        // samples per shooting segment, 10..100000
+  int substeps = 1;                 // plant sub-steps per sample (the simulator's Axis substeps), 1..1000
+  double current_bw_hz = std::numeric_limits<double>::infinity();  // known current-loop bandwidth, Hz (inf: none)
+  double stribeck_exponent = 2.0;   // known Stribeck exponent, 0.5..4
+  double measurement_scale = 1.0;   // residual unit (e.g. one encoder count in rad), > 0
+  // Weight of the multiple-shooting continuity residuals (each segment's simulated end state minus the next
+  // segment's start, angles in measurement_scale units, speeds in measurement_scale per sample); 0: independent
+  // segments. Continuity carries each segment's state through stick-slip events that would otherwise trap it.
+  double continuity_weight = 10.0;
+  Loss loss = Loss::kNone;          // robust loss on the scaled residuals
+  double loss_scale = 3.0;          // where the robust loss departs from least squares, in measurement_scale units
+  int max_iterations = 100;         // 1..10000
+  int num_threads = 1;              // 1..64
+  double max_relative_std_error = 0.2;  // a free parameter less certain than this is reported not identifiable
+  // Called after every iteration with (iteration, cost); return false to stop the solve.
+  std::function<bool(int, double)> progress;
+  void validate() const;
+};
+
+// The starting point: one entry per model parameter (model_parameters order).
+struct ParameterSetup {
+  std::vector<double> initial;
+  std::vector<bool> fixed;     // held at initial (empty: none fixed)
+  std::vector<double> lower;   // empty: the physical bounds of model_parameters
+  std::vector<double> upper;   // empty: +inf
+};
+
+struct TimeFitResult {
+  std::vector<ParameterEstimate> parameters;
+  FitSummary summary;
+  std::vector<double> predicted;  // the model's output per sample (each segment from its fitted start), unit of measured
+  std::vector<double> residual;   // measured - predicted
+  std::vector<int> segment_start; // first sample of each segment
+};
+
+// Fits the plant. Throws std::invalid_argument for bad input (lengths, non-finite values, a log shorter than two
+// segments, bounds not around the initial values).
+TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, const TimeFitOptions& options);
+
+// Simulates the model from one initial mechanical state over a whole log (no shooting), for checks and plots:
+// the same code the fit differentiates, on double. Returns the output per sample.
+std::vector<double> simulate_model(const TimeLog& log, const std::vector<double>& parameters,
+                                   const std::vector<double>& initial_state, const TimeFitOptions& options);
+
+}  // namespace servobench::identify

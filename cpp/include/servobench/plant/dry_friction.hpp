@@ -1,0 +1,164 @@
+// Dry friction over one integration sub-step, on any scalar type: the simulator runs it on double, the
+// identification (identify/) on Ceres Jets for automatic differentiation -- one piece of code for both.
+//
+// The linear part of the bodies' motion (inertias, shaft, viscous friction) is integrated exactly over the sub-step
+// by a zero-order-hold discretisation (phi, gamma); the dry friction of each body is a torque held over the
+// sub-step, chosen implicitly (time-stepping):
+//  - a sliding body keeps its sliding friction -sign(w) (Fc + (Fs - Fc) exp(-(|w|/ws)^delta)) if it still moves
+//    the same way at the sub-step's end;
+//  - otherwise the friction is the torque that stops it at the end, if static friction can (|f| <= Fs): it sticks;
+//  - otherwise it breaks away (or passes through zero) against the breakaway level Fs;
+//  - sliding friction never does positive work: f * (displacement over the sub-step) <= 0;
+//  - a body at rest that static friction keeps at rest is integrated with an exactly locked discretisation.
+// Branches compare values only (for Jets, the scalar part), so the result is piecewise smooth in the parameters.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <type_traits>
+
+namespace servobench::plant {
+
+// Where a body lives in the state vector, and its column in the discretisation's input matrix.
+struct BodyIndex {
+  int angle = 0;
+  int speed = 1;
+  int input = 1;
+};
+
+// A body's dry friction in scalar type T: Coulomb (sliding) level, breakaway level (>= Coulomb; equal: no
+// Stribeck peak), Stribeck speed (> 0) and exponent.
+template <class T>
+struct DryFriction {
+  T coulomb_nm;
+  T breakaway_nm;
+  T stribeck_speed_rad_s;
+  double stribeck_exponent = 2.0;
+};
+
+// Sliding friction level at speed w (N*m, >= 0): Fc + (Fs - Fc) exp(-(|w|/ws)^delta).
+template <class T>
+T sliding_friction_nm(const DryFriction<T>& f, const T& speed_rad_s) {
+  using std::abs;
+  using std::exp;
+  using std::pow;
+  // No Stribeck peak: the formula gives Fc; the simulator (double) skips the exponential, a Jet keeps the
+  // derivative with respect to the breakaway level.
+  if constexpr (std::is_same<T, double>::value)
+    if (f.breakaway_nm == f.coulomb_nm) return f.coulomb_nm;
+  const T r = abs(speed_rad_s) / f.stribeck_speed_rad_s;
+  const T shape = f.stribeck_exponent == 2.0 ? T(r * r) : T(pow(r, f.stribeck_exponent));
+  return f.coulomb_nm + (f.breakaway_nm - f.coulomb_nm) * exp(-shape);
+}
+
+// Chooses the held dry-friction torque f[b] of every body b for the sub-step from x0 whose friction-free end state
+// is x_free (gamma: the discretisation's input matrix in use; bodies in the `locked` bit mask are frozen and get
+// f = 0, stick = true). Two bodies are coupled through the shaft: three Gauss-Seidel sweeps.
+template <class T, class Vec, class Mat>
+void solve_dry_friction(std::size_t nb, const BodyIndex* idx, const DryFriction<T>* fr, const Vec& x0,
+                        const Vec& x_free, const Mat& gamma, unsigned locked, T* f, bool* stick) {
+  using std::abs;
+  const int sweeps = nb > 1 ? 3 : 1;
+  for (std::size_t b = 0; b < nb; ++b) {
+    if (locked & (1u << b)) {
+      f[b] = T(0.0);
+      stick[b] = true;
+    }
+  }
+  for (int sweep = 0; sweep < sweeps; ++sweep) {
+    for (std::size_t b = 0; b < nb; ++b) {
+      if (locked & (1u << b)) continue;
+      const BodyIndex& s = idx[b];
+      stick[b] = false;
+      if (!(fr[b].breakaway_nm > 0.0)) {
+        f[b] = T(0.0);
+        continue;
+      }
+      // End speed and displacement of this body without its own friction (the others' included).
+      T v_free = x_free[s.speed];
+      T d = x_free[s.angle] - x0[s.angle];
+      for (std::size_t o = 0; o < nb; ++o) {
+        if (o == b) continue;
+        v_free += gamma(s.speed, idx[o].input) * f[o];
+        d += gamma(s.angle, idx[o].input) * f[o];
+      }
+      const T g = gamma(s.speed, s.input);    // end speed per N*m of own friction
+      const T gth = gamma(s.angle, s.input);  // displacement per N*m of own friction
+      const T v0 = x0[s.speed];
+      T fb;
+      bool st = false;
+      const double dir = v0 > 0.0 ? 1.0 : -1.0;
+      const T f_slip = -dir * sliding_friction_nm(fr[b], v0);
+      if (v0 != 0.0 && (v_free + g * f_slip) * dir > 0.0) {
+        fb = f_slip;  // keeps sliding the same way
+      } else {
+        const T f_stick = -v_free / g;  // holds the body at rest at the sub-step's end
+        if (f_stick <= fr[b].breakaway_nm && f_stick >= -fr[b].breakaway_nm) {
+          fb = f_stick;
+          st = true;
+        } else {
+          fb = v_free > 0.0 ? T(-fr[b].breakaway_nm) : T(fr[b].breakaway_nm);  // breaks away, or passes zero
+        }
+      }
+      // Sliding friction may only oppose the net displacement over the sub-step: f * (d + gth f) <= 0. (A hold
+      // from rest is integrated locked, with no work at all.)
+      if (!(st && v0 == 0.0) && fb * (d + gth * fb) > 0.0) {
+        st = false;
+        const T cap = gth > 0.0 ? T(abs(d) / gth) : T(0.0);
+        const T afb = abs(fb);
+        const T mag = afb < cap ? afb : cap;
+        fb = d == 0.0 ? T(0.0) : (d > 0.0 ? T(-mag) : mag);
+      }
+      f[b] = fb;
+      stick[b] = st;
+    }
+  }
+}
+
+// One sub-step of the bodies with dry friction. phis[mask] / gammas[mask]: the discretisation with the bodies of
+// `mask` locked (mask 0: none locked); u0, u1, u2: the inputs held over the sub-step (drive command, external
+// torque on the motor body, on the load body). x is advanced in place (x_free is scratch of the same size);
+// stuck[b] is the "at rest, held by static friction" flag of each body, carried from sub-step to sub-step.
+template <class T, class Vec, class PhiSet, class GammaSet>
+void advance_with_dry_friction(std::size_t nb, const BodyIndex* idx, const DryFriction<T>* fr, const PhiSet& phis,
+                               const GammaSet& gammas, const T& u0, const T& u1, const T& u2, Vec& x, Vec& x_free,
+                               char* stuck) {
+  const auto& gamma0 = gammas[0];
+  x_free.noalias() = phis[0] * x;
+  x_free += gamma0.col(0) * u0 + gamma0.col(1) * u1 + gamma0.col(2) * u2;
+  bool any_dry = false;
+  for (std::size_t b = 0; b < nb; ++b) any_dry = any_dry || fr[b].breakaway_nm > 0.0;
+  if (!any_dry) {
+    x.swap(x_free);
+    return;
+  }
+  T f[2] = {T(0.0), T(0.0)};
+  bool stick[2] = {false, false};
+  solve_dry_friction(nb, idx, fr, x, x_free, gamma0, 0u, f, stick);
+  // Bodies at rest that static friction keeps at rest are integrated locked.
+  unsigned locked = 0;
+  for (std::size_t b = 0; b < nb; ++b)
+    if (stick[b] && stuck[b] && x[idx[b].speed] == 0.0) locked |= 1u << b;
+  const auto* gamma = &gamma0;
+  if (locked != 0) {
+    gamma = &gammas[locked];
+    x_free.noalias() = phis[locked] * x;
+    x_free += gamma->col(0) * u0 + gamma->col(1) * u1 + gamma->col(2) * u2;
+    solve_dry_friction(nb, idx, fr, x, x_free, *gamma, locked, f, stick);
+  }
+  for (std::size_t b = 0; b < nb; ++b) {
+    if (locked & (1u << b)) {
+      stuck[b] = 1;
+      continue;
+    }
+    if (f[b] != 0.0) x_free += gamma->col(idx[b].input) * f[b];
+  }
+  for (std::size_t b = 0; b < nb; ++b) {
+    if (locked & (1u << b)) continue;
+    if (stick[b]) x_free[idx[b].speed] = T(0.0);  // stopped inside the sub-step (the residual is rounding)
+    stuck[b] = stick[b] ? 1 : 0;
+  }
+  x.swap(x_free);
+}
+
+}  // namespace servobench::plant

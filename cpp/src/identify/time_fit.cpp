@@ -1,0 +1,481 @@
+#include "servobench/identify/time_fit.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <type_traits>
+
+#include <ceres/ceres.h>
+
+#include "servobench/common/validate.hpp"
+#include "servobench/identify/covariance.hpp"
+
+namespace servobench::identify {
+
+void TimeFitOptions::validate() const {
+  check_integer("TimeFitOptions", "segment_samples", segment_samples, 10, 100000);
+  check_integer("TimeFitOptions", "substeps", substeps, 1, 1000);
+  if (!(current_bw_hz > 0.0)) throw_invalid("TimeFitOptions", "current_bw_hz", current_bw_hz, "must be > 0 (inf: none)");
+  check_range("TimeFitOptions", "stribeck_exponent", stribeck_exponent, 0.5, 4.0);
+  check_positive("TimeFitOptions", "measurement_scale", measurement_scale);
+  check_nonnegative("TimeFitOptions", "continuity_weight", continuity_weight);
+  check_positive("TimeFitOptions", "loss_scale", loss_scale);
+  check_integer("TimeFitOptions", "max_iterations", max_iterations, 1, 10000);
+  check_integer("TimeFitOptions", "num_threads", num_threads, 1, 64);
+  check_positive("TimeFitOptions", "max_relative_std_error", max_relative_std_error);
+}
+
+namespace {
+
+constexpr int kMaxStates = 5;
+template <class T>
+using Vec = Eigen::Matrix<T, Eigen::Dynamic, 1, 0, kMaxStates, 1>;
+template <class T>
+using Mat = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxStates, kMaxStates>;
+template <class T>
+using InMat = Eigen::Matrix<T, Eigen::Dynamic, 3, 0, kMaxStates, 3>;
+
+inline double value_of(double x) { return x; }
+template <int N>
+double value_of(const ceres::Jet<double, N>& x) {
+  return x.a;
+}
+
+// A discretisation matrix on T: the value, and for Jets the derivatives along the first directions (the linear
+// parameters come first in the parameter block, so Jet direction k is linear parameter k).
+template <class M>
+void lift(const Eigen::MatrixXd& v, const std::vector<Eigen::MatrixXd>&, M& out, std::true_type /*double*/) {
+  out = v;
+}
+template <class M>
+void lift(const Eigen::MatrixXd& v, const std::vector<Eigen::MatrixXd>& d, M& out, std::false_type /*jet*/) {
+  using T = typename M::Scalar;
+  out.resize(v.rows(), v.cols());
+  for (Eigen::Index r = 0; r < v.rows(); ++r)
+    for (Eigen::Index c = 0; c < v.cols(); ++c) {
+      T x(v(r, c));
+      for (std::size_t k = 0; k < d.size(); ++k) x.v[static_cast<Eigen::Index>(k)] = d[k](r, c);
+      out(r, c) = x;
+    }
+}
+
+// Everything the segments share.
+struct FitContext {
+  ModelLayout layout;
+  const TimeLog* log = nullptr;
+  std::vector<double> lag;  // current-loop torque at every sample (parameter-free: the loop is known)
+  int substeps = 1;
+  int output_index = 0;
+  double inv_scale = 1.0;
+  double continuity_weight = 1.0;
+  mutable std::unique_ptr<DiscretisationCache> cache;
+};
+
+// Simulates samples [start, start + count) from the mechanical state x0 with parameters p, writing the output per
+// sample to out (scaled residuals when y is given). T = double or a Ceres Jet.
+template <PlantModel M, class T>
+void simulate_segment(const FitContext& ctx, const T* p, const T* x0, int start, int count, T* out, bool residual,
+                      const T* x_next = nullptr, T* continuity = nullptr) {
+  constexpr bool is_double = std::is_same<T, double>::value;
+  const ModelLayout& layout = ctx.layout;
+  const int nlin = linear_parameter_count(layout.model);
+  double lin[6];
+  for (int k = 0; k < nlin; ++k) lin[k] = value_of(p[k]);
+  const auto disc = ctx.cache->get(lin, !is_double);
+  const std::size_t masks = disc->phi.size();
+  std::array<Mat<T>, 4> phis;
+  std::array<InMat<T>, 4> gammas;
+  for (std::size_t m = 0; m < masks; ++m) {
+    lift(disc->phi[m], disc->dphi[m], phis[m], std::integral_constant<bool, is_double>());
+    lift(disc->gamma[m], disc->dgamma[m], gammas[m], std::integral_constant<bool, is_double>());
+  }
+  plant::DryFriction<T> dry[2];
+  T load_nm;
+  model_friction<M>(layout, p, dry, &load_nm);
+  const int nb = body_count(layout.model);
+  plant::BodyIndex idx[2] = {layout.body(0), layout.body(1)};
+  const int n = layout.states();
+  const int nl = layout.lag_states();
+  Vec<T> x(n), xf(n);
+  if (nl) x[0] = T(ctx.lag[static_cast<std::size_t>(start)]);
+  for (int i = 0; i < n - nl; ++i) x[nl + i] = x0[i];
+  char stuck[2] = {0, 0};
+  for (int b = 0; b < nb; ++b) stuck[b] = value_of(x[idx[b].speed]) == 0.0 ? 1 : 0;
+  const T zero(0.0);
+  const T t_load = -load_nm;
+  const std::vector<double>& u = ctx.log->torque_nm;
+  const std::vector<double>& y = ctx.log->measured;
+  for (int k = 0; k < count; ++k) {
+    const std::size_t s = static_cast<std::size_t>(start + k);
+    out[k] = residual ? T((x[ctx.output_index] - T(y[s])) * ctx.inv_scale) : T(x[ctx.output_index]);
+    if (k + 1 == count && !continuity) break;
+    const T uk(u[s]);
+    for (int sub = 0; sub < ctx.substeps; ++sub)
+      plant::advance_with_dry_friction(static_cast<std::size_t>(nb), idx, dry, phis, gammas, uk, zero, t_load, x, xf,
+                                       stuck);
+  }
+  if (continuity) {  // the next segment must start where this one ends (angles in counts, speeds in counts/sample)
+    for (int i = 0; i < n - nl; ++i) {
+      const bool angle = i % 2 == 0;
+      const double w = ctx.continuity_weight * ctx.inv_scale * (angle ? 1.0 : ctx.log->sample_period_s);
+      continuity[i] = (x[nl + i] - x_next[i]) * w;
+    }
+  }
+}
+
+template <PlantModel M>
+struct SegmentCost {
+  const FitContext* ctx;
+  int start, count;
+  template <class T>
+  bool operator()(const T* p, const T* x0, T* r) const {
+    simulate_segment<M>(*ctx, p, x0, start, count, r, true);
+    return true;
+  }
+};
+
+// A segment and the continuity of its end state with the next segment's start (multiple shooting).
+template <PlantModel M>
+struct LinkedSegmentCost {
+  const FitContext* ctx;
+  int start, count;
+  template <class T>
+  bool operator()(const T* p, const T* x0, const T* x_next, T* r) const {
+    simulate_segment<M>(*ctx, p, x0, start, count, r, true, x_next, r + count);
+    return true;
+  }
+};
+
+void run_segment(const FitContext& ctx, const double* p, const double* x0, int start, int count, double* out) {
+  if (ctx.layout.model == PlantModel::kRigid)
+    simulate_segment<PlantModel::kRigid>(ctx, p, x0, start, count, out, false);
+  else
+    simulate_segment<PlantModel::kTwoMass>(ctx, p, x0, start, count, out, false);
+}
+
+class ProgressCallback : public ceres::IterationCallback {
+ public:
+  explicit ProgressCallback(const std::function<bool(int, double)>& f) : f_(f) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    return f_(s.iteration, s.cost) ? ceres::SOLVER_CONTINUE : ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+  }
+
+ private:
+  const std::function<bool(int, double)>& f_;
+};
+
+void check_log(const TimeLog& log, const TimeFitOptions& o) {
+  check_positive("TimeLog", "sample_period_s", log.sample_period_s);
+  if (log.torque_nm.size() != log.measured.size())
+    throw std::invalid_argument("TimeLog: torque_nm has " + std::to_string(log.torque_nm.size()) +
+                                " samples but measured has " + std::to_string(log.measured.size()) +
+                                "; they must have the same length");
+  for (std::size_t k = 0; k < log.measured.size(); ++k) {
+    if (!std::isfinite(log.torque_nm[k]))
+      throw std::invalid_argument("TimeLog.torque_nm[" + std::to_string(k) + "] = " + format_value(log.torque_nm[k]) +
+                                  " is not a finite number");
+    if (!std::isfinite(log.measured[k]))
+      throw std::invalid_argument("TimeLog.measured[" + std::to_string(k) + "] = " + format_value(log.measured[k]) +
+                                  " is not a finite number");
+  }
+  const std::size_t need = 2 * static_cast<std::size_t>(o.segment_samples);
+  if (log.measured.size() < need)
+    throw std::invalid_argument("TimeLog: " + std::to_string(log.measured.size()) +
+                                " samples is too short a log: at least two segments of segment_samples = " +
+                                std::to_string(o.segment_samples) + " are needed (" + std::to_string(need) + ")");
+  if (log.measured_on_load && o.model == PlantModel::kRigid) {
+    // the same body: allowed, nothing to do
+  }
+}
+
+std::string loss_name(Loss l) {
+  switch (l) {
+    case Loss::kHuber: return "Huber";
+    case Loss::kSoftLOne: return "soft L1";
+    case Loss::kCauchy: return "Cauchy";
+    default: return "none";
+  }
+}
+
+}  // namespace
+
+TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, const TimeFitOptions& options) {
+  options.validate();
+  check_log(log, options);
+  const PlantModel model = options.model;
+  const auto& info = model_parameters(model);
+  const int np = parameter_count(model);
+  const int ns = mechanical_states(model);
+  if (static_cast<int>(setup.initial.size()) != np)
+    throw std::invalid_argument(std::string("ParameterSetup.initial: the ") + model_name(model) + " model has " +
+                                std::to_string(np) + " parameters, got " + std::to_string(setup.initial.size()));
+  std::vector<bool> fixed = setup.fixed.empty() ? std::vector<bool>(static_cast<std::size_t>(np), false) : setup.fixed;
+  std::vector<double> lower = setup.lower, upper = setup.upper;
+  if (lower.empty())
+    for (const auto& pi : info) lower.push_back(pi.lower);
+  if (upper.empty()) upper.assign(static_cast<std::size_t>(np), std::numeric_limits<double>::infinity());
+  if (fixed.size() != static_cast<std::size_t>(np) || lower.size() != static_cast<std::size_t>(np) ||
+      upper.size() != static_cast<std::size_t>(np))
+    throw std::invalid_argument("ParameterSetup: fixed, lower and upper must have one entry per parameter");
+  for (int i = 0; i < np; ++i) {
+    const std::size_t u = static_cast<std::size_t>(i);
+    const double v = setup.initial[u];
+    if (!std::isfinite(v)) throw_invalid("ParameterSetup", info[u].name, v, "is not a finite number");
+    if (!fixed[u] && (v < lower[u] || v > upper[u] || !(lower[u] < upper[u])))
+      throw_invalid("ParameterSetup", info[u].name, v,
+                    "(initial value) is outside its bounds " + format_value(lower[u]) + ".." + format_value(upper[u]));
+  }
+
+  FitContext ctx;
+  ctx.layout.model = model;
+  ctx.layout.current_bw_hz = options.current_bw_hz;
+  ctx.layout.stribeck_exponent = options.stribeck_exponent;
+  ctx.log = &log;
+  ctx.substeps = options.substeps;
+  ctx.inv_scale = 1.0 / options.measurement_scale;
+  ctx.continuity_weight = options.continuity_weight;
+  ctx.output_index = log.measured_is_speed ? (log.measured_on_load ? ctx.layout.load_speed() : ctx.layout.motor_speed())
+                                           : (log.measured_on_load ? ctx.layout.load_angle() : ctx.layout.motor_angle());
+  const double ts = log.sample_period_s;
+  ctx.cache = std::make_unique<DiscretisationCache>(ctx.layout, ts / options.substeps);
+  const std::size_t n = log.measured.size();
+  if (ctx.layout.lag_states()) {  // the known current loop, exactly: i' = wc (u - i), u held over each sample
+    const double e = std::exp(-2.0 * M_PI * options.current_bw_hz * ts);
+    ctx.lag.resize(n);
+    double i = log.torque_nm[0];
+    for (std::size_t k = 0; k < n; ++k) {
+      ctx.lag[k] = i;
+      i = e * i + (1.0 - e) * log.torque_nm[k];
+    }
+  }
+
+  // Segments: equal lengths, the last one takes the remainder.
+  const int len = options.segment_samples;
+  const int nseg = static_cast<int>(n / static_cast<std::size_t>(len));
+  std::vector<int> starts, counts;
+  for (int s = 0; s < nseg; ++s) {
+    starts.push_back(s * len);
+    counts.push_back(s + 1 == nseg ? static_cast<int>(n) - s * len : len);
+  }
+
+  // Internally the breakaway entry is the Stribeck excess Fs - Fc >= 0 (plant_model.hpp).
+  const std::size_t si = static_cast<std::size_t>(static_index(model));
+  std::vector<double> p = to_internal(model, setup.initial);
+  lower[si] = 0.0;
+  upper[si] = std::numeric_limits<double>::infinity();
+  std::vector<std::vector<double>> x0(static_cast<std::size_t>(nseg), std::vector<double>(static_cast<std::size_t>(ns)));
+  const auto& y = log.measured;
+  for (int s = 0; s < nseg; ++s) {  // start states from the data: the measured angle and a difference quotient
+    const std::size_t a = static_cast<std::size_t>(starts[static_cast<std::size_t>(s)]);
+    const std::size_t m = std::min<std::size_t>(5, static_cast<std::size_t>(counts[static_cast<std::size_t>(s)]) - 1);
+    double angle = 0.0, speed = 0.0;
+    if (log.measured_is_speed) {
+      speed = y[a];
+    } else {
+      angle = y[a];
+      speed = (y[a + m] - y[a]) / (static_cast<double>(m) * ts);
+    }
+    auto& v = x0[static_cast<std::size_t>(s)];
+    v[0] = angle;
+    v[1] = speed;
+    if (ns == 4) {
+      v[2] = angle;
+      v[3] = speed;
+    }
+  }
+
+  ceres::Problem::Options popt;
+  ceres::Problem problem(popt);
+  std::vector<int> free_index;
+  for (int i = 0; i < np; ++i)
+    if (!fixed[static_cast<std::size_t>(i)]) free_index.push_back(i);
+  if (free_index.empty()) throw std::invalid_argument("ParameterSetup: every parameter is fixed; nothing to fit");
+  std::vector<ceres::ResidualBlockId> blocks;
+  for (int s = 0; s < nseg; ++s) {
+    ceres::CostFunction* cost = nullptr;
+    const int a = starts[static_cast<std::size_t>(s)], c = counts[static_cast<std::size_t>(s)];
+    const bool linked = options.continuity_weight > 0.0 && s + 1 < nseg;
+    using ceres::AutoDiffCostFunction;
+    using ceres::DYNAMIC;
+    constexpr PlantModel R = PlantModel::kRigid, W = PlantModel::kTwoMass;
+    if (model == R && linked)
+      cost = new AutoDiffCostFunction<LinkedSegmentCost<R>, DYNAMIC, 6, 2, 2>(new LinkedSegmentCost<R>{&ctx, a, c}, c + 2);
+    else if (model == R)
+      cost = new AutoDiffCostFunction<SegmentCost<R>, DYNAMIC, 6, 2>(new SegmentCost<R>{&ctx, a, c}, c);
+    else if (linked)
+      cost = new AutoDiffCostFunction<LinkedSegmentCost<W>, DYNAMIC, 11, 4, 4>(new LinkedSegmentCost<W>{&ctx, a, c}, c + 4);
+    else
+      cost = new AutoDiffCostFunction<SegmentCost<W>, DYNAMIC, 11, 4>(new SegmentCost<W>{&ctx, a, c}, c);
+    ceres::LossFunction* loss = nullptr;
+    switch (options.loss) {
+      case Loss::kHuber: loss = new ceres::HuberLoss(options.loss_scale); break;
+      case Loss::kSoftLOne: loss = new ceres::SoftLOneLoss(options.loss_scale); break;
+      case Loss::kCauchy: loss = new ceres::CauchyLoss(options.loss_scale); break;
+      default: break;
+    }
+    const std::size_t u = static_cast<std::size_t>(s);
+    if (linked)
+      blocks.push_back(problem.AddResidualBlock(cost, loss, p.data(), x0[u].data(), x0[u + 1].data()));
+    else
+      blocks.push_back(problem.AddResidualBlock(cost, loss, p.data(), x0[u].data()));
+  }
+  std::vector<int> constant;
+  for (int i = 0; i < np; ++i)
+    if (fixed[static_cast<std::size_t>(i)]) constant.push_back(i);
+  if (!constant.empty()) problem.SetManifold(p.data(), new ceres::SubsetManifold(np, constant));
+  for (int i = 0; i < np; ++i) {
+    const std::size_t u = static_cast<std::size_t>(i);
+    if (fixed[u]) continue;
+    if (std::isfinite(lower[u])) problem.SetParameterLowerBound(p.data(), i, lower[u]);
+    if (std::isfinite(upper[u])) problem.SetParameterUpperBound(p.data(), i, upper[u]);
+  }
+  // A speed log does not see the absolute angle: hold the motor angle of each segment (the twist stays free).
+  if (log.measured_is_speed)
+    for (auto& v : x0) problem.SetManifold(v.data(), new ceres::SubsetManifold(ns, {0}));
+
+  ceres::Solver::Options sopt;
+  sopt.linear_solver_type = ceres::DENSE_SCHUR;
+  sopt.max_num_iterations = options.max_iterations;
+  sopt.num_threads = options.num_threads;
+  sopt.function_tolerance = 1e-12;
+  sopt.parameter_tolerance = 1e-12;
+  sopt.gradient_tolerance = 1e-14;
+  sopt.logging_type = ceres::SILENT;
+  std::unique_ptr<ProgressCallback> cb;
+  if (options.progress) {
+    cb = std::make_unique<ProgressCallback>(options.progress);
+    sopt.callbacks.push_back(cb.get());
+  }
+  ceres::Solver::Summary summary;
+  const auto t0 = std::chrono::steady_clock::now();
+  ceres::Solve(sopt, &problem, &summary);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  TimeFitResult result;
+  // The model's output and the residuals at the solution.
+  result.predicted.resize(n);
+  result.residual.resize(n);
+  for (int s = 0; s < nseg; ++s) {
+    const std::size_t a = static_cast<std::size_t>(starts[static_cast<std::size_t>(s)]);
+    run_segment(ctx, p.data(), x0[static_cast<std::size_t>(s)].data(), static_cast<int>(a),
+                counts[static_cast<std::size_t>(s)], result.predicted.data() + a);
+  }
+  double ss = 0.0, mean = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    result.residual[k] = y[k] - result.predicted[k];
+    ss += result.residual[k] * result.residual[k];
+    mean += y[k];
+  }
+  mean /= static_cast<double>(n);
+  double var = 0.0;
+  for (std::size_t k = 0; k < n; ++k) var += (y[k] - mean) * (y[k] - mean);
+  result.segment_start = starts;
+
+  // Standard errors: the Jacobian at the solution, segment states eliminated.
+  ceres::Problem::EvaluateOptions eopt;
+  eopt.parameter_blocks.push_back(p.data());
+  for (auto& v : x0) eopt.parameter_blocks.push_back(v.data());
+  eopt.apply_loss_function = false;
+  eopt.num_threads = options.num_threads;
+  double cost_at = 0.0;
+  ceres::CRSMatrix jac;
+  problem.Evaluate(eopt, &cost_at, nullptr, nullptr, &jac);
+  std::vector<std::string> names;
+  for (const auto& pi : info) names.push_back(pi.name);
+  const int nuisance = log.measured_is_speed ? ns - 1 : ns;
+  CovarianceResult cov = reduced_covariance(jac, free_index, np, nuisance, cost_at, p, to_internal(model, setup.initial),
+                                            names, options.max_relative_std_error);
+  {  // back to the breakaway level: var(Fs) = var(Fc) + var(e) + 2 cov(Fc, e)
+    const Eigen::Index a = static_cast<Eigen::Index>(coulomb_index(model)), b = static_cast<Eigen::Index>(si);
+    const double v = cov.covariance(a, a) + cov.covariance(b, b) + 2.0 * cov.covariance(a, b);
+    if (std::isfinite(cov.std_error[si])) cov.std_error[si] = std::sqrt(std::max(v, 0.0));
+  }
+  p = to_external(model, p);
+
+  for (int i = 0; i < np; ++i) {
+    const std::size_t u = static_cast<std::size_t>(i);
+    ParameterEstimate e;
+    e.name = info[u].name;
+    e.unit = info[u].unit;
+    e.value = p[u];
+    e.initial = setup.initial[u];
+    e.std_error = cov.std_error[u];
+    e.lower = lower[u];
+    e.upper = upper[u];
+    e.fixed = fixed[u];
+    const double tol = 1e-9 * std::max(1.0, std::fabs(p[u]));
+    e.at_bound = !e.fixed && ((std::isfinite(lower[u]) && p[u] - lower[u] <= tol && lower[u] > info[u].lower) ||
+                              (std::isfinite(upper[u]) && upper[u] - p[u] <= tol));
+    result.parameters.push_back(e);
+  }
+  FitSummary& fs = result.summary;
+  fs.converged = summary.termination_type == ceres::CONVERGENCE;
+  fs.termination = summary.message;
+  fs.iterations = static_cast<int>(summary.iterations.size()) - 1;
+  fs.initial_cost = summary.initial_cost;
+  fs.final_cost = summary.final_cost;
+  fs.seconds = seconds;
+  fs.residuals = n;
+  fs.free_parameters = free_index.size();
+  fs.nuisance_parameters = static_cast<std::size_t>(nseg * nuisance);
+  fs.residual_rms = std::sqrt(ss / static_cast<double>(n));
+  fs.nrmse = var > 0 ? std::sqrt(ss / var) : std::numeric_limits<double>::infinity();
+  fs.not_identifiable = cov.not_identifiable;
+  std::ostringstream os;
+  os << "Time-domain fit of a " << model_name(model) << " plant: " << free_index.size() << " parameters, " << nseg
+     << " shooting segments of " << len << " samples (" << fs.nuisance_parameters << " segment states), " << n
+     << " samples, loss " << loss_name(options.loss) << ".\n"
+     << "Ceres: " << (fs.converged ? "converged" : "did not converge") << " after " << fs.iterations
+     << " iterations in " << seconds << " s (" << summary.message << "); cost " << summary.initial_cost << " -> "
+     << summary.final_cost << ".\n"
+     << "Residual RMS " << fs.residual_rms << " (" << fs.residual_rms * ctx.inv_scale
+     << " x measurement_scale), NRMSE " << fs.nrmse << ".";
+  if (!fs.not_identifiable.empty()) {
+    os << "\nNot identifiable from these data:";
+    for (const auto& s : fs.not_identifiable) os << "\n  - " << s;
+  }
+  fs.report = os.str();
+  return result;
+}
+
+std::vector<double> simulate_model(const TimeLog& log, const std::vector<double>& parameters,
+                                   const std::vector<double>& initial_state, const TimeFitOptions& options) {
+  options.validate();
+  check_positive("TimeLog", "sample_period_s", log.sample_period_s);
+  if (static_cast<int>(parameters.size()) != parameter_count(options.model))
+    throw std::invalid_argument("simulate_model: wrong number of parameters");
+  if (static_cast<int>(initial_state.size()) != mechanical_states(options.model))
+    throw std::invalid_argument("simulate_model: wrong number of initial states");
+  FitContext ctx;
+  ctx.layout.model = options.model;
+  ctx.layout.current_bw_hz = options.current_bw_hz;
+  ctx.layout.stribeck_exponent = options.stribeck_exponent;
+  ctx.log = &log;
+  ctx.substeps = options.substeps;
+  ctx.output_index = log.measured_is_speed ? (log.measured_on_load ? ctx.layout.load_speed() : ctx.layout.motor_speed())
+                                           : (log.measured_on_load ? ctx.layout.load_angle() : ctx.layout.motor_angle());
+  ctx.cache = std::make_unique<DiscretisationCache>(ctx.layout, log.sample_period_s / options.substeps);
+  const std::size_t n = log.torque_nm.size();
+  if (ctx.layout.lag_states()) {
+    const double e = std::exp(-2.0 * M_PI * options.current_bw_hz * log.sample_period_s);
+    ctx.lag.resize(n);
+    double i = n ? log.torque_nm[0] : 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      ctx.lag[k] = i;
+      i = e * i + (1.0 - e) * log.torque_nm[k];
+    }
+  }
+  TimeLog padded = log;
+  padded.measured.assign(n, 0.0);
+  ctx.log = &padded;
+  std::vector<double> out(n);
+  const std::vector<double> internal = to_internal(options.model, parameters);
+  if (n) run_segment(ctx, internal.data(), initial_state.data(), 0, static_cast<int>(n), out.data());
+  return out;
+}
+
+}  // namespace servobench::identify
