@@ -43,6 +43,9 @@ LookAhead::LookAhead(const LookAheadParams& p) : p_(p) { p_.validate(); }
 
 void LookAhead::reset(double entry_speed) {
   q_.clear();
+  mins_.clear();
+  front_index_ = 0;
+  w_total_ = 0.0;
   v_prev_ = entry_speed;
 }
 
@@ -50,31 +53,50 @@ bool LookAhead::push(const LookAheadSegment& s) {
   const double vmax = std::min(s.vmax, std::sqrt(p_.acc_max * s.curvature_radius));
   const double acc = std::min(s.acc, p_.acc_max);
   if (!q_.empty()) {
-    Entry& last = q_.back();  // its cap_end is NaN while it is the window's last ("open"), 0 if forced
+    Entry& last = q_.back();
     if (std::isnan(last.cap_end))
       last.cap_end = s.stop_before ? 0.0
                                    : std::min({last.vmax, vmax, corner_speed_limit(last.u_out, s.u_in, p_.t_ms, p_.acc_max)});
+    // The previous last is closed now: its key joins the suffix minima.
+    const Key k{front_index_ + q_.size() - 1, last.cap_end * last.cap_end + last.w_end};
+    while (!mins_.empty() && mins_.back().key >= k.key) mins_.pop_back();
+    mins_.push_back(k);
   }
-  Entry e{s.length, acc, vmax, s.stop_after ? 0.0 : std::numeric_limits<double>::quiet_NaN(), 0.0, s.u_out};
-  q_.push_back(e);
-  // Backward pass from the new window end (which stops at 0) while the limits change.
-  for (std::size_t i = q_.size() - 1; i-- > 0;) {
-    const Entry& nx = q_[i + 1];
-    const double cap = std::isnan(q_[i].cap_end) ? 0.0 : q_[i].cap_end;
-    const double nb = std::min(cap, std::sqrt(nx.v_back * nx.v_back + 2.0 * nx.acc * nx.length));
-    ++steps_;
-    if (nb == q_[i].v_back) break;
-    q_[i].v_back = nb;
-  }
+  w_total_ += 2.0 * acc * s.length;
+  q_.push_back(Entry{s.length, acc, vmax, w_total_, s.stop_after ? 0.0 : std::numeric_limits<double>::quiet_NaN(), s.u_out});
   return q_.size() > window();
 }
 
+double LookAhead::backward_limit(std::size_t i) const {
+  const std::uint64_t idx = front_index_ + i;
+  double m = w_total_;  // the window's end: speed 0 there
+  for (const auto& k : mins_)
+    if (k.index >= idx) {
+      m = std::min(m, k.key);
+      break;
+    }
+  if (!std::isnan(q_[i].cap_end) && i + 1 == q_.size()) m = std::min(m, q_[i].cap_end * q_[i].cap_end + q_[i].w_end);
+  return std::sqrt(std::max(m - q_[i].w_end, 0.0));
+}
+
 double LookAhead::pop() {
+  const double back = backward_limit(0);
   const Entry e = q_.front();
   q_.pop_front();
-  const double v = std::min(e.v_back, std::sqrt(v_prev_ * v_prev_ + 2.0 * e.acc * e.length));
+  if (!mins_.empty() && mins_.front().index == front_index_) mins_.pop_front();
+  ++front_index_;
+  const double v = std::min(back, std::sqrt(v_prev_ * v_prev_ + 2.0 * e.acc * e.length));
   v_prev_ = v;
+  if (!q_.empty() && q_.front().w_end > 64.0 * (w_total_ - q_.front().w_end) + 1e6) rebase();
   return v;
+}
+
+void LookAhead::rebase() {
+  // Keeps W small against the window's span so the squared speeds keep their precision.
+  const double base = q_.front().w_end;
+  for (auto& e : q_) e.w_end -= base;
+  for (auto& k : mins_) k.key -= base;
+  w_total_ -= base;
 }
 
 std::vector<double> plan_lookahead(const std::vector<LookAheadSegment>& segs, const LookAheadParams& p,

@@ -10,8 +10,10 @@
 //     v*|u_in - u_out| spread over T at accMax: v_c = accMax*T / |u_in - u_out|; also <= vmax_i, vmax_{i+1};
 //     0 before a G0 segment, a delay or a modal move and after a forced stop (dccFlag / velEndZero);
 //  3. the window's last segment ends at 0 (the future is unknown), so the path can always stop;
-//  4. backward pass v_i <= sqrt(v_{i+1}^2 + 2 a_{i+1} L_{i+1}), incremental: a push re-walks the window only
-//     while the limits change (amortised O(1) per segment for typical paths);
+//  4. backward pass v_i <= sqrt(v_{i+1}^2 + 2 a_{i+1} L_{i+1}). In squared speeds with W_j = sum of 2 a_k L_k up
+//     to the end of segment j this is v_i^2 = min_{j >= i}(cap_j^2 + W_j) - W_i (the window end counting as a
+//     cap of 0): a sliding-window minimum, kept in a monotonic deque, O(1) amortised per segment whatever
+//     the window n or the segment lengths;
 //  5. a segment leaves the window when n newer ones are behind it (or on flush); its end speed is fixed
 //     then by the forward pass v_i = min(backward_i, sqrt(v_{i-1}^2 + 2 a_i L_i)).
 // Every pair of consecutive end speeds is then reachable within the segment at a_i <= accMax, so a trapezoid
@@ -63,23 +65,28 @@ class LookAhead {
   std::size_t size() const { return q_.size(); }
   // Removes the oldest segment and returns its final end speed.
   double pop();
-  // The current backward limit of the i-th oldest segment in the window (diagnostics).
-  double backward_limit(std::size_t i) const { return q_[i].v_back; }
+  // The current backward limit (end speed bound) of the i-th oldest segment in the window.
+  double backward_limit(std::size_t i) const;
   // The end speed of the last segment that left the window (the entry speed of the next one).
   double entry_speed() const { return v_prev_; }
   void reset(double entry_speed = 0.0);
-  // Total backward steps taken (for the cost claim in docs/paths.md).
-  std::uint64_t backward_steps() const { return steps_; }
 
  private:
   struct Entry {
-    double length, acc, vmax, cap_end, v_back;
+    double length, acc, vmax, w_end, cap_end;  // cap_end NaN while the segment is the window's last
     CrdPoint u_out;
   };
+  struct Key {
+    std::uint64_t index;
+    double key;  // cap_end^2 + w_end
+  };
+  void rebase();
   LookAheadParams p_;
   std::deque<Entry> q_;
+  std::deque<Key> mins_;   // increasing keys, increasing indices: the suffix minima of the closed entries
+  std::uint64_t front_index_ = 0;  // global index of q_.front()
+  double w_total_ = 0.0;   // W at the end of the last segment
   double v_prev_ = 0.0;
-  std::uint64_t steps_ = 0;
 };
 
 // The end speed of every segment, as the streaming window gives it (segments pushed one by one, the rest
