@@ -13,6 +13,7 @@ void bind_pvt(py::module_& m);
 void bind_machine(py::module_& m);
 void bind_tuning(py::module_& m);
 void bind_homing(py::module_& m);
+void bind_paths(py::module_& m);
 }  // namespace servobench::bindings
 
 PYBIND11_MODULE(_core, m) {
@@ -33,4 +34,5 @@ PYBIND11_MODULE(_core, m) {
   servobench::bindings::bind_machine(m);
   servobench::bindings::bind_tuning(m);
   servobench::bindings::bind_homing(m);
+  servobench::bindings::bind_paths(m);
 }
