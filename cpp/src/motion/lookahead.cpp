@@ -11,9 +11,9 @@ namespace servobench::motion {
 void LookAheadParams::validate() const {
   const char* o = "LookAheadParams";
   check_range(o, "t_ms", t_ms, 0, 1000, "corner time, ms; empirically 1-10 ms, GUC L967, iDEABOX L2079");
-  if (!(t_ms > 0)) throw_invalid(o, "t_ms", t_ms, "must be > 0 ms (GUC L967)");
+  if (!(t_ms > 0)) throw_invalid(o, "t_ms", t_ms, "is outside the allowed range 0..1000 (0 excluded; ms, GUC L967)");
   check_range(o, "acc_max", acc_max, 0, 32767, "pulse/ms^2; GUC L969-971");
-  if (!(acc_max > 0)) throw_invalid(o, "acc_max", acc_max, "must be > 0 pulse/ms^2 (GUC L969-971)");
+  if (!(acc_max > 0)) throw_invalid(o, "acc_max", acc_max, "is outside the allowed range 0..32767 (0 excluded; pulse/ms^2, GUC L969-971)");
   check_integer(o, "n", n, 0, 32766, "segments, [0, 32767); iDEABOX L5871");
 }
 
