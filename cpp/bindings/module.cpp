@@ -14,6 +14,7 @@ void bind_machine(py::module_& m);
 void bind_tuning(py::module_& m);
 void bind_homing(py::module_& m);
 void bind_identify(py::module_& m);
+void bind_paths(py::module_& m);
 }  // namespace servobench::bindings
 
 PYBIND11_MODULE(_core, m) {
@@ -35,4 +36,5 @@ PYBIND11_MODULE(_core, m) {
   servobench::bindings::bind_tuning(m);
   servobench::bindings::bind_homing(m);
   servobench::bindings::bind_identify(m);
+  servobench::bindings::bind_paths(m);
 }

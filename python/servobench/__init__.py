@@ -68,6 +68,18 @@ from .pvt import (
     pvt_table_percent,
     pvt_trajectory,
 )
+from . import paths
+from .paths import (
+    CoordSystem,
+    LookAheadParams,
+    PathGenerator,
+    PathGeometryError,
+    PathRun,
+    PathSegment,
+    PathSetup,
+    plan_polyline_lookahead,
+    run_path,
+)
 from .motion import (
     AdlinkPtp,
     ElectronicGear,
@@ -130,6 +142,16 @@ __all__ = [
     "pvt_table_ex",
     "pvt_table_percent",
     "pvt_trajectory",
+    "CoordSystem",
+    "LookAheadParams",
+    "PathGenerator",
+    "PathGeometryError",
+    "PathRun",
+    "PathSegment",
+    "PathSetup",
+    "paths",
+    "plan_polyline_lookahead",
+    "run_path",
     "GtGear",
     "GeJog",
     "GeSCurve",

@@ -144,6 +144,19 @@ BAD = [
     (sb.FollowExSetup, "master_dir", [0], "must be 1 or -1"),
     (sb.FollowExSetup, "event_pos", [2**31, -(2**31) - 1, 0.5, NAN], "-2147483648..2147483647"),
     (sb.FollowExSetup, "loop", [32768, -32769, 1.5, INF], "-32768..32767"),
+    # Coordinated paths: GUC (seed 002) L704-709, L725-732, L771-798; iDEABOX (seed 003) L5871; GT L1956
+    (sb.PathSetup, "cycle_ms", [0, 101, NAN], "0.01..100"),
+    (sb.PathSetup, "fifo_capacity", [0, 1.5, NAN], "1..10000000"),
+    (sb.PathSetup, "syn_vel_max", [0, -1, NAN, INF], "1000000000"),
+    (sb.PathSetup, "syn_acc_max", [0, -1, NAN], "1000000000"),
+    (sb.PathSetup, "even_time_ms", [-1, 32767, NAN], "0..32766"),
+    (sb.PathSetup, "stop_dec_smooth", [-1, 32768, NAN], "0..32767"),
+    (sb.PathSetup, "stop_dec_abrupt", [-1, 32768, NAN], "0..32767"),
+    (sb.PathSetup, "corner_axis_acc", [-1, NAN, INF], "0..1000000000"),
+    (sb.PathSetup, "return_to_stop_point", [2], "0/False or 1/True"),
+    (sb.LookAheadParams, "t_ms", [0, -1, 1001, NAN], "0..1000"),
+    (sb.LookAheadParams, "acc_max", [0, -1, 32768, NAN], "0..32767"),
+    (sb.LookAheadParams, "n", [-1, 32767, 1.5, NAN], "0..32766"),
 ]
 
 
@@ -171,7 +184,7 @@ def test_every_field_is_covered_by_a_bad_input_test():
     covered = {(c, f) for c, f, _v, _e in BAD}
     for cls in (sb.GtServoLaw, sb.ApsServoLaw, sb.TorqueDrive, sb.VelocityDrive, sb.StepperDrive,
                 sb.ServoPositionDrive, sb.RigidPlant, sb.TwoMassPlant,
-                sb.Encoder, sb.Dac, sb.Switches, sb.AdlinkHome, sb.GtHome, sb.AdlinkJog, sb.FollowExSetup):
+                sb.Encoder, sb.Dac, sb.Switches, sb.AdlinkHome, sb.GtHome, sb.AdlinkJog, sb.FollowExSetup, sb.PathSetup, sb.LookAheadParams):
         for field in cls.FIELDS:
             assert (cls, field) in covered, f"{cls.__name__}.{field} has no bad-input test"
 
