@@ -306,8 +306,8 @@ def model_based_tune(axis, *, phase_margin_deg: float = 60.0, alpha: float = 4.0
         dB/decade line by at least `min_resonance_prominence_db` (dB); each q of `notch_q` is tried. A notch is
         kept only when it raises the crossover.
     min_crossover_hz, max_crossover_hz, candidates
-        the crossover scan: `candidates` log-spaced frequencies (Hz) from min to max (None: 0.45/Ts), the first
-        feasible run followed to its end and the boundary bisected.
+        the crossover scan: `candidates` log-spaced frequencies (Hz) from min to max (None: 0.45/Ts); the highest
+        feasible one is taken and the boundary to the candidate above it bisected.
     points
         log-spaced frequencies of the band the loop is checked over (0.1 Hz or lower .. Nyquist).
     law
@@ -338,4 +338,6 @@ def model_based_tune(axis, *, phase_margin_deg: float = 60.0, alpha: float = 4.0
                            resonances=list(d["resonances"]), resonance_hz=d["resonance_hz"],
                            resonance_prominence_db=d["resonance_prominence_db"], notch=dict(d["notch"]),
                            crossover_without_notch_hz=d["crossover_without_notch_hz"], limited_by=d["limited_by"],
-                           servo_period_s=axis.servo_period_s, scan=d["scan"], summary=d["summary"])
+                           servo_period_s=axis.servo_period_s,
+                           scan={k: (list(v) if k == "reason" else np.asarray(v)) for k, v in d["scan"].items()},
+                           summary=d["summary"])

@@ -87,6 +87,20 @@ std::vector<double> log_grid(double lo, double hi, int n) {
 
 double db(Complex h) { return 20.0 * std::log10(std::abs(h)); }
 
+// margins() over the points where L is not exactly zero (a floating-point notch's null can fall on a grid point).
+Margins margins_nonzero(const std::vector<double>& f, const std::vector<Complex>& l,
+                        const std::vector<Complex>& t = {}) {
+  std::vector<double> f2;
+  std::vector<Complex> l2, t2;
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    if (l[k] == 0.0) continue;
+    f2.push_back(f[k]);
+    l2.push_back(l[k]);
+    if (!t.empty()) t2.push_back(t[k]);
+  }
+  return margins(f2, l2, t2);
+}
+
 // Everything a candidate evaluation needs, computed once.
 struct Problem {
   machine::AxisConfig config;  // law = the base law of the requested kind, filters pass-through
@@ -147,7 +161,7 @@ CrossoverCandidate evaluate(const Problem& pb, const Option& opt, double fc) {
   std::vector<Complex> l(pb.grid.size());
   for (std::size_t k = 0; k < pb.grid.size(); ++k)
     l[k] = opt.f_grid[k] * law_feedback_response(cfg.law, pb.grid[k], pb.ts) * pb.plant[k];
-  c.margins = margins(pb.grid, l);
+  c.margins = margins_nonzero(pb.grid, l);
   c.max_pole_radius = closed_loop_pole_radius(cfg);
   const Margins& m = c.margins;
   if (!(c.max_pole_radius < 1.0)) {
@@ -176,15 +190,13 @@ struct OptionOutcome {
 OptionOutcome scan_option(const Problem& pb, const Option& opt, double f_lo, double f_hi) {
   OptionOutcome out;
   const std::vector<double> fcs = log_grid(f_lo, f_hi, pb.o.candidates);
-  for (double fc : fcs) {
-    out.scan.push_back(evaluate(pb, opt, fc));
-    const auto& c = out.scan.back();
-    const int i = static_cast<int>(out.scan.size()) - 1;
-    if (c.feasible) {
-      out.best = i;
-    } else if (out.best >= 0) {
-      out.limit = i;
-      break;  // the first feasible run ends here
+  for (double fc : fcs) out.scan.push_back(evaluate(pb, opt, fc));
+  // The highest feasible candidate (integer gains can make the feasible set ragged), and the one just above it.
+  for (std::size_t i = out.scan.size(); i-- > 0;) {
+    if (out.scan[i].feasible) {
+      out.best = static_cast<int>(i);
+      if (i + 1 < out.scan.size()) out.limit = static_cast<int>(i + 1);
+      break;
     }
   }
   if (out.best >= 0 && out.limit >= 0) {
@@ -456,7 +468,7 @@ ModelTuneResult model_tune(const machine::AxisConfig& config_in, const ModelTune
   fin.law = res.law;
   fin.filters = res.filters;
   const LoopResponse lr = loop_response(fin, pb.grid, LoopOptions{false, true});
-  res.margins = margins(pb.grid, lr.loop_gain, lr.closed_loop);
+  res.margins = margins_nonzero(pb.grid, lr.loop_gain, lr.closed_loop);
   res.max_pole_radius = closed_loop_pole_radius(fin);
   if (opt.filter) {
     NotchDesign& nd = res.notch;
@@ -522,7 +534,7 @@ ModelTuneResult model_tune(const machine::AxisConfig& config_in, const ModelTune
   if (res.notch.used) {
     const NotchDesign& nd = res.notch;
     s += "  notch chosen: " + fmt(nd.center_hz, 4) + " Hz, q " + fmt(nd.q) + " (-3 dB " + fmt(nd.low_hz, 4) + ".." +
-         fmt(nd.high_hz, 4) + " Hz), depth " + fixed(nd.depth_db) + " dB at the resonance, " +
+         fmt(nd.high_hz, 4) + " Hz), depth " + (nd.depth_db > 100 ? std::string("a null (> 100 dB)") : fixed(nd.depth_db) + " dB") + " at the resonance, " +
          fixed(nd.phase_at_crossover_deg) + " deg at the crossover; biquad 0 " +
          (aps ? "as the card's integers" : "in floating point") + "\n";
   } else if (o.notch && !centers.empty()) {

@@ -12,7 +12,7 @@
 //      phase_margin_deg (with at most max_pid_lead_deg of PID phase lead), the gains are written to the card law
 //      (integers), and the whole loop is checked over the band: phase margin within target +- pm_tolerance_deg (all crossovers), gain margin >= min_gain_margin_db,
 //      peak sensitivity <= max_ms, closed-loop poles strictly inside the unit circle;
-//   3. the first feasible run of candidates is followed up to its first failure and the boundary refined by
+//   3. the highest feasible candidate is taken and the boundary to the (failing) candidate above it refined by
 //      bisection; the highest feasible crossover over all filter options wins (a notch is kept only when it raises
 //      the crossover).
 // The result explains itself: what was found, what limited the crossover, what was chosen (summary).
