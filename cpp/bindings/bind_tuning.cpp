@@ -14,6 +14,7 @@
 #include "servobench/common/validate.hpp"
 #include "servobench/tuning/loop_response.hpp"
 #include "servobench/tuning/margins.hpp"
+#include "servobench/tuning/model_tune.hpp"
 #include "servobench/tuning/relay_autotune.hpp"
 #include "servobench/tuning/sine_sweep.hpp"
 
@@ -22,6 +23,26 @@ namespace servobench::bindings {
 namespace py = pybind11;
 
 namespace {
+
+py::dict margins_dict(const tuning::Margins& mg) {
+  py::dict d;
+  d["gain_margin_db"] = mg.gain_margin_db;
+  d["gm_freq_hz"] = mg.gm_freq_hz;
+  d["lower_gain_margin_db"] = mg.lower_gain_margin_db;
+  d["lower_gm_freq_hz"] = mg.lower_gm_freq_hz;
+  d["phase_margin_deg"] = mg.phase_margin_deg;
+  d["pm_freq_hz"] = mg.pm_freq_hz;
+  d["delay_margin_s"] = mg.delay_margin_s;
+  d["bandwidth_hz"] = mg.bandwidth_hz;
+  d["ms"] = mg.ms;
+  d["ms_freq_hz"] = mg.ms_freq_hz;
+  return d;
+}
+
+py::dict pid_dict(const tuning::PidDesign& d) {
+  return py::dict(py::arg("kc") = d.kc, py::arg("ti_s") = d.ti_s, py::arg("td_s") = d.td_s, py::arg("kp") = d.kp,
+                  py::arg("ki") = d.ki, py::arg("kd") = d.kd);
+}
 
 const char* status_name(tuning::SweepStatus s) {
   switch (s) {
@@ -114,19 +135,7 @@ void bind_tuning(py::module_& m) {
         const auto l = complex_vector(loop_gain, "loop_gain");
         std::vector<std::complex<double>> t;
         if (!closed_loop.is_none()) t = complex_vector(closed_loop, "closed_loop");
-        const tuning::Margins mg = tuning::margins(f, l, t);
-        py::dict d;
-        d["gain_margin_db"] = mg.gain_margin_db;
-        d["gm_freq_hz"] = mg.gm_freq_hz;
-        d["lower_gain_margin_db"] = mg.lower_gain_margin_db;
-        d["lower_gm_freq_hz"] = mg.lower_gm_freq_hz;
-        d["phase_margin_deg"] = mg.phase_margin_deg;
-        d["pm_freq_hz"] = mg.pm_freq_hz;
-        d["delay_margin_s"] = mg.delay_margin_s;
-        d["bandwidth_hz"] = mg.bandwidth_hz;
-        d["ms"] = mg.ms;
-        d["ms_freq_hz"] = mg.ms_freq_hz;
-        return d;
+        return margins_dict(tuning::margins(f, l, t));
       },
       py::arg("freq_hz"), py::arg("loop_gain"), py::arg("closed_loop") = py::none(),
       "Gain/phase/delay margins, closed-loop bandwidth and peak sensitivity from frequency-response data.");
@@ -173,8 +182,7 @@ void bind_tuning(py::module_& m) {
         d["kd"] = to_array(r.kd);
         d["error_pulse"] = to_array(r.error_pulse);
         d["output_v"] = to_array(r.output_v);
-        d["mean"] = py::dict(py::arg("kc") = r.mean.kc, py::arg("ti_s") = r.mean.ti_s, py::arg("td_s") = r.mean.td_s,
-                             py::arg("kp") = r.mean.kp, py::arg("ki") = r.mean.ki, py::arg("kd") = r.mean.kd);
+        d["mean"] = pid_dict(r.mean);
         d["kp_spread"] = r.kp_spread;
         d["ki_spread"] = r.ki_spread;
         d["kd_spread"] = r.kd_spread;
@@ -187,6 +195,99 @@ void bind_tuning(py::module_& m) {
       py::arg("sampling_time_s"), py::arg("deviation_limit_pulse"), py::arg("max_spread"),
       py::arg("phase_margin_deg"), py::arg("alpha"), py::arg("settle_cycles"), py::arg("max_cycle_s"),
       py::arg("progress") = py::none(), "Relay auto-tuning (ADLINK L1764-1847). Releases the GIL.");
+
+  m.def(
+      "model_tune",
+      [](const machine::Axis& axis, double phase_margin_deg, double alpha, double pm_tolerance_deg,
+         double min_gain_margin_db, double max_ms, double max_pid_lead_deg, bool notch, double resonance_hz, double min_resonance_prominence_db,
+         const std::vector<double>& notch_q_set, double min_crossover_hz, double max_crossover_hz, double candidates,
+         double points, const std::string& law) {
+        tuning::ModelTuneOptions o;
+        o.phase_margin_deg = phase_margin_deg;
+        o.alpha = alpha;
+        o.pm_tolerance_deg = pm_tolerance_deg;
+        o.min_gain_margin_db = min_gain_margin_db;
+        o.max_ms = max_ms;
+        o.max_pid_lead_deg = max_pid_lead_deg;
+        o.notch = notch;
+        o.resonance_hz = resonance_hz;
+        o.min_resonance_prominence_db = min_resonance_prominence_db;
+        o.notch_q_set = notch_q_set;
+        o.min_crossover_hz = min_crossover_hz;
+        o.max_crossover_hz = max_crossover_hz;
+        check_integer("ModelTune", "candidates", candidates, 4, 10000);
+        o.candidates = static_cast<int>(candidates);
+        check_integer("ModelTune", "points", points, 100, 200000);
+        o.points = static_cast<int>(points);
+        if (law == "axis") {
+          o.law = tuning::TuneLaw::kAxis;
+        } else if (law == "gt") {
+          o.law = tuning::TuneLaw::kGt;
+        } else if (law == "aps") {
+          o.law = tuning::TuneLaw::kAps;
+        } else {
+          throw py::value_error("ModelTune.law = '" + law + "' must be None (the axis's law), 'gt' or 'aps'");
+        }
+        tuning::ModelTuneResult r;
+        {
+          py::gil_scoped_release release;
+          r = tuning::model_tune(axis.config(), o);
+        }
+        py::dict d;
+        d["pid"] = pid_dict(r.pid);
+        d["law"] = py::cast(r.law);
+        d["filters"] = py::make_tuple(py::cast(r.filters[0]), py::cast(r.filters[1]));
+        d["crossover_hz"] = r.crossover_hz;
+        d["margins"] = margins_dict(r.margins);
+        d["max_pole_radius"] = r.max_pole_radius;
+        d["resonance_hz"] = r.resonance_hz;
+        d["resonance_prominence_db"] = r.resonance_prominence_db;
+        d["resonance_given"] = r.resonance_given;
+        py::list peaks;
+        for (const auto& p : r.resonances)
+          peaks.append(py::dict(py::arg("freq_hz") = p.freq_hz, py::arg("prominence_db") = p.prominence_db,
+                                py::arg("width_decades") = p.width_decades));
+        d["resonances"] = peaks;
+        const tuning::NotchDesign& n = r.notch;
+        d["notch"] = py::dict(py::arg("used") = n.used, py::arg("center_hz") = n.center_hz, py::arg("q") = n.q,
+                              py::arg("low_hz") = n.low_hz, py::arg("high_hz") = n.high_hz,
+                              py::arg("depth_db") = n.depth_db,
+                              py::arg("phase_at_crossover_deg") = n.phase_at_crossover_deg,
+                              py::arg("float_biquad") = py::cast(n.float_biquad),
+                              py::arg("adlink_biquad") = n.adlink_ok ? py::cast(n.adlink_biquad) : py::none());
+        d["crossover_without_notch_hz"] = r.crossover_without_notch_hz;
+        d["limited_by"] = r.limited_by;
+        std::vector<double> f, pm, pmf, gm, ms, rad, lead;
+        std::vector<bool> ok;
+        py::list reasons;
+        for (const auto& c : r.scan) {
+          f.push_back(c.freq_hz);
+          pm.push_back(c.margins.phase_margin_deg);
+          pmf.push_back(c.margins.pm_freq_hz);
+          gm.push_back(c.margins.gain_margin_db);
+          ms.push_back(c.margins.ms);
+          rad.push_back(c.max_pole_radius);
+          lead.push_back(c.pid_lead_deg);
+          ok.push_back(c.feasible);
+          reasons.append(c.reason);
+        }
+        d["scan"] = py::dict(py::arg("freq_hz") = to_array(f), py::arg("phase_margin_deg") = to_array(pm),
+                             py::arg("pm_freq_hz") = to_array(pmf), py::arg("gain_margin_db") = to_array(gm),
+                             py::arg("ms") = to_array(ms), py::arg("max_pole_radius") = to_array(rad), py::arg("pid_lead_deg") = to_array(lead),
+                             py::arg("feasible") = py::cast(ok), py::arg("reason") = reasons);
+        d["summary"] = r.summary;
+        return d;
+      },
+      py::arg("axis"), py::kw_only(), py::arg("phase_margin_deg"), py::arg("alpha"), py::arg("pm_tolerance_deg"),
+      py::arg("min_gain_margin_db"), py::arg("max_ms"), py::arg("max_pid_lead_deg"), py::arg("notch"), py::arg("resonance_hz"),
+      py::arg("min_resonance_prominence_db"), py::arg("notch_q_set"), py::arg("min_crossover_hz"),
+      py::arg("max_crossover_hz"), py::arg("candidates"), py::arg("points"), py::arg("law"),
+      "Model-based PID (and notch) design from the axis's analytic plant (tuning/model_tune). Releases the GIL.");
+
+  m.def(
+      "closed_loop_pole_radius",
+      [](const machine::Axis& axis) { return tuning::closed_loop_pole_radius(axis.config()); }, py::arg("axis"),
+      "Largest |pole| of the axis's closed position loop (law, biquads, plant tick model); < 1: stable.");
 
   m.def(
       "pid_to_law",

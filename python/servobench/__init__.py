@@ -38,7 +38,7 @@ from .examples import demo_axis
 from . import design, plot
 from . import frequency
 from . import autotune
-from .autotune import RelayTuneResult, relay_autotune
+from .autotune import ModelTuneResult, RelayTuneResult, model_based_tune, relay_autotune
 from .frequency import FrequencyResponse, Margins, analytic_response, broadband_response, sine_sweep
 from . import motion
 from . import homing
@@ -105,8 +105,10 @@ __all__ = [
     "AdlinkPtp",
     "FrequencyResponse",
     "RelayTuneResult",
+    "ModelTuneResult",
     "autotune",
     "relay_autotune",
+    "model_based_tune",
     "Margins",
     "analytic_response",
     "broadband_response",

@@ -1,8 +1,11 @@
-"""Relay auto-tuning with hysteresis, the ADLINK card's procedure (manual L1764-1847), done right: the describing
-function of a relay *with* hysteresis, a PID designed for a phase margin on the card's own discrete law.
+"""Auto-tuning of the position loop (docs/autotune.md).
 
-Work in progress for issue 6: the experiment, the identification, the design and the classic rules are here; the
-model-based rule and the docs page come next.
+* :func:`relay_autotune`: the ADLINK card's relay experiment with hysteresis (manual L1764-1847), done right: the
+  describing function of a relay *with* hysteresis, a PID designed for a phase margin on the card's own discrete law;
+  Ziegler-Nichols and Tyreus-Luyben from the same experiment (:meth:`RelayTuneResult.rule`).
+* :func:`model_based_tune`: a design from the axis's analytic plant (given or identified): the highest crossover
+  whose whole loop keeps the target phase margin, a gain margin and a peak sensitivity, with a notch at the plant's
+  resonance when it raises that crossover.
 """
 
 from __future__ import annotations
@@ -13,7 +16,7 @@ import numpy as np
 
 from . import _core
 
-__all__ = ["RelayTuneResult", "predicted_limit_cycle", "relay_autotune"]
+__all__ = ["ModelTuneResult", "RelayTuneResult", "model_based_tune", "predicted_limit_cycle", "relay_autotune"]
 
 
 @dataclass(frozen=True)
@@ -195,3 +198,146 @@ def predicted_limit_cycle(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: f
     p = point(fu)[0]
     return {"freq_hz": float(fu), "amplitude_pulse": float(4 * d / np.pi * abs(p)),
             "ultimate_gain_v_per_pulse": float(1 / abs(p))}
+
+
+@dataclass(frozen=True)
+class ModelTuneResult:
+    """The outcome of :func:`model_based_tune`; ``str(result)`` is its summary.
+
+    kp, ki, kd
+        per-tick gains (counts/pulse; ki per pulse*tick), as designed (before the card's integers).
+    kc, ti_s, td_s
+        the same as a continuous PID kc (1 + 1/(ti s) + td s), kc in counts/pulse, times in s (ti = alpha td).
+    crossover_hz
+        the design crossover chosen, Hz.
+    margins
+        :class:`servobench.frequency.Margins` of the analytic loop with the card law's integers and the filters
+        (phase margin at the crossover, gain margin, Ms, bandwidth): what :meth:`apply` will give.
+    max_pole_radius
+        the closed loop's largest pole magnitude |z| (< 1: stable).
+    law, filters
+        the card law (integers, feed-forward 0) and the two biquads (notch or pass-through; pass-through) that
+        :meth:`apply` writes.
+    resonances
+        peaks found in the plant response: list of {"freq_hz", "prominence_db", "width_decades"}.
+    resonance_hz, resonance_prominence_db
+        the resonance notched (or the most prominent one found; 0 when none).
+    notch
+        {"used", "center_hz", "q", "low_hz", "high_hz" (the -3 dB edges), "depth_db" (attenuation at the resonance
+        of the biquad run), "phase_at_crossover_deg", "float_biquad", "adlink_biquad" (the card's integers)}.
+    crossover_without_notch_hz
+        the best crossover with no notch (0: none meets the bounds), Hz.
+    limited_by
+        what failed just above the chosen crossover.
+    scan
+        the chosen filter option's crossover candidates: arrays freq_hz, phase_margin_deg, pm_freq_hz,
+        gain_margin_db, ms, max_pole_radius, pid_lead_deg, feasible, and the list reason.
+    summary
+        the self-explaining report.
+    """
+
+    kp: float
+    ki: float
+    kd: float
+    kc: float
+    ti_s: float
+    td_s: float
+    crossover_hz: float
+    margins: object
+    max_pole_radius: float
+    law: object
+    filters: tuple
+    resonances: list
+    resonance_hz: float
+    resonance_prominence_db: float
+    notch: dict
+    crossover_without_notch_hz: float
+    limited_by: str
+    servo_period_s: float
+    scan: dict = field(repr=False)
+    summary: str = field(repr=False)
+
+    def __str__(self) -> str:
+        return self.summary
+
+    def gt_law(self, base=None):
+        """The gains as GT servo-filter gains (Kp, Ki with its /256, Kd; feed-forward 0), integers in 0..32767."""
+        return _law(self, "gt", base)
+
+    def aps_law(self, base=None):
+        """The gains as ADLINK gains: integers 0..65535 with per-term shifts (PID_SHIFT -5; feed-forward 0)."""
+        return _law(self, "aps", base)
+
+    def apply(self, axis) -> None:
+        """Writes the gains to the axis's law (its own kind: GT or ADLINK, feed-forward 0), the notch to biquad 0
+        and pass-through to biquad 1, and turns the servo on."""
+        law = self.gt_law(axis.law) if isinstance(axis.law, _core.GtServoLaw) else self.aps_law(axis.law)
+        axis.set_law(law)
+        axis.set_filters(self.filters)
+        axis.set_servo_on(True)
+
+
+def model_based_tune(axis, *, phase_margin_deg: float = 60.0, alpha: float = 4.0, notch: bool = True,
+                     min_gain_margin_db: float = 10.0, max_ms: float = 2.0, max_pid_lead_deg: float = 70.0,
+                     pm_tolerance_deg: float = 2.0, resonance_hz: float | None = None,
+                     min_resonance_prominence_db: float = 6.0, notch_q=(0.5, 0.7, 1.0, 1.4, 2.0, 3.0, 5.0),
+                     min_crossover_hz: float = 1.0, max_crossover_hz: float | None = None, candidates: int = 60,
+                     points: int = 4000, law: str | None = None) -> ModelTuneResult:
+    """A PID (Ti = alpha Td) and a notch designed from the axis's analytic plant: the highest crossover at which the
+    whole loop keeps the phase margin, the gain margin and the peak sensitivity asked for (docs/autotune.md).
+
+    The plant is the axis's own (output stage, one-tick delay, drive and mechanics lifted to the servo rate: the
+    model of :func:`servobench.frequency.analytic_response`), so any plant the axis runs is designed for, an
+    identified one included. Nothing is run on the axis; :meth:`ModelTuneResult.apply` writes the result.
+
+    phase_margin_deg, pm_tolerance_deg
+        target phase margin (deg, 10..89) and the accepted deviation over all gain crossovers of the loop
+        (deg, 0.1..20).
+    alpha
+        Ti = alpha * Td (1..100).
+    min_gain_margin_db, max_ms
+        bounds on the loop's upper gain margin (dB, 0..60) and peak sensitivity (1.05..10).
+    max_pid_lead_deg
+        largest phase the PID may add at the crossover (deg, 5..89); bounds Td so the PID's zeros stay within
+        a factor tan((lead + 90)/2) below the crossover (5.7 at 70 deg): no slowly creeping closed-loop mode.
+    notch, resonance_hz, min_resonance_prominence_db, notch_q
+        try a notch (pre-warped, in biquad 0; the card's integers on an ADLINK law) at the plant's resonance: the
+        given `resonance_hz` (Hz) or each of the up to 3 most prominent peaks of the plant's gain above a -40
+        dB/decade line by at least `min_resonance_prominence_db` (dB); each q of `notch_q` is tried. A notch is
+        kept only when it raises the crossover.
+    min_crossover_hz, max_crossover_hz, candidates
+        the crossover scan: `candidates` log-spaced frequencies (Hz) from min to max (None: 0.45/Ts); the highest
+        feasible one is taken and the boundary to the candidate above it bisected.
+    points
+        log-spaced frequencies of the band the loop is checked over (0.1 Hz or lower .. Nyquist).
+    law
+        None (the axis's law), ``"gt"`` or ``"aps"``: the card law whose integers the design is checked with.
+
+    Raises ValueError for a pulse-input axis (no position loop on the card), a parameter outside its range (named),
+    or when no crossover meets the bounds (the message names the bounds to relax and the nearest miss).
+    Releases the GIL; about 0.1-0.5 s.
+    """
+    from .frequency import Margins
+
+    if resonance_hz is not None and float(resonance_hz) == 0.0:
+        raise ValueError("model_based_tune.resonance_hz = 0 is outside the allowed range 0 < f < Nyquist; "
+                         "use None to find it in the plant response")
+    d = _core.model_tune(getattr(axis, "_axis", axis), phase_margin_deg=float(phase_margin_deg), alpha=float(alpha),
+                         pm_tolerance_deg=float(pm_tolerance_deg), min_gain_margin_db=float(min_gain_margin_db),
+                         max_ms=float(max_ms), max_pid_lead_deg=float(max_pid_lead_deg), notch=bool(notch),
+                         resonance_hz=0.0 if resonance_hz is None else float(resonance_hz),
+                         min_resonance_prominence_db=float(min_resonance_prominence_db),
+                         notch_q_set=[float(q) for q in np.atleast_1d(notch_q)],
+                         min_crossover_hz=float(min_crossover_hz),
+                         max_crossover_hz=0.0 if max_crossover_hz is None else float(max_crossover_hz),
+                         candidates=float(candidates), points=float(points), law="axis" if law is None else str(law))
+    p = d["pid"]
+    return ModelTuneResult(kp=p["kp"], ki=p["ki"], kd=p["kd"], kc=p["kc"], ti_s=p["ti_s"], td_s=p["td_s"],
+                           crossover_hz=d["crossover_hz"], margins=Margins(**d["margins"]),
+                           max_pole_radius=d["max_pole_radius"], law=d["law"], filters=tuple(d["filters"]),
+                           resonances=list(d["resonances"]), resonance_hz=d["resonance_hz"],
+                           resonance_prominence_db=d["resonance_prominence_db"], notch=dict(d["notch"]),
+                           crossover_without_notch_hz=d["crossover_without_notch_hz"], limited_by=d["limited_by"],
+                           servo_period_s=axis.servo_period_s,
+                           scan={k: (list(v) if k == "reason" else np.asarray(v)) for k, v in d["scan"].items()},
+                           summary=d["summary"])

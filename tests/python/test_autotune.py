@@ -138,3 +138,113 @@ def test_classic_rules_from_the_same_experiment():
     assert all(np.isfinite(v) for v in margins.values()) and len({round(v, 1) for v in margins.values()}) == 3
     with pytest.raises(ValueError, match="rule"):
         res.rule("cohen_coon")
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# Model-based design (issue 6: "crossover for the target margin, notch at the resonance")
+# ---------------------------------------------------------------------------------------------------------------
+def resonant_axis(drive="velocity", law=None, ts=100e-6):
+    # Two-mass with its resonance (389.8 Hz mechanical) well inside the loop's band: without a notch it limits the
+    # crossover.
+    d = sb.VelocityDrive(speed_per_volt_rad_s=31.4, current_limit_a=float("inf"), torque_limit_nm=1e9) \
+        if drive == "velocity" else sb.TorqueDrive(current_limit_a=float("inf"))
+    return sb.Axis(law=law or sb.ApsServoLaw(),
+                   plant=sb.TwoMassPlant(jm_kgm2=5e-5, jl_kgm2=5e-5, k_nm_per_rad=150, c_nms_per_rad=0.002), drive=d,
+                   encoder=sb.Encoder(counts_per_rev=10000, quantize=False), dac=sb.Dac(quantize=False),
+                   servo_period_s=ts)
+
+
+MODEL_AXES = {"rigid": lambda: velocity_axis("rigid"), "two_mass": resonant_axis,
+              "two_mass_torque": lambda: resonant_axis("torque"),
+              "two_mass_gt": lambda: resonant_axis(law=sb.GtServoLaw(), ts=200e-6)}
+
+
+@pytest.mark.parametrize("name", list(MODEL_AXES))
+def test_model_based_tune_measured_phase_margin_and_crossover(name):
+    axis = MODEL_AXES[name]()
+    res = sb.model_based_tune(axis)
+    res.apply(axis)
+    assert axis.servo_on and axis.filters == res.filters
+    meas = fr.sine_sweep(axis, start_hz=5, end_hz=0.4 / axis.servo_period_s, amplitude_pulse=2, points=150,
+                         update_s=0.4)
+    assert meas.status == "completed"
+    m = meas.margins()
+    print(f"{name}: designed {res.crossover_hz:.1f} Hz; measured PM {m.phase_margin_deg:.1f} deg at "
+          f"{m.pm_freq_hz:.1f} Hz, GM {m.gain_margin_db:.1f} dB, Ms {m.ms:.2f}; notch {res.notch['used']}")
+    assert m.phase_margin_deg == pytest.approx(60, abs=5)
+    assert m.pm_freq_hz == pytest.approx(res.crossover_hz, rel=0.03)
+    assert m.gain_margin_db >= 10 - 0.5 and m.ms <= 2.0 + 0.05
+    # The prediction is the loop the sweep measures.
+    assert m.phase_margin_deg == pytest.approx(res.margins.phase_margin_deg, abs=1)
+    if name != "rigid":
+        assert res.notch["used"] and res.crossover_hz > res.crossover_without_notch_hz
+
+
+def test_model_based_notch_lowers_the_measured_resonance_peak():
+    with_notch, without = resonant_axis(), resonant_axis()
+    r1 = sb.model_based_tune(with_notch)
+    r0 = sb.model_based_tune(without, notch=False)
+    r1.apply(with_notch)
+    r0.apply(without)
+    assert not r0.notch["used"] and r1.notch["used"]
+    fres = r1.notch["center_hz"]
+    # The resonance found lies within 5 % of the mechanical one (moved by the drive's speed loop).
+    assert fres == pytest.approx(with_notch.plant.resonance_hz, rel=0.05)
+    # 11 log-spaced points, the middle one on the resonance.
+    kw = dict(start_hz=fres / 1.1, end_hz=fres * 1.1, amplitude_pulse=2, points=11, update_s=0.05)
+    g1 = fr.sine_sweep(with_notch, **kw).gain_db("open_loop")
+    g0 = fr.sine_sweep(without, **kw).gain_db("open_loop")
+    print(f"open loop at the resonance {fres:.1f} Hz: {g0[5]:.1f} dB without notch, {g1[5]:.1f} dB with "
+          f"(q {r1.notch['q']}, depth {r1.notch['depth_db']:.1f} dB); crossover {r0.crossover_hz:.1f} -> "
+          f"{r1.crossover_hz:.1f} Hz")
+    assert g0[5] - g1[5] > 20
+    assert np.argmax(g0) == 5 or g0[5] > g0[0]  # without the notch the open loop peaks there
+    assert r1.crossover_hz > r0.crossover_hz
+
+
+@pytest.mark.parametrize("name", ["rigid", "two_mass"])
+def test_model_based_reaches_at_least_the_relay_crossover(name):
+    axis = MODEL_AXES[name]()
+    relay = sb.relay_autotune(axis, hysteresis_pulse=150, sampling_time_s=100e-6)
+    assert relay.status == "completed"
+    relay.apply(axis)
+    m_relay = fr.analytic_response(axis, np.geomspace(1, 4900, 4000)).margins()
+    model = sb.model_based_tune(MODEL_AXES[name]())
+    print(f"{name}: relay crossover {m_relay.pm_freq_hz:.1f} Hz (BW {m_relay.bandwidth_hz:.1f} Hz), model-based "
+          f"{model.crossover_hz:.1f} Hz (BW {model.margins.bandwidth_hz:.1f} Hz)")
+    assert model.crossover_hz >= m_relay.pm_freq_hz
+    assert model.margins.bandwidth_hz >= m_relay.bandwidth_hz
+
+
+def test_model_based_result_conversions_and_summary():
+    res = sb.model_based_tune(resonant_axis())
+    assert res.ti_s == pytest.approx(4 * res.td_s)
+    assert res.kd == pytest.approx(res.kc * res.td_s / 100e-6) and res.ki == pytest.approx(res.kc * 100e-6 / res.ti_s)
+    aps = res.aps_law()
+    assert aps.kp * 2.0 ** (aps.kp_shift + aps.pid_shift) == pytest.approx(res.kp, rel=2e-5)
+    assert res.law == aps
+    gt = res.gt_law()
+    assert gt.kp == round(res.kp) and gt.kd == round(res.kd)
+    n = res.notch
+    assert n["adlink_biquad"] == res.filters[0] and res.filters[1] == sb.AdlinkBiquad()
+    assert n["low_hz"] < n["center_hz"] < n["high_hz"]
+    assert n["high_hz"] - n["low_hz"] == pytest.approx(n["center_hz"] / n["q"])
+    assert np.all(np.diff(res.scan["freq_hz"]) > 0) and res.scan["feasible"].any()
+    s = str(res)
+    for word in ("resonances", "notch chosen", "crossover: raised from", "limited by", "predicted"):
+        assert word in s, s
+    assert repr(res).startswith("ModelTuneResult(")
+
+
+def test_model_based_refusals():
+    pulse = sb.Axis(law=sb.ApsServoLaw(), drive=sb.ServoPositionDrive(), plant=sb.RigidPlant())
+    with pytest.raises(ValueError, match="pulse-input"):
+        sb.model_based_tune(pulse)
+    with pytest.raises(ValueError, match="min_gain_margin_db.*nearest|nearest.*min_gain_margin_db"):
+        sb.model_based_tune(velocity_axis(), min_gain_margin_db=45)
+    for kw, name in ((dict(phase_margin_deg=95), "phase_margin_deg"), (dict(alpha=0.5), "alpha"),
+                     (dict(max_ms=1.0), "max_ms"), (dict(resonance_hz=0), "resonance_hz"),
+                     (dict(resonance_hz=6000), "resonance_hz"), (dict(max_pid_lead_deg=95), "max_pid_lead_deg"),
+                     (dict(law="xyz"), "law"), (dict(candidates=2), "candidates")):
+        with pytest.raises(ValueError, match=name):
+            sb.model_based_tune(velocity_axis(), **kw)

@@ -1,0 +1,117 @@
+// Model-based PID design from the axis's analytic plant (issue 6: "a model-based design from a given or identified
+// plant: crossover for the target margin, notch at the resonance"; docs/decisions.md R8-R14).
+//
+// The plant P (DAC counts -> encoder pulse: output stage, one-tick delay, drive and mechanics lifted exactly to the
+// servo rate) comes from the axis configuration through tuning::loop_response, so any plant the axis runs, given
+// or identified, is designed for. Then:
+//   1. resonances: peaks of |P| above a double integrator's -40 dB/decade line by min_resonance_prominence_db (or the
+//      one given); notch candidates (pre-warped, centred on each of the up to 3 most prominent, q from notch_q_set)
+//      go in biquad 0;
+//   2. for each filter option (no notch, each notch) crossover candidates fc are scanned upward, log-spaced from
+//      min_crossover_hz; at each, design_pid_for_phase_margin puts the loop point F(fc) C(fc) P(fc) at -180 deg +
+//      phase_margin_deg (with at most max_pid_lead_deg of PID phase lead), the gains are written to the card law
+//      (integers), and the whole loop is checked over the band: phase margin within target +- pm_tolerance_deg (all crossovers), gain margin >= min_gain_margin_db,
+//      peak sensitivity <= max_ms, closed-loop poles strictly inside the unit circle;
+//   3. the highest feasible candidate is taken and the boundary to the (failing) candidate above it refined by
+//      bisection; the highest feasible crossover over all filter options wins (a notch is kept only when it raises
+//      the crossover).
+// The result explains itself: what was found, what limited the crossover, what was chosen (summary).
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "servobench/control/biquad.hpp"
+#include "servobench/machine/axis.hpp"
+#include "servobench/tuning/loop_response.hpp"
+#include "servobench/tuning/margins.hpp"
+#include "servobench/tuning/relay_autotune.hpp"
+
+namespace servobench::tuning {
+
+enum class TuneLaw { kAxis, kGt, kAps };  // the card law the gains are written to (kAxis: the axis's own)
+
+struct ModelTuneOptions {
+  double phase_margin_deg = 60.0;      // target at the crossover, 10..89 deg
+  double alpha = 4.0;                  // Ti = alpha * Td, 1..100
+  double pm_tolerance_deg = 2.0;       // accepted |PM - target| over all crossovers, 0.1..20 deg
+  double min_gain_margin_db = 10.0;    // upper gain margin bound, 0..60 dB
+  double max_ms = 2.0;                 // peak sensitivity bound, 1.05..10
+  double max_pid_lead_deg = 70.0;      // phase the PID may add at the crossover, 5..89 deg (bounds Td: zeros not
+                                       // too far below the crossover, a loop without a slow creeping mode)
+  bool notch = true;                   // try a notch at the plant's resonance
+  double resonance_hz = 0.0;           // the resonance to notch, Hz (0 < f < Nyquist); 0: found in the plant response
+  double min_resonance_prominence_db = 6.0;  // a peak this far above the trend is a resonance worth a notch, 0.1..60 dB
+  std::vector<double> notch_q_set = {0.5, 0.7, 1.0, 1.4, 2.0, 3.0, 5.0};  // notch quality factors tried, each 0.1..100
+  double min_crossover_hz = 1.0;       // lowest crossover candidate, Hz, > 0
+  double max_crossover_hz = 0.0;       // highest, Hz (< Nyquist); 0: 0.45 / Ts
+  int candidates = 60;                 // log-spaced crossover candidates, 4..10000
+  int points = 4000;                   // log-spaced frequencies of the band the loop is checked over, 100..200000
+  TuneLaw law = TuneLaw::kAxis;
+  void validate(double servo_period_s) const;
+};
+
+// A resonance peak of the plant (plant_resonances): frequency, height above the -40 dB/decade line, width at half
+// that height in decades.
+struct ResonancePeak {
+  double freq_hz = 0, prominence_db = 0, width_decades = 0;
+};
+
+// One crossover candidate of the scan.
+struct CrossoverCandidate {
+  double freq_hz = 0;             // the design frequency
+  bool feasible = false;
+  std::string reason;             // why not ("" when feasible)
+  PidDesign pid;                  // as designed (before the law's integers)
+  double pid_lead_deg = 0;        // the PID's phase at the design frequency, deg
+  Margins margins;                // of the whole loop with the card law's integers (when a PID was found)
+  double max_pole_radius = 0;     // largest closed-loop pole |z| (0 when no PID)
+};
+
+struct NotchDesign {
+  bool used = false;
+  double center_hz = 0, q = 0;
+  double low_hz = 0, high_hz = 0;   // -3 dB edges (analogue prototype): center (sqrt(1 + 1/(4q^2)) -+ 1/(2q))
+  double depth_db = 0;              // attenuation of the biquad actually run at the resonance, dB (> 0)
+  double phase_at_crossover_deg = 0;  // the notch's phase at the chosen crossover, deg (< 0: lag)
+  control::FloatBiquadParams float_biquad;  // pre-warped bilinear design
+  control::AdlinkBiquadParams adlink_biquad;  // the card's integers (quantize_adlink)
+  bool adlink_ok = false;           // the integers exist (quantisation kept the poles inside)
+};
+
+struct ModelTuneResult {
+  PidDesign pid;
+  machine::LawParams law;                            // the gains as the card law (integers), feed-forward 0
+  std::array<control::BiquadParams, 2> filters;      // biquad 0: the notch or pass-through; biquad 1: pass-through
+  double crossover_hz = 0;                           // the design frequency chosen
+  Margins margins;                                   // predicted from the analytic loop with law and filters
+  double max_pole_radius = 0;                        // closed-loop poles, largest |z|
+  // The plant's resonances found (empty when given or none stands out); the one notched (or the most prominent).
+  std::vector<ResonancePeak> resonances;
+  double resonance_hz = 0, resonance_prominence_db = 0;
+  bool resonance_given = false;
+  NotchDesign notch;
+  double crossover_without_notch_hz = 0;             // best crossover with biquad 0 pass-through (0: none)
+  std::string limited_by;                            // what failed just above the chosen crossover
+  std::vector<CrossoverCandidate> scan;              // the chosen filter option's scan, by frequency
+  std::string summary;
+};
+
+// Designs the PID (and notch) for the axis described by `config`. Throws std::invalid_argument for a pulse-input
+// axis, bad options (naming the option and its range), or when no crossover in the scanned range meets the margins
+// (naming the bounds to relax, with the best candidate's figures).
+ModelTuneResult model_tune(const machine::AxisConfig& config, const ModelTuneOptions& options = {});
+
+// Resonance peaks of a plant response h (frequencies increasing): local maxima of |h| in dB plus 40 dB/decade (the
+// plant's gain above a double integrator's line, the shape a position loop sees above the drive's bandwidth) whose
+// prominence (as scipy.signal.peak_prominences) is >= min_prominence_db and whose width at half prominence is at
+// most max_width_decades (broader humps are loops or bends, not modes). Sorted by prominence, largest first.
+std::vector<ResonancePeak> plant_resonances(const std::vector<double>& freq_hz, const std::vector<Complex>& h,
+                                            double min_prominence_db, double max_width_decades = 1.0);
+
+// Largest |pole| of the closed position loop (law feedback part, both biquads, the plant's tick model with its
+// one-tick delay), from the closed loop's state matrix: < 1 means stable.
+double closed_loop_pole_radius(const machine::AxisConfig& config);
+
+}  // namespace servobench::tuning

@@ -1,0 +1,556 @@
+#include "servobench/tuning/model_tune.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <stdexcept>
+
+#include <Eigen/Dense>
+
+#include "servobench/common/validate.hpp"
+#include "servobench/control/filter_design.hpp"
+
+namespace servobench::tuning {
+
+namespace {
+
+constexpr const char* kOwner = "ModelTune";
+constexpr double kCountsPerVolt = 32767.0 / 10.0;
+
+std::string fmt(double v, int digits = 3) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+  return buf;
+}
+std::string fixed(double v, int decimals = 1) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+// Effective per-tick feedback gains of a card law, counts/pulse, and its volts per count (sign: V_INVERSE).
+struct Gains {
+  double kp, ki, kd, volts_per_count;
+};
+Gains gains_of(const machine::LawParams& law) {
+  if (const auto* gt = std::get_if<control::GtServoLawParams>(&law))
+    return {gt->kp, gt->ilmt == 0 ? 0.0 : gt->ki / 256.0, gt->kd, 10.0 / 32767.0};
+  const auto& a = std::get<control::ApsServoLawParams>(law);
+  return {a.kp_eff(), a.integral_limit == 0 ? 0.0 : a.ki_eff(), a.kd_eff(), (a.v_inverse ? -1.0 : 1.0) * 10.0 / 32767.0};
+}
+
+struct StateSpace {
+  Eigen::MatrixXd a, b, c, d;
+};
+
+// Series connection: first s1, then s2 (single input, single output).
+StateSpace series(const StateSpace& s1, const StateSpace& s2) {
+  const Eigen::Index n1 = s1.a.rows(), n2 = s2.a.rows();
+  StateSpace s;
+  s.a = Eigen::MatrixXd::Zero(n1 + n2, n1 + n2);
+  s.a.topLeftCorner(n1, n1) = s1.a;
+  s.a.bottomLeftCorner(n2, n1) = s2.b * s1.c;
+  s.a.bottomRightCorner(n2, n2) = s2.a;
+  s.b = Eigen::MatrixXd(n1 + n2, 1);
+  s.b.topRows(n1) = s1.b;
+  s.b.bottomRows(n2) = s2.b * s1.d;
+  s.c = Eigen::MatrixXd(1, n1 + n2);
+  s.c.leftCols(n1) = s2.d * s1.c;
+  s.c.rightCols(n2) = s2.c;
+  s.d = s2.d * s1.d;
+  return s;
+}
+
+StateSpace biquad_ss(const control::BiquadParams& p) {
+  const control::FloatBiquadParams f =
+      std::visit([](const auto& q) -> control::FloatBiquadParams {
+        if constexpr (std::is_same_v<std::decay_t<decltype(q)>, control::AdlinkBiquadParams>) return q.to_float();
+        else return q;
+      }, p);
+  // Transposed direct form II: y = b0 x + s1; s1' = -a1 y + b1 x + s2; s2' = -a2 y + b2 x.
+  StateSpace s;
+  s.a = (Eigen::MatrixXd(2, 2) << -f.a1, 1.0, -f.a2, 0.0).finished();
+  s.b = (Eigen::MatrixXd(2, 1) << f.b1 - f.a1 * f.b0, f.b2 - f.a2 * f.b0).finished();
+  s.c = (Eigen::MatrixXd(1, 2) << 1.0, 0.0).finished();
+  s.d = Eigen::MatrixXd::Constant(1, 1, f.b0);
+  return s;
+}
+
+// Linear interpolation in log frequency is what margins() does; here the log-spaced grid.
+std::vector<double> log_grid(double lo, double hi, int n) {
+  std::vector<double> f(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i)
+    f[static_cast<std::size_t>(i)] = lo * std::pow(hi / lo, static_cast<double>(i) / static_cast<double>(n - 1));
+  return f;
+}
+
+double db(Complex h) { return 20.0 * std::log10(std::abs(h)); }
+
+// margins() over the points where L is not exactly zero (a floating-point notch's null can fall on a grid point).
+Margins margins_nonzero(const std::vector<double>& f, const std::vector<Complex>& l,
+                        const std::vector<Complex>& t = {}) {
+  std::vector<double> f2;
+  std::vector<Complex> l2, t2;
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    if (l[k] == 0.0) continue;
+    f2.push_back(f[k]);
+    l2.push_back(l[k]);
+    if (!t.empty()) t2.push_back(t[k]);
+  }
+  return margins(f2, l2, t2);
+}
+
+// Everything a candidate evaluation needs, computed once.
+struct Problem {
+  machine::AxisConfig config;  // law = the base law of the requested kind, filters pass-through
+  double ts = 0;
+  std::vector<double> grid;
+  std::vector<Complex> plant;  // P on the grid
+  ModelTuneOptions o;
+};
+
+Complex plant_at(const Problem& pb, double f) {
+  return loop_response(pb.config, {f}, LoopOptions{false, false}).plant[0];
+}
+
+machine::LawParams law_from(const PidDesign& pid, const machine::LawParams& base) {
+  if (const auto* gt = std::get_if<control::GtServoLawParams>(&base)) return to_gt_law(pid, *gt);
+  return to_aps_law(pid, std::get<control::ApsServoLawParams>(base));
+}
+
+// One filter option: biquad 0 = `filter` (pass-through when empty).
+struct Option {
+  std::optional<control::BiquadParams> filter;
+  double q = 0, center_hz = 0;
+  std::vector<Complex> f_grid;  // its response on the grid
+};
+
+CrossoverCandidate evaluate(const Problem& pb, const Option& opt, double fc) {
+  CrossoverCandidate c;
+  c.freq_hz = fc;
+  const Complex ff = opt.filter ? std::visit([&](const auto& q) { return control::frequency_response(q, fc, pb.ts); },
+                                             *opt.filter)
+                                : Complex(1.0);
+  const Complex g = plant_at(pb, fc) * ff * kCountsPerVolt;  // pulse per volt
+  try {
+    c.pid = design_pid_for_phase_margin(g, fc, pb.ts, pb.o.phase_margin_deg, pb.o.alpha);
+  } catch (const std::invalid_argument&) {
+    c.reason = "no PID with Ti = " + fmt(pb.o.alpha) + " Td reaches the phase needed";
+    return c;
+  }
+  {
+    const double th = 2.0 * M_PI * fc * pb.ts, x = c.pid.td_s / pb.ts;
+    const Complex q = 1.0 + Complex(0.5, -0.5 / std::tan(th / 2)) / (pb.o.alpha * x) +
+                      Complex(2 * std::pow(std::sin(th / 2), 2), std::sin(th)) * x;
+    c.pid_lead_deg = std::arg(q) * 180.0 / M_PI;
+  }
+  if (c.pid_lead_deg > pb.o.max_pid_lead_deg) {
+    c.reason = "the PID would need " + fixed(c.pid_lead_deg) + " deg of phase lead (max_pid_lead_deg = " +
+               fmt(pb.o.max_pid_lead_deg) + ")";
+    return c;
+  }
+  machine::AxisConfig cfg = pb.config;
+  try {
+    cfg.law = law_from(c.pid, pb.config.law);
+  } catch (const std::invalid_argument& e) {
+    c.reason = std::string("the gains do not fit the card law (") + e.what() + ")";
+    return c;
+  }
+  if (opt.filter) cfg.filters[0] = *opt.filter;
+  std::vector<Complex> l(pb.grid.size());
+  for (std::size_t k = 0; k < pb.grid.size(); ++k)
+    l[k] = opt.f_grid[k] * law_feedback_response(cfg.law, pb.grid[k], pb.ts) * pb.plant[k];
+  c.margins = margins_nonzero(pb.grid, l);
+  c.max_pole_radius = closed_loop_pole_radius(cfg);
+  const Margins& m = c.margins;
+  if (!(c.max_pole_radius < 1.0)) {
+    c.reason = "the closed loop is unstable (pole |z| = " + fixed(c.max_pole_radius, 4) + ")";
+  } else if (!std::isfinite(m.phase_margin_deg) ||
+             std::fabs(m.phase_margin_deg - pb.o.phase_margin_deg) > pb.o.pm_tolerance_deg) {
+    c.reason = "PM " + fixed(m.phase_margin_deg, 2) + " deg at " + fmt(m.pm_freq_hz, 4) + " Hz is outside " +
+               fmt(pb.o.phase_margin_deg) + " +- " + fmt(pb.o.pm_tolerance_deg) + " deg";
+  } else if (m.gain_margin_db < pb.o.min_gain_margin_db) {
+    c.reason = "GM " + fixed(m.gain_margin_db, 2) + " dB at " + fmt(m.gm_freq_hz, 4) + " Hz is below " +
+               fmt(pb.o.min_gain_margin_db) + " dB";
+  } else if (m.ms > pb.o.max_ms) {
+    c.reason = "Ms " + fixed(m.ms, 3) + " at " + fmt(m.ms_freq_hz, 4) + " Hz is above " + fmt(pb.o.max_ms);
+  } else {
+    c.feasible = true;
+  }
+  return c;
+}
+
+struct OptionOutcome {
+  std::vector<CrossoverCandidate> scan;  // by frequency, refinements included
+  int best = -1;                         // index into scan of the highest feasible candidate
+  int limit = -1;                        // the first failure above it (-1: none, the range's end)
+};
+
+OptionOutcome scan_option(const Problem& pb, const Option& opt, double f_lo, double f_hi) {
+  OptionOutcome out;
+  const std::vector<double> fcs = log_grid(f_lo, f_hi, pb.o.candidates);
+  for (double fc : fcs) out.scan.push_back(evaluate(pb, opt, fc));
+  // The highest feasible candidate (integer gains can make the feasible set ragged), and the one just above it.
+  for (std::size_t i = out.scan.size(); i-- > 0;) {
+    if (out.scan[i].feasible) {
+      out.best = static_cast<int>(i);
+      if (i + 1 < out.scan.size()) out.limit = static_cast<int>(i + 1);
+      break;
+    }
+  }
+  if (out.best >= 0 && out.limit >= 0) {
+    // Bisection (in log frequency) between the last feasible and the first failing candidate.
+    CrossoverCandidate good = out.scan[static_cast<std::size_t>(out.best)];
+    CrossoverCandidate bad = out.scan[static_cast<std::size_t>(out.limit)];
+    for (int it = 0; it < 12; ++it) {
+      const double mid = std::sqrt(good.freq_hz * bad.freq_hz);
+      CrossoverCandidate c = evaluate(pb, opt, mid);
+      (c.feasible ? good : bad) = c;
+      out.scan.push_back(std::move(c));
+    }
+    std::sort(out.scan.begin(), out.scan.end(),
+              [](const CrossoverCandidate& a, const CrossoverCandidate& b) { return a.freq_hz < b.freq_hz; });
+    for (std::size_t i = 0; i < out.scan.size(); ++i) {
+      if (out.scan[i].freq_hz == good.freq_hz) out.best = static_cast<int>(i);
+      if (out.scan[i].freq_hz == bad.freq_hz) out.limit = static_cast<int>(i);
+    }
+  }
+  return out;
+}
+
+machine::LawParams base_law(const machine::AxisConfig& config, TuneLaw kind) {
+  switch (kind) {
+    case TuneLaw::kAxis: return config.law;
+    case TuneLaw::kGt:
+      if (std::holds_alternative<control::GtServoLawParams>(config.law)) return config.law;
+      return control::GtServoLawParams{};
+    case TuneLaw::kAps:
+      if (std::holds_alternative<control::ApsServoLawParams>(config.law)) return config.law;
+      return control::ApsServoLawParams{};
+  }
+  return config.law;
+}
+
+}  // namespace
+
+void ModelTuneOptions::validate(double ts) const {
+  check_range(kOwner, "phase_margin_deg", phase_margin_deg, 10.0, 89.0);
+  check_range(kOwner, "alpha", alpha, 1.0, 100.0);
+  check_range(kOwner, "pm_tolerance_deg", pm_tolerance_deg, 0.1, 20.0);
+  check_range(kOwner, "min_gain_margin_db", min_gain_margin_db, 0.0, 60.0);
+  check_range(kOwner, "max_ms", max_ms, 1.05, 10.0);
+  check_range(kOwner, "max_pid_lead_deg", max_pid_lead_deg, 5.0, 89.0);
+  check_range(kOwner, "min_resonance_prominence_db", min_resonance_prominence_db, 0.1, 60.0);
+  const double nyq = 0.5 / ts;
+  if (resonance_hz != 0.0 && !(resonance_hz > 0 && resonance_hz < nyq))
+    throw_invalid(kOwner, "resonance_hz", resonance_hz,
+                  "is outside the allowed range 0 < f < " + format_value(nyq) + " Hz (Nyquist); 0 = find it");
+  if (notch_q_set.empty() && notch)
+    throw std::invalid_argument("ModelTune.notch_q_set is empty; give at least one q (0.1..100) or notch = false");
+  for (double q : notch_q_set) check_range(kOwner, "notch_q_set[i]", q, 0.1, 100.0);
+  if (!(min_crossover_hz > 0 && min_crossover_hz < 0.45 / ts))
+    throw_invalid(kOwner, "min_crossover_hz", min_crossover_hz,
+                  "is outside the allowed range 0 < f < " + format_value(0.45 / ts) + " Hz (0.45 / Ts)");
+  if (max_crossover_hz != 0.0 && !(max_crossover_hz > min_crossover_hz && max_crossover_hz < nyq))
+    throw_invalid(kOwner, "max_crossover_hz", max_crossover_hz,
+                  "is outside the allowed range min_crossover_hz < f < " + format_value(nyq) +
+                      " Hz (Nyquist); 0 = 0.45 / Ts");
+  check_integer(kOwner, "candidates", candidates, 4, 10000);
+  check_integer(kOwner, "points", points, 100, 200000);
+}
+
+std::vector<ResonancePeak> plant_resonances(const std::vector<double>& f, const std::vector<Complex>& h,
+                                            double min_prominence_db, double max_width_decades) {
+  const std::size_t n = f.size();
+  std::vector<ResonancePeak> out;
+  if (n < 3 || h.size() != n) return out;
+  std::vector<double> x(n), y(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    x[k] = std::log10(f[k]);
+    y[k] = db(h[k]) + 40.0 * x[k];
+  }
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    if (!(y[i] > y[i - 1] && y[i] >= y[i + 1])) continue;
+    double left_min = y[i], right_min = y[i];
+    for (std::size_t j = i + 1; j-- > 0;) {
+      if (y[j] > y[i]) break;
+      left_min = std::min(left_min, y[j]);
+    }
+    for (std::size_t j = i; j < n; ++j) {
+      if (y[j] > y[i]) break;
+      right_min = std::min(right_min, y[j]);
+    }
+    const double prom = y[i] - std::max(left_min, right_min);
+    if (prom < min_prominence_db) continue;
+    const double level = y[i] - 0.5 * prom;
+    std::size_t lo = i, hi = i;
+    while (lo > 0 && y[lo] > level) --lo;
+    while (hi + 1 < n && y[hi] > level) ++hi;
+    const double width = x[hi] - x[lo];
+    if (width > max_width_decades) continue;
+    out.push_back({f[i], prom, width});
+  }
+  std::sort(out.begin(), out.end(),
+            [](const ResonancePeak& a, const ResonancePeak& b) { return a.prominence_db > b.prominence_db; });
+  return out;
+}
+
+double closed_loop_pole_radius(const machine::AxisConfig& config_in) {
+  machine::AxisConfig config = config_in;
+  config.validate_and_complete();
+  const machine::Axis axis(config);
+  if (axis.power_train().pulse_input())
+    throw std::invalid_argument("closed_loop_pole_radius: a pulse-input axis has no position loop on the card");
+  const machine::TickModel tm = axis.power_train().linear_tick_model();
+  const Gains g = gains_of(config.law);
+  // Controller E -> V: PID (states: Sum(k-1), E(k-1)), biquad 0, biquad 1, output stage.
+  StateSpace pid;
+  pid.a = (Eigen::MatrixXd(2, 2) << 1.0, 0.0, 0.0, 0.0).finished();
+  pid.b = (Eigen::MatrixXd(2, 1) << 1.0, 1.0).finished();
+  pid.c = (Eigen::MatrixXd(1, 2) << g.ki, -g.kd).finished();
+  pid.d = Eigen::MatrixXd::Constant(1, 1, g.kp + g.ki + g.kd);
+  StateSpace k = series(series(pid, biquad_ss(config.filters[0])), biquad_ss(config.filters[1]));
+  k.c *= g.volts_per_count;
+  k.d *= g.volts_per_count;
+  // Plant V -> Y (pulse) with the one-tick output delay: x' = A x + B d, d' = v, y = cpr C x.
+  const Eigen::Index n = tm.a.rows();
+  const double cpr = config.encoder.counts_per_rev / (2.0 * M_PI);
+  StateSpace p;
+  p.a = Eigen::MatrixXd::Zero(n + 1, n + 1);
+  p.a.topLeftCorner(n, n) = tm.a;
+  p.a.topRightCorner(n, 1) = tm.b.col(0);
+  p.b = Eigen::MatrixXd::Zero(n + 1, 1);
+  p.b(n, 0) = 1.0;
+  p.c = Eigen::MatrixXd::Zero(1, n + 1);
+  p.c.leftCols(n) = cpr * (config.encoder.on_load ? tm.c_load : tm.c_motor);
+  // e = -y: x_p' = (Ap - Bp Dk Cp) x_p + Bp Ck x_k, x_k' = -Bk Cp x_p + Ak x_k.
+  const Eigen::Index np = p.a.rows(), nk = k.a.rows();
+  Eigen::MatrixXd a(np + nk, np + nk);
+  a.topLeftCorner(np, np) = p.a - p.b * k.d * p.c;
+  a.topRightCorner(np, nk) = p.b * k.c;
+  a.bottomLeftCorner(nk, np) = -k.b * p.c;
+  a.bottomRightCorner(nk, nk) = k.a;
+  const Eigen::VectorXcd ev = a.eigenvalues();
+  double r = 0;
+  for (Eigen::Index i = 0; i < ev.size(); ++i) r = std::max(r, std::abs(ev(i)));
+  return r;
+}
+
+ModelTuneResult model_tune(const machine::AxisConfig& config_in, const ModelTuneOptions& o) {
+  machine::AxisConfig config = config_in;
+  config.validate_and_complete();
+  {
+    const machine::Axis probe(config);
+    if (probe.power_train().pulse_input())
+      throw std::invalid_argument(
+          "ModelTune.drive: a pulse-input drive (stepper or servo in position mode) closes its position loop itself; "
+          "there is no card PID to design. Use a torque- or velocity-mode drive (voltage output).");
+  }
+  const double ts = *config.servo_period_s;
+  o.validate(ts);
+  Problem pb;
+  pb.o = o;
+  pb.ts = ts;
+  pb.config = config;
+  pb.config.law = base_law(config, o.law);
+  pb.config.filters = {control::AdlinkBiquadParams{}, control::AdlinkBiquadParams{}};
+  pb.config.validate_and_complete();
+  const double nyq = 0.5 / ts;
+  const double f_lo = o.min_crossover_hz;
+  const double f_hi = o.max_crossover_hz > 0 ? o.max_crossover_hz : 0.45 / ts;
+  pb.grid = log_grid(std::min(0.1, f_lo / 10.0), 0.999 * nyq, o.points);
+  pb.plant = loop_response(pb.config, pb.grid, LoopOptions{false, false}).plant;
+  const bool aps = std::holds_alternative<control::ApsServoLawParams>(pb.config.law);
+
+  ModelTuneResult res;
+  // 1. Resonances.
+  std::vector<double> centers;
+  if (o.resonance_hz > 0) {
+    res.resonance_hz = o.resonance_hz;
+    res.resonance_given = true;
+    centers.push_back(o.resonance_hz);
+  } else {
+    res.resonances = plant_resonances(pb.grid, pb.plant, o.min_resonance_prominence_db);
+    for (std::size_t i = 0; i < res.resonances.size() && i < 3; ++i) centers.push_back(res.resonances[i].freq_hz);
+    if (!res.resonances.empty()) {
+      res.resonance_hz = res.resonances[0].freq_hz;
+      res.resonance_prominence_db = res.resonances[0].prominence_db;
+    }
+  }
+  // 2. Filter options: none, then a notch at each centre with each q.
+  std::vector<Option> options(1);
+  options[0].f_grid.assign(pb.grid.size(), Complex(1.0));
+  std::vector<std::string> notch_notes;
+  if (o.notch) {
+    for (double center : centers) {
+      for (double q : o.notch_q_set) {
+        Option opt;
+        opt.q = q;
+        opt.center_hz = center;
+        control::FloatBiquadParams fl;
+        try {
+          fl = control::notch(center, q, ts, true);
+        } catch (const std::invalid_argument& e) {
+          notch_notes.push_back(fmt(center, 4) + " Hz q " + fmt(q) + ": " + e.what());
+          continue;
+        }
+        if (aps) {
+          try {
+            opt.filter = control::quantize_adlink(fl);
+          } catch (const std::invalid_argument& e) {
+            notch_notes.push_back(fmt(center, 4) + " Hz q " + fmt(q) + ": the card's integers fail (" + e.what() + ")");
+            continue;
+          }
+        } else {
+          opt.filter = fl;
+        }
+        opt.f_grid.resize(pb.grid.size());
+        for (std::size_t k = 0; k < pb.grid.size(); ++k)
+          opt.f_grid[k] = std::visit([&](const auto& p) { return control::frequency_response(p, pb.grid[k], ts); },
+                                     *opt.filter);
+        options.push_back(std::move(opt));
+      }
+    }
+  }
+  // 3. Scan every option; the highest feasible crossover wins (ties: the earlier option, i.e. no notch first).
+  std::vector<OptionOutcome> outcomes;
+  int win = -1;
+  double win_f = 0;
+  for (std::size_t i = 0; i < options.size(); ++i) {
+    outcomes.push_back(scan_option(pb, options[i], f_lo, f_hi));
+    const auto& oc = outcomes.back();
+    if (oc.best >= 0) {
+      const double f = oc.scan[static_cast<std::size_t>(oc.best)].freq_hz;
+      if (f > win_f) {
+        win_f = f;
+        win = static_cast<int>(i);
+      }
+    }
+  }
+  if (outcomes[0].best >= 0)
+    res.crossover_without_notch_hz = outcomes[0].scan[static_cast<std::size_t>(outcomes[0].best)].freq_hz;
+
+  const std::string target = "PM " + fmt(o.phase_margin_deg) + " +- " + fmt(o.pm_tolerance_deg) + " deg, GM >= " +
+                             fmt(o.min_gain_margin_db) + " dB, Ms <= " + fmt(o.max_ms);
+  if (win < 0) {
+    // The nearest miss: the candidate with the smallest PM error among those with a PID.
+    const CrossoverCandidate* near = nullptr;
+    for (const auto& oc : outcomes)
+      for (const auto& c : oc.scan)
+        if (std::isfinite(c.margins.phase_margin_deg) &&
+            (!near || std::fabs(c.margins.phase_margin_deg - o.phase_margin_deg) <
+                          std::fabs(near->margins.phase_margin_deg - o.phase_margin_deg)))
+          near = &c;
+    std::string msg = "ModelTune: no crossover in " + fmt(f_lo) + ".." + fmt(f_hi) + " Hz (min_crossover_hz.." +
+                      "max_crossover_hz) meets " + target + " (phase_margin_deg, pm_tolerance_deg, " +
+                      "min_gain_margin_db, max_ms)";
+    if (near) msg += "; nearest: " + fmt(near->freq_hz, 4) + " Hz, where " + near->reason;
+    msg += ". Relax min_gain_margin_db (0..60) or max_ms (1.05..10), lower phase_margin_deg (10..89), or widen the "
+           "crossover range";
+    throw std::invalid_argument(msg);
+  }
+
+  const Option& opt = options[static_cast<std::size_t>(win)];
+  OptionOutcome& oc = outcomes[static_cast<std::size_t>(win)];
+  const CrossoverCandidate& best = oc.scan[static_cast<std::size_t>(oc.best)];
+  res.pid = best.pid;
+  res.crossover_hz = best.freq_hz;
+  res.law = law_from(best.pid, pb.config.law);
+  res.filters = {control::AdlinkBiquadParams{}, control::AdlinkBiquadParams{}};
+  if (opt.filter) res.filters[0] = *opt.filter;
+  res.limited_by = oc.limit >= 0 ? oc.scan[static_cast<std::size_t>(oc.limit)].reason
+                                 : "the end of the scanned range " + fmt(f_hi) + " Hz (max_crossover_hz)";
+  const std::string limit_at =
+      oc.limit >= 0 ? " at " + fmt(oc.scan[static_cast<std::size_t>(oc.limit)].freq_hz, 4) + " Hz" : "";
+  // Predicted figures from the analytic loop of the configuration apply() writes.
+  machine::AxisConfig fin = pb.config;
+  fin.law = res.law;
+  fin.filters = res.filters;
+  const LoopResponse lr = loop_response(fin, pb.grid, LoopOptions{false, true});
+  res.margins = margins_nonzero(pb.grid, lr.loop_gain, lr.closed_loop);
+  res.max_pole_radius = closed_loop_pole_radius(fin);
+  if (opt.filter) {
+    NotchDesign& nd = res.notch;
+    nd.used = true;
+    nd.center_hz = opt.center_hz;
+    nd.q = opt.q;
+    res.resonance_hz = opt.center_hz;
+    for (const auto& p : res.resonances)
+      if (p.freq_hz == opt.center_hz) res.resonance_prominence_db = p.prominence_db;
+    const double r = std::sqrt(1.0 + 1.0 / (4.0 * opt.q * opt.q));
+    nd.low_hz = nd.center_hz * (r - 1.0 / (2.0 * opt.q));
+    nd.high_hz = nd.center_hz * (r + 1.0 / (2.0 * opt.q));
+    nd.float_biquad = control::notch(nd.center_hz, opt.q, ts, true);
+    try {
+      nd.adlink_biquad = control::quantize_adlink(nd.float_biquad);
+      nd.adlink_ok = true;
+    } catch (const std::invalid_argument&) {
+      nd.adlink_ok = false;
+    }
+    const auto resp = [&](double f) {
+      return std::visit([&](const auto& p) { return control::frequency_response(p, f, ts); }, *opt.filter);
+    };
+    nd.depth_db = -db(resp(nd.center_hz));
+    nd.phase_at_crossover_deg = std::arg(resp(res.crossover_hz)) * 180.0 / M_PI;
+  }
+  res.scan = oc.scan;
+
+  // Summary.
+  const Margins& m = res.margins;
+  std::string s = "Model-based tuning: " + target + ", Ti = " + fmt(o.alpha) + " Td, law " +
+                  (aps ? "ADLINK" : "GT") + ", servo period " + fmt(ts * 1e6) + " us\n";
+  if (res.resonance_given) {
+    s += "  resonance: " + fmt(res.resonance_hz, 4) + " Hz (given)\n";
+  } else if (!res.resonances.empty()) {
+    s += "  resonances (plant gain above a -40 dB/decade line, found in the analytic plant response):";
+    for (const auto& p : res.resonances)
+      s += " " + fmt(p.freq_hz, 4) + " Hz (+" + fixed(p.prominence_db) + " dB, " + fixed(p.width_decades, 2) + " dec)";
+    s += "\n";
+  } else {
+    s += "  resonance: none stands out of a -40 dB/decade line by " + fmt(o.min_resonance_prominence_db) +
+         " dB within 1 decade: no notch\n";
+  }
+  if (o.notch && !centers.empty()) {
+    s += "  crossover without notch: " +
+         (res.crossover_without_notch_hz > 0 ? fmt(res.crossover_without_notch_hz, 4) + " Hz" : std::string("none")) +
+         (outcomes[0].limit >= 0 ? " (above it: " + outcomes[0].scan[static_cast<std::size_t>(outcomes[0].limit)].reason + ")"
+                                 : std::string()) + "\n";
+    for (double center : centers) {
+      s += "  notch at " + fmt(center, 4) + " Hz, crossover per q:";
+      for (std::size_t i = 1; i < options.size(); ++i) {
+        if (options[i].center_hz != center) continue;
+        const auto& oi = outcomes[i];
+        s += " " + fmt(options[i].q) + ": " +
+             (oi.best >= 0 ? fmt(oi.scan[static_cast<std::size_t>(oi.best)].freq_hz, 4) + " Hz" : std::string("none"));
+        s += i + 1 < options.size() && options[i + 1].center_hz == center ? "," : "";
+      }
+      s += "\n";
+    }
+    for (const auto& n : notch_notes) s += "  notch " + n + "\n";
+  } else if (!o.notch && !centers.empty()) {
+    s += "  notch: off (notch = false)\n";
+  }
+  if (res.notch.used) {
+    const NotchDesign& nd = res.notch;
+    s += "  notch chosen: " + fmt(nd.center_hz, 4) + " Hz, q " + fmt(nd.q) + " (-3 dB " + fmt(nd.low_hz, 4) + ".." +
+         fmt(nd.high_hz, 4) + " Hz), depth " + (nd.depth_db > 100 ? std::string("a null (> 100 dB)") : fixed(nd.depth_db) + " dB") + " at the resonance, " +
+         fixed(nd.phase_at_crossover_deg) + " deg at the crossover; biquad 0 " +
+         (aps ? "as the card's integers" : "in floating point") + "\n";
+  } else if (o.notch && !centers.empty()) {
+    s += "  notch: not used (no q raised the crossover above the loop without one)\n";
+  }
+  s += "  crossover: raised from " + fmt(f_lo) + " Hz to " + fmt(res.crossover_hz, 4) + " Hz; limited by " +
+       res.limited_by + limit_at + "\n";
+  s += "  PID: kc " + fmt(res.pid.kc, 4) + " counts/pulse, Ti " + fmt(res.pid.ti_s * 1e3, 4) + " ms, Td " +
+       fmt(res.pid.td_s * 1e3, 4) + " ms; per tick kp " + fmt(res.pid.kp, 4) + ", ki " + fmt(res.pid.ki, 4) +
+       ", kd " + fmt(res.pid.kd, 4) + "; PID phase lead " + fixed(best.pid_lead_deg) + " deg at the crossover\n";
+  s += "  predicted (analytic loop, card integers): PM " + fixed(m.phase_margin_deg) + " deg at " +
+       fmt(m.pm_freq_hz, 4) + " Hz, GM " + fixed(m.gain_margin_db) + " dB at " + fmt(m.gm_freq_hz, 4) + " Hz, Ms " +
+       fixed(m.ms, 2) + ", bandwidth " + fmt(m.bandwidth_hz, 4) + " Hz, closed-loop poles |z| <= " +
+       fixed(res.max_pole_radius, 4);
+  res.summary = s;
+  return res;
+}
+
+}  // namespace servobench::tuning
