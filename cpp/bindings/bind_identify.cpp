@@ -72,7 +72,10 @@ std::function<bool(int, double)> iteration_callback(const py::object& f) {
   };
 }
 
-identify::TimeFitOptions time_options(const std::string& model, double segment_samples, double substeps,
+identify::TimeFitOptions time_options(const std::string& model, double segment_samples, double initial_segment_samples,
+                                      double min_segment_samples,
+                                      double edge_samples, double direction_window, double rest_threshold,
+                                      double substeps,
                                       double current_bw_hz, double stribeck_exponent, double measurement_scale,
                                       double continuity_weight, const std::string& loss, double loss_scale, double max_iterations,
                                       double num_threads, double max_relative_std_error) {
@@ -83,6 +86,15 @@ identify::TimeFitOptions time_options(const std::string& model, double segment_s
   check_integer("TimeFitOptions", "max_iterations", max_iterations, 1, 10000);
   check_integer("TimeFitOptions", "num_threads", num_threads, 1, 64);
   o.segment_samples = static_cast<int>(segment_samples);
+  check_integer("TimeFitOptions", "initial_segment_samples", initial_segment_samples, 10, 100000);
+  o.initial_segment_samples = static_cast<int>(initial_segment_samples);
+  check_integer("TimeFitOptions", "min_segment_samples", min_segment_samples, 3, segment_samples);
+  check_integer("TimeFitOptions", "edge_samples", edge_samples, 0, 1000);
+  check_integer("TimeFitOptions", "direction_window", direction_window, 2, 1000);
+  o.min_segment_samples = static_cast<int>(min_segment_samples);
+  o.edge_samples = static_cast<int>(edge_samples);
+  o.direction_window = static_cast<int>(direction_window);
+  o.rest_threshold = rest_threshold;
   o.substeps = static_cast<int>(substeps);
   o.current_bw_hz = current_bw_hz;
   o.stribeck_exponent = stribeck_exponent;
@@ -115,7 +127,9 @@ void bind_identify(py::module_& m) {
       "identify_time",
       [](const py::handle& torque_nm, const py::handle& measured, double sample_period_s, bool measured_is_speed,
          bool measured_on_load, const std::string& model, const py::handle& initial, const std::vector<bool>& fixed,
-         const py::handle& lower, const py::handle& upper, double segment_samples, double substeps,
+         const py::handle& lower, const py::handle& upper, double segment_samples, double initial_segment_samples,
+         double min_segment_samples,
+         double edge_samples, double direction_window, double rest_threshold, double substeps,
          double current_bw_hz, double stribeck_exponent, double measurement_scale, double continuity_weight,
          const std::string& loss, double loss_scale, double max_iterations, double num_threads,
          double max_relative_std_error, const py::object& progress) {
@@ -126,7 +140,8 @@ void bind_identify(py::module_& m) {
         log.measured_is_speed = measured_is_speed;
         log.measured_on_load = measured_on_load;
         identify::TimeFitOptions o =
-            time_options(model, segment_samples, substeps, current_bw_hz, stribeck_exponent, measurement_scale,
+            time_options(model, segment_samples, initial_segment_samples, min_segment_samples, edge_samples, direction_window, rest_threshold,
+                         substeps, current_bw_hz, stribeck_exponent, measurement_scale,
                          continuity_weight, loss, loss_scale, max_iterations, num_threads, max_relative_std_error);
         o.progress = iteration_callback(progress);
         const identify::ParameterSetup s = setup_of(initial, fixed, lower, upper);
@@ -141,11 +156,14 @@ void bind_identify(py::module_& m) {
         d["predicted"] = to_array(r.predicted);
         d["residual"] = to_array(r.residual);
         d["segment_start"] = to_array(r.segment_start);
+        d["segment_count"] = to_array(r.segment_count);
         return d;
       },
       py::arg("torque_nm"), py::arg("measured"), py::kw_only(), py::arg("sample_period_s"),
       py::arg("measured_is_speed"), py::arg("measured_on_load"), py::arg("model"), py::arg("initial"),
-      py::arg("fixed"), py::arg("lower"), py::arg("upper"), py::arg("segment_samples"), py::arg("substeps"),
+      py::arg("fixed"), py::arg("lower"), py::arg("upper"), py::arg("segment_samples"),
+      py::arg("initial_segment_samples"), py::arg("min_segment_samples"), py::arg("edge_samples"), py::arg("direction_window"), py::arg("rest_threshold"),
+      py::arg("substeps"),
       py::arg("current_bw_hz"), py::arg("stribeck_exponent"), py::arg("measurement_scale"), py::arg("continuity_weight"), py::arg("loss"),
       py::arg("loss_scale"), py::arg("max_iterations"), py::arg("num_threads"), py::arg("max_relative_std_error"),
       py::arg("progress") = py::none(), "Time-domain grey-box fit of the plant (Ceres). Releases the GIL.");
@@ -160,7 +178,7 @@ void bind_identify(py::module_& m) {
         log.torque_nm = real_vector(torque_nm, "torque_nm");
         log.measured_is_speed = measured_is_speed;
         log.measured_on_load = measured_on_load;
-        identify::TimeFitOptions o = time_options(model, 200, substeps, current_bw_hz, stribeck_exponent, 1.0, 0.0,
+        identify::TimeFitOptions o = time_options(model, 1000, 250, 20, 3, 6, 2.0, substeps, current_bw_hz, stribeck_exponent, 1.0, 0.0,
                                                   "none", 1.0, 100, 1, 0.2);
         std::vector<double> out;
         const auto p = real_vector(parameters, "parameters");

@@ -38,6 +38,8 @@ from .examples import demo_axis
 from . import design, plot
 from . import frequency
 from . import autotune
+from . import identify
+from .identify import IdentificationLog, IdentifiedPlant, fit_frequency, fit_time, run_experiment
 from .autotune import ModelTuneResult, RelayTuneResult, model_based_tune, relay_autotune
 from .frequency import FrequencyResponse, Margins, analytic_response, broadband_response, sine_sweep
 from . import motion

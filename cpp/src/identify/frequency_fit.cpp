@@ -1,5 +1,6 @@
 #include "servobench/identify/frequency_fit.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -42,7 +43,12 @@ struct ResponseCost {
   PlantModel model;
   int np;
   bool operator()(const double* p, const double* delay, double* r) const {
+    // Central differences step around the point; a held friction parameter at 0 would step below its physical
+    // bound, which the plant refuses: evaluate at the bound instead (those parameters do not enter the response).
     std::vector<double> v(p, p + np);
+    const auto& info = model_parameters(model);
+    for (int i = 0; i < np; ++i)
+      v[static_cast<std::size_t>(i)] = std::max(v[static_cast<std::size_t>(i)], info[static_cast<std::size_t>(i)].lower);
     std::vector<std::complex<double>> g;
     try {
       g = model_plant_response(*config, model, v, delay[0], data->freq_hz);

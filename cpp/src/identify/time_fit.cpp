@@ -18,6 +18,11 @@ namespace servobench::identify {
 
 void TimeFitOptions::validate() const {
   check_integer("TimeFitOptions", "segment_samples", segment_samples, 10, 100000);
+  check_integer("TimeFitOptions", "min_segment_samples", min_segment_samples, 3, segment_samples);
+  check_integer("TimeFitOptions", "initial_segment_samples", initial_segment_samples, 10, 100000);
+  check_integer("TimeFitOptions", "edge_samples", edge_samples, 0, 1000);
+  check_integer("TimeFitOptions", "direction_window", direction_window, 2, 1000);
+  check_nonnegative("TimeFitOptions", "rest_threshold", rest_threshold);
   check_integer("TimeFitOptions", "substeps", substeps, 1, 1000);
   if (!(current_bw_hz > 0.0)) throw_invalid("TimeFitOptions", "current_bw_hz", current_bw_hz, "must be > 0 (inf: none)");
   check_range("TimeFitOptions", "stribeck_exponent", stribeck_exponent, 0.5, 4.0);
@@ -157,6 +162,14 @@ void run_segment(const FitContext& ctx, const double* p, const double* x0, int s
     simulate_segment<PlantModel::kTwoMass>(ctx, p, x0, start, count, out, false);
 }
 
+struct Stage {
+  std::vector<int> starts, counts;
+  std::vector<std::vector<double>> x0;
+  std::unique_ptr<ceres::Problem> problem;
+  ceres::Solver::Summary summary;
+  double seconds = 0.0;
+};
+
 class ProgressCallback : public ceres::IterationCallback {
  public:
   explicit ProgressCallback(const std::function<bool(int, double)>& f) : f_(f) {}
@@ -182,13 +195,55 @@ void check_log(const TimeLog& log, const TimeFitOptions& o) {
       throw std::invalid_argument("TimeLog.measured[" + std::to_string(k) + "] = " + format_value(log.measured[k]) +
                                   " is not a finite number");
   }
-  const std::size_t need = 2 * static_cast<std::size_t>(o.segment_samples);
+  const std::size_t need = 2 * static_cast<std::size_t>(o.min_segment_samples);
   if (log.measured.size() < need)
     throw std::invalid_argument("TimeLog: " + std::to_string(log.measured.size()) +
-                                " samples is too short a log: at least two segments of segment_samples = " +
-                                std::to_string(o.segment_samples) + " are needed (" + std::to_string(need) + ")");
+                                " samples is too short a log: at least " + std::to_string(need) + " are needed");
   if (log.measured_on_load && o.model == PlantModel::kRigid) {
     // the same body: allowed, nothing to do
+  }
+}
+
+// Where the shooting segments go. A segment simulated through a stick phase or a reversal can be trapped: once the
+// model body sticks at a different moment than the real one, the residuals stop depending on the segment's state and
+// on the friction parameters. The data are therefore cut into runs of one-way motion -- the measured direction,
+// sign(y[k+h] - y[k-h]), constant and the change over 2h samples at least `rest_threshold` -- with `edge_samples`
+// trimmed at both ends; runs shorter than min_segment_samples are left out, longer ones are split into pieces of
+// about segment_samples. Rest phases and reversals carry no residual (the friction's low-speed branch is still seen
+// on the way into and out of them).
+void shooting_segments(const TimeLog& log, const TimeFitOptions& o, std::vector<int>* starts, std::vector<int>* counts) {
+  const std::vector<double>& y = log.measured;
+  const int n = static_cast<int>(y.size());
+  const int h = o.direction_window / 2;
+  const double thr = o.rest_threshold * o.measurement_scale;
+  std::vector<int> dir(static_cast<std::size_t>(n), 0);
+  for (int k = 0; k < n; ++k) {
+    double d;
+    if (log.measured_is_speed) {
+      d = y[static_cast<std::size_t>(k)];
+    } else {
+      const int a = std::max(0, k - h), b = std::min(n - 1, k + h);
+      d = y[static_cast<std::size_t>(b)] - y[static_cast<std::size_t>(a)];
+    }
+    dir[static_cast<std::size_t>(k)] = d >= thr ? 1 : (d <= -thr ? -1 : 0);
+  }
+  int k = 0;
+  while (k < n) {
+    if (dir[static_cast<std::size_t>(k)] == 0) {
+      ++k;
+      continue;
+    }
+    int e = k;
+    while (e < n && dir[static_cast<std::size_t>(e)] == dir[static_cast<std::size_t>(k)]) ++e;
+    const int a = k + o.edge_samples, b = e - o.edge_samples;  // [a, b)
+    k = e;
+    if (b - a < o.min_segment_samples) continue;
+    const int pieces = std::max(1, (b - a + o.segment_samples / 2) / o.segment_samples);
+    for (int i = 0; i < pieces; ++i) {
+      const int s0 = a + (b - a) * i / pieces, s1 = a + (b - a) * (i + 1) / pieces;
+      starts->push_back(s0);
+      counts->push_back(s1 - s0);
+    }
   }
 }
 
@@ -253,127 +308,181 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
     }
   }
 
-  // Segments: equal lengths, the last one takes the remainder.
-  const int len = options.segment_samples;
-  const int nseg = static_cast<int>(n / static_cast<std::size_t>(len));
-  std::vector<int> starts, counts;
-  for (int s = 0; s < nseg; ++s) {
-    starts.push_back(s * len);
-    counts.push_back(s + 1 == nseg ? static_cast<int>(n) - s * len : len);
-  }
-
   // Internally the breakaway entry is the Stribeck excess Fs - Fc >= 0 (plant_model.hpp).
   const std::size_t si = static_cast<std::size_t>(static_index(model));
   std::vector<double> p = to_internal(model, setup.initial);
   lower[si] = 0.0;
   upper[si] = std::numeric_limits<double>::infinity();
-  std::vector<std::vector<double>> x0(static_cast<std::size_t>(nseg), std::vector<double>(static_cast<std::size_t>(ns)));
   const auto& y = log.measured;
-  for (int s = 0; s < nseg; ++s) {  // start states from the data: the measured angle and a difference quotient
-    const std::size_t a = static_cast<std::size_t>(starts[static_cast<std::size_t>(s)]);
-    const std::size_t m = std::min<std::size_t>(5, static_cast<std::size_t>(counts[static_cast<std::size_t>(s)]) - 1);
-    double angle = 0.0, speed = 0.0;
-    if (log.measured_is_speed) {
-      speed = y[a];
-    } else {
-      angle = y[a];
-      speed = (y[a + m] - y[a]) / (static_cast<double>(m) * ts);
-    }
-    auto& v = x0[static_cast<std::size_t>(s)];
-    v[0] = angle;
-    v[1] = speed;
-    if (ns == 4) {
-      v[2] = angle;
-      v[3] = speed;
-    }
-  }
-
-  ceres::Problem::Options popt;
-  ceres::Problem problem(popt);
   std::vector<int> free_index;
   for (int i = 0; i < np; ++i)
     if (!fixed[static_cast<std::size_t>(i)]) free_index.push_back(i);
   if (free_index.empty()) throw std::invalid_argument("ParameterSetup: every parameter is fixed; nothing to fit");
-  std::vector<ceres::ResidualBlockId> blocks;
-  for (int s = 0; s < nseg; ++s) {
-    ceres::CostFunction* cost = nullptr;
-    const int a = starts[static_cast<std::size_t>(s)], c = counts[static_cast<std::size_t>(s)];
-    const bool linked = options.continuity_weight > 0.0 && s + 1 < nseg;
-    using ceres::AutoDiffCostFunction;
-    using ceres::DYNAMIC;
-    constexpr PlantModel R = PlantModel::kRigid, W = PlantModel::kTwoMass;
-    if (model == R && linked)
-      cost = new AutoDiffCostFunction<LinkedSegmentCost<R>, DYNAMIC, 6, 2, 2>(new LinkedSegmentCost<R>{&ctx, a, c}, c + 2);
-    else if (model == R)
-      cost = new AutoDiffCostFunction<SegmentCost<R>, DYNAMIC, 6, 2>(new SegmentCost<R>{&ctx, a, c}, c);
-    else if (linked)
-      cost = new AutoDiffCostFunction<LinkedSegmentCost<W>, DYNAMIC, 11, 4, 4>(new LinkedSegmentCost<W>{&ctx, a, c}, c + 4);
-    else
-      cost = new AutoDiffCostFunction<SegmentCost<W>, DYNAMIC, 11, 4>(new SegmentCost<W>{&ctx, a, c}, c);
-    ceres::LossFunction* loss = nullptr;
-    switch (options.loss) {
-      case Loss::kHuber: loss = new ceres::HuberLoss(options.loss_scale); break;
-      case Loss::kSoftLOne: loss = new ceres::SoftLOneLoss(options.loss_scale); break;
-      case Loss::kCauchy: loss = new ceres::CauchyLoss(options.loss_scale); break;
-      default: break;
-    }
-    const std::size_t u = static_cast<std::size_t>(s);
-    if (linked)
-      blocks.push_back(problem.AddResidualBlock(cost, loss, p.data(), x0[u].data(), x0[u + 1].data()));
-    else
-      blocks.push_back(problem.AddResidualBlock(cost, loss, p.data(), x0[u].data()));
-  }
-  std::vector<int> constant;
-  for (int i = 0; i < np; ++i)
-    if (fixed[static_cast<std::size_t>(i)]) constant.push_back(i);
-  if (!constant.empty()) problem.SetManifold(p.data(), new ceres::SubsetManifold(np, constant));
-  for (int i = 0; i < np; ++i) {
-    const std::size_t u = static_cast<std::size_t>(i);
-    if (fixed[u]) continue;
-    if (std::isfinite(lower[u])) problem.SetParameterLowerBound(p.data(), i, lower[u]);
-    if (std::isfinite(upper[u])) problem.SetParameterUpperBound(p.data(), i, upper[u]);
-  }
-  // A speed log does not see the absolute angle: hold the motor angle of each segment (the twist stays free).
-  if (log.measured_is_speed)
-    for (auto& v : x0) problem.SetManifold(v.data(), new ceres::SubsetManifold(ns, {0}));
+  // One stage of the continuation: segments of about `len` samples, their start states from the data, solved from the
+  // present parameters p.
+  auto run_stage = [&](int len, bool hold_stribeck, Stage& st) {
+    // Segments: runs of one-way motion (see the header), split into pieces of about segment_samples.
+    TimeFitOptions so = options;
+    so.segment_samples = len;
+    so.min_segment_samples = std::min(options.min_segment_samples, len);
+    std::vector<int>& starts = st.starts;
+    std::vector<int>& counts = st.counts;
+    shooting_segments(log, so, &starts, &counts);
+    const int nseg = static_cast<int>(starts.size());
+    if (nseg < 2)
+      throw std::invalid_argument("TimeLog: only " + std::to_string(nseg) +
+                                  " stretch(es) of one-way motion long enough to fit (at least 2 of " +
+                                  std::to_string(options.min_segment_samples) +
+                                  " samples are needed): the log is too short or the axis hardly moves");
 
-  ceres::Solver::Options sopt;
-  sopt.linear_solver_type = ceres::DENSE_SCHUR;
-  sopt.max_num_iterations = options.max_iterations;
-  sopt.num_threads = options.num_threads;
-  sopt.function_tolerance = 1e-12;
-  sopt.parameter_tolerance = 1e-12;
-  sopt.gradient_tolerance = 1e-14;
-  sopt.logging_type = ceres::SILENT;
-  std::unique_ptr<ProgressCallback> cb;
-  if (options.progress) {
-    cb = std::make_unique<ProgressCallback>(options.progress);
-    sopt.callbacks.push_back(cb.get());
+    std::vector<std::vector<double>>& x0 = st.x0;
+    x0.assign(static_cast<std::size_t>(nseg), std::vector<double>(static_cast<std::size_t>(ns)));
+    for (int s = 0; s < nseg; ++s) {  // start states from the data: a straight line through the first samples
+      const std::size_t a = static_cast<std::size_t>(starts[static_cast<std::size_t>(s)]);
+      const std::size_t m = std::min<std::size_t>(8, static_cast<std::size_t>(counts[static_cast<std::size_t>(s)]));
+      double angle = 0.0, speed = 0.0;
+      if (log.measured_is_speed) {
+        speed = y[a];
+      } else {
+        double s_t = 0, sy = 0, stt = 0, sty = 0;
+        for (std::size_t j = 0; j < m; ++j) {
+          const double tj = static_cast<double>(j) * ts;
+          s_t += tj;
+          sy += y[a + j];
+          stt += tj * tj;
+          sty += tj * y[a + j];
+        }
+        const double md = static_cast<double>(m);
+        speed = (md * sty - s_t * sy) / (md * stt - s_t * s_t);
+        angle = (sy - speed * s_t) / md;
+      }
+      auto& v = x0[static_cast<std::size_t>(s)];
+      v[0] = angle;
+      v[1] = speed;
+      if (ns == 4) {
+        v[2] = angle;
+        v[3] = speed;
+      }
+    }
+
+    st.problem = std::make_unique<ceres::Problem>();
+    ceres::Problem& problem = *st.problem;
+    std::vector<ceres::ResidualBlockId> blocks;
+    for (int s = 0; s < nseg; ++s) {
+      ceres::CostFunction* cost = nullptr;
+      const int a = starts[static_cast<std::size_t>(s)], c = counts[static_cast<std::size_t>(s)];
+      const bool linked = options.continuity_weight > 0.0 && s + 1 < nseg &&
+                          starts[static_cast<std::size_t>(s) + 1] == a + c;
+      using ceres::AutoDiffCostFunction;
+      using ceres::DYNAMIC;
+      constexpr PlantModel R = PlantModel::kRigid, W = PlantModel::kTwoMass;
+      if (model == R && linked)
+        cost = new AutoDiffCostFunction<LinkedSegmentCost<R>, DYNAMIC, 6, 2, 2>(new LinkedSegmentCost<R>{&ctx, a, c}, c + 2);
+      else if (model == R)
+        cost = new AutoDiffCostFunction<SegmentCost<R>, DYNAMIC, 6, 2>(new SegmentCost<R>{&ctx, a, c}, c);
+      else if (linked)
+        cost = new AutoDiffCostFunction<LinkedSegmentCost<W>, DYNAMIC, 11, 4, 4>(new LinkedSegmentCost<W>{&ctx, a, c}, c + 4);
+      else
+        cost = new AutoDiffCostFunction<SegmentCost<W>, DYNAMIC, 11, 4>(new SegmentCost<W>{&ctx, a, c}, c);
+      ceres::LossFunction* loss = nullptr;
+      switch (options.loss) {
+        case Loss::kHuber: loss = new ceres::HuberLoss(options.loss_scale); break;
+        case Loss::kSoftLOne: loss = new ceres::SoftLOneLoss(options.loss_scale); break;
+        case Loss::kCauchy: loss = new ceres::CauchyLoss(options.loss_scale); break;
+        default: break;
+      }
+      const std::size_t u = static_cast<std::size_t>(s);
+      if (linked)
+        blocks.push_back(problem.AddResidualBlock(cost, loss, p.data(), x0[u].data(), x0[u + 1].data()));
+      else
+        blocks.push_back(problem.AddResidualBlock(cost, loss, p.data(), x0[u].data()));
+    }
+    std::vector<int> constant;
+    for (int i = 0; i < np; ++i)
+      if (fixed[static_cast<std::size_t>(i)] || (hold_stribeck && (i == static_index(model) || i == stribeck_index(model))))
+        constant.push_back(i);
+    if (!constant.empty()) problem.SetManifold(p.data(), new ceres::SubsetManifold(np, constant));
+    for (int i = 0; i < np; ++i) {
+      const std::size_t u = static_cast<std::size_t>(i);
+      if (fixed[u]) continue;
+      if (std::isfinite(lower[u])) problem.SetParameterLowerBound(p.data(), i, lower[u]);
+      if (std::isfinite(upper[u])) problem.SetParameterUpperBound(p.data(), i, upper[u]);
+    }
+    // A speed log does not see the absolute angle: hold the motor angle of each segment (the twist stays free).
+    if (log.measured_is_speed)
+      for (auto& v : x0) problem.SetManifold(v.data(), new ceres::SubsetManifold(ns, {0}));
+
+    ceres::Solver::Options sopt;
+    sopt.linear_solver_type = ceres::DENSE_SCHUR;
+    sopt.max_num_iterations = options.max_iterations;
+    sopt.num_threads = options.num_threads;
+    sopt.function_tolerance = 1e-12;
+    sopt.parameter_tolerance = 1e-12;
+    sopt.gradient_tolerance = 1e-14;
+    sopt.logging_type = ceres::SILENT;
+    std::unique_ptr<ProgressCallback> cb;
+    if (options.progress) {
+      cb = std::make_unique<ProgressCallback>(options.progress);
+      sopt.callbacks.push_back(cb.get());
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    ceres::Solve(sopt, &problem, &st.summary);
+    st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  };
+
+  // Segment-length continuation: short segments first (a wide basin of attraction from poor guesses), then doubled
+  // up to segment_samples (more information per segment state, hence smaller standard errors).
+  std::vector<int> lengths;
+  for (int l = std::min(options.initial_segment_samples, options.segment_samples); l < options.segment_samples; l *= 2)
+    lengths.push_back(l);
+  lengths.push_back(options.segment_samples);
+  // With the Stribeck peak free, a first stage holds its level and speed at their guesses: with inertia, viscous and
+  // Coulomb friction far off, the peak's parameters drift to where the peak vanishes (ws -> 0), and stay there.
+  const bool stribeck_free = !fixed[si] || !fixed[static_cast<std::size_t>(stribeck_index(model))];
+  if (stribeck_free) lengths.insert(lengths.begin(), lengths.front());
+  Stage st;
+  int total_iterations = 0;
+  double seconds = 0.0, initial_cost = 0.0;
+  for (std::size_t i = 0; i < lengths.size(); ++i) {
+    st = Stage();
+    run_stage(lengths[i], stribeck_free && i == 0, st);
+    total_iterations += static_cast<int>(st.summary.iterations.size()) - 1;
+    seconds += st.seconds;
+    if (i == 0) initial_cost = st.summary.initial_cost;
   }
-  ceres::Solver::Summary summary;
-  const auto t0 = std::chrono::steady_clock::now();
-  ceres::Solve(sopt, &problem, &summary);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ceres::Solver::Summary& summary = st.summary;
+  ceres::Problem& problem = *st.problem;
+  std::vector<int>& starts = st.starts;
+  std::vector<int>& counts = st.counts;
+  std::vector<std::vector<double>>& x0 = st.x0;
+  const int nseg = static_cast<int>(starts.size());
+  const int len = options.segment_samples;
 
   TimeFitResult result;
   // The model's output and the residuals at the solution.
-  result.predicted.resize(n);
-  result.residual.resize(n);
+  result.predicted.assign(n, std::numeric_limits<double>::quiet_NaN());
+  result.residual.assign(n, std::numeric_limits<double>::quiet_NaN());
   for (int s = 0; s < nseg; ++s) {
     const std::size_t a = static_cast<std::size_t>(starts[static_cast<std::size_t>(s)]);
     run_segment(ctx, p.data(), x0[static_cast<std::size_t>(s)].data(), static_cast<int>(a),
                 counts[static_cast<std::size_t>(s)], result.predicted.data() + a);
   }
   double ss = 0.0, mean = 0.0;
+  std::size_t used = 0;
   for (std::size_t k = 0; k < n; ++k) {
+    if (std::isnan(result.predicted[k])) continue;
     result.residual[k] = y[k] - result.predicted[k];
     ss += result.residual[k] * result.residual[k];
     mean += y[k];
+    ++used;
   }
-  mean /= static_cast<double>(n);
+  mean /= static_cast<double>(used);
   double var = 0.0;
-  for (std::size_t k = 0; k < n; ++k) var += (y[k] - mean) * (y[k] - mean);
+  for (std::size_t k = 0; k < n; ++k)
+    if (!std::isnan(result.predicted[k])) var += (y[k] - mean) * (y[k] - mean);
   result.segment_start = starts;
+  result.segment_count = counts;
 
   // Standard errors: the Jacobian at the solution, segment states eliminated.
   ceres::Problem::EvaluateOptions eopt;
@@ -415,20 +524,20 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
   FitSummary& fs = result.summary;
   fs.converged = summary.termination_type == ceres::CONVERGENCE;
   fs.termination = summary.message;
-  fs.iterations = static_cast<int>(summary.iterations.size()) - 1;
-  fs.initial_cost = summary.initial_cost;
+  fs.iterations = total_iterations;
+  fs.initial_cost = initial_cost;
   fs.final_cost = summary.final_cost;
   fs.seconds = seconds;
-  fs.residuals = n;
+  fs.residuals = used;
   fs.free_parameters = free_index.size();
   fs.nuisance_parameters = static_cast<std::size_t>(nseg * nuisance);
-  fs.residual_rms = std::sqrt(ss / static_cast<double>(n));
+  fs.residual_rms = std::sqrt(ss / static_cast<double>(used));
   fs.nrmse = var > 0 ? std::sqrt(ss / var) : std::numeric_limits<double>::infinity();
   fs.not_identifiable = cov.not_identifiable;
   std::ostringstream os;
   os << "Time-domain fit of a " << model_name(model) << " plant: " << free_index.size() << " parameters, " << nseg
-     << " shooting segments of " << len << " samples (" << fs.nuisance_parameters << " segment states), " << n
-     << " samples, loss " << loss_name(options.loss) << ".\n"
+     << " shooting segments of about " << len << " samples (" << fs.nuisance_parameters << " segment states), "
+     << used << " of " << n << " samples in one-way motion, loss " << loss_name(options.loss) << ".\n"
      << "Ceres: " << (fs.converged ? "converged" : "did not converge") << " after " << fs.iterations
      << " iterations in " << seconds << " s (" << summary.message << "); cost " << summary.initial_cost << " -> "
      << summary.final_cost << ".\n"

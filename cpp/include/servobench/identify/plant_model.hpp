@@ -52,6 +52,7 @@ plant::TwoMassPlantParams two_mass_plant(const std::vector<double>& p, double st
 // The index of the breakaway level (static_nm / motor_static_nm) and of its Coulomb level in the vector.
 inline int static_index(PlantModel m) { return m == PlantModel::kRigid ? 3 : 7; }
 inline int coulomb_index(PlantModel m) { return m == PlantModel::kRigid ? 2 : 6; }
+inline int stribeck_index(PlantModel m) { return m == PlantModel::kRigid ? 4 : 8; }
 // User vector (breakaway level Fs; at or below Fc: no peak) <-> internal vector (excess Fs - Fc >= 0).
 std::vector<double> to_internal(PlantModel m, std::vector<double> p);
 std::vector<double> to_external(PlantModel m, std::vector<double> p);

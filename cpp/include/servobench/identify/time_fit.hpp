@@ -3,7 +3,9 @@
 // The log holds, per sample k (period Ts): the torque command held over [t_k, t_k+1) and the measured position (or
 // speed) at t_k. The model is the simulator's own plant (identify/plant_model.hpp: the same matrices, the same exact
 // zero-order hold, the same implicit dry-friction sub-step), driven through the known current loop. The fit is an
-// output-error fit by multiple shooting: the log is cut into segments of `segment_samples`; each segment starts from
+// output-error fit by multiple shooting: the stretches of one-way motion (rest phases and reversals left out, so
+// that no segment is simulated through a stick-slip event) are cut into segments of about `segment_samples`; each
+// segment starts from
 // its own free initial mechanical state (nuisance parameters) and is simulated from the logged torque; the residual
 // is the measured minus the simulated output, divided by `measurement_scale`. Short segments keep the problem
 // well-conditioned (an open-loop simulation of an integrating plant drifts) and the initial states absorb the
@@ -33,7 +35,17 @@ enum class Loss { kNone = 0, kHuber = 1, kSoftLOne = 2, kCauchy = 3 };
 
 struct TimeFitOptions {
   PlantModel model = PlantModel::kRigid;
-  int segment_samples = 200;        // samples per shooting segment, 10..100000
+  int segment_samples = 1000;       // samples per shooting segment (about) in the final stage, 10..100000
+  // The continuation starts with segments of this length and doubles it up to segment_samples, each stage from
+  // the previous one's parameters: short segments have a wide basin of attraction, long ones small errors.
+  int initial_segment_samples = 250;  // 10..100000
+  // Segmentation into one-way motion (see shooting_segments in time_fit.cpp): the direction is the sign of the
+  // measured change over direction_window samples when it is at least rest_threshold (in measurement_scale units);
+  // edge_samples are trimmed at both ends of every run; runs shorter than min_segment_samples are not used.
+  int min_segment_samples = 20;     // 3..segment_samples
+  int edge_samples = 3;             // 0..1000
+  int direction_window = 6;         // 2..1000
+  double rest_threshold = 2.0;      // >= 0
   int substeps = 1;                 // plant sub-steps per sample (the simulator's Axis substeps), 1..1000
   double current_bw_hz = std::numeric_limits<double>::infinity();  // known current-loop bandwidth, Hz (inf: none)
   double stribeck_exponent = 2.0;   // known Stribeck exponent, 0.5..4
@@ -41,7 +53,7 @@ struct TimeFitOptions {
   // Weight of the multiple-shooting continuity residuals (each segment's simulated end state minus the next
   // segment's start, angles in measurement_scale units, speeds in measurement_scale per sample); 0: independent
   // segments. Continuity carries each segment's state through stick-slip events that would otherwise trap it.
-  double continuity_weight = 10.0;
+  double continuity_weight = 0.0;
   Loss loss = Loss::kNone;          // robust loss on the scaled residuals
   double loss_scale = 3.0;          // where the robust loss departs from least squares, in measurement_scale units
   int max_iterations = 100;         // 1..10000
@@ -66,6 +78,7 @@ struct TimeFitResult {
   std::vector<double> predicted;  // the model's output per sample (each segment from its fitted start), unit of measured
   std::vector<double> residual;   // measured - predicted
   std::vector<int> segment_start; // first sample of each segment
+  std::vector<int> segment_count; // its length; samples outside every segment have NaN predicted/residual
 };
 
 // Fits the plant. Throws std::invalid_argument for bad input (lengths, non-finite values, a log shorter than two

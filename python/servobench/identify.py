@@ -1,0 +1,510 @@
+"""Plant identification: experiments on an axis, and grey-box fits of its mechanics with Ceres.
+
+The time-domain fit (:func:`fit_time`) estimates a rigid or two-mass plant -- inertias, stiffness, damping, viscous,
+Coulomb and Stribeck friction, a constant load -- from a log of the drive's torque command and the measured position
+(or speed). Its model is the simulator's own plant code (the same matrices, the same exact zero-order hold, the same
+dry-friction sub-step, templated in C++ so that Ceres differentiates it); the fit is an output-error fit by multiple
+shooting over the stretches of one-way motion, with a segment-length continuation that makes it converge from
+guesses 50 % off. The frequency-domain fit (:func:`fit_frequency`) matches the axis's analytic plant response to a
+measured Y/U. Both return an :class:`IdentifiedPlant`: estimates with standard errors, fit quality, the parameters
+the data could not determine, a residual plot, and :meth:`IdentifiedPlant.to_plant` for simulation and tuning.
+
+Units: torque N*m, angles rad, speeds rad/s, inertias kg*m^2, time s; the log's measured position may be given in
+pulses with the encoder's counts per revolution.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+from dataclasses import dataclass, field
+from typing import Iterable
+
+import numpy as np
+
+from . import _core
+
+__all__ = [
+    "IdentificationLog", "IdentifiedPlant", "Estimate", "excitation", "run_experiment", "fit_time", "fit_frequency",
+    "model_parameters", "torque_per_volt",
+]
+
+MODELS = ("rigid", "two_mass")
+
+
+def model_parameters(model: str) -> list[dict]:
+    """The parameters of a plant model ('rigid' or 'two_mass'): name, unit, lower bound, meaning -- the field names of
+    :class:`RigidPlant` / :class:`TwoMassPlant`."""
+    return list(_core.identify_parameters(_model(model)))
+
+
+def _model(model: str) -> str:
+    if model not in MODELS:
+        raise ValueError(f"model = {model!r} is not one of 'rigid', 'two_mass'")
+    return model
+
+
+# ----------------------------------------------------------------------------------------------------------------
+# Excitations
+# ----------------------------------------------------------------------------------------------------------------
+def excitation(kind: str, n_samples: int, *, amplitude: float = 1.0, servo_period_s: float = 200e-6,
+               seed: int = 0, hold_samples: int = 10, start_hz: float = 1.0, end_hz: float | None = None,
+               step_samples: int = 500) -> np.ndarray:
+    """An identification input of n_samples, in the unit of `amplitude` (V at the DAC, or N*m).
+
+    kind
+        ``"prbs"``: a random binary sequence +-amplitude held for `hold_samples` ticks (flat spectrum up to about
+        1/(2.3 hold_samples Ts)); ``"multisine"``: random-phase sines on every DFT line from start_hz to end_hz
+        (whole periods), crest-scaled to peak `amplitude`; ``"chirp"``: a logarithmic sweep start_hz..end_hz;
+        ``"steps"``: random levels in [-amplitude, amplitude] held for `step_samples`.
+    seed
+        the random generator's seed: the same seed gives the same signal.
+    """
+    if kind not in ("prbs", "multisine", "chirp", "steps"):
+        raise ValueError(f"kind = {kind!r} is not one of 'prbs', 'multisine', 'chirp', 'steps'")
+    n = _whole("excitation", "n_samples", n_samples, 1, 10**8)
+    amplitude = float(amplitude)
+    if not (math.isfinite(amplitude) and amplitude >= 0):
+        raise ValueError(f"excitation.amplitude = {amplitude} must be a finite number >= 0")
+    ts = float(servo_period_s)
+    if not (ts > 0 and math.isfinite(ts)):
+        raise ValueError(f"excitation.servo_period_s = {servo_period_s} must be > 0")
+    nyq = 0.5 / ts
+    end = nyq * 0.5 if end_hz is None else float(end_hz)
+    rng = np.random.default_rng(seed)
+    if kind == "prbs":
+        h = _whole("excitation", "hold_samples", hold_samples, 1, n)
+        return np.repeat(rng.choice([-1.0, 1.0], size=n // h + 1), h)[:n] * amplitude
+    if kind == "steps":
+        h = _whole("excitation", "step_samples", step_samples, 1, n)
+        return np.repeat(rng.uniform(-1.0, 1.0, size=n // h + 1), h)[:n] * amplitude
+    if not (0 < start_hz < end <= nyq):
+        raise ValueError(f"excitation: start_hz = {start_hz}, end_hz = {end} must satisfy 0 < start < end <= "
+                         f"{nyq:g} Hz (the Nyquist frequency)")
+    t = np.arange(n) * ts
+    if kind == "chirp":
+        dur = n * ts
+        k = math.log(end / start_hz) / dur
+        return amplitude * np.sin(2 * np.pi * start_hz * (np.exp(k * t) - 1) / k)
+    df = 1.0 / (n * ts)
+    lines = np.arange(max(1, math.ceil(start_hz / df)), math.floor(end / df) + 1)
+    if len(lines) == 0:
+        raise ValueError("excitation: no DFT line between start_hz and end_hz; lengthen the signal")
+    phases = rng.uniform(0, 2 * np.pi, size=len(lines))
+    x = np.zeros(n)
+    for k, ph in zip(lines, phases):
+        x += np.cos(2 * np.pi * k * df * t + ph)
+    return amplitude * x / np.max(np.abs(x))
+
+
+def _whole(owner, name, value, lo, hi) -> int:
+    v = float(value)
+    if not (math.isfinite(v) and v == int(v) and lo <= v <= hi):
+        raise ValueError(f"{owner}.{name} = {value} is outside the allowed range {lo}..{hi} (a whole number)")
+    return int(v)
+
+
+def torque_per_volt(drive) -> float:
+    """N*m per DAC volt of a torque-mode drive: kt * amps_per_volt."""
+    if not isinstance(drive, _core.TorqueDrive):
+        raise ValueError("identification needs a torque-mode drive (TorqueDrive): with a velocity-mode drive the "
+                         "torque reaching the mechanics is not the card's output")
+    return drive.kt * drive.amps_per_volt
+
+
+# ----------------------------------------------------------------------------------------------------------------
+# Logs
+# ----------------------------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class IdentificationLog:
+    """One identification experiment, sample k at t = k Ts.
+
+    torque_nm
+        the torque command held over [t_k, t_k+1), N*m (the drive's input, before its current loop).
+    measured
+        position (rad) or speed (rad/s) at t_k, as `measured_is_speed` says; on the motor or the load.
+    sample_period_s
+        Ts, s. counts_per_rev: the encoder's resolution (one count is the residual unit of a fit).
+    current_bw_hz
+        the drive's current-loop bandwidth, Hz (known; ``inf`` for an ideal loop).
+    """
+
+    sample_period_s: float
+    torque_nm: np.ndarray
+    measured: np.ndarray
+    measured_is_speed: bool = False
+    measured_on_load: bool = False
+    counts_per_rev: float = 10000.0
+    current_bw_hz: float = math.inf
+    substeps: int = 1
+    extra: dict = field(default_factory=dict, repr=False)
+
+    def __post_init__(self):
+        for name in ("torque_nm", "measured"):
+            a = np.asarray(getattr(self, name), dtype=float)
+            if a.ndim != 1:
+                raise ValueError(f"IdentificationLog.{name} must be a 1-D array")
+            bad = np.flatnonzero(~np.isfinite(a))
+            if len(bad):
+                raise ValueError(f"IdentificationLog.{name}[{bad[0]}] = {a[bad[0]]} is not a finite number "
+                                 f"({len(bad)} such samples)")
+            object.__setattr__(self, name, a)
+        if len(self.torque_nm) != len(self.measured):
+            raise ValueError(f"IdentificationLog: torque_nm has {len(self.torque_nm)} samples but measured has "
+                             f"{len(self.measured)}; they must have the same length")
+        if not (self.sample_period_s > 0 and math.isfinite(self.sample_period_s)):
+            raise ValueError(f"IdentificationLog.sample_period_s = {self.sample_period_s} must be > 0")
+
+    @property
+    def time_s(self) -> np.ndarray:
+        return np.arange(len(self.measured)) * self.sample_period_s
+
+    @property
+    def count_rad(self) -> float:
+        """One encoder count, rad."""
+        return 2 * np.pi / self.counts_per_rev
+
+    def __len__(self) -> int:
+        return len(self.measured)
+
+    @classmethod
+    def from_arrays(cls, time_s, torque_nm, measured, *, measured_unit: str = "rad", counts_per_rev: float = 10000.0,
+                    current_bw_hz: float = math.inf, measured_on_load: bool = False) -> "IdentificationLog":
+        """A log from recorded arrays (e.g. a real machine's trace). time_s must be uniformly spaced and increasing;
+        measured_unit: 'rad', 'pulse' (position, converted with counts_per_rev), 'rad/s' or 'pulse/s' (speed)."""
+        t = np.asarray(time_s, dtype=float)
+        if t.ndim != 1 or len(t) < 3:
+            raise ValueError("time_s must be a 1-D array of at least 3 samples")
+        if not np.all(np.isfinite(t)):
+            raise ValueError(f"time_s[{np.flatnonzero(~np.isfinite(t))[0]}] is not a finite number")
+        dt = np.diff(t)
+        if np.any(dt <= 0):
+            i = int(np.flatnonzero(dt <= 0)[0])
+            raise ValueError(f"time_s is not increasing: time_s[{i + 1}] = {t[i + 1]} <= time_s[{i}] = {t[i]}")
+        ts = float(np.median(dt))
+        if np.max(np.abs(dt - ts)) > 1e-6 * ts + 1e-12:
+            raise ValueError(f"time_s is not uniformly sampled (steps {dt.min():.6g}..{dt.max():.6g} s); resample it "
+                             "to the servo period first")
+        units = {"rad": (1.0, False), "pulse": (2 * np.pi / counts_per_rev, False), "rad/s": (1.0, True),
+                 "pulse/s": (2 * np.pi / counts_per_rev, True)}
+        if measured_unit not in units:
+            raise ValueError(f"measured_unit = {measured_unit!r} is not one of {sorted(units)}")
+        scale, speed = units[measured_unit]
+        if len(np.asarray(measured)) != len(t) or len(np.asarray(torque_nm)) != len(t):
+            raise ValueError(f"time_s, torque_nm and measured must have the same length (got {len(t)}, "
+                             f"{len(np.asarray(torque_nm))}, {len(np.asarray(measured))})")
+        return cls(ts, np.asarray(torque_nm, float), np.asarray(measured, float) * scale, speed, measured_on_load,
+                   counts_per_rev, current_bw_hz)
+
+    @classmethod
+    def from_csv(cls, path: str, *, time="time_s", torque="torque_nm", measured="position_rad",
+                 measured_unit: str = "rad", **kwargs) -> "IdentificationLog":
+        """A log from a CSV file with a header row; the column names are arguments."""
+        with open(path, newline="") as f:
+            rows = list(csv.DictReader(f))
+        if not rows:
+            raise ValueError(f"{path}: no data rows")
+        for col in (time, torque, measured):
+            if col not in rows[0]:
+                raise ValueError(f"{path}: no column {col!r} (columns: {list(rows[0])})")
+        def column(c):
+            try:
+                return np.array([float(r[c]) for r in rows])
+            except ValueError as e:
+                raise ValueError(f"{path}: column {c!r} holds a value that is not a number ({e})") from None
+        return cls.from_arrays(column(time), column(torque), column(measured), measured_unit=measured_unit, **kwargs)
+
+    def to_csv(self, path: str) -> None:
+        """Writes time_s, torque_nm and position_rad (or speed_rad_s) columns."""
+        name = "speed_rad_s" if self.measured_is_speed else "position_rad"
+        with open(path, "w", newline="") as f:
+            w = csv.writer(f)
+            w.writerow(["time_s", "torque_nm", name])
+            for row in zip(self.time_s, self.torque_nm, self.measured):
+                w.writerow([repr(float(v)) for v in row])
+
+
+def run_experiment(axis, *, duration_s: float = 5.0, speed_rad_s: tuple[float, float] = (3.0, 30.0),
+                   reversal_hz: float = 2.0, injection: str = "prbs", amplitude_v: float = 0.1, seed: int = 0,
+                   **excitation_options) -> IdentificationLog:
+    """Runs an identification experiment on `axis` (its servo law closes the loop) and returns the log.
+
+    The command is a reversing motion whose speed amplitude grows geometrically from speed_rad_s[0] to
+    speed_rad_s[1] (rad/s, motor side) at reversal_hz reversals pairs per second -- so the friction is seen at
+    every speed, on the way through its low-speed (Stribeck) branch many times -- and an `injection`
+    (:func:`excitation` kind, amplitude_v volts at the DAC, seeded) is added to the controller's output for the
+    inertia and the resonances. The log holds the drive's torque command (from the DAC voltage, its A/V, its current
+    limit and kt) and the encoder reading. The axis must have a torque-mode drive.
+    """
+    tpv = torque_per_volt(axis.drive)
+    ts = axis.servo_period_s
+    if not (duration_s > 0 and math.isfinite(duration_s)):
+        raise ValueError(f"run_experiment.duration_s = {duration_s} must be > 0")
+    lo, hi = (float(v) for v in speed_rad_s)
+    if not (0 < lo <= hi and math.isfinite(hi)):
+        raise ValueError(f"run_experiment.speed_rad_s = {speed_rad_s} must be (low, high) with 0 < low <= high")
+    n = int(round(duration_s / ts))
+    t = np.arange(n) * ts
+    speed = np.geomspace(lo, hi, n) * np.sin(2 * np.pi * reversal_hz * t)
+    cpr = axis.encoder.counts_per_rev
+    ref = axis.feedback_pulse + np.cumsum(speed) * ts * cpr / (2 * np.pi)
+    inj = excitation(injection, n, amplitude=amplitude_v, servo_period_s=ts, seed=seed, **excitation_options)
+    run = axis.run(ref, injection_v=inj, signals=["volts", "fb_pos"])
+    drive = axis.drive
+    i_max = min(drive.current_limit_a, drive.torque_limit_nm / drive.kt)
+    volts_applied = np.concatenate([[0.0], run.volts[:-1]])
+    torque = np.clip(volts_applied * drive.amps_per_volt, -i_max, i_max) * drive.kt
+    return IdentificationLog(ts, torque, run.fb_pos * 2 * np.pi / cpr, False, axis.encoder.on_load, cpr,
+                             drive.current_bw_hz, axis.substeps,
+                             extra={"volts": run.volts, "fb_pulse": run.fb_pos, "command_pulse": ref,
+                                    "torque_per_volt": tpv})
+
+
+# ----------------------------------------------------------------------------------------------------------------
+# Results
+# ----------------------------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Estimate:
+    """One parameter: value and standard error in `unit`; fixed ones were held at their initial value."""
+
+    name: str
+    value: float
+    std_error: float
+    unit: str
+    initial: float
+    fixed: bool
+    at_bound: bool
+
+    @property
+    def relative_std_error(self) -> float:
+        return self.std_error / abs(self.value) if self.value else math.inf
+
+    def __str__(self) -> str:
+        if self.fixed:
+            return f"{self.name:28s} {self.value:12.6g} {self.unit:10s} (fixed)"
+        bound = "  at a bound" if self.at_bound else ""
+        return (f"{self.name:28s} {self.value:12.6g} {self.unit:10s} +- {self.std_error:.3g} "
+                f"({100 * self.relative_std_error:.2g} %){bound}")
+
+
+class IdentificationError(ValueError):
+    """The data cannot determine a parameter (the message says which, and why)."""
+
+
+@dataclass(frozen=True)
+class IdentifiedPlant:
+    """The outcome of :func:`fit_time` or :func:`fit_frequency`.
+
+    model: 'rigid' or 'two_mass'; parameters: name -> :class:`Estimate`; nrmse: residual RMS over the measurement's
+    standard deviation (time) or relative complex error (frequency); residual_rms in the measurement's unit (rad, or
+    rad/s; nepers/radians for a frequency fit); summary: Ceres-style report; not_identifiable: what the data could not
+    determine; time-domain fits keep predicted/residual per sample (NaN outside the segments used).
+    """
+
+    model: str
+    parameters: dict
+    nrmse: float
+    residual_rms: float
+    converged: bool
+    iterations: int
+    seconds: float
+    summary: str
+    not_identifiable: list
+    stribeck_exponent: float = 2.0
+    time_s: np.ndarray | None = field(default=None, repr=False)
+    measured: np.ndarray | None = field(default=None, repr=False)
+    predicted: np.ndarray | None = field(default=None, repr=False)
+    residual: np.ndarray | None = field(default=None, repr=False)
+    freq_hz: np.ndarray | None = field(default=None, repr=False)
+    response: np.ndarray | None = field(default=None, repr=False)
+    predicted_response: np.ndarray | None = field(default=None, repr=False)
+
+    def __getitem__(self, name: str) -> float:
+        return self.parameters[name].value
+
+    def values(self) -> dict:
+        """name -> value (SI)."""
+        return {k: e.value for k, e in self.parameters.items()}
+
+    def to_dict(self) -> dict:
+        return {k: {"value": e.value, "std_error": e.std_error, "unit": e.unit, "fixed": e.fixed}
+                for k, e in self.parameters.items()}
+
+    def __str__(self) -> str:
+        lines = [self.summary, ""] + [str(e) for e in self.parameters.values()]
+        return "\n".join(lines)
+
+    def to_plant(self):
+        """The identified plant as a :class:`RigidPlant` / :class:`TwoMassPlant` for an :class:`Axis` (and so for the
+        model-based tuning rule)."""
+        v = {k: e.value for k, e in self.parameters.items() if k != "delay_s"}
+        if self.model == "rigid":
+            if v["static_nm"] <= v["coulomb_nm"]:
+                v["static_nm"] = 0.0
+            return _core.RigidPlant(stribeck_exponent=self.stribeck_exponent, **v)
+        if v["motor_static_nm"] <= v["motor_coulomb_nm"]:
+            v["motor_static_nm"] = 0.0
+        return _core.TwoMassPlant(motor_stribeck_exponent=self.stribeck_exponent, **v)
+
+    def plot_residuals(self, *, path: str | None = None, ax=None):
+        """Measured vs predicted and the residual (time fits: in encoder-count-sized units of the measurement;
+        frequency fits: gain and phase). Returns the figure."""
+        import matplotlib.pyplot as plt
+        if self.freq_hz is not None:
+            fig, (a1, a2) = plt.subplots(2, 1, sharex=True, figsize=(8, 5))
+            a1.semilogx(self.freq_hz, 20 * np.log10(np.abs(self.response)), "o", ms=3, label="measured")
+            a1.semilogx(self.freq_hz, 20 * np.log10(np.abs(self.predicted_response)), "-", label="fitted model")
+            a1.set_ylabel("gain, dB")
+            a1.legend()
+            a2.semilogx(self.freq_hz, np.degrees(np.unwrap(np.angle(self.response))), "o", ms=3)
+            a2.semilogx(self.freq_hz, np.degrees(np.unwrap(np.angle(self.predicted_response))), "-")
+            a2.set_ylabel("phase, deg")
+            a2.set_xlabel("frequency, Hz")
+        else:
+            fig, (a1, a2) = plt.subplots(2, 1, sharex=True, figsize=(8, 5))
+            a1.plot(self.time_s, self.measured, lw=0.8, label="measured")
+            a1.plot(self.time_s, self.predicted, lw=0.8, label="model (per segment)")
+            a1.set_ylabel("measured")
+            a1.legend()
+            a2.plot(self.time_s, self.residual, lw=0.6)
+            a2.set_ylabel("residual")
+            a2.set_xlabel("time, s")
+        fig.suptitle(f"{self.model} fit: NRMSE {self.nrmse:.3g}")
+        fig.tight_layout()
+        if path:
+            fig.savefig(path, dpi=110)
+        return fig
+
+
+def _setup(model: str, guess: dict, fixed: Iterable[str], bounds: dict | None):
+    info = model_parameters(model)
+    names = [p["name"] for p in info]
+    unknown = set(guess) - set(names)
+    if unknown:
+        raise ValueError(f"guess: unknown parameter(s) {sorted(unknown)}; the {model} model has {names}")
+    fixed = set(fixed)
+    if fixed - set(names):
+        raise ValueError(f"fixed: unknown parameter(s) {sorted(fixed - set(names))}")
+    bounds = dict(bounds or {})
+    if set(bounds) - set(names):
+        raise ValueError(f"bounds: unknown parameter(s) {sorted(set(bounds) - set(names))}")
+    initial, hold, lower, upper = [], [], [], []
+    stribeck = "static_nm" if model == "rigid" else "motor_static_nm"
+    speed = "stribeck_speed_rad_s" if model == "rigid" else "motor_stribeck_speed_rad_s"
+    for p in info:
+        n = p["name"]
+        if n in guess:
+            v = float(guess[n])
+            if not math.isfinite(v):
+                raise ValueError(f"guess[{n!r}] = {v} is not a finite number")
+        else:  # absent: held at its "off" value
+            v = 1.0 if n == speed else 0.0
+        off = n not in guess or n in fixed
+        if n == speed and stribeck not in guess:
+            off = True
+        initial.append(v)
+        hold.append(off)
+        lo, hi = p["lower"], math.inf
+        if n == speed:
+            lo, hi = v / 100, v * 100  # the Stribeck speed is kept within two decades of its guess
+        if n in bounds:
+            lo, hi = (float(b) for b in bounds[n])
+        lower.append(lo)
+        upper.append(hi)
+        if not off and not (lo <= v <= hi):
+            raise ValueError(f"guess[{n!r}] = {v} is outside its bounds {lo:g}..{hi:g}")
+    return names, np.array(initial), hold, np.array(lower), np.array(upper)
+
+
+def _estimates(ps) -> dict:
+    return {p["name"]: Estimate(p["name"], p["value"], p["std_error"], p["unit"], p["initial"], p["fixed"],
+                                p["at_bound"]) for p in ps}
+
+
+def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict, fixed: Iterable[str] = (),
+             bounds: dict | None = None, segment_samples: int = 1000, initial_segment_samples: int = 250,
+             loss: str = "none", loss_scale_counts: float = 3.0, stribeck_exponent: float = 2.0,
+             max_iterations: int = 200, num_threads: int = 1, max_relative_std_error: float = 0.2,
+             direction_window: int = 6, rest_threshold_counts: float = 2.0, edge_samples: int = 3,
+             strict: bool = True, progress=None) -> IdentifiedPlant:
+    """Fits a rigid or two-mass plant to a time log (Ceres; the GIL is released).
+
+    guess
+        name -> starting value (SI) of every parameter to estimate; parameters not named are held at 0 (no Stribeck
+        peak unless static_nm / motor_static_nm is guessed). fixed: names held at their guess. bounds: name ->
+        (low, high); the default keeps inertias and the stiffness positive, frictions >= 0, and the Stribeck speed
+        within two decades of its guess.
+    segment_samples, initial_segment_samples
+        the multiple-shooting segment length of the final stage and of the first (doubled in between).
+    loss
+        'none', 'huber', 'soft_l1' or 'cauchy', departing from least squares at loss_scale_counts encoder counts.
+    direction_window, rest_threshold_counts, edge_samples
+        the segmentation into one-way motion: the direction is the sign of the measured change over
+        direction_window samples once it reaches rest_threshold_counts counts; edge_samples are trimmed at both ends
+        of every run (rest phases and reversals are not fitted: a segment simulated through a stick-slip event can
+        trap the solver).
+    strict
+        raise :class:`IdentificationError` (a ValueError) naming the parameters the data cannot determine; with
+        False they are reported in ``not_identifiable`` and their standard error is inf.
+    progress
+        None, or a callable(iteration, cost) -> bool (False stops the solve).
+    """
+    model = _model(model)
+    if not isinstance(log, IdentificationLog):
+        raise TypeError("log must be an IdentificationLog (see IdentificationLog.from_arrays / run_experiment)")
+    names, initial, hold, lower, upper = _setup(model, guess, fixed, bounds)
+    if all(hold):
+        raise ValueError("guess: no parameter to estimate")
+    scale = log.count_rad if not log.measured_is_speed else log.count_rad / log.sample_period_s
+    r = _core.identify_time(
+        log.torque_nm, log.measured, sample_period_s=log.sample_period_s, measured_is_speed=log.measured_is_speed,
+        measured_on_load=log.measured_on_load, model=model, initial=initial, fixed=hold, lower=lower, upper=upper,
+        segment_samples=segment_samples, initial_segment_samples=initial_segment_samples, min_segment_samples=20,
+        edge_samples=edge_samples, direction_window=direction_window, rest_threshold=rest_threshold_counts,
+        substeps=log.substeps,
+        current_bw_hz=log.current_bw_hz, stribeck_exponent=stribeck_exponent, measurement_scale=scale,
+        continuity_weight=0.0, loss=loss, loss_scale=loss_scale_counts, max_iterations=max_iterations,
+        num_threads=num_threads, max_relative_std_error=max_relative_std_error, progress=progress)
+    s = r["summary"]
+    if strict and s["not_identifiable"]:
+        raise IdentificationError("the log cannot determine: " + "; ".join(s["not_identifiable"]) +
+                                  " -- excite the axis more (longer log, more speed range or reversals), or fix "
+                                  "these parameters (fixed=...)")
+    return IdentifiedPlant(model, _estimates(r["parameters"]), s["nrmse"], s["residual_rms"], s["converged"],
+                           s["iterations"], s["seconds"], s["report"], list(s["not_identifiable"]),
+                           stribeck_exponent, log.time_s, log.measured, r["predicted"], r["residual"])
+
+
+def fit_frequency(response, axis, model: str = "rigid", *, guess: dict, fixed: Iterable[str] = (),
+                  bounds: dict | None = None, fit_delay: bool = False, delay_s: float = 0.0, weight=None,
+                  max_iterations: int = 200, max_relative_std_error: float = 0.2, strict: bool = True,
+                  progress=None) -> IdentifiedPlant:
+    """Fits the mechanics of `axis` to a measured plant response Y/U (U in DAC counts, Y in pulse: the ``plant`` of a
+    :func:`servobench.frequency.sine_sweep` or :func:`broadband_response`, or (freq_hz, complex) arrays).
+
+    The model is the axis's own analytic plant response with its mechanics replaced (friction is invisible to a
+    linear response: only inertias, stiffness, damping and viscous friction are fitted), optionally times an extra
+    delay exp(-j w tau) (`fit_delay`, starting at delay_s) for lags a real machine adds. The residual is the complex
+    log-ratio (nepers and radians), weighted by `weight` (default: the measurement's coherence if it has one).
+    """
+    model = _model(model)
+    if hasattr(response, "freq_hz"):
+        f = np.asarray(response.freq_hz, float)
+        g = np.asarray(response.response("plant"))
+        if weight is None and getattr(response, "coherence", None) is not None:
+            weight = np.asarray(response.coherence, float)
+    else:
+        f, g = (np.asarray(a) for a in response)
+    names, initial, hold, lower, upper = _setup(model, guess, fixed, bounds)
+    w = np.ones(len(f)) if weight is None else np.asarray(weight, float)
+    core_axis = getattr(axis, "_axis", axis)
+    r = _core.identify_frequency(core_axis, f.astype(float), g.astype(complex), weight=w, model=model,
+                                 initial=initial, fixed=hold, lower=lower, upper=upper, fit_delay=fit_delay,
+                                 delay_initial_s=delay_s, max_iterations=max_iterations,
+                                 max_relative_std_error=max_relative_std_error, progress=progress)
+    s = r["summary"]
+    if strict and s["not_identifiable"]:
+        raise IdentificationError("the response cannot determine: " + "; ".join(s["not_identifiable"]))
+    return IdentifiedPlant(model, _estimates(r["parameters"]), s["nrmse"], s["residual_rms"], s["converged"],
+                           s["iterations"], s["seconds"], s["report"], list(s["not_identifiable"]), 2.0,
+                           freq_hz=f, response=g, predicted_response=r["predicted"])

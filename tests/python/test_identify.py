@@ -1,0 +1,184 @@
+"""Plant identification (issue 7): the fit's model is the simulator's code, accuracy from 50 % guesses, bad data."""
+
+import math
+
+import numpy as np
+import pytest
+
+import servobench as sb
+from servobench import _core
+from servobench.identify import IdentificationError, IdentificationLog, excitation
+
+TS = 200e-6
+RIGID_A = dict(inertia_kgm2=2e-4, viscous_nms=3e-4, coulomb_nm=0.03, static_nm=0.05, stribeck_speed_rad_s=2.0)
+RIGID_B = dict(inertia_kgm2=5e-5, viscous_nms=1e-4, coulomb_nm=0.01, static_nm=0.018, stribeck_speed_rad_s=4.0)
+TWO_MASS = dict(jm_kgm2=1e-4, jl_kgm2=2e-4, k_nm_per_rad=300.0, c_nms_per_rad=0.01, motor_viscous_nms=2e-4,
+                motor_coulomb_nm=0.03)
+OFF = [1.5, 0.5, 1.5, 1.5, 0.5, 0.5]  # every guess 50 % off, in alternating directions
+
+
+def axis_with(plant, *, noise=0.0, seed=1, kp=38, kd=830):
+    return sb.Axis(law=_core.GtServoLaw(kp=kp, kd=kd),
+                   drive=_core.TorqueDrive(amps_per_volt=0.8, kt=0.5, current_bw_hz=1500.0), plant=plant,
+                   encoder=_core.Encoder(counts_per_rev=10000, noise_counts=noise, seed=seed), servo_period_s=TS)
+
+
+def guesses(true):
+    return {k: v * f for (k, v), f in zip(true.items(), OFF)}
+
+
+def errors_pct(fit, true):
+    return {k: 100 * (fit[k] / v - 1) for k, v in true.items()}
+
+
+def test_fit_model_is_the_simulator():
+    # The identification model, run on double, reproduces the simulator tick for tick (same matrices, same ZOH,
+    # same dry-friction sub-step): stick-slip included, rigid and two-mass.
+    for plant, model, p in [(_core.RigidPlant(**RIGID_A), "rigid", RIGID_A),
+                            (_core.TwoMassPlant(load_viscous_nms=0.0, **TWO_MASS), "two_mass", TWO_MASS)]:
+        ax = axis_with(plant, kp=20, kd=400)
+        ax.set_servo_on(False)
+        n = 5000
+        volts = excitation("steps", n, amplitude=0.5, servo_period_s=TS, seed=3, step_samples=400)
+        run = ax.run(np.zeros(n), injection_v=volts, signals=["volts", "angle_rad", "speed_rad_s"])
+        torque = np.concatenate([[0.0], run.volts[:-1]]) * 0.4
+        names = [q["name"] for q in sb.identify.model_parameters(model)]
+        vec = np.array([p.get(k, 0.0) for k in names])
+        if model == "rigid":
+            vec[names.index("stribeck_speed_rad_s")] = p["stribeck_speed_rad_s"]
+        else:
+            vec[names.index("motor_stribeck_speed_rad_s")] = 0.01
+        sim = _core.identify_simulate(torque, sample_period_s=TS, measured_is_speed=False, measured_on_load=False,
+                                      model=model, parameters=vec, initial_state=np.zeros(2 if model == "rigid" else 4),
+                                      substeps=1, current_bw_hz=1500.0, stribeck_exponent=2.0)
+        assert np.any(np.abs(run.speed_rad_s) == 0.0) and np.any(np.abs(run.speed_rad_s) > 1.0)  # sticks and slides
+        assert np.max(np.abs(sim - run.angle_rad)) <= 1e-9
+
+
+@pytest.mark.parametrize("true", [RIGID_A, RIGID_B], ids=["rigid_a", "rigid_b"])
+def test_rigid_within_2pct_from_50pct_guesses(true):
+    # 5 s experiment, encoder quantisation only (10000 counts/rev): every parameter within 2 %.
+    log = sb.run_experiment(axis_with(_core.RigidPlant(**true)), amplitude_v=0.1, seed=0)
+    assert log.time_s[-1] == pytest.approx(5.0, abs=TS)
+    fit = sb.fit_time(log, "rigid", guess=guesses(true))
+    err = errors_pct(fit, true)
+    assert fit.converged, fit.summary
+    assert max(abs(e) for e in err.values()) < 2.0, err
+    assert fit.residual_rms / log.count_rad < 0.35  # quantisation is 1/sqrt(12) = 0.29 count
+    for k in true:  # the standard errors describe the errors
+        e = fit.parameters[k]
+        assert abs(e.value - true[k]) < 5 * e.std_error + 1e-6 * abs(true[k]), (k, e)
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_rigid_within_5pct_with_encoder_noise(seed):
+    # The configured noise: 0.5 count rms on top of the quantisation, a different noise sequence per seed.
+    log = sb.run_experiment(axis_with(_core.RigidPlant(**RIGID_A), noise=0.5, seed=seed + 1), amplitude_v=0.1,
+                            seed=seed)
+    fit = sb.fit_time(log, "rigid", guess=guesses(RIGID_A))
+    err = errors_pct(fit, RIGID_A)
+    assert max(abs(e) for e in err.values()) < 5.0, err
+
+
+# Known limit (docs/identify.md): a guess whose resonance sqrt(k (jm + jl) / (jm jl)) is ~30 % off the truth
+# (jm x1.5, jl x0.5, k x1.5) can end in another local minimum; these patterns put it within 20 %.
+@pytest.mark.parametrize("pattern", [[1.5, 0.5, 1.5, 0.5, 1.5, 0.5], [0.5] * 6], ids=["alternating", "all_low"])
+def test_two_mass_within_2pct_from_50pct_guesses(pattern):
+    log = sb.run_experiment(axis_with(_core.TwoMassPlant(load_viscous_nms=0.0, **TWO_MASS), kp=20, kd=400),
+                            amplitude_v=0.3, seed=0)
+    guess = {k: v * f for (k, v), f in zip(TWO_MASS.items(), pattern)}
+    fit = sb.fit_time(log, "two_mass", guess=guess, num_threads=2)
+    err = errors_pct(fit, TWO_MASS)
+    assert max(abs(e) for e in err.values()) < 2.0, err
+    plant = fit.to_plant()  # usable for simulation
+    assert isinstance(plant, _core.TwoMassPlant)
+    assert plant.resonance_hz == pytest.approx(_core.TwoMassPlant(**TWO_MASS).resonance_hz, rel=0.01)
+    sb.Axis(plant=plant).run(np.zeros(10))
+
+
+def test_frequency_fit_of_a_two_mass_response():
+    ax = axis_with(_core.TwoMassPlant(load_viscous_nms=0.0, **TWO_MASS), kp=20, kd=400)
+    f = np.geomspace(5, 2000, 120)
+    measured = sb.analytic_response(ax, f)
+    lin = {k: v for k, v in TWO_MASS.items() if k != "motor_coulomb_nm"}
+    fit = sb.fit_frequency(measured, ax, "two_mass", guess=guesses(lin))
+    err = errors_pct(fit, lin)
+    assert max(abs(e) for e in err.values()) < 0.1, err
+    assert fit.nrmse < 1e-6
+
+
+def test_frequency_fit_with_delay():
+    ax = axis_with(_core.RigidPlant(**RIGID_A))
+    f = np.geomspace(5, 1000, 80)
+    g = sb.analytic_response(ax, f).response("plant") * np.exp(-2j * np.pi * f * 150e-6)  # an unmodelled lag
+    fit = sb.fit_frequency((f, g), ax, "rigid", guess={"inertia_kgm2": 1e-4, "viscous_nms": 6e-4}, fit_delay=True,
+                           delay_s=50e-6)
+    assert fit["delay_s"] == pytest.approx(150e-6, rel=1e-4)
+    assert fit["inertia_kgm2"] == pytest.approx(2e-4, rel=1e-4)
+
+
+def test_to_plant_and_csv_round_trip(tmp_path):
+    log = sb.run_experiment(axis_with(_core.RigidPlant(**RIGID_A)), amplitude_v=0.1, duration_s=1.0)
+    path = tmp_path / "log.csv"
+    log.to_csv(str(path))
+    back = IdentificationLog.from_csv(str(path), current_bw_hz=1500.0)
+    assert back.sample_period_s == pytest.approx(TS, rel=1e-9)
+    np.testing.assert_allclose(back.measured, log.measured, rtol=0, atol=1e-15)
+    np.testing.assert_allclose(back.torque_nm, log.torque_nm, rtol=0, atol=1e-15)
+
+
+def test_bad_logs_are_refused():
+    n = 1000
+    t = np.arange(n) * TS
+    with pytest.raises(ValueError, match="same length"):
+        IdentificationLog.from_arrays(t, np.zeros(n - 1), np.zeros(n))
+    t_bad = t.copy()
+    t_bad[500] = t_bad[499]
+    with pytest.raises(ValueError, match="not increasing"):
+        IdentificationLog.from_arrays(t_bad, np.zeros(n), np.zeros(n))
+    y = np.zeros(n)
+    y[10] = np.nan
+    with pytest.raises(ValueError, match=r"measured\[10\] = nan is not a finite number"):
+        IdentificationLog.from_arrays(t, np.zeros(n), y)
+    t_uneven = t.copy()
+    t_uneven[700:] += 1e-5
+    with pytest.raises(ValueError, match="not uniformly sampled"):
+        IdentificationLog.from_arrays(t_uneven, np.zeros(n), np.zeros(n))
+    short = IdentificationLog(TS, np.zeros(30), np.zeros(30))
+    with pytest.raises(ValueError, match="too short"):
+        sb.fit_time(short, "rigid", guess={"inertia_kgm2": 1e-4})
+    still = IdentificationLog(TS, np.zeros(5000), np.zeros(5000))
+    with pytest.raises(ValueError, match="hardly moves"):
+        sb.fit_time(still, "rigid", guess={"inertia_kgm2": 1e-4})
+    with pytest.raises(ValueError, match="unknown parameter"):
+        sb.fit_time(still, "rigid", guess={"inertia": 1e-4})
+    with pytest.raises(ValueError, match="model = 'three_mass'"):
+        sb.fit_time(still, "three_mass", guess={"inertia_kgm2": 1e-4})
+
+
+def test_weak_excitation_names_the_parameters():
+    # One-way motion at a nearly constant speed: a constant load torque and the Coulomb friction act alike.
+    ax = axis_with(_core.RigidPlant(**RIGID_A))
+    n = int(1.0 / TS)
+    ref = np.cumsum(np.full(n, 20.0)) * TS * 10000 / (2 * np.pi)
+    run = ax.run(ref, injection_v=excitation("prbs", n, amplitude=0.1, servo_period_s=TS), signals=["volts", "fb_pos"])
+    torque = np.concatenate([[0.0], run.volts[:-1]]) * 0.4
+    log = IdentificationLog(TS, torque, run.fb_pos * 2 * np.pi / 10000, current_bw_hz=1500.0)
+    g = {"inertia_kgm2": 1e-4, "viscous_nms": 1e-4, "coulomb_nm": 0.02, "load_nm": 0.01}
+    with pytest.raises(IdentificationError, match="coulomb_nm.*load_nm|load_nm.*coulomb_nm"):
+        sb.fit_time(log, "rigid", guess=g)
+    fit = sb.fit_time(log, "rigid", guess=g, strict=False)
+    assert any("coulomb_nm" in s for s in fit.not_identifiable)
+
+
+def test_excitations_are_seeded():
+    for kind in ("prbs", "multisine", "chirp", "steps"):
+        a = excitation(kind, 4000, amplitude=0.2, servo_period_s=TS, seed=7, start_hz=5.0, end_hz=500.0)
+        b = excitation(kind, 4000, amplitude=0.2, servo_period_s=TS, seed=7, start_hz=5.0, end_hz=500.0)
+        assert np.array_equal(a, b)
+        assert np.max(np.abs(a)) == pytest.approx(0.2, rel=0.05)
+    assert not np.array_equal(excitation("prbs", 4000, seed=1), excitation("prbs", 4000, seed=2))
+    with pytest.raises(ValueError, match="kind = 'noise'"):
+        excitation("noise", 10)
+    with pytest.raises(ValueError, match="identification needs a torque-mode drive"):
+        sb.run_experiment(sb.Axis(drive=_core.VelocityDrive()))
