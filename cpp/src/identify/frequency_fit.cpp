@@ -11,6 +11,7 @@
 
 #include "servobench/common/validate.hpp"
 #include "servobench/identify/covariance.hpp"
+#include "servobench/identify/solver_progress.hpp"
 #include "servobench/tuning/loop_response.hpp"
 
 namespace servobench::identify {
@@ -65,16 +66,6 @@ struct ResponseCost {
   }
 };
 
-class ProgressCallback : public ceres::IterationCallback {
- public:
-  explicit ProgressCallback(const std::function<bool(int, double)>& f) : f_(f) {}
-  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
-    return f_(s.iteration, s.cost) ? ceres::SOLVER_CONTINUE : ceres::SOLVER_TERMINATE_SUCCESSFULLY;
-  }
-
- private:
-  const std::function<bool(int, double)>& f_;
-};
 
 }  // namespace
 
@@ -164,9 +155,9 @@ FrequencyFitResult fit_frequency_response(const machine::AxisConfig& config, con
   sopt.function_tolerance = 1e-12;
   sopt.parameter_tolerance = 1e-12;
   sopt.logging_type = ceres::SILENT;
-  std::unique_ptr<ProgressCallback> cb;
+  std::unique_ptr<SolverProgress> cb;
   if (options.progress) {
-    cb = std::make_unique<ProgressCallback>(options.progress);
+    cb = std::make_unique<SolverProgress>(options.progress);
     sopt.callbacks.push_back(cb.get());
   }
   ceres::Solver::Summary summary;

@@ -13,6 +13,7 @@
 
 #include "servobench/common/validate.hpp"
 #include "servobench/identify/covariance.hpp"
+#include "servobench/identify/solver_progress.hpp"
 
 namespace servobench::identify {
 
@@ -170,16 +171,6 @@ struct Stage {
   double seconds = 0.0;
 };
 
-class ProgressCallback : public ceres::IterationCallback {
- public:
-  explicit ProgressCallback(const std::function<bool(int, double)>& f) : f_(f) {}
-  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
-    return f_(s.iteration, s.cost) ? ceres::SOLVER_CONTINUE : ceres::SOLVER_TERMINATE_SUCCESSFULLY;
-  }
-
- private:
-  const std::function<bool(int, double)>& f_;
-};
 
 void check_log(const TimeLog& log, const TimeFitOptions& o) {
   check_positive("TimeLog", "sample_period_s", log.sample_period_s);
@@ -420,9 +411,9 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
     sopt.parameter_tolerance = 1e-12;
     sopt.gradient_tolerance = 1e-14;
     sopt.logging_type = ceres::SILENT;
-    std::unique_ptr<ProgressCallback> cb;
+    std::unique_ptr<SolverProgress> cb;
     if (options.progress) {
-      cb = std::make_unique<ProgressCallback>(options.progress);
+      cb = std::make_unique<SolverProgress>(options.progress);
       sopt.callbacks.push_back(cb.get());
     }
     const auto t0 = std::chrono::steady_clock::now();
