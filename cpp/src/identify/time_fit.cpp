@@ -156,6 +156,32 @@ struct LinkedSegmentCost {
   }
 };
 
+// The layout, the output, the discretisation cache and the known current loop's torque at every sample
+// (i' = wc (u - i), u held over each sample, exactly; it starts at the first torque sample).
+void init_context(FitContext& ctx, const TimeLog& log, const TimeFitOptions& options) {
+  ctx.layout.model = options.model;
+  ctx.layout.current_bw_hz = options.current_bw_hz;
+  ctx.layout.stribeck_exponent = options.stribeck_exponent;
+  ctx.log = &log;
+  ctx.substeps = options.substeps;
+  ctx.inv_scale = 1.0 / options.measurement_scale;
+  ctx.continuity_weight = options.continuity_weight;
+  const ModelLayout& l = ctx.layout;
+  ctx.output_index = log.measured_is_speed ? (log.measured_on_load ? l.load_speed() : l.motor_speed())
+                                           : (log.measured_on_load ? l.load_angle() : l.motor_angle());
+  ctx.cache = std::make_unique<DiscretisationCache>(ctx.layout, log.sample_period_s / options.substeps);
+  const std::size_t n = log.torque_nm.size();
+  ctx.lag.clear();
+  if (!l.lag_states() || n == 0) return;
+  const double e = std::exp(-2.0 * M_PI * options.current_bw_hz * log.sample_period_s);
+  ctx.lag.resize(n);
+  double i = log.torque_nm[0];
+  for (std::size_t k = 0; k < n; ++k) {
+    ctx.lag[k] = i;
+    i = e * i + (1.0 - e) * log.torque_nm[k];
+  }
+}
+
 void run_segment(const FitContext& ctx, const double* p, const double* x0, int start, int count, double* out) {
   if (ctx.layout.model == PlantModel::kRigid)
     simulate_segment<PlantModel::kRigid>(ctx, p, x0, start, count, out, false);
@@ -277,27 +303,9 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
   }
 
   FitContext ctx;
-  ctx.layout.model = model;
-  ctx.layout.current_bw_hz = options.current_bw_hz;
-  ctx.layout.stribeck_exponent = options.stribeck_exponent;
-  ctx.log = &log;
-  ctx.substeps = options.substeps;
-  ctx.inv_scale = 1.0 / options.measurement_scale;
-  ctx.continuity_weight = options.continuity_weight;
-  ctx.output_index = log.measured_is_speed ? (log.measured_on_load ? ctx.layout.load_speed() : ctx.layout.motor_speed())
-                                           : (log.measured_on_load ? ctx.layout.load_angle() : ctx.layout.motor_angle());
+  init_context(ctx, log, options);
   const double ts = log.sample_period_s;
-  ctx.cache = std::make_unique<DiscretisationCache>(ctx.layout, ts / options.substeps);
   const std::size_t n = log.measured.size();
-  if (ctx.layout.lag_states()) {  // the known current loop, exactly: i' = wc (u - i), u held over each sample
-    const double e = std::exp(-2.0 * M_PI * options.current_bw_hz * ts);
-    ctx.lag.resize(n);
-    double i = log.torque_nm[0];
-    for (std::size_t k = 0; k < n; ++k) {
-      ctx.lag[k] = i;
-      i = e * i + (1.0 - e) * log.torque_nm[k];
-    }
-  }
 
   // Internally the breakaway entry is the Stribeck excess Fs - Fc >= 0 (plant_model.hpp).
   const std::size_t si = static_cast<std::size_t>(static_index(model));
@@ -551,24 +559,8 @@ std::vector<double> simulate_model(const TimeLog& log, const std::vector<double>
   if (static_cast<int>(initial_state.size()) != mechanical_states(options.model))
     throw std::invalid_argument("simulate_model: wrong number of initial states");
   FitContext ctx;
-  ctx.layout.model = options.model;
-  ctx.layout.current_bw_hz = options.current_bw_hz;
-  ctx.layout.stribeck_exponent = options.stribeck_exponent;
-  ctx.log = &log;
-  ctx.substeps = options.substeps;
-  ctx.output_index = log.measured_is_speed ? (log.measured_on_load ? ctx.layout.load_speed() : ctx.layout.motor_speed())
-                                           : (log.measured_on_load ? ctx.layout.load_angle() : ctx.layout.motor_angle());
-  ctx.cache = std::make_unique<DiscretisationCache>(ctx.layout, log.sample_period_s / options.substeps);
+  init_context(ctx, log, options);
   const std::size_t n = log.torque_nm.size();
-  if (ctx.layout.lag_states()) {
-    const double e = std::exp(-2.0 * M_PI * options.current_bw_hz * log.sample_period_s);
-    ctx.lag.resize(n);
-    double i = n ? log.torque_nm[0] : 0.0;
-    for (std::size_t k = 0; k < n; ++k) {
-      ctx.lag[k] = i;
-      i = e * i + (1.0 - e) * log.torque_nm[k];
-    }
-  }
   TimeLog padded = log;
   padded.measured.assign(n, 0.0);
   ctx.log = &padded;
