@@ -109,6 +109,55 @@ identify::TimeFitOptions time_options(const std::string& model, double segment_s
   return o;
 }
 
+// A log from arrays.
+identify::TimeLog time_log(const py::handle& torque_nm, const py::handle& measured, double sample_period_s,
+                           bool measured_is_speed, bool measured_on_load) {
+  identify::TimeLog log;
+  log.sample_period_s = sample_period_s;
+  log.torque_nm = real_vector(torque_nm, "torque_nm");
+  log.measured = real_vector(measured, "measured");
+  log.measured_is_speed = measured_is_speed;
+  log.measured_on_load = measured_on_load;
+  return log;
+}
+
+// TimeFitOptions from keyword arguments named after its fields (the others at their defaults).
+identify::TimeFitOptions options_from(const std::string& model, const py::kwargs& kw) {
+  identify::TimeFitOptions o;
+  o.model = model_of(model);
+  auto whole = [&](const char* name, int& field, double lo, double hi) {
+    if (!kw.contains(name)) return;
+    const double v = kw[name].cast<double>();
+    check_integer("TimeFitOptions", name, v, lo, hi);
+    field = static_cast<int>(v);
+  };
+  auto real = [&](const char* name, double& field) {
+    if (kw.contains(name)) field = kw[name].cast<double>();
+  };
+  static const char* known[] = {"segment_samples", "initial_segment_samples", "min_segment_samples", "edge_samples",
+                                "direction_window", "rest_threshold", "substeps", "current_bw_hz",
+                                "stribeck_exponent", "measurement_scale", "num_threads"};
+  for (const auto& item : kw) {
+    const std::string k = py::str(item.first);
+    bool ok = false;
+    for (const char* n : known) ok = ok || k == n;
+    if (!ok) throw py::type_error("unexpected option '" + k + "'");
+  }
+  whole("segment_samples", o.segment_samples, 10, 100000);
+  whole("initial_segment_samples", o.initial_segment_samples, 10, 100000);
+  whole("min_segment_samples", o.min_segment_samples, 3, o.segment_samples);
+  whole("edge_samples", o.edge_samples, 0, 1000);
+  whole("direction_window", o.direction_window, 2, 1000);
+  whole("substeps", o.substeps, 1, 1000);
+  whole("num_threads", o.num_threads, 1, 64);
+  real("rest_threshold", o.rest_threshold);
+  real("current_bw_hz", o.current_bw_hz);
+  real("stribeck_exponent", o.stribeck_exponent);
+  real("measurement_scale", o.measurement_scale);
+  o.validate();
+  return o;
+}
+
 }  // namespace
 
 void bind_identify(py::module_& m) {
@@ -132,7 +181,7 @@ void bind_identify(py::module_& m) {
          double edge_samples, double direction_window, double rest_threshold, double substeps,
          double current_bw_hz, double stribeck_exponent, double measurement_scale, double continuity_weight,
          const std::string& loss, double loss_scale, double max_iterations, double num_threads,
-         double max_relative_std_error, const py::object& progress) {
+         double max_relative_std_error, bool hold_stribeck_first, const py::object& progress) {
         identify::TimeLog log;
         log.sample_period_s = sample_period_s;
         log.torque_nm = real_vector(torque_nm, "torque_nm");
@@ -144,6 +193,7 @@ void bind_identify(py::module_& m) {
                          substeps, current_bw_hz, stribeck_exponent, measurement_scale,
                          continuity_weight, loss, loss_scale, max_iterations, num_threads, max_relative_std_error);
         o.progress = iteration_callback(progress);
+        o.hold_stribeck_first = hold_stribeck_first;
         const identify::ParameterSetup s = setup_of(initial, fixed, lower, upper);
         identify::TimeFitResult r;
         {
@@ -166,7 +216,56 @@ void bind_identify(py::module_& m) {
       py::arg("substeps"),
       py::arg("current_bw_hz"), py::arg("stribeck_exponent"), py::arg("measurement_scale"), py::arg("continuity_weight"), py::arg("loss"),
       py::arg("loss_scale"), py::arg("max_iterations"), py::arg("num_threads"), py::arg("max_relative_std_error"),
-      py::arg("progress") = py::none(), "Time-domain grey-box fit of the plant (Ceres). Releases the GIL.");
+      py::arg("hold_stribeck_first") = true, py::arg("progress") = py::none(), "Time-domain grey-box fit of the plant (Ceres). Releases the GIL.");
+
+  m.def(
+      "identify_shooting_problem",
+      [](const py::handle& torque_nm, const py::handle& measured, double sample_period_s, bool measured_is_speed,
+         bool measured_on_load, const std::string& model, const py::kwargs& kw) {
+        const identify::TimeLog log = time_log(torque_nm, measured, sample_period_s, measured_is_speed,
+                                               measured_on_load);
+        const identify::ShootingProblem sp = identify::shooting_problem(log, options_from(model, kw));
+        return py::dict(py::arg("starts") = to_array(sp.starts), py::arg("counts") = to_array(sp.counts),
+                        py::arg("states") = to_array(sp.states), py::arg("state_size") = sp.state_size);
+      },
+      py::arg("torque_nm"), py::arg("measured"), py::kw_only(), py::arg("sample_period_s"),
+      py::arg("measured_is_speed"), py::arg("measured_on_load"), py::arg("model"),
+      "One stage's multiple-shooting layout (segments of about segment_samples, their data-based start states), for "
+      "an outside solver. Options: TimeFitOptions field names.");
+
+  m.def(
+      "identify_shooting_residual",
+      [](const py::handle& torque_nm, const py::handle& measured, double sample_period_s, bool measured_is_speed,
+         bool measured_on_load, const std::string& model, const py::handle& starts, const py::handle& counts,
+         const py::handle& parameters, const py::handle& states, bool jacobian, const py::kwargs& kw) -> py::object {
+        const identify::TimeLog log = time_log(torque_nm, measured, sample_period_s, measured_is_speed,
+                                               measured_on_load);
+        const identify::TimeFitOptions o = options_from(model, kw);
+        identify::ShootingProblem sp;
+        for (double v : real_vector(starts, "starts")) sp.starts.push_back(static_cast<int>(v));
+        for (double v : real_vector(counts, "counts")) sp.counts.push_back(static_cast<int>(v));
+        if (sp.starts.size() != sp.counts.size()) throw py::value_error("starts and counts must have the same length");
+        sp.state_size = identify::mechanical_states(o.model);
+        sp.states.assign(sp.starts.size() * static_cast<std::size_t>(sp.state_size), 0.0);
+        const std::vector<double> p = real_vector(parameters, "parameters");
+        const std::vector<double> x = real_vector(states, "states");
+        identify::SparseJacobian jac;
+        std::vector<double> r;
+        {
+          py::gil_scoped_release release;
+          r = identify::shooting_residual(log, o, sp, p, x, jacobian ? &jac : nullptr);
+        }
+        if (!jacobian) return to_array(r);
+        return py::make_tuple(to_array(r), py::make_tuple(to_array(jac.values), to_array(jac.col_index),
+                                                          to_array(jac.row_ptr)),
+                              py::make_tuple(jac.rows, jac.cols));
+      },
+      py::arg("torque_nm"), py::arg("measured"), py::kw_only(), py::arg("sample_period_s"),
+      py::arg("measured_is_speed"), py::arg("measured_on_load"), py::arg("model"), py::arg("starts"),
+      py::arg("counts"), py::arg("parameters"), py::arg("states"), py::arg("jacobian") = false,
+      "The fit's scaled residual at the INTERNAL parameter vector (breakaway entry = Stribeck excess Fs - Fc) and "
+      "the segment states; with jacobian=True also (residual, (data, indices, indptr), shape) of its Jacobian over "
+      "[parameters, states] in CSR. Releases the GIL.");
 
   m.def(
       "identify_simulate",

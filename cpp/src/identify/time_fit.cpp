@@ -111,7 +111,6 @@ void simulate_segment(const FitContext& ctx, const T* p, const T* x0, int start,
   for (int i = 0; i < n - nl; ++i) x[nl + i] = x0[i];
   char stuck[2] = {0, 0};
   for (int b = 0; b < nb; ++b) stuck[b] = value_of(x[idx[b].speed]) == 0.0 ? 1 : 0;
-  const T zero(0.0);
   const T t_load = -load_nm;
   const std::vector<double>& u = ctx.log->torque_nm;
   const std::vector<double>& y = ctx.log->measured;
@@ -119,9 +118,8 @@ void simulate_segment(const FitContext& ctx, const T* p, const T* x0, int start,
     const std::size_t s = static_cast<std::size_t>(start + k);
     out[k] = residual ? T((x[ctx.output_index] - T(y[s])) * ctx.inv_scale) : T(x[ctx.output_index]);
     if (k + 1 == count && !continuity) break;
-    const T uk(u[s]);
-    for (int sub = 0; sub < ctx.substeps; ++sub)
-      plant::advance_with_dry_friction(static_cast<std::size_t>(nb), idx, dry, phis, gammas, uk, zero, t_load, x, xf,
+    for (int sub = 0; sub < ctx.substeps; ++sub)  // the logged command is data (double): no Jet products for it
+      plant::advance_with_dry_friction(static_cast<std::size_t>(nb), idx, dry, phis, gammas, u[s], 0.0, t_load, x, xf,
                                        stuck);
   }
   if (continuity) {  // the next segment must start where this one ends (angles in counts, speeds in counts/sample)
@@ -190,8 +188,7 @@ void run_segment(const FitContext& ctx, const double* p, const double* x0, int s
 }
 
 struct Stage {
-  std::vector<int> starts, counts;
-  std::vector<std::vector<double>> x0;
+  ShootingProblem shooting;
   std::unique_ptr<ceres::Problem> problem;
   ceres::Solver::Summary summary;
   double seconds = 0.0;
@@ -264,6 +261,82 @@ void shooting_segments(const TimeLog& log, const TimeFitOptions& o, std::vector<
   }
 }
 
+// Where the segments start: a line through each segment's first samples (angle and speed; a two-mass load starts
+// with the motor).
+void initial_states(const TimeLog& log, ShootingProblem& sp) {
+  const auto& y = log.measured;
+  const double ts = log.sample_period_s;
+  const int ns = sp.state_size;
+  sp.states.assign(sp.starts.size() * static_cast<std::size_t>(ns), 0.0);
+  for (std::size_t s = 0; s < sp.starts.size(); ++s) {
+    const std::size_t a = static_cast<std::size_t>(sp.starts[s]);
+    const std::size_t m = std::min<std::size_t>(8, static_cast<std::size_t>(sp.counts[s]));
+    double angle = 0.0, speed = 0.0;
+    if (log.measured_is_speed) {
+      speed = y[a];
+    } else {
+      double s_t = 0, sy = 0, stt = 0, sty = 0;
+      for (std::size_t j = 0; j < m; ++j) {
+        const double tj = static_cast<double>(j) * ts;
+        s_t += tj;
+        sy += y[a + j];
+        stt += tj * tj;
+        sty += tj * y[a + j];
+      }
+      const double md = static_cast<double>(m);
+      speed = (md * sty - s_t * sy) / (md * stt - s_t * s_t);
+      angle = (sy - speed * s_t) / md;
+    }
+    double* v = sp.states.data() + s * static_cast<std::size_t>(ns);
+    v[0] = angle;
+    v[1] = speed;
+    if (ns == 4) {
+      v[2] = angle;
+      v[3] = speed;
+    }
+  }
+}
+
+ceres::LossFunction* make_loss(const TimeFitOptions& options) {
+  switch (options.loss) {
+    case Loss::kHuber: return new ceres::HuberLoss(options.loss_scale);
+    case Loss::kSoftLOne: return new ceres::SoftLOneLoss(options.loss_scale);
+    case Loss::kCauchy: return new ceres::CauchyLoss(options.loss_scale);
+    default: return nullptr;
+  }
+}
+
+// One residual block per segment: the model simulated from the segment's state (the AutoDiff cost); with
+// continuity_weight > 0, adjacent segments are linked. with_loss: the robust loss of the options.
+void add_segment_blocks(ceres::Problem& problem, const FitContext& ctx, ShootingProblem& sp, double* p,
+                        const TimeFitOptions& options, bool with_loss = true) {
+  const int nseg = static_cast<int>(sp.starts.size());
+  const std::size_t ns = static_cast<std::size_t>(sp.state_size);
+  for (int s = 0; s < nseg; ++s) {
+    const std::size_t u = static_cast<std::size_t>(s);
+    const int a = sp.starts[u], c = sp.counts[u];
+    const bool linked = options.continuity_weight > 0.0 && s + 1 < nseg && sp.starts[u + 1] == a + c;
+    using ceres::AutoDiffCostFunction;
+    using ceres::DYNAMIC;
+    constexpr PlantModel R = PlantModel::kRigid, W = PlantModel::kTwoMass;
+    ceres::CostFunction* cost = nullptr;
+    if (options.model == R && linked)
+      cost = new AutoDiffCostFunction<LinkedSegmentCost<R>, DYNAMIC, 6, 2, 2>(new LinkedSegmentCost<R>{&ctx, a, c}, c + 2);
+    else if (options.model == R)
+      cost = new AutoDiffCostFunction<SegmentCost<R>, DYNAMIC, 6, 2>(new SegmentCost<R>{&ctx, a, c}, c);
+    else if (linked)
+      cost = new AutoDiffCostFunction<LinkedSegmentCost<W>, DYNAMIC, 11, 4, 4>(new LinkedSegmentCost<W>{&ctx, a, c}, c + 4);
+    else
+      cost = new AutoDiffCostFunction<SegmentCost<W>, DYNAMIC, 11, 4>(new SegmentCost<W>{&ctx, a, c}, c);
+    ceres::LossFunction* loss = with_loss ? make_loss(options) : nullptr;
+    double* x = sp.states.data() + u * ns;
+    if (linked)
+      problem.AddResidualBlock(cost, loss, p, x, x + ns);
+    else
+      problem.AddResidualBlock(cost, loss, p, x);
+  }
+}
+
 std::string loss_name(Loss l) {
   switch (l) {
     case Loss::kHuber: return "Huber";
@@ -304,7 +377,6 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
 
   FitContext ctx;
   init_context(ctx, log, options);
-  const double ts = log.sample_period_s;
   const std::size_t n = log.measured.size();
 
   // Internally the breakaway entry is the Stribeck excess Fs - Fc >= 0 (plant_model.hpp).
@@ -320,82 +392,13 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
   // One stage of the continuation: segments of about `len` samples, their start states from the data, solved from the
   // present parameters p.
   auto run_stage = [&](int len, bool hold_stribeck, Stage& st) {
-    // Segments: runs of one-way motion (see the header), split into pieces of about segment_samples.
     TimeFitOptions so = options;
     so.segment_samples = len;
     so.min_segment_samples = std::min(options.min_segment_samples, len);
-    std::vector<int>& starts = st.starts;
-    std::vector<int>& counts = st.counts;
-    shooting_segments(log, so, &starts, &counts);
-    const int nseg = static_cast<int>(starts.size());
-    if (nseg < 2)
-      throw std::invalid_argument("TimeLog: only " + std::to_string(nseg) +
-                                  " stretch(es) of one-way motion long enough to fit (at least 2 of " +
-                                  std::to_string(options.min_segment_samples) +
-                                  " samples are needed): the log is too short or the axis hardly moves");
-
-    std::vector<std::vector<double>>& x0 = st.x0;
-    x0.assign(static_cast<std::size_t>(nseg), std::vector<double>(static_cast<std::size_t>(ns)));
-    for (int s = 0; s < nseg; ++s) {  // start states from the data: a straight line through the first samples
-      const std::size_t a = static_cast<std::size_t>(starts[static_cast<std::size_t>(s)]);
-      const std::size_t m = std::min<std::size_t>(8, static_cast<std::size_t>(counts[static_cast<std::size_t>(s)]));
-      double angle = 0.0, speed = 0.0;
-      if (log.measured_is_speed) {
-        speed = y[a];
-      } else {
-        double s_t = 0, sy = 0, stt = 0, sty = 0;
-        for (std::size_t j = 0; j < m; ++j) {
-          const double tj = static_cast<double>(j) * ts;
-          s_t += tj;
-          sy += y[a + j];
-          stt += tj * tj;
-          sty += tj * y[a + j];
-        }
-        const double md = static_cast<double>(m);
-        speed = (md * sty - s_t * sy) / (md * stt - s_t * s_t);
-        angle = (sy - speed * s_t) / md;
-      }
-      auto& v = x0[static_cast<std::size_t>(s)];
-      v[0] = angle;
-      v[1] = speed;
-      if (ns == 4) {
-        v[2] = angle;
-        v[3] = speed;
-      }
-    }
-
+    st.shooting = shooting_problem(log, so);
     st.problem = std::make_unique<ceres::Problem>();
     ceres::Problem& problem = *st.problem;
-    std::vector<ceres::ResidualBlockId> blocks;
-    for (int s = 0; s < nseg; ++s) {
-      ceres::CostFunction* cost = nullptr;
-      const int a = starts[static_cast<std::size_t>(s)], c = counts[static_cast<std::size_t>(s)];
-      const bool linked = options.continuity_weight > 0.0 && s + 1 < nseg &&
-                          starts[static_cast<std::size_t>(s) + 1] == a + c;
-      using ceres::AutoDiffCostFunction;
-      using ceres::DYNAMIC;
-      constexpr PlantModel R = PlantModel::kRigid, W = PlantModel::kTwoMass;
-      if (model == R && linked)
-        cost = new AutoDiffCostFunction<LinkedSegmentCost<R>, DYNAMIC, 6, 2, 2>(new LinkedSegmentCost<R>{&ctx, a, c}, c + 2);
-      else if (model == R)
-        cost = new AutoDiffCostFunction<SegmentCost<R>, DYNAMIC, 6, 2>(new SegmentCost<R>{&ctx, a, c}, c);
-      else if (linked)
-        cost = new AutoDiffCostFunction<LinkedSegmentCost<W>, DYNAMIC, 11, 4, 4>(new LinkedSegmentCost<W>{&ctx, a, c}, c + 4);
-      else
-        cost = new AutoDiffCostFunction<SegmentCost<W>, DYNAMIC, 11, 4>(new SegmentCost<W>{&ctx, a, c}, c);
-      ceres::LossFunction* loss = nullptr;
-      switch (options.loss) {
-        case Loss::kHuber: loss = new ceres::HuberLoss(options.loss_scale); break;
-        case Loss::kSoftLOne: loss = new ceres::SoftLOneLoss(options.loss_scale); break;
-        case Loss::kCauchy: loss = new ceres::CauchyLoss(options.loss_scale); break;
-        default: break;
-      }
-      const std::size_t u = static_cast<std::size_t>(s);
-      if (linked)
-        blocks.push_back(problem.AddResidualBlock(cost, loss, p.data(), x0[u].data(), x0[u + 1].data()));
-      else
-        blocks.push_back(problem.AddResidualBlock(cost, loss, p.data(), x0[u].data()));
-    }
+    add_segment_blocks(problem, ctx, st.shooting, p.data(), options);
     std::vector<int> constant;
     for (int i = 0; i < np; ++i)
       if (fixed[static_cast<std::size_t>(i)] || (hold_stribeck && (i == static_index(model) || i == stribeck_index(model))))
@@ -409,7 +412,9 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
     }
     // A speed log does not see the absolute angle: hold the motor angle of each segment (the twist stays free).
     if (log.measured_is_speed)
-      for (auto& v : x0) problem.SetManifold(v.data(), new ceres::SubsetManifold(ns, {0}));
+      for (std::size_t i = 0; i < st.shooting.starts.size(); ++i)
+        problem.SetManifold(st.shooting.states.data() + i * static_cast<std::size_t>(ns),
+                            new ceres::SubsetManifold(ns, {0}));
 
     ceres::Solver::Options sopt;
     sopt.linear_solver_type = ceres::DENSE_SCHUR;
@@ -438,7 +443,8 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
   lengths.push_back(options.segment_samples);
   // With the Stribeck peak free, a first stage holds its level and speed at their guesses: with inertia, viscous and
   // Coulomb friction far off, the peak's parameters drift to where the peak vanishes (ws -> 0), and stay there.
-  const bool stribeck_free = !fixed[si] || !fixed[static_cast<std::size_t>(stribeck_index(model))];
+  const bool stribeck_free = options.hold_stribeck_first &&
+                             (!fixed[si] || !fixed[static_cast<std::size_t>(stribeck_index(model))]);
   if (stribeck_free) lengths.insert(lengths.begin(), lengths.front());
   Stage st;
   int total_iterations = 0;
@@ -452,9 +458,9 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
   }
   ceres::Solver::Summary& summary = st.summary;
   ceres::Problem& problem = *st.problem;
-  std::vector<int>& starts = st.starts;
-  std::vector<int>& counts = st.counts;
-  std::vector<std::vector<double>>& x0 = st.x0;
+  const std::vector<int>& starts = st.shooting.starts;
+  const std::vector<int>& counts = st.shooting.counts;
+  const auto x0 = [&](int s) { return st.shooting.states.data() + s * ns; };
   const int nseg = static_cast<int>(starts.size());
   const int len = options.segment_samples;
 
@@ -464,7 +470,7 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
   result.residual.assign(n, std::numeric_limits<double>::quiet_NaN());
   for (int s = 0; s < nseg; ++s) {
     const std::size_t a = static_cast<std::size_t>(starts[static_cast<std::size_t>(s)]);
-    run_segment(ctx, p.data(), x0[static_cast<std::size_t>(s)].data(), static_cast<int>(a),
+    run_segment(ctx, p.data(), x0(s), static_cast<int>(a),
                 counts[static_cast<std::size_t>(s)], result.predicted.data() + a);
   }
   double ss = 0.0, mean = 0.0;
@@ -486,7 +492,7 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
   // Standard errors: the Jacobian at the solution, segment states eliminated.
   ceres::Problem::EvaluateOptions eopt;
   eopt.parameter_blocks.push_back(p.data());
-  for (auto& v : x0) eopt.parameter_blocks.push_back(v.data());
+  for (int s = 0; s < nseg; ++s) eopt.parameter_blocks.push_back(x0(s));
   eopt.apply_loss_function = false;
   eopt.num_threads = options.num_threads;
   double cost_at = 0.0;
@@ -548,6 +554,67 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
   }
   fs.report = os.str();
   return result;
+}
+
+ShootingProblem shooting_problem(const TimeLog& log, const TimeFitOptions& options) {
+  options.validate();
+  check_log(log, options);
+  ShootingProblem sp;
+  sp.state_size = mechanical_states(options.model);
+  shooting_segments(log, options, &sp.starts, &sp.counts);
+  const int nseg = static_cast<int>(sp.starts.size());
+  if (nseg < 2)
+    throw std::invalid_argument("TimeLog: only " + std::to_string(nseg) +
+                                " stretch(es) of one-way motion long enough to fit (at least 2 of " +
+                                std::to_string(options.min_segment_samples) +
+                                " samples are needed): the log is too short or the axis hardly moves");
+  initial_states(log, sp);
+  return sp;
+}
+
+std::vector<double> shooting_residual(const TimeLog& log, const TimeFitOptions& options,
+                                      const ShootingProblem& problem, const std::vector<double>& p,
+                                      const std::vector<double>& states, SparseJacobian* jacobian) {
+  options.validate();
+  check_log(log, options);
+  if (static_cast<int>(p.size()) != parameter_count(options.model))
+    throw std::invalid_argument("shooting_residual: the " + std::string(model_name(options.model)) + " model has " +
+                                std::to_string(parameter_count(options.model)) + " parameters, got " +
+                                std::to_string(p.size()));
+  if (states.size() != problem.states.size() || problem.state_size != mechanical_states(options.model))
+    throw std::invalid_argument("shooting_residual: states must hold " + std::to_string(problem.states.size()) +
+                                " values (the problem's segments times its state size), got " +
+                                std::to_string(states.size()));
+  for (std::size_t s = 0; s < problem.starts.size(); ++s)
+    if (problem.starts[s] < 0 || problem.counts[s] < 1 ||
+        static_cast<std::size_t>(problem.starts[s] + problem.counts[s]) > log.measured.size())
+      throw std::invalid_argument("shooting_residual: segment " + std::to_string(s) + " lies outside the log");
+  FitContext ctx;
+  init_context(ctx, log, options);
+  ShootingProblem sp = problem;
+  sp.states = states;
+  std::vector<double> pv = p;
+  ceres::Problem::Options po;
+  ceres::Problem cp(po);
+  add_segment_blocks(cp, ctx, sp, pv.data(), options, false);
+  ceres::Problem::EvaluateOptions eopt;
+  eopt.parameter_blocks.push_back(pv.data());
+  for (std::size_t s = 0; s < sp.starts.size(); ++s)
+    eopt.parameter_blocks.push_back(sp.states.data() + s * static_cast<std::size_t>(sp.state_size));
+  eopt.apply_loss_function = false;
+  eopt.num_threads = options.num_threads;
+  double cost = 0.0;
+  std::vector<double> residual;
+  ceres::CRSMatrix crs;
+  cp.Evaluate(eopt, &cost, &residual, nullptr, jacobian ? &crs : nullptr);
+  if (jacobian) {
+    jacobian->rows = crs.num_rows;
+    jacobian->cols = crs.num_cols;
+    jacobian->row_ptr = crs.rows;
+    jacobian->col_index = crs.cols;
+    jacobian->values = crs.values;
+  }
+  return residual;
 }
 
 std::vector<double> simulate_model(const TimeLog& log, const std::vector<double>& parameters,

@@ -56,6 +56,8 @@ struct TimeFitOptions {
   double continuity_weight = 0.0;
   Loss loss = Loss::kNone;          // robust loss on the scaled residuals
   double loss_scale = 3.0;          // where the robust loss departs from least squares, in measurement_scale units
+  // With the Stribeck peak free, a first stage holds its level and speed at their guesses (see fit_time_domain).
+  bool hold_stribeck_first = true;
   int max_iterations = 100;         // 1..10000
   int num_threads = 1;              // 1..64
   double max_relative_std_error = 0.2;  // a free parameter less certain than this is reported not identifiable
@@ -84,6 +86,29 @@ struct TimeFitResult {
 // Fits the plant. Throws std::invalid_argument for bad input (lengths, non-finite values, a log shorter than two
 // segments, bounds not around the initial values).
 TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, const TimeFitOptions& options);
+
+// One stage's multiple-shooting problem laid out for an outside least-squares solver (the benchmark against SciPy
+// solves exactly what Ceres solves): the segments of about options.segment_samples, their start states from the
+// data (a line through each segment's first samples), and the residual with its Jacobian.
+struct ShootingProblem {
+  std::vector<int> starts, counts;  // first sample and length of every segment
+  std::vector<double> states;       // initial mechanical state of every segment, concatenated (state_size each)
+  int state_size = 0;
+};
+ShootingProblem shooting_problem(const TimeLog& log, const TimeFitOptions& options);
+
+struct SparseJacobian {  // compressed rows
+  int rows = 0, cols = 0;
+  std::vector<int> row_ptr, col_index;
+  std::vector<double> values;
+};
+
+// The residual vector (measured - simulated, over measurement_scale; no loss applied) at the INTERNAL parameter
+// vector p (the breakaway entry holds the Stribeck excess Fs - Fc, see plant_model.hpp) and the segment states;
+// with jacobian != nullptr also d residual / d [p, states] by the fit's automatic differentiation.
+std::vector<double> shooting_residual(const TimeLog& log, const TimeFitOptions& options,
+                                      const ShootingProblem& problem, const std::vector<double>& p,
+                                      const std::vector<double>& states, SparseJacobian* jacobian);
 
 // Simulates the model from one initial mechanical state over a whole log (no shooting), for checks and plots:
 // the same code the fit differentiates, on double. Returns the output per sample.
