@@ -22,16 +22,16 @@ LookAheadParams to_pulse_ms(const GeLookAheadParams& p) {
 void GeLookAheadParams::validate() const {
   const char* o = "GeLookAheadParams";
   check_range(o, "t_s", t_s, 0, 1, "corner time, s; empirically 0.001-0.01, GE L1691-1693");
-  if (!(t_s > 0)) throw_invalid(o, "t_s", t_s, "must be > 0 (s)");
+  if (!(t_s > 0)) throw_invalid(o, "t_s", t_s, "is outside the allowed range 0..1 (0 excluded; s, GE L1691-1693)");
   check_range(o, "con", con, 0, 1e9, "pulse/mm; GE L4885");
-  if (!(con > 0)) throw_invalid(o, "con", con, "must be > 0 (pulse/mm)");
+  if (!(con > 0)) throw_invalid(o, "con", con, "is outside the allowed range 0..1000000000 (0 excluded; pulse/mm, GE L4885)");
   check_range(o, "acc_max", acc_max, 0, 1e9, "mm/s^2; empirically 100-10000, GE L1693");
-  if (!(acc_max > 0)) throw_invalid(o, "acc_max", acc_max, "must be > 0 (mm/s^2)");
+  if (!(acc_max > 0)) throw_invalid(o, "acc_max", acc_max, "is outside the allowed range 0..1000000000 (0 excluded; mm/s^2, GE L1693)");
   if (!(acc > 0 && acc < acc_max))
     throw_invalid(o, "acc", acc, "must be in the open interval (0, acc_max = " + format_value(acc_max) +
                                      ") mm/s^2 (GE L1695: smaller than the maximum acceleration)");
   check_range(o, "vel", vel, 0, 1e9, "feed, mm/s; GE L1697");
-  if (!(vel > 0)) throw_invalid(o, "vel", vel, "must be > 0 (mm/s)");
+  if (!(vel > 0)) throw_invalid(o, "vel", vel, "is outside the allowed range 0..1000000000 (0 excluded; mm/s, GE L1697)");
   check_integer(o, "n", n, 1, 32766, "segments; GE L4885");
   if (acc_max * con / 1e6 > 32767) throw_invalid(o, "acc_max", acc_max, "exceeds 32767 pulse/ms^2 with this con");
 }
