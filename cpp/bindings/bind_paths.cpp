@@ -10,7 +10,10 @@
 #include "arrays.hpp"
 #include "param_class.hpp"
 #include "servobench/common/validate.hpp"
+#include "servobench/motion/adlink_interpolation.hpp"
 #include "servobench/motion/coord_system.hpp"
+#include "servobench/motion/crd_fifo_pair.hpp"
+#include "servobench/motion/ge_lookahead.hpp"
 #include "servobench/motion/lookahead.hpp"
 #include "servobench/motion/path_generator.hpp"
 #include "servobench/motion/path_segment.hpp"
@@ -57,6 +60,44 @@ py::array_t<double> matrix(const std::vector<double>& v, std::size_t cols) {
 py::array_t<double> crd_array(const CrdPoint& p, int dim) {
   return to_array(std::vector<double>(p.begin(), p.begin() + dim));
 }
+
+py::dict recording_dict(const motion::PathRecording& r) {
+  py::dict d;
+  d["t_ms"] = to_array(r.t_ms);
+  d["pos"] = matrix(r.crd, static_cast<std::size_t>(r.dim));
+  d["axis_pos"] = matrix(r.axis_pos, r.axes.size());
+  d["axes"] = r.axes;
+  d["speed"] = to_array(r.speed);
+  d["acc"] = to_array(r.acc);
+  d["segments"] = to_array(r.segments);
+  d["gpo"] = to_array(r.gpo);
+  d["aux_axes"] = r.aux_axes;
+  d["aux"] = matrix(r.aux, r.aux_axes.size());
+  return d;
+}
+
+template <class G>
+py::dict record_py(G& g, double ticks, bool until_done) {
+  check_integer("record", "ticks", ticks, 0, 1e8);
+  motion::PathRecording r;
+  {
+    py::gil_scoped_release release;
+    r = motion::record(g, static_cast<std::size_t>(ticks), until_done);
+  }
+  return recording_dict(r);
+}
+
+motion::SpacePoint space_point(const std::vector<double>& v, const char* what) {
+  if (v.size() > 6) throw std::invalid_argument(std::string(what) + " has at most 6 coordinates");
+  motion::SpacePoint p{};
+  for (std::size_t k = 0; k < v.size(); ++k) p[k] = v[k];
+  return p;
+}
+
+motion::Vec3 vec3(const std::vector<double>& v) {
+  if (v.size() != 3) throw std::invalid_argument("normal must have 3 components");
+  return {v[0], v[1], v[2]};
+}
 }  // namespace
 
 void bind_paths(py::module_& m) {
@@ -77,6 +118,10 @@ void bind_paths(py::module_& m) {
              "GT per-axis corner acceleration limit (AccLmt), pulse/ms^2; 0 = off")
       .field("return_to_stop_point", &PathSetup::return_to_stop_point,
              "resume away from the breakpoint returns to it (GT/GE) instead of being refused (GUC/iDEABOX)")
+      .field("start_vel", &PathSetup::start_vel,
+             "GE GT_SetStrtVel start velocity, unit/ms (GE default 0.5 pulse/ms); 0 = from and to rest")
+      .field("resume_tolerance", &PathSetup::resume_tolerance,
+             "unit per coordinate: a resume this close to the breakpoint is accepted (GUC/iDEABOX)")
       .finish();
 
   ParamClass<LookAheadParams>(m, "LookAheadParams",
@@ -203,7 +248,10 @@ void bind_paths(py::module_& m) {
       .def_property_readonly("gpo", [](const PathState& s) { return s.do_words[0]; }, "general outputs word")
       .def_property_readonly("enable", [](const PathState& s) { return s.do_words[1]; })
       .def_property_readonly("clear", [](const PathState& s) { return s.do_words[2]; })
-      .def_property_readonly("da", [](const PathState& s) { return std::vector<double>(s.da.begin(), s.da.end()); });
+      .def_property_readonly("da", [](const PathState& s) { return std::vector<double>(s.da.begin(), s.da.end()); })
+      .def_readonly("limits_pos", &PathState::limits_pos, "bit k: positive limit of axis k+1 enabled (BufLmtsOn/Off)")
+      .def_readonly("limits_neg", &PathState::limits_neg, "bit k: negative limit of axis k+1 enabled")
+      .def_readonly("io_stop_axis", &PathState::io_stop_axis, "axis whose armed stop input stopped motion last, 0 none");
 
   py::class_<PathGenerator>(m, "PathGenerator",
       "One coordinate system's path interpolator, stepped once per motion cycle (see docs/paths.md).")
@@ -254,6 +302,24 @@ void bind_paths(py::module_& m) {
            py::arg("modal"))
       .def("buf_gear", &PathGenerator::buf_gear, py::arg("axis"), py::arg("distance"))
       .def("set_user_seg_num", &PathGenerator::set_user_seg_num, py::arg("seg_num"))
+      .def("buf_lmts", &PathGenerator::buf_lmts, py::arg("axis"), py::arg("limit_type"), py::arg("on"),
+           "GT_BufLmtsOn (on) / GT_BufLmtsOff: axis 1..16, limit_type 0 positive, 1 negative, -1 both.")
+      .def("buf_set_stop_io", &PathGenerator::buf_set_stop_io, py::arg("axis"), py::arg("stop_type"),
+           py::arg("input_type"), py::arg("input_index"),
+           "GT_BufSetStopIo: axis 1..8, stop_type 0 emergency / 1 smooth, input_type 0 +limit, 1 -limit, 2 alarm,\n"
+           "3 home, 4 GPI; input_index 1..8 (GPI 1..16).")
+      .def("set_input", &PathGenerator::set_input, py::arg("input_type"), py::arg("index"), py::arg("active"),
+           "The logical state of an input (the card's sense applied): input_type 0..4, index 1..8 (GPI 1..16).")
+      .def("input", &PathGenerator::input, py::arg("input_type"), py::arg("index"))
+      .def("stop_io", [](const PathGenerator& g, int axis) -> py::object {
+             const auto& m = g.stop_io(axis);
+             if (!m.armed) return py::none();
+             py::dict d;
+             d["stop_type"] = m.stop_type;
+             d["input_type"] = m.input_type;
+             d["input_index"] = m.input_index;
+             return d;
+           }, py::arg("axis"), "The armed stop input of an axis (dict), or None.")
       .def("flush", &PathGenerator::flush, "GT_CrdData(NULL): window -> FIFO; False if the FIFO filled first")
       .def("start", &PathGenerator::start)
       .def("stop", &PathGenerator::stop, py::arg("abrupt") = false)
@@ -263,26 +329,7 @@ void bind_paths(py::module_& m) {
            }, py::arg("end"), py::arg("vel"), py::arg("acc"))
       .def("step", &PathGenerator::step, py::return_value_policy::copy)
       .def_property_readonly("state", &PathGenerator::state, py::return_value_policy::copy)
-      .def("record", [](PathGenerator& g, double ticks, bool until_done) {
-             check_integer("PathGenerator.record", "ticks", ticks, 0, 1e8);
-             PathRecording r;
-             {
-               py::gil_scoped_release release;
-               r = record(g, static_cast<std::size_t>(ticks), until_done);
-             }
-             py::dict d;
-             d["t_ms"] = to_array(r.t_ms);
-             d["pos"] = matrix(r.crd, static_cast<std::size_t>(r.dim));
-             d["axis_pos"] = matrix(r.axis_pos, r.axes.size());
-             d["axes"] = r.axes;
-             d["speed"] = to_array(r.speed);
-             d["acc"] = to_array(r.acc);
-             d["segments"] = to_array(r.segments);
-             d["gpo"] = to_array(r.gpo);
-             d["aux_axes"] = r.aux_axes;
-             d["aux"] = matrix(r.aux, r.aux_axes.size());
-             return d;
-           }, py::arg("ticks"), py::arg("until_done") = false,
+      .def("record", &record_py<PathGenerator>, py::arg("ticks"), py::arg("until_done") = false,
            "Steps `ticks` cycles (or until done); dict of arrays t_ms, pos (n, dim), axis_pos (n, axes), speed,\n"
            "acc, segments, gpo, aux (n, aux axes) and the lists axes, aux_axes.")
       .def_property_readonly("running", &PathGenerator::running)
@@ -302,6 +349,138 @@ void bind_paths(py::module_& m) {
       .def("aux_position", &PathGenerator::aux_position, py::arg("axis"))
       .def_property_readonly("coords", &PathGenerator::coords)
       .def_property_readonly("setup", &PathGenerator::setup);
+
+  py::class_<CrdFifoPair>(m, "CrdFifoPair",
+      "The two FIFOs of a GUC-ECAT / iDEABOX coordinate system (FIFO0 principal, FIFO1 auxiliary) with the\n"
+      "manuals' suspend/resume rules: data to FIFO1 only while FIFO0 is stopped; FIFO0 resumes only at its\n"
+      "breakpoint (within resume_tolerance, pulse per coordinate); starting FIFO0 clears FIFO1.")
+      .def(py::init([](const CoordSystem& c, const PathSetup& s, const std::vector<double>& start, double tol) {
+             return std::make_unique<CrdFifoPair>(c, s, start.empty() ? CrdPoint{} : point(start, "start"), tol);
+           }), py::arg("coords"), py::arg("setup") = PathSetup{}, py::arg("start") = std::vector<double>{},
+           py::arg("resume_tolerance") = 0.5)
+      .def("fifo", py::overload_cast<int>(&CrdFifoPair::fifo), py::arg("k"), py::return_value_policy::reference_internal,
+           "FIFO k (0 or 1) as a PathGenerator: push commands to it; start through start(k).")
+      .def("start", &CrdFifoPair::start, py::arg("fifo"), "GT_CrdStart with option bit = fifo")
+      .def("stop", &CrdFifoPair::stop, py::arg("abrupt") = false)
+      .def("step", &CrdFifoPair::step, py::return_value_policy::copy)
+      .def_property_readonly("state", &CrdFifoPair::state, py::return_value_policy::copy)
+      .def_property_readonly("active", &CrdFifoPair::active, "the FIFO that moved the coordinate system last")
+      .def_property_readonly("running", &CrdFifoPair::running)
+      .def_property_readonly("done", &CrdFifoPair::done)
+      .def_property_readonly("coords", &CrdFifoPair::coords)
+      .def_property_readonly("aux_axes", &CrdFifoPair::aux_axes)
+      .def("aux_position", &CrdFifoPair::aux_position, py::arg("axis"))
+      .def("record", &record_py<CrdFifoPair>, py::arg("ticks"), py::arg("until_done") = false,
+           "As PathGenerator.record, for the coordinate system (the active FIFO's state each cycle).");
+
+  ParamClass<GeLookAheadParams>(m, "GeLookAheadParams",
+      "GE GT_InitLookAhead (module A) in the GE units: t_s (s), acc_max and acc (mm/s^2), vel (mm/s), n\n"
+      "(segments), con (pulse/mm); GE L1681-1701, L4879-4887.")
+      .field("t_s", &GeLookAheadParams::t_s, "corner time T, s, 0 < T <= 1 (empirically 0.001..0.01)")
+      .field("acc_max", &GeLookAheadParams::acc_max, "maximum acceleration, mm/s^2 (empirically 100..10000)")
+      .field("acc", &GeLookAheadParams::acc, "running acceleration, mm/s^2, 0 < acc < acc_max")
+      .field("vel", &GeLookAheadParams::vel, "feed, mm/s (used by segments with vel 0)")
+      .field("n", &GeLookAheadParams::n, "window, segments, 1..32766")
+      .field("con", &GeLookAheadParams::con, "pulse/mm")
+      .finish();
+
+  py::class_<GeLookAhead>(m, "GeLookAhead",
+      "GE look-ahead module A: add_look_data() (GT_AddLookData) then cal_vel() (GT_CalVel) per segment; the\n"
+      "end velocities are in mm/s (send them to the card with GT_SetDccVel in pulse/ms = mm/s * con / 1000).")
+      .def(py::init([](const GeLookAheadParams& p, const std::vector<double>& start) {
+             return GeLookAhead(p, start.empty() ? CrdPoint{} : point(start, "start"));
+           }), py::arg("params"), py::arg("start_mm") = std::vector<double>{})
+      .def("add_look_data", &GeLookAhead::add, py::arg("code"), py::arg("plane_group"), py::arg("r"), py::arg("x"),
+           py::arg("y"), py::arg("z"), py::arg("vel"), py::arg("cx"), py::arg("cy"), py::arg("number"),
+           py::arg("flag"),
+           "code 0 G00, 1 G01, 2 G02 (CW), 3 G03 (CCW); plane_group 17 XY, 18 ZX, 19 YZ; mm, mm/s. Returns 0, or\n"
+           "1 if the point equals the previous one (nothing added).")
+      .def("cal_vel", [](GeLookAhead& g) {
+             double v = 0.0;
+             long long n = 0;
+             const int rc = g.cal_vel(v, n);
+             return py::make_tuple(rc, v, n);
+           }, "(return code, end velocity mm/s, user number): code 0 more follow, 1 this was the last")
+      .def_property_readonly("pending", &GeLookAhead::pending);
+
+  py::enum_<BlendMode>(m, "BlendMode", "ADLINK continuous-interpolation transition modes (Flag, L3085-3143)")
+      .value("ABORT_BLEND", BlendMode::AbortBlend)
+      .value("ABORT_FORCED", BlendMode::AbortForced)
+      .value("ABORT_STOP", BlendMode::AbortStop)
+      .value("BUFFERED", BlendMode::Buffered)
+      .value("BLEND_DECEL", BlendMode::BlendDecel)
+      .value("BLEND_DISTANCE", BlendMode::BlendDistance)
+      .value("BLEND_PERCENT", BlendMode::BlendPercent);
+
+  ParamClass<AdlinkInterpSetup>(m, "AdlinkInterpSetup", "ADLINK interpolator configuration.")
+      .field("period_s", &AdlinkInterpSetup::period_s, "motion cycle, s (ADLINK: 1 ms)")
+      .field("buffer_size", &AdlinkInterpSetup::buffer_size, "pending moves (decision C40: 10)")
+      .finish();
+
+  py::class_<AdlinkInterpolator>(m, "AdlinkInterpolator",
+      "ADLINK interpolation of an axis array (2..6 axes, the first the reference axis whose profile drives the\n"
+      "path): lines, 2-D/3-D arcs, spirals, seven transition modes. Units pulse, pulse/s, s.")
+      .def(py::init<const std::vector<int>&, const AdlinkInterpSetup&, const std::vector<double>&>(), py::arg("axes"),
+           py::arg("setup") = AdlinkInterpSetup{}, py::arg("start") = std::vector<double>{})
+      .def("set_axis_params", &AdlinkInterpolator::set_axis_params, py::arg("axis"), py::arg("params"))
+      .def("push", [](AdlinkInterpolator& g, const std::string& kind, const std::vector<double>& target,
+                      const std::vector<double>& center, const std::vector<double>& normal, double angle_deg, int dir,
+                      double height, double final_radius, bool relative, BlendMode mode, double blend, double vm,
+                      const AdlinkPtpParams* all) {
+             AdlinkMoveSpec s;
+             using K = AdlinkMoveSpec::Kind;
+             if (kind == "line") s.kind = K::Line;
+             else if (kind == "arc2_ca") s.kind = K::Arc2Ca;
+             else if (kind == "arc2_ce") s.kind = K::Arc2Ce;
+             else if (kind == "arc3_ca") s.kind = K::Arc3Ca;
+             else if (kind == "arc3_ce") s.kind = K::Arc3Ce;
+             else if (kind == "spiral_ca") s.kind = K::SpiralCa;
+             else if (kind == "spiral_ce") s.kind = K::SpiralCe;
+             else throw std::invalid_argument("kind = '" + kind + "' is not one of line, arc2_ca, arc2_ce, arc3_ca, "
+                                              "arc3_ce, spiral_ca, spiral_ce");
+             s.relative = relative;
+             s.target = space_point(target, "target");
+             s.center = space_point(center, "center");
+             if (!normal.empty()) s.normal = vec3(normal);
+             s.angle_deg = angle_deg;
+             s.dir = dir;
+             s.height = height;
+             s.final_radius = final_radius;
+             g.push(s, mode, blend, vm, all);
+           }, py::arg("kind"), py::kw_only(), py::arg("target") = std::vector<double>{},
+           py::arg("center") = std::vector<double>{}, py::arg("normal") = std::vector<double>{},
+           py::arg("angle_deg") = 0.0, py::arg("dir") = 0, py::arg("height") = 0.0, py::arg("final_radius") = 0.0,
+           py::arg("relative") = false, py::arg("mode") = BlendMode::Buffered, py::arg("blend") = 0.0,
+           py::arg("vm") = 0.0, py::arg("params") = nullptr)
+      .def("stop_move", &AdlinkInterpolator::stop_move)
+      .def("emg_stop", &AdlinkInterpolator::emg_stop)
+      .def("step", [](AdlinkInterpolator& g) {
+             const auto& s = g.step();
+             return py::make_tuple(s.t_s, to_array(std::vector<double>(s.pos.begin(), s.pos.begin() + g.dim())), s.speed);
+           }, "one motion cycle: (t_s, positions, vector speed pulse/s)")
+      .def_property_readonly("pos", [](const AdlinkInterpolator& g) {
+             return to_array(std::vector<double>(g.state().pos.begin(), g.state().pos.begin() + g.dim()));
+           })
+      .def_property_readonly("tail", [](const AdlinkInterpolator& g) {
+             return to_array(std::vector<double>(g.tail().begin(), g.tail().begin() + g.dim()));
+           })
+      .def_property_readonly("axes", &AdlinkInterpolator::axes)
+      .def_property_readonly("pending", &AdlinkInterpolator::pending)
+      .def_property_readonly("done", &AdlinkInterpolator::done)
+      .def("record", [](AdlinkInterpolator& g, double ticks, bool until_done) {
+             check_integer("AdlinkInterpolator.record", "ticks", ticks, 0, 1e8);
+             AdlinkInterpRecording r;
+             {
+               py::gil_scoped_release release;
+               r = record(g, static_cast<std::size_t>(ticks), until_done);
+             }
+             py::dict d;
+             d["t_s"] = to_array(r.t_s);
+             d["pos"] = matrix(r.pos, static_cast<std::size_t>(r.dim));
+             d["speed"] = to_array(r.speed);
+             d["moves_done"] = to_array(r.moves_done);
+             return d;
+           }, py::arg("ticks"), py::arg("until_done") = false);
 
   m.def("plan_polyline_lookahead", [](const Arr& points, double vel, double acc, const LookAheadParams& p) {
         if (points.ndim() != 2 || points.shape(1) < 1 || points.shape(1) > 4)

@@ -1,5 +1,7 @@
 """Coordinated paths: coordinate systems, line / arc / helix segments, the FIFO with buffered commands, and
-look-ahead (Googol GT, GE, GUC-ECAT and iDEABOX manuals; ADLINK's blending is not modelled).
+look-ahead (Googol GT, GE, GUC-ECAT and iDEABOX manuals), the GUC/iDEABOX FIFO0/FIFO1 pair
+(:class:`CrdFifoPair`), GE look-ahead module A in mm/s (:class:`GeLookAhead`), and ADLINK interpolation with its
+seven transition modes (:class:`AdlinkInterpolator`, units pulse, pulse/s, s).
 
 Units are the path's: coordinate unit (pulse on GE/GUC-ECAT/iDEABOX), time ms, speed unit/ms, acceleration
 unit/ms^2. A :class:`PathGenerator` is stepped once per motion cycle (``PathSetup.cycle_ms``, default 1 ms)::
@@ -25,7 +27,13 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ._core import (
+    AdlinkInterpolator,
+    AdlinkInterpSetup,
+    BlendMode,
     CoordSystem,
+    CrdFifoPair,
+    GeLookAhead,
+    GeLookAheadParams,
     LookAheadParams,
     PathGenerator,
     PathGeometryError,
@@ -37,7 +45,8 @@ from ._core import (
 )
 
 __all__ = [
-    "CoordSystem", "LookAheadParams", "PathGenerator", "PathGeometryError", "PathRun", "PathSegment", "PathSetup",
+    "AdlinkInterpolator", "AdlinkInterpSetup", "AdlinkRun", "BlendMode", "CrdFifoPair", "GeLookAhead",
+    "GeLookAheadParams", "run_adlink", "CoordSystem", "LookAheadParams", "PathGenerator", "PathGeometryError", "PathRun", "PathSegment", "PathSetup",
     "PathState", "corner_speed_limit", "plan_polyline_lookahead", "run_path",
 ]
 
@@ -102,10 +111,38 @@ class PathRun:
         return ax
 
 
-def run_path(gen: PathGenerator, *, max_ticks: int = 10**7, ticks: int | None = None) -> PathRun:
-    """Steps ``gen`` until it is done (path finished and outside axes at rest; at most ``max_ticks`` cycles),
+def run_path(gen, *, max_ticks: int = 10**7, ticks: int | None = None) -> PathRun:
+    """Steps ``gen`` (a :class:`PathGenerator` or a :class:`CrdFifoPair`) until it is done (path finished and outside axes at rest; at most ``max_ticks`` cycles),
     or exactly ``ticks`` cycles if given, and returns the :class:`PathRun`. The GIL is released while stepping."""
     d = gen.record(ticks if ticks is not None else max_ticks, until_done=ticks is None)
     return PathRun(t_ms=d["t_ms"], pos=d["pos"], axis_pos=d["axis_pos"], speed=d["speed"], acc=d["acc"],
                    segments=d["segments"], gpo=d["gpo"], aux=d["aux"], axes=list(d["axes"]),
                    aux_axes=list(d["aux_axes"]))
+
+
+@dataclass
+class AdlinkRun:
+    """A recorded ADLINK interpolation, one row per motion cycle: t_s (s), pos (n, len(axes)) axis positions in
+    the axis-array order (pulse), speed (vector speed, pulse/s), moves_done (finished moves)."""
+
+    t_s: np.ndarray
+    pos: np.ndarray
+    speed: np.ndarray
+    moves_done: np.ndarray
+
+    def __len__(self) -> int:
+        return len(self.t_s)
+
+    def __repr__(self) -> str:
+        dur = self.t_s[-1] if len(self) else 0.0
+        return f"AdlinkRun({len(self)} cycles, {dur:g} s, peak speed {self.speed.max() if len(self) else 0:g} pulse/s)"
+
+
+def run_adlink(interp: AdlinkInterpolator, *, max_ticks: int = 10**7, ticks: int | None = None) -> AdlinkRun:
+    """Steps the ADLINK interpolator until every move is done (at most ``max_ticks`` motion cycles), or exactly
+    ``ticks`` cycles, and returns the :class:`AdlinkRun` (s, pulse, pulse/s). Moves are pushed with
+    ``interp.push(kind, target=..., center=..., normal=..., angle_deg=..., dir=..., height=..., final_radius=...,
+    relative=False, mode=BlendMode.BUFFERED, blend=0, vm=0, params=None)``; kind is one of line, arc2_ca,
+    arc2_ce, arc3_ca, arc3_ce, spiral_ca, spiral_ce (ADLINK L2813-3150). The GIL is released while stepping."""
+    d = interp.record(ticks if ticks is not None else max_ticks, until_done=ticks is None)
+    return AdlinkRun(t_s=d["t_s"], pos=d["pos"], speed=d["speed"], moves_done=d["moves_done"])

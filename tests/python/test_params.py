@@ -154,6 +154,16 @@ BAD = [
     (sb.PathSetup, "stop_dec_abrupt", [-1, 32768, NAN], "0..32767"),
     (sb.PathSetup, "corner_axis_acc", [-1, NAN, INF], "0..1000000000"),
     (sb.PathSetup, "return_to_stop_point", [2], "0/False or 1/True"),
+    (sb.PathSetup, "start_vel", [-1, 32768, NAN], "0..32767"),
+    (sb.PathSetup, "resume_tolerance", [-1, 1e7, NAN], "0..1000000"),
+    (sb.GeLookAheadParams, "t_s", [0, -1, 2, NAN], "0..1"),
+    (sb.GeLookAheadParams, "acc_max", [0, -1, NAN], "0..1000000000"),
+    (sb.GeLookAheadParams, "acc", [0, 1000, 2000, NAN], "open interval (0, acc_max"),
+    (sb.GeLookAheadParams, "vel", [0, -1, NAN], "0..1000000000"),
+    (sb.GeLookAheadParams, "n", [0, 32767, 1.5, NAN], "1..32766"),
+    (sb.GeLookAheadParams, "con", [0, -1, NAN], "0..1000000000"),
+    (sb.AdlinkInterpSetup, "period_s", [0, 1, NAN], "0.0001..0.1"),
+    (sb.AdlinkInterpSetup, "buffer_size", [0, 1.5, NAN], "1..1000000"),
     (sb.LookAheadParams, "t_ms", [0, -1, 1001, NAN], "0..1000"),
     (sb.LookAheadParams, "acc_max", [0, -1, 32768, NAN], "0..32767"),
     (sb.LookAheadParams, "n", [-1, 32767, 1.5, NAN], "0..32766"),
@@ -184,7 +194,8 @@ def test_every_field_is_covered_by_a_bad_input_test():
     covered = {(c, f) for c, f, _v, _e in BAD}
     for cls in (sb.GtServoLaw, sb.ApsServoLaw, sb.TorqueDrive, sb.VelocityDrive, sb.StepperDrive,
                 sb.ServoPositionDrive, sb.RigidPlant, sb.TwoMassPlant,
-                sb.Encoder, sb.Dac, sb.Switches, sb.AdlinkHome, sb.GtHome, sb.AdlinkJog, sb.FollowExSetup, sb.PathSetup, sb.LookAheadParams):
+                sb.Encoder, sb.Dac, sb.Switches, sb.AdlinkHome, sb.GtHome, sb.AdlinkJog, sb.FollowExSetup, sb.PathSetup, sb.LookAheadParams,
+                sb.GeLookAheadParams, sb.AdlinkInterpSetup):
         for field in cls.FIELDS:
             assert (cls, field) in covered, f"{cls.__name__}.{field} has no bad-input test"
 

@@ -37,6 +37,16 @@ void PathSetup::validate() const {
   check_range(o, "stop_dec_smooth", stop_dec_smooth, 0, 32767, "unit/ms^2, 0 = segment acceleration; GUC L704-709");
   check_range(o, "stop_dec_abrupt", stop_dec_abrupt, 0, 32767, "unit/ms^2, 0 = at once; GUC L704-709");
   check_range(o, "corner_axis_acc", corner_axis_acc, 0, 1e9, "pulse/ms^2, 0 = off; GT L1956");
+  check_range(o, "start_vel", start_vel, 0, 32767, "unit/ms, 0 = from rest; GE GT_SetStrtVel L1395-1399, L5748-5756");
+  check_range(o, "resume_tolerance", resume_tolerance, 0, 1e6, "unit per coordinate; GUC L1005, iDEABOX L1648-1653");
+}
+
+void PathGenerator::admit() {
+  if (gate_) gate_(PathGateEvent::Push);
+}
+
+double PathGenerator::floor_vs(double v, double cap) const {
+  return v < setup_.start_vel ? std::min(setup_.start_vel, cap) : v;
 }
 
 void PathGenerator::refuse(const char* what) {
@@ -208,6 +218,7 @@ bool PathGenerator::flush() {
 
 void PathGenerator::push_segment(const PathSegmentGeometry& g, double vel, double acc, double vel_end, bool g0,
                                  bool auto_end, bool stop_at_end) {
+  admit();
   const char* o = "PathSegment";
   check_open(o, "vel", vel, 0, 1e9, "synVel, unit/ms; GUC L449-481: (0, 32767)");
   check_open(o, "acc", acc, 0, 1e9, "synAcc, unit/ms^2; GUC L449-481: (0, 32767)");
@@ -229,10 +240,12 @@ void PathGenerator::push_segment(const PathSegmentGeometry& g, double vel, doubl
 }
 
 void PathGenerator::line(const CrdPoint& end, double vel, double acc, double vel_end, bool g0) {
+  admit();
   push_segment(PathSegmentGeometry::line(tail_, end, coords_.dim()), vel, acc, vel_end, g0);
 }
 
 void PathGenerator::buf_io(int io_type, std::uint32_t mask, std::uint32_t value) {
+  admit();
   check_integer("BufIO", "do_type", io_type, 0, 2, "0 GPO, 1 drive enable, 2 alarm clear; GUC L588-597");
   check_integer("BufIO", "mask", mask, 0, 65535, "16 channels; GUC L588-597");
   check_integer("BufIO", "value", value, 0, 65535, "16 channels; GUC L588-597");
@@ -245,6 +258,7 @@ void PathGenerator::buf_io(int io_type, std::uint32_t mask, std::uint32_t value)
 }
 
 void PathGenerator::buf_delay(double ms) {
+  admit();
   check_integer("BufDelay", "delay_ms", ms, 0, 16383, "ms; GUC L598-602, iDEABOX L4212");
   PathCommand c;
   c.type = PathCommandType::Delay;
@@ -254,6 +268,7 @@ void PathGenerator::buf_delay(double ms) {
 }
 
 void PathGenerator::buf_da(int channel, double value) {
+  admit();
   check_integer("BufDA", "channel", channel, 1, 8, "GUC L603-608");
   check_integer("BufDA", "value", value, -32768, 32767, "counts, -10..+10 V; GUC L603-608");
   PathCommand c;
@@ -264,6 +279,7 @@ void PathGenerator::buf_da(int channel, double value) {
 }
 
 void PathGenerator::buf_move(int axis, double pos, double vel, double acc, bool modal) {
+  admit();
   check_integer("BufMove", "axis", axis, 1, 64, "GUC L646-656, iDEABOX L4373");
   for (int a : coords_.axes())
     if (a == axis) throw_invalid("BufMove", "axis", axis, "is an axis of the coordinate system (GUC L1013)");
@@ -283,6 +299,7 @@ void PathGenerator::buf_move(int axis, double pos, double vel, double acc, bool 
 }
 
 void PathGenerator::buf_gear(int axis, double distance) {
+  admit();
   check_integer("BufGear", "axis", axis, 1, 64, "GUC L657-661, iDEABOX L4234-4248");
   for (int a : coords_.axes())
     if (a == axis) throw_invalid("BufGear", "axis", axis, "is an axis of the coordinate system (GUC L657-661)");
@@ -296,11 +313,108 @@ void PathGenerator::buf_gear(int axis, double distance) {
 }
 
 void PathGenerator::set_user_seg_num(long long n) {
+  admit();
   check_integer("SetUserSegNum", "seg_num", static_cast<double>(n), -2147483648.0, 2147483647.0, "GUC L662-665");
   PathCommand c;
   c.type = PathCommandType::UserSegNum;
   c.user_seg = n;
   enqueue(std::move(c));
+}
+
+void PathGenerator::buf_lmts(int axis, int limit_type, bool on) {
+  admit();
+  const char* o = on ? "BufLmtsOn" : "BufLmtsOff";
+  check_integer(o, "axis", axis, 1, 16, "GUC L609-624: 1..8; iDEABOX L4292-4300: 1..12 (core 1), 1..16 (core 2)");
+  check_integer(o, "limit_type", limit_type, -1, 1, "0 positive, 1 negative, -1 both; GUC L609-624, iDEABOX L4292-4300");
+  PathCommand c;
+  c.type = PathCommandType::Lmts;
+  c.axis = axis;
+  c.limit_type = limit_type;
+  c.limits_on = on;
+  enqueue(std::move(c));
+}
+
+namespace {
+void check_input(const char* o, int input_type, int index) {
+  check_integer(o, "input_type", input_type, 0, 4, "0 +limit, 1 -limit, 2 alarm, 3 home, 4 GPI; GUC L625-645");
+  check_integer(o, "input_index", index, 1, input_type == 4 ? 16 : 8,
+                input_type == 4 ? "GPI 1..16; GUC L625-645 (OCR prints [1,6])" : "1..8; GUC L625-645");
+}
+}  // namespace
+
+void PathGenerator::buf_set_stop_io(int axis, int stop_type, int input_type, int input_index) {
+  admit();
+  const char* o = "BufSetStopIo";
+  check_integer(o, "axis", axis, 1, 8, "GUC L625-645");
+  check_integer(o, "stop_type", stop_type, 0, 1, "0 emergency, 1 smooth; GUC L625-645");
+  check_input(o, input_type, input_index);
+  PathCommand c;
+  c.type = PathCommandType::StopIo;
+  c.axis = axis;
+  c.stop_io = StopIoMapping{true, stop_type, input_type, input_index};
+  enqueue(std::move(c));
+}
+
+void PathGenerator::set_input(int input_type, int index, bool active) {
+  check_input("PathGenerator.set_input", input_type, index);
+  auto& w = inputs_[static_cast<std::size_t>(input_type)];
+  const std::uint32_t bit = 1u << (index - 1);
+  w = active ? (w | bit) : (w & ~bit);
+}
+
+bool PathGenerator::input(int input_type, int index) const {
+  check_input("PathGenerator.input", input_type, index);
+  return (inputs_[static_cast<std::size_t>(input_type)] >> (index - 1)) & 1u;
+}
+
+const StopIoMapping& PathGenerator::stop_io(int axis) const {
+  check_integer("PathGenerator.stop_io", "axis", axis, 1, 8, "GUC L625-645");
+  return stop_io_[static_cast<std::size_t>(axis - 1)];
+}
+
+void PathGenerator::relocate(const CrdPoint& pos) {
+  for (double v : pos)
+    if (!std::isfinite(v)) throw_invalid("PathGenerator", "position", v, "is not a finite coordinate");
+  if (busy()) refuse("PathGenerator.relocate: the path is moving");
+  st_.pos = pos;
+  if (fifo_.empty() && window_.empty() && !cur_valid_ && !has_brk_) tail_ = pos;
+}
+
+void PathGenerator::check_stop_inputs() {
+  for (std::size_t k = 0; k < stop_io_.size(); ++k) {
+    const StopIoMapping& m = stop_io_[k];
+    if (!m.armed) continue;
+    const std::uint32_t bit = 1u << (m.input_index - 1);
+    bool active = (inputs_[static_cast<std::size_t>(m.input_type)] & bit) != 0;
+    // A limit input counts only while that limit is enabled (BufLmtsOn / BufLmtsOff, decision C28).
+    if (m.input_type == 0) active = active && (st_.limits_pos & bit);
+    if (m.input_type == 1) active = active && (st_.limits_neg & bit);
+    if (!active) continue;
+    const int axis = static_cast<int>(k) + 1;
+    const bool abrupt = m.stop_type == 0;
+    bool in_crd = false;
+    for (int a : coords_.axes()) in_crd = in_crd || a == axis;
+    if (in_crd) {
+      if ((running() || act_ == Act::Immediate) && !stop_at_rest_) {
+        st_.io_stop_axis = axis;
+        stop(abrupt);
+      }
+      continue;
+    }
+    auto it = aux_.find(axis);
+    if (it == aux_.end() || !it->second.gen->moving() || it->second.gen->stopping()) continue;
+    st_.io_stop_axis = axis;
+    if (abrupt) {
+      it->second.gen->abrupt_stop();
+    } else {
+      it->second.gen->smooth_stop();
+    }
+    // A modal move aborted by its stop input halts the FIFO (GUC L1055, iDEABOX L2344-2348).
+    if (act_ == Act::WaitMove && wait_axis_ == axis) {
+      act_ = Act::None;
+      enter_stopped();
+    }
+  }
 }
 
 // --- run control -----------------------------------------------------------------------------------------------
@@ -311,26 +425,32 @@ bool PathGenerator::running() const {
 }
 
 void PathGenerator::start() {
+  if (gate_) gate_(PathGateEvent::Start);
   if (act_ == Act::Immediate) refuse("PathGenerator.start: an immediate move is running");
   if (started_ && !stopped_ && busy()) refuse("PathGenerator.start: the path is already running (GT command status bit 12)");
   if (stopped_ && has_brk_ && dist(st_.pos, brk_) > 1e-9) {
-    if (!setup_.return_to_stop_point)
+    double off = 0.0;
+    for (std::size_t k = 0; k < brk_.size(); ++k) off = std::max(off, std::fabs(st_.pos[k] - brk_[k]));
+    if (!setup_.return_to_stop_point && off > setup_.resume_tolerance)
       refuse("PathGenerator.start: the position is not the breakpoint (GUC L1005, iDEABOX L1648-1653)");
     // GT L1940 / GE L1660: back to the breakpoint along a line, ending at rest, then continue.
     aux_line_ = PathSegmentGeometry::line(st_.pos, brk_, coords_.dim());
     const double vel = cur_valid_ ? cap_of(cur_) : setup_.syn_vel_max;
     const double acc = cur_valid_ ? acc_of(cur_) : setup_.syn_acc_max;
-    feed_ = FeedProfile(aux_line_.length(), 0.0, 0.0, vel, acc);
+    const double vs = std::min(setup_.start_vel, vel);
+    feed_ = FeedProfile(aux_line_.length(), vs, vs, vel, acc);
     t_in_ = 0.0;
     act_ = Act::Return;
     stopped_ = false;
     started_ = true;
+    if (gate_) gate_(PathGateEvent::Started);
     return;
   }
   started_ = true;
   stopped_ = false;
   stop_at_rest_ = false;
   if (cur_valid_ && act_ == Act::None) begin_motion(s_cur_);
+  if (gate_) gate_(PathGateEvent::Started);
 }
 
 void PathGenerator::stop(bool abrupt) {
@@ -368,13 +488,14 @@ void PathGenerator::plan_stop_feed(double s_from) {
   // above the speed the plan itself allows there) and keep braking in the next segments.
   const double v0 = act_ == Act::Motion ? feed_.at(t_in_).vel : st_.speed;
   const double room = cur_.geom.length() - s_from;
-  const double need = v0 * v0 / (2.0 * stop_dec_);
+  const double vt = std::min(setup_.start_vel, v0);  // GE: down to the start velocity, then at rest
+  const double need = (v0 * v0 - vt * vt) / (2.0 * stop_dec_);
   s_off_ = s_from;
   t_in_ = 0.0;
   act_ = Act::Motion;
   if (need <= room) {
     stop_inside_ = true;
-    feed_ = need > 0.0 ? FeedProfile(need, v0, 0.0, v0, stop_dec_) : FeedProfile();
+    feed_ = need > 0.0 ? FeedProfile(need, v0, vt, v0, stop_dec_) : FeedProfile();
     return;
   }
   stop_inside_ = false;
@@ -414,8 +535,9 @@ void PathGenerator::move_immediate(const CrdPoint& end, double vel, double acc) 
   check_open("PathImmediate", "vel", vel, 0, 1e9, "unit/ms");
   check_open("PathImmediate", "acc", acc, 0, 1e9, "unit/ms^2");
   aux_line_ = PathSegmentGeometry::line(st_.pos, end, coords_.dim());
-  feed_ = FeedProfile(aux_line_.length(), 0.0, 0.0, std::min(vel * override_, setup_.syn_vel_max),
-                      std::min(acc, setup_.syn_acc_max), 0.0);
+  const double cap = std::min(vel * override_, setup_.syn_vel_max);
+  const double vs = std::min(setup_.start_vel, cap);
+  feed_ = FeedProfile(aux_line_.length(), vs, vs, cap, std::min(acc, setup_.syn_acc_max), 0.0);
   t_in_ = 0.0;
   act_ = Act::Immediate;
   if (!has_brk_ && fifo_.empty() && window_.empty() && !cur_valid_) tail_ = end;
@@ -475,7 +597,9 @@ void PathGenerator::begin_motion(double s_from) {
     t_in_ = 0.0;
     return;
   }
-  feed_ = FeedProfile(L, v0, exit_speed(), cap_of(cur_), acc_of(cur_), cur_.g0 ? 0.0 : setup_.even_time_ms);
+  const double cap = cap_of(cur_);
+  feed_ = FeedProfile(L, floor_vs(v0, cap), floor_vs(exit_speed(), cap), cap, acc_of(cur_),
+                      cur_.g0 ? 0.0 : setup_.even_time_ms);
   s_off_ = s_from;
   t_in_ = 0.0;
   act_ = Act::Motion;
@@ -490,6 +614,14 @@ void PathGenerator::execute_instant(const PathCommand& c) {
     }
     case PathCommandType::Da: st_.da[static_cast<std::size_t>(c.channel - 1)] = c.da; break;
     case PathCommandType::UserSegNum: st_.user_seg_num = c.user_seg; break;
+    case PathCommandType::Lmts: {
+      const std::uint32_t bit = 1u << (c.axis - 1);
+      auto apply = [&](std::uint32_t& w) { w = c.limits_on ? (w | bit) : (w & ~bit); };
+      if (c.limit_type != 1) apply(st_.limits_pos);
+      if (c.limit_type != 0) apply(st_.limits_neg);
+      break;
+    }
+    case PathCommandType::StopIo: stop_io_[static_cast<std::size_t>(c.axis - 1)] = c.stop_io; break;
     case PathCommandType::Gear: pending_gears_.push_back({c.axis, c.pos}); break;
     case PathCommandType::Move: {
       Aux& a = aux(c.axis);
@@ -638,6 +770,7 @@ bool PathGenerator::advance(double& budget) {
 const PathState& PathGenerator::step() {
   double budget = setup_.cycle_ms;
   st_.t_ms += setup_.cycle_ms;
+  check_stop_inputs();
   for (int guard = 0; guard < 1000000 && advance(budget);) ++guard;
   if (act_ != Act::Motion && act_ != Act::Return && act_ != Act::Immediate) st_.speed = st_.acc = 0.0;
   for (auto& kv : aux_) kv.second.gen->step();
@@ -645,26 +778,7 @@ const PathState& PathGenerator::step() {
 }
 
 PathRecording record(PathGenerator& g, std::size_t ticks, bool until_done) {
-  PathRecording r;
-  r.dim = g.coords().dim();
-  r.axes = g.coords().axes();
-  r.aux_axes = g.aux_axes();
-  const std::size_t na = r.axes.size();
-  std::vector<double> ax(na);
-  for (std::size_t k = 0; k < ticks; ++k) {
-    if (until_done && g.done()) break;
-    const PathState& s = g.step();
-    r.t_ms.push_back(s.t_ms);
-    for (int i = 0; i < r.dim; ++i) r.crd.push_back(s.pos[static_cast<std::size_t>(i)]);
-    g.coords().to_axes(s.pos, ax.data());
-    r.axis_pos.insert(r.axis_pos.end(), ax.begin(), ax.end());
-    r.speed.push_back(s.speed);
-    r.acc.push_back(s.acc);
-    r.segments.push_back(static_cast<double>(s.segments_done));
-    r.gpo.push_back(static_cast<double>(s.do_words[0]));
-    for (int a : r.aux_axes) r.aux.push_back(g.aux_position(a));
-  }
-  return r;
+  return record_path(g, ticks, until_done);
 }
 
 }  // namespace servobench::motion

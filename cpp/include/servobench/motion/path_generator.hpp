@@ -23,13 +23,20 @@
 //    once, GT EStpMtn L3336) keeps the breakpoint and the rest of the buffer; start() resumes. A resume away
 //    from the breakpoint returns to it first by a line ending at rest (GT L1940, GE GT_RestoreMtn L1660) or,
 //    with return_to_stop_point = false, is refused (GUC/iDEABOX L1648-1653, return code 1);
-//  - a full FIFO refuses the command (MotionCommandRefused, return code 1; GT command status bit 15).
-// Units: coordinate unit (pulse), ms, unit/ms, unit/ms^2. Decisions C1-C24 in docs/decisions.md.
+//  - a full FIFO refuses the command (MotionCommandRefused, return code 1; GT command status bit 15);
+//  - BufLmtsOn / BufLmtsOff change the limit-enable flags of an axis, BufSetStopIo arms an input as a stop
+//    source of an axis, at their FIFO position (GUC L609-645, iDEABOX L4270-4330). The card's limit logic is
+//    not here (issue 10): set_input() provides the (sense-applied) inputs and an armed, active input stops the
+//    path (coordinate-system axis) or the outside axis (BufMove / BufGear axis) with the armed stop type;
+//  - GE start velocity (GT_SetStrtVel, GE L1395-1399, L1473-1477, L1660): segments leave rest at start_vel
+//    and come back to rest from it (a step at both ends); 0 = from and to rest (GT/GUC/iDEABOX).
+// Units: coordinate unit (pulse), ms, unit/ms, unit/ms^2. Decisions C1-C24, C25-C33 in docs/decisions.md.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <map>
 #include <memory>
 #include <vector>
@@ -38,6 +45,7 @@
 #include "servobench/motion/generator.hpp"
 #include "servobench/motion/lookahead.hpp"
 #include "servobench/motion/path_feed.hpp"
+#include "servobench/motion/path_recording.hpp"
 #include "servobench/motion/path_segment.hpp"
 
 namespace servobench::motion {
@@ -53,10 +61,23 @@ struct PathSetup {
   double stop_dec_abrupt = 0;         // unit/ms^2; 0 = speed 0 at once (GT EStpMtn L3336)
   double corner_axis_acc = 0;         // pulse/ms^2 per motor axis at a corner (GT AccLmt L1956); 0 = off
   bool return_to_stop_point = true;   // GT/GE resume; false: GUC/iDEABOX (resume only at the breakpoint)
+  double start_vel = 0;               // unit/ms: GE GT_SetStrtVel (GE default 0.5 pulse/ms); 0 = from rest
+  double resume_tolerance = 0;        // unit, per coordinate: a resume this close to the breakpoint is accepted
+                                      // even when !return_to_stop_point (closing the gap by a return line)
   void validate() const;
 };
 
-enum class PathCommandType { Motion, Io, Delay, Da, Move, Gear, UserSegNum };
+// BufSetStopIo / set_input input types (GUC L625-645: MC_LIMIT_POSITIVE 0, MC_LIMIT_NEGATIVE 1, MC_ALARM 2,
+// MC_HOME 3, MC_GPI 4) and stop types (0 emergency, 1 smooth).
+enum class StopInput { LimitPositive = 0, LimitNegative = 1, Alarm = 2, Home = 3, Gpi = 4 };
+struct StopIoMapping {
+  bool armed = false;
+  int stop_type = 0;    // 0 emergency (abrupt), 1 smooth
+  int input_type = 0;   // StopInput
+  int input_index = 1;  // 1..8 (GPI 1..16)
+};
+
+enum class PathCommandType { Motion, Io, Delay, Da, Move, Gear, UserSegNum, Lmts, StopIo };
 
 struct PathCommand {
   PathCommandType type = PathCommandType::Motion;
@@ -78,6 +99,9 @@ struct PathCommand {
   double pos = 0.0;         // Move: absolute target; Gear: relative distance (pulse)
   bool modal = false;
   long long user_seg = 0;
+  bool limits_on = false;   // Lmts: BufLmtsOn (true) / BufLmtsOff (false)
+  int limit_type = -1;      // Lmts: 0 positive, 1 negative, -1 both
+  StopIoMapping stop_io;    // StopIo (axis in `axis`)
 };
 
 struct PathState {
@@ -89,7 +113,14 @@ struct PathState {
   long long user_seg_num = 0;     // GT_GetUserSegNum
   std::array<std::uint32_t, 3> do_words{};  // GPO, drive enable, alarm clear outputs (16 bits used)
   std::array<double, 8> da{};     // DA channels 1..8, counts
+  std::uint32_t limits_pos = 0xFFFF;  // bit k: positive limit of axis k+1 enabled (BufLmtsOn/Off)
+  std::uint32_t limits_neg = 0xFFFF;  // bit k: negative limit of axis k+1 enabled
+  int io_stop_axis = 0;           // the axis whose armed stop input stopped motion last (0: none)
 };
+
+// What a coordinate system's owner (CrdFifoPair) is told before a buffered command or a start, and after a
+// successful start (it refuses by throwing MotionCommandRefused).
+enum class PathGateEvent { Push, Start, Started };
 
 class PathGenerator {
  public:
@@ -120,6 +151,11 @@ class PathGenerator {
   void buf_move(int axis, double pos, double vel, double acc, bool modal);
   void buf_gear(int axis, double distance);
   void set_user_seg_num(long long n);
+  // GT_BufLmtsOn / GT_BufLmtsOff: axis 1..16, limit_type 0 positive, 1 negative, -1 both.
+  void buf_lmts(int axis, int limit_type, bool on);
+  // GT_BufSetStopIo: axis 1..8, stop_type 0 emergency / 1 smooth, input_type 0..4 (StopInput), input_index
+  // 1..8 (GPI 1..16).
+  void buf_set_stop_io(int axis, int stop_type, int input_type, int input_index);
   // GT_CrdData(NULL): moves the look-ahead window into the FIFO. False if the FIFO filled first (call again).
   bool flush();
 
@@ -132,6 +168,16 @@ class PathGenerator {
   // A single line from the current position at rest to `end` (GT/GE immediate mode, also how an axis
   // leaves the breakpoint while stopped). Refused while the path or another immediate move runs.
   void move_immediate(const CrdPoint& end, double vel, double acc);
+
+  // --- inputs and owner hooks (not buffered) -------------------------------------------------------------
+  // The logical state of an input (after the card's sense/polarity): input_type 0..4, index 1..8 (GPI 1..16).
+  void set_input(int input_type, int index, bool active);
+  bool input(int input_type, int index) const;
+  const StopIoMapping& stop_io(int axis) const;
+  // The coordinate position was changed by someone else (the other FIFO of the coordinate system): refused
+  // while this generator moves. The tail follows only when nothing is buffered and no breakpoint is kept.
+  void relocate(const CrdPoint& pos);
+  void set_gate(std::function<void(PathGateEvent)> gate) { gate_ = std::move(gate); }
 
   // --- stepping and state ------------------------------------------------------------------------------------
   const PathState& step();
@@ -184,6 +230,9 @@ class PathGenerator {
   void enter_stopped();
   Aux& aux(int axis);
   void update_position();
+  void admit();
+  void check_stop_inputs();
+  double floor_vs(double v, double cap) const;
   static void refuse(const char* what);
 
   CoordSystem coords_;
@@ -213,17 +262,12 @@ class PathGenerator {
   double override_ = 1.0, g0_override_ = 1.0;
   double stop_dec_smooth_ = 0.0, stop_dec_abrupt_ = 0.0;
   std::map<int, Aux> aux_;
+  std::array<StopIoMapping, 8> stop_io_{};
+  std::array<std::uint32_t, 5> inputs_{};
+  std::function<void(PathGateEvent)> gate_;
 };
 
-// Samples `ticks` cycles (or until done() when until_done): time ms, coordinate position (dim columns),
-// motor positions (coords().axes() order), path speed and acceleration, segments done, GPO word, and the
-// positions of the outside axes (aux_axes() at the end, in that order).
-struct PathRecording {
-  int dim = 0;
-  std::vector<int> axes, aux_axes;
-  std::vector<double> t_ms, crd, axis_pos, speed, acc, segments, gpo, aux;
-  std::size_t size() const { return t_ms.size(); }
-};
+// Samples `ticks` cycles (or until done() when until_done): see path_recording.hpp.
 PathRecording record(PathGenerator& g, std::size_t ticks, bool until_done);
 
 }  // namespace servobench::motion
