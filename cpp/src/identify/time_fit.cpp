@@ -43,7 +43,7 @@ using Vec = Eigen::Matrix<T, Eigen::Dynamic, 1, 0, kMaxStates, 1>;
 template <class T>
 using Mat = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxStates, kMaxStates>;
 template <class T>
-using InMat = Eigen::Matrix<T, Eigen::Dynamic, 3, 0, kMaxStates, 3>;
+using InMat = Eigen::Matrix<T, Eigen::Dynamic, 4, 0, kMaxStates, 4>;
 
 inline double value_of(double x) { return x; }
 template <int N>
@@ -74,12 +74,28 @@ struct FitContext {
   ModelLayout layout;
   const TimeLog* log = nullptr;
   std::vector<double> lag;  // current-loop torque at every sample (parameter-free: the loop is known)
+  double lag_decay = 0.0;   // exp(-wc h) over one sub-step h
+  bool has_load = true;     // false: the constant load is held at 0 (no input column for it)
   int substeps = 1;
   int output_index = 0;
   double inv_scale = 1.0;
   double continuity_weight = 1.0;
   mutable std::unique_ptr<DiscretisationCache> cache;
 };
+
+// The mechanical part of a discretisation (value or derivative): the current-loop torque is data (ctx.lag), so the
+// state is mechanical only and the lag's column of phi becomes a fourth input column:
+// x_mech' = phi_mm x_mech + [gamma_m | phi_m,lag] [u, t_motor, t_load, lag].
+Eigen::MatrixXd mechanical_phi(const Eigen::MatrixXd& phi, int nl) {
+  return phi.bottomRightCorner(phi.rows() - nl, phi.cols() - nl);
+}
+Eigen::MatrixXd mechanical_gamma(const Eigen::MatrixXd& phi, const Eigen::MatrixXd& gamma, int nl) {
+  const Eigen::Index nm = gamma.rows() - nl;
+  Eigen::MatrixXd g = Eigen::MatrixXd::Zero(nm, 4);
+  g.leftCols(3) = gamma.bottomRows(nm);
+  if (nl) g.col(3) = phi.block(nl, 0, nm, 1);
+  return g;
+}
 
 // Simulates samples [start, start + count) from the mechanical state x0 with parameters p, writing the output per
 // sample to out (scaled residuals when y is given). T = double or a Ceres Jet.
@@ -89,6 +105,7 @@ void simulate_segment(const FitContext& ctx, const T* p, const T* x0, int start,
   constexpr bool is_double = std::is_same<T, double>::value;
   const ModelLayout& layout = ctx.layout;
   const int nlin = linear_parameter_count(layout.model);
+  const int nl = layout.lag_states();
   double lin[6];
   for (int k = 0; k < nlin; ++k) lin[k] = value_of(p[k]);
   const auto disc = ctx.cache->get(lin, !is_double);
@@ -96,37 +113,54 @@ void simulate_segment(const FitContext& ctx, const T* p, const T* x0, int start,
   std::array<Mat<T>, 4> phis;
   std::array<InMat<T>, 4> gammas;
   for (std::size_t m = 0; m < masks; ++m) {
-    lift(disc->phi[m], disc->dphi[m], phis[m], std::integral_constant<bool, is_double>());
-    lift(disc->gamma[m], disc->dgamma[m], gammas[m], std::integral_constant<bool, is_double>());
+    std::vector<Eigen::MatrixXd> dphi, dgamma;
+    for (std::size_t k = 0; k < disc->dphi[m].size(); ++k) {
+      dphi.push_back(mechanical_phi(disc->dphi[m][k], nl));
+      dgamma.push_back(mechanical_gamma(disc->dphi[m][k], disc->dgamma[m][k], nl));
+    }
+    lift(mechanical_phi(disc->phi[m], nl), dphi, phis[m], std::integral_constant<bool, is_double>());
+    lift(mechanical_gamma(disc->phi[m], disc->gamma[m], nl), dgamma, gammas[m],
+         std::integral_constant<bool, is_double>());
   }
   plant::DryFriction<T> dry[2];
   T load_nm;
   model_friction<M>(layout, p, dry, &load_nm);
   const int nb = body_count(layout.model);
   plant::BodyIndex idx[2] = {layout.body(0), layout.body(1)};
-  const int n = layout.states();
-  const int nl = layout.lag_states();
+  for (auto& b : idx) {  // mechanical state indices
+    b.angle -= nl;
+    b.speed -= nl;
+  }
+  const int n = mechanical_states(layout.model);
+  const int out_index = ctx.output_index - nl;
   Vec<T> x(n), xf(n);
-  if (nl) x[0] = T(ctx.lag[static_cast<std::size_t>(start)]);
-  for (int i = 0; i < n - nl; ++i) x[nl + i] = x0[i];
+  for (int i = 0; i < n; ++i) x[i] = x0[i];
   char stuck[2] = {0, 0};
   for (int b = 0; b < nb; ++b) stuck[b] = value_of(x[idx[b].speed]) == 0.0 ? 1 : 0;
   const T t_load = -load_nm;
   const std::vector<double>& u = ctx.log->torque_nm;
   const std::vector<double>& y = ctx.log->measured;
+  double lag = nl ? ctx.lag[static_cast<std::size_t>(start)] : 0.0;
   for (int k = 0; k < count; ++k) {
     const std::size_t s = static_cast<std::size_t>(start + k);
-    out[k] = residual ? T((x[ctx.output_index] - T(y[s])) * ctx.inv_scale) : T(x[ctx.output_index]);
+    out[k] = residual ? T((x[out_index] - T(y[s])) * ctx.inv_scale) : T(x[out_index]);
     if (k + 1 == count && !continuity) break;
-    for (int sub = 0; sub < ctx.substeps; ++sub)  // the logged command is data (double): no Jet products for it
-      plant::advance_with_dry_friction(static_cast<std::size_t>(nb), idx, dry, phis, gammas, u[s], 0.0, t_load, x, xf,
-                                       stuck);
+    // The logged command and the current loop's torque are data (double): no Jet products for them.
+    for (int sub = 0; sub < ctx.substeps; ++sub) {
+      if (ctx.has_load)
+        plant::advance_with_dry_friction(static_cast<std::size_t>(nb), idx, dry, phis, gammas, u[s], 0.0, t_load, x,
+                                         xf, stuck, lag);
+      else
+        plant::advance_with_dry_friction(static_cast<std::size_t>(nb), idx, dry, phis, gammas, u[s], 0.0, 0.0, x, xf,
+                                         stuck, lag);
+      if (nl) lag = ctx.lag_decay * lag + (1.0 - ctx.lag_decay) * u[s];
+    }
   }
   if (continuity) {  // the next segment must start where this one ends (angles in counts, speeds in counts/sample)
-    for (int i = 0; i < n - nl; ++i) {
+    for (int i = 0; i < n; ++i) {
       const bool angle = i % 2 == 0;
       const double w = ctx.continuity_weight * ctx.inv_scale * (angle ? 1.0 : ctx.log->sample_period_s);
-      continuity[i] = (x[nl + i] - x_next[i]) * w;
+      continuity[i] = (x[i] - x_next[i]) * w;
     }
   }
 }
@@ -168,6 +202,7 @@ void init_context(FitContext& ctx, const TimeLog& log, const TimeFitOptions& opt
   ctx.output_index = log.measured_is_speed ? (log.measured_on_load ? l.load_speed() : l.motor_speed())
                                            : (log.measured_on_load ? l.load_angle() : l.motor_angle());
   ctx.cache = std::make_unique<DiscretisationCache>(ctx.layout, log.sample_period_s / options.substeps);
+  ctx.lag_decay = std::exp(-2.0 * M_PI * options.current_bw_hz * log.sample_period_s / options.substeps);
   const std::size_t n = log.torque_nm.size();
   ctx.lag.clear();
   if (!l.lag_states() || n == 0) return;
@@ -377,6 +412,10 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
 
   FitContext ctx;
   init_context(ctx, log, options);
+  {  // a load held at 0 needs no input column (load_nm is the last parameter of both models)
+    const std::size_t li = static_cast<std::size_t>(np - 1);
+    ctx.has_load = !(fixed[li] && setup.initial[li] == 0.0);
+  }
   const std::size_t n = log.measured.size();
 
   // Internally the breakaway entry is the Stribeck excess Fs - Fc >= 0 (plant_model.hpp).

@@ -119,25 +119,32 @@ void solve_dry_friction(std::size_t nb, const BodyIndex* idx, const DryFriction<
 // `mask` locked (mask 0: none locked); u0, u1, u2: the inputs held over the sub-step (drive command, external
 // torque on the motor body, on the load body). x is advanced in place (x_free is scratch of the same size);
 // stuck[b] is the "at rest, held by static friction" flag of each body, carried from sub-step to sub-step.
-// x_free += column * u for an input held over the sub-step. An input known in double (the identification's logged
-// command) costs a scaling of the column rather than a product of Jets; an exactly zero double input costs nothing.
-template <class Vec, class Col, class U>
-void add_input(Vec& x_free, const Col& column, const U& u) {
-  if constexpr (std::is_same<U, double>::value)
-    if (u == 0.0) return;
-  x_free += column * u;
+// An input that is not there (the default fourth input).
+struct NoInput {};
+
+// x_free += gamma.col(c) * u for an input held over the sub-step. An input known in double (the identification's
+// logged command) costs a scaling of the column rather than a product of Jets; an exactly zero double input costs
+// nothing; NoInput is not even looked up.
+template <int C, class Vec, class Gamma, class U>
+void add_input(Vec& x_free, const Gamma& gamma, const U& u) {
+  if constexpr (!std::is_same<U, NoInput>::value) {
+    if constexpr (std::is_same<U, double>::value)
+      if (u == 0.0) return;
+    x_free += gamma.col(C) * u;
+  }
 }
 
-// u0, u1, u2 may each be T or double (see add_input).
-template <class T, class Vec, class PhiSet, class GammaSet, class U0, class U1, class U2>
+// u0, u1, u2 (and u3, an optional fourth input column) may each be T or double (see add_input).
+template <class T, class Vec, class PhiSet, class GammaSet, class U0, class U1, class U2, class U3 = NoInput>
 void advance_with_dry_friction(std::size_t nb, const BodyIndex* idx, const DryFriction<T>* fr, const PhiSet& phis,
                                const GammaSet& gammas, const U0& u0, const U1& u1, const U2& u2, Vec& x, Vec& x_free,
-                               char* stuck) {
+                               char* stuck, const U3& u3 = U3()) {
   const auto& gamma0 = gammas[0];
   x_free.noalias() = phis[0] * x;
-  add_input(x_free, gamma0.col(0), u0);
-  add_input(x_free, gamma0.col(1), u1);
-  add_input(x_free, gamma0.col(2), u2);
+  add_input<0>(x_free, gamma0, u0);
+  add_input<1>(x_free, gamma0, u1);
+  add_input<2>(x_free, gamma0, u2);
+  add_input<3>(x_free, gamma0, u3);
   bool any_dry = false;
   for (std::size_t b = 0; b < nb; ++b) any_dry = any_dry || fr[b].breakaway_nm > 0.0;
   if (!any_dry) {
@@ -155,9 +162,10 @@ void advance_with_dry_friction(std::size_t nb, const BodyIndex* idx, const DryFr
   if (locked != 0) {
     gamma = &gammas[locked];
     x_free.noalias() = phis[locked] * x;
-    add_input(x_free, gamma->col(0), u0);
-    add_input(x_free, gamma->col(1), u1);
-    add_input(x_free, gamma->col(2), u2);
+    add_input<0>(x_free, *gamma, u0);
+    add_input<1>(x_free, *gamma, u1);
+    add_input<2>(x_free, *gamma, u2);
+    add_input<3>(x_free, *gamma, u3);
     solve_dry_friction(nb, idx, fr, x, x_free, *gamma, locked, f, stick);
   }
   for (std::size_t b = 0; b < nb; ++b) {
