@@ -457,7 +457,8 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
 
     ceres::Solver::Options sopt;
     sopt.linear_solver_type = ceres::DENSE_SCHUR;
-    sopt.max_num_iterations = options.max_iterations;
+    // The held-Stribeck stage only brings J, b and Fc near: a few iterations do; the later stages converge.
+    sopt.max_num_iterations = hold_stribeck ? std::min(options.max_iterations, 20) : options.max_iterations;
     sopt.num_threads = options.num_threads;
     sopt.function_tolerance = 1e-12;
     sopt.parameter_tolerance = 1e-12;
