@@ -88,10 +88,10 @@ void CardCycles::validate() const {
 }
 
 void LimitConfig::validate() const {
-  if (!std::isfinite(soft_pos_pulse)) throw_invalid("LimitConfig", "soft_pos_pulse", soft_pos_pulse, "must be finite");
-  if (!std::isfinite(soft_neg_pulse)) throw_invalid("LimitConfig", "soft_neg_pulse", soft_neg_pulse, "must be finite");
+  if (!std::isfinite(soft_pos_pulse)) throw_invalid("CardLimits", "soft_pos_pulse", soft_pos_pulse, "must be finite");
+  if (!std::isfinite(soft_neg_pulse)) throw_invalid("CardLimits", "soft_neg_pulse", soft_neg_pulse, "must be finite");
   if (soft_pos_enabled && soft_neg_enabled && !(soft_neg_pulse < soft_pos_pulse))
-    throw_invalid("LimitConfig", "soft_neg_pulse", soft_neg_pulse,
+    throw_invalid("CardLimits", "soft_neg_pulse", soft_neg_pulse,
                   "must be below soft_pos_pulse = " + format_value(soft_pos_pulse) + " when both soft limits are on");
 }
 
@@ -290,12 +290,10 @@ void Card::stage_synch_pos(std::size_t i) {
   touch(i, kStagedSynchPos);
 }
 
-CommandFault Card::check_commit(std::size_t i, std::string* why) const {
+CommandFault Card::check_commit(std::size_t i, const AxisRegisters& r, std::uint32_t d, std::string* why) const {
   const CardAxisState& s = st_[i];
   const motion::ProfileGenerator& gen = loops_[i]->generator();
-  const std::uint32_t d = s.dirty;
   const bool mv = gen.moving();
-  const AxisRegisters& r = s.staged;
   auto fail = [&](CommandFault f, const std::string& w) {
     if (why) *why = w;
     return f;
@@ -359,26 +357,30 @@ void Card::update(std::uint32_t mask) {
   for (std::size_t i = 0; i < loops_.size(); ++i) {
     if (!(mask & (1u << i))) continue;
     std::string why;
-    const CommandFault f = check_commit(i, &why);
+    const CommandFault f = check_commit(i, st_[i].staged, st_[i].dirty, &why);
     if (f != CommandFault::None) refuse(static_cast<int>(i), f, "update: " + why);
   }
-  for (std::size_t i = 0; i < loops_.size(); ++i)
-    if (mask & (1u << i)) st_[i].commit_pending = true;
+  for (std::size_t i = 0; i < loops_.size(); ++i) {
+    if (!(mask & (1u << i))) continue;
+    CardAxisState& s = st_[i];
+    s.pending = s.staged;
+    s.pending_dirty |= s.dirty;
+    s.dirty = 0;
+    s.commit_pending = true;
+  }
 }
 
-void Card::commit(std::size_t i) {
+void Card::commit(std::size_t i, const AxisRegisters& r, std::uint32_t d) {
   CardAxisState& s = st_[i];
-  s.commit_pending = false;
-  const std::uint32_t d = s.dirty;
   if (d == 0) return;
-  if (check_commit(i, nullptr) != CommandFault::None) {
+  const CommandFault f = check_commit(i, r, d, nullptr);
+  if (f != CommandFault::None) {
     // The state changed between the Update and this tick (a limit, an e-stop): nothing is committed.
-    record_fault(static_cast<int>(i), check_commit(i, nullptr));
+    record_fault(static_cast<int>(i), f);
     return;
   }
   MotionLoop& l = *loops_[i];
   motion::ProfileGenerator& gen = l.generator();
-  const AxisRegisters& r = s.staged;
   if (d & kStagedLaw) {
     l.axis().set_law(r.law);
     s.active.law = r.law;
@@ -414,7 +416,6 @@ void Card::commit(std::size_t i) {
   } catch (const std::invalid_argument&) {
     record_fault(static_cast<int>(i), CommandFault::IllegalControlParam);
   }
-  s.dirty = 0;
 }
 
 // -- immediate commands -------------------------------------------------------------------------------------
@@ -496,7 +497,13 @@ void Card::set_mtr_cmd(std::size_t i, double counts) {
 }
 
 void Card::arm_breakpoint(std::size_t i, motion::BreakKind kind) {
-  at(i);
+  CardAxisState& s = at(i);
+  s.brk_deferred = false;
+  if (kind != motion::BreakKind::None && s.commit_pending && (s.pending_dirty & kStagedBrkCn)) {
+    s.brk_deferred = true;  // the compare value the program just updated becomes active first (V26)
+    s.brk_deferred_kind = kind;
+    return;
+  }
   if (kind == motion::BreakKind::None) {
     loops_[i]->breakpoint().off();
   } else {
@@ -662,7 +669,17 @@ void Card::tick_once(const std::vector<CardTrace>& traces, std::size_t k) {
   // 1. commits, at a motion-cycle boundary
   if (tick_ % static_cast<long long>(cycles_.motion_cycle_ticks) == 0)
     for (std::size_t i = 0; i < n; ++i)
-      if (st_[i].commit_pending) commit(i);
+      if (st_[i].commit_pending) {
+        CardAxisState& s = st_[i];
+        s.commit_pending = false;
+        const std::uint32_t d = s.pending_dirty;
+        s.pending_dirty = 0;
+        commit(i, s.pending, d);
+        if (s.brk_deferred) {
+          s.brk_deferred = false;
+          loops_[i]->breakpoint().arm(s.brk_deferred_kind);
+        }
+      }
   // 2. safety on this instant's inputs
   for (std::size_t i = 0; i < n; ++i) safety_before(i);
   // 3. the loops; 4. the checks after the law
@@ -681,7 +698,11 @@ void Card::tick_once(const std::vector<CardTrace>& traces, std::size_t k) {
     l.run(1, tr, lt);
     if (user_error) *user_error = error;
     if (armed && l.breakpoint().armed() == motion::BreakKind::None && st_[i].auto_update) {
-      commit(i);  // GT L1263: the auto-update commits everything staged; effective from the next tick
+      // GT L1263: the auto-update commits everything staged; effective from the next tick.
+      CardAxisState& s = st_[i];
+      const std::uint32_t d = s.dirty;
+      s.dirty = 0;
+      commit(i, s.staged, d);
     }
     after_tick(i, error);
     if (!traces.empty()) {

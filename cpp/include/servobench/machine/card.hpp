@@ -137,8 +137,15 @@ struct LimitConfig {
 struct CardAxisState {
   AxisMode mode = AxisMode::TCurve;  // reset default T-curve (GT HardRst [5])
   AxisRegisters staged{}, active{};
-  std::uint32_t dirty = 0;          // StagedBit set since the last commit
-  bool commit_pending = false;      // Update / MltiUpdt issued, commit at the next (motion-cycle) tick
+  std::uint32_t dirty = 0;          // StagedBit written since the last Update
+  // Update / MltiUpdt take the staged registers as they are at the call; they become active at the next
+  // (motion-cycle) tick. Later writes are staged for the next update (or a breakpoint's auto-update).
+  AxisRegisters pending{};
+  std::uint32_t pending_dirty = 0;
+  bool commit_pending = false;
+  // A breakpoint armed while an update with a new BrkCn waits: armed right after that commit (V26).
+  bool brk_deferred = false;
+  motion::BreakKind brk_deferred_kind = motion::BreakKind::None;
   std::uint32_t events = 0;         // latched CardEvent bits
   bool enabled = false;             // drive enabled (GT_AxisOn / AxisOff; status bit 9); off at power-on (V11)
   bool closed_loop = true;          // GT_CloseLp (default) / GT_OpenLp
@@ -268,9 +275,9 @@ class Card {
   void fault_stop(std::size_t i, StopCause cause, bool servo_off);
   bool inhibited_pos(std::size_t i) const;
   bool inhibited_neg(std::size_t i) const;
-  // What committing axis i's staged registers would refuse now (None = fine); `why` gets the message.
-  CommandFault check_commit(std::size_t i, std::string* why) const;
-  void commit(std::size_t i);
+  // What committing registers r with changes d on axis i would refuse now (None = fine); `why` gets the message.
+  CommandFault check_commit(std::size_t i, const AxisRegisters& r, std::uint32_t d, std::string* why) const;
+  void commit(std::size_t i, const AxisRegisters& r, std::uint32_t d);
   void tick_once(const std::vector<CardTrace>& traces, std::size_t k);
   void safety_before(std::size_t i);
   void after_tick(std::size_t i, double error);
