@@ -15,6 +15,7 @@ void bind_tuning(py::module_& m);
 void bind_homing(py::module_& m);
 void bind_identify(py::module_& m);
 void bind_paths(py::module_& m);
+void bind_card(py::module_& m);
 }  // namespace servobench::bindings
 
 PYBIND11_MODULE(_core, m) {
@@ -37,4 +38,5 @@ PYBIND11_MODULE(_core, m) {
   servobench::bindings::bind_homing(m);
   servobench::bindings::bind_identify(m);
   servobench::bindings::bind_paths(m);
+  servobench::bindings::bind_card(m);
 }

@@ -90,6 +90,9 @@ from .paths import (
     GeLookAheadParams,
     run_adlink,
 )
+from . import card
+from .card import CARD_EVENTS, Card, CardCommandRefused, CardLimits, CardRun, events_named
+from . import dialects
 from .motion import (
     AdlinkPtp,
     ElectronicGear,
@@ -109,6 +112,14 @@ from .motion import (
 __version__ = "0.1.0"
 
 __all__ = [
+    "CARD_EVENTS",
+    "Card",
+    "CardCommandRefused",
+    "CardLimits",
+    "CardRun",
+    "card",
+    "dialects",
+    "events_named",
     "AdlinkBiquad",
     "AdlinkHome",
     "AdlinkJog",

@@ -167,6 +167,13 @@ BAD = [
     (sb.LookAheadParams, "t_ms", [0, -1, 1001, NAN], "0..1000"),
     (sb.LookAheadParams, "acc_max", [0, -1, 32768, NAN], "0..32767"),
     (sb.LookAheadParams, "n", [-1, 32767, 1.5, NAN], "0..32766"),
+    (sb.CardLimits, "enabled", [2, 0.5], "0/False or 1/True"),
+    (sb.CardLimits, "pos_active_low", [2, -1], "0/False or 1/True"),
+    (sb.CardLimits, "neg_active_low", [2, -1], "0/False or 1/True"),
+    (sb.CardLimits, "soft_pos_enabled", [2, -1], "0/False or 1/True"),
+    (sb.CardLimits, "soft_neg_enabled", [2, -1], "0/False or 1/True"),
+    (sb.CardLimits, "soft_pos_pulse", [NAN, INF], "must be finite"),
+    (sb.CardLimits, "soft_neg_pulse", [NAN, -INF], "must be finite"),
 ]
 
 
@@ -195,7 +202,7 @@ def test_every_field_is_covered_by_a_bad_input_test():
     for cls in (sb.GtServoLaw, sb.ApsServoLaw, sb.TorqueDrive, sb.VelocityDrive, sb.StepperDrive,
                 sb.ServoPositionDrive, sb.RigidPlant, sb.TwoMassPlant,
                 sb.Encoder, sb.Dac, sb.Switches, sb.AdlinkHome, sb.GtHome, sb.AdlinkJog, sb.FollowExSetup, sb.PathSetup, sb.LookAheadParams,
-                sb.GeLookAheadParams, sb.AdlinkInterpSetup):
+                sb.GeLookAheadParams, sb.AdlinkInterpSetup, sb.CardLimits):
         for field in cls.FIELDS:
             assert (cls, field) in covered, f"{cls.__name__}.{field} has no bad-input test"
 
@@ -264,6 +271,8 @@ def test_cross_field_rules():
         sb.Switches(home_min_rad=1.0)
     with pytest.raises(ValueError, match="Switches.neg_limit_rad = 5 must be below pos_limit_rad"):
         sb.Switches(neg_limit_rad=5.0, pos_limit_rad=1.0)
+    with pytest.raises(ValueError, match="CardLimits.soft_neg_pulse = 5 must be below soft_pos_pulse"):
+        sb.CardLimits(soft_pos_enabled=True, soft_neg_enabled=True, soft_pos_pulse=1, soft_neg_pulse=5)
     with pytest.raises(ValueError, match="VelocityDrive.torque_limit_nm .* cannot both be inf"):
         sb.VelocityDrive(current_limit_a=INF)
     # The speed loop must run a whole number of times per servo tick: 20 kHz fits 200 us and 250 us, 3 kHz does not.

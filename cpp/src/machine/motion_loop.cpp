@@ -71,6 +71,12 @@ void MotionLoop::clear_status() {
   capture_.clear();
 }
 
+void MotionLoop::cancel_sequence() {
+  homing_.reset();
+  jog_.reset();
+  jog_on_ = false;
+}
+
 double MotionLoop::phase_code() const {
   if (homing_ && (!jog_)) return static_cast<double>(static_cast<int>(homing_->phase()));
   if (jog_) return static_cast<double>(static_cast<int>(jog_->phase()));
@@ -96,6 +102,7 @@ void MotionLoop::tick(const Trace& tr, const LoopTrace& lt, std::size_t k) {
   in.pos = &cmd;
   in.vel = &vel;
   in.acc = &acc;
+  if (add_on_) in.volts_add = &add_volts_;
   in.n = 1;
   axis_.run(in, shifted(tr, k));
   const MechSample after = sample_mechanism(axis_);

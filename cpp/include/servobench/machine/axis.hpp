@@ -115,6 +115,12 @@ class Axis {
   double load_angle_rad() const { return power_.load_angle_rad(); }
   double load_speed_rad_s() const { return power_.load_speed_rad_s(); }
   bool alarm() const { return power_.alarm(); }
+  // The servo law's error accumulator now (GT_GetIntgr; the ADLINK error sum), pulse*tick.
+  double law_error_sum() const {
+    return std::visit([](const auto& law) { return law.error_sum(); }, law_);
+  }
+  // The drive's reset input (the card's GT_DrvRst): clears a tripped alarm and cancels a scheduled one.
+  void clear_drive_alarm() { power_.clear_alarm(); }
   const PowerTrain& power_train() const { return power_; }
 
  private:

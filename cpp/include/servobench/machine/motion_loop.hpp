@@ -56,10 +56,13 @@ class MotionLoop {
   explicit MotionLoop(Axis& axis);
 
   Axis& axis() { return axis_; }
+  const Axis& axis() const { return axis_; }
   motion::ProfileGenerator& generator() { return gen_; }
   const motion::ProfileGenerator& generator() const { return gen_; }
   CaptureUnit& capture() { return capture_; }
+  const CaptureUnit& capture() const { return capture_; }
   motion::Breakpoint& breakpoint() { return brk_; }
+  const motion::Breakpoint& breakpoint() const { return brk_; }
 
   // Double buffering (GT L1150-1239): stage a command; update() commits all staged commands (GT_Update);
   // a breakpoint with auto-update on commits them too (GT_AuUpdtOn, L1255-1263).
@@ -91,6 +94,16 @@ class MotionLoop {
   bool breakpoint_flag() const { return brk_flag_; }
   // GT_ClrSts: clears the breakpoint (bit 2) and capture (bit 3) flags.
   void clear_status();
+  // Clears the breakpoint flag only (GT_RstSts with bit 2 cleared).
+  void clear_breakpoint_flag() { brk_flag_ = false; }
+  // Ends a homing or jog sequence at once (a card reset); the generator is left as it is.
+  void cancel_sequence();
+  // A voltage added to the output stage every tick (V; the open-loop output GT_SetMtrCmd with the servo law
+  // off); `on` false removes it.
+  void set_output_add(bool on, double volts = 0.0) {
+    add_on_ = on;
+    add_volts_ = volts;
+  }
 
   // Runs n ticks; fills the non-null buffers of both traces (n doubles each).
   void run(std::size_t n, const Trace& axis_trace, const LoopTrace& loop_trace);
@@ -115,6 +128,8 @@ class MotionLoop {
   bool jog_on_ = false;
   double probe_time_s_ = std::numeric_limits<double>::quiet_NaN();
   double offset_ = 0.0;
+  bool add_on_ = false;
+  double add_volts_ = 0.0;
   motion::HomeInputs inputs_;  // the last tick's events, card coordinates
 };
 

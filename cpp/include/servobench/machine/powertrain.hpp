@@ -13,6 +13,7 @@
 //    an exactly locked discretisation (no creep, no work); a body never reverses through friction alone.
 #pragma once
 
+#include <limits>
 #include <variant>
 #include <vector>
 
@@ -76,6 +77,11 @@ class PowerTrain {
   // The drive's commanded motor angle (pulse-input drives), rad.
   double command_angle_rad() const { return cmd_angle_; }
   bool alarm() const { return alarm_; }
+  // Drive reset: clears the alarm and cancels a scheduled one (alarm_at_s).
+  void clear_alarm() {
+    alarm_ = false;
+    alarm_at_s_ = std::numeric_limits<double>::infinity();
+  }
   int substeps_per_tick() const { return n_sub_; }
   double substep_s() const { return h_; }
   const plant::Mechanics& mechanics() const { return mech_; }

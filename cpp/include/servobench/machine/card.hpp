@@ -1,0 +1,295 @@
+// Card: the virtual motion-control card. 4 or 8 axes, one integer tick clock, staged (double-buffered) and
+// active parameters, latched events, safety checked every tick. Vendor-neutral: the status words of each
+// manual are functions of this state (machine/gt_status.hpp, ...) and the vendor facades only translate.
+//
+// Each axis is a MotionLoop (a profile generator coupled to an Axis: homing, capture, breakpoints) around an
+// Axis the card owns or is given. Units are the controller's: pulse, pulse/tick, pulse/tick^2, pulse/tick^3
+// (the GT's "per sample time"); vendor units (pulse/ms, pulse/s) are the dialects' business.
+//
+// One tick of the card (docs/card.md, decisions V1-V8):
+//   1. commit: the axes whose Update / MltiUpdt (or a breakpoint's auto-update) is pending copy every staged
+//      register into the active ones, all in this same tick (GT L1156); at a motion-cycle boundary only;
+//   2. safety on the inputs at this tick instant (the mechanism where the encoder reads it now): e-stop, drive
+//      alarm, hard limits (switch level x polarity, when enabled), soft limits, direction inhibit -> abrupt
+//      stop / servo off before the profile advances;
+//   3. the MotionLoop tick: profile advance, Axis tick (encoder read, law, filters, DAC, drive, plant over Ts),
+//      capture and breakpoint on the actual position; a breakpoint with auto-update on commits this axis's
+//      staged registers (effective from the next tick, GT L1263);
+//   4. following error |E_n| (the law's own error this tick) against the active limit; ADLINK-style error
+//      level -> servo off; motion-complete events from the profile.
+// So a fault seen in step 4 acts on the profile from the next tick (one tick, as on a DSP).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "servobench/machine/axis.hpp"
+#include "servobench/machine/motion_loop.hpp"
+#include "servobench/motion/generator.hpp"
+
+namespace servobench::machine {
+
+// The card's clocks, in servo ticks.
+struct CardCycles {
+  double motion_cycle_ticks = 1;  // profile/commit cycle, 1..1000 (GT: 1, the profile is per ST; ADLINK: 4)
+  double host_cycle_ticks = 1;    // host cycle, a whole multiple of the motion cycle, 1..10000 (ADLINK: 8)
+  void validate() const;
+};
+
+// Profile mode of an axis. The values are the GT mode-register code (bits 11-13, GT L1500-1511).
+enum class AxisMode : int { TCurve = 0, Jog = 1, SCurve = 2, Gear = 3, Coordinated = 5 };
+const char* to_string(AxisMode mode);
+
+// Latched events of an axis (bits of CardAxisState::events). Bits 0-7 are in the GT status order (Table 4-14).
+enum class CardEvent : int {
+  MotionComplete = 0,
+  DriveAlarm = 1,
+  Breakpoint = 2,
+  Captured = 3,
+  FollowingError = 4,
+  PosLimit = 5,
+  NegLimit = 6,
+  CommandError = 7,
+  SoftPosLimit = 8,
+  SoftNegLimit = 9,
+  EmergencyStop = 10,
+  ErrorLevel = 11,  // |E| above the servo-off error level (ADLINK PRA_ERR_POS_LEVEL)
+};
+constexpr std::uint32_t event_bit(CardEvent e) { return 1u << static_cast<int>(e); }
+constexpr std::uint32_t kAllEvents = 0xFFFu;
+
+// Why a command was refused. One cause per refusal; the GT command-status register maps them to bits.
+enum class CommandFault : int {
+  None = 0,
+  MotionParamOverflow,     // a motion parameter out of range (GT cmd bit 0)
+  IllegalControlParam,     // an illegal control parameter (GT cmd bit 1)
+  NoAxisInMask,            // MltiUpdt(0) (GT cmd bit 2)
+  DriveResetWhileEnabled,  // DrvRst with the servo on (GT cmd bit 3)
+  ModeChangeInMotion,      // a mode change while moving (GT cmd bit 6)
+  IndexCaptureArmed,       // CaptIndex while armed or captured (GT cmd bit 7)
+  HomeCaptureArmed,        // CaptHome while armed or captured (GT cmd bit 8)
+  AxisOnWhileAlarm,        // AxisOn with the drive-alarm event latched (GT cmd bit 9)
+  ChangeInMotion,          // ZeroPos / SetAtlPos / SynchPos / an Update not allowed now (GT cmd bit 11)
+  DirectionInhibited,      // motion toward a latched limit (no GT cmd bit; axis bit 7)
+  EmergencyStopActive,     // motion while the e-stop input is active (ADLINK: ignored, stop code 1)
+  InvalidInMode,           // a command the current mode does not have (e.g. SmthStp in gear mode)
+};
+const char* to_string(CommandFault fault);
+
+// Why an axis stopped abnormally last (ADLINK stop codes map from it).
+enum class StopCause : int {
+  None = 0, EmergencyStop, DriveAlarm, PosLimit, NegLimit, SoftPosLimit, SoftNegLimit, ErrorLevel, FollowingError
+};
+const char* to_string(StopCause cause);
+
+// A refused card command. fault() says why; the card has recorded it (command error event and register).
+class CardCommandRefused : public motion::MotionCommandRefused {
+ public:
+  CardCommandRefused(CommandFault fault, int axis, const std::string& what)
+      : motion::MotionCommandRefused(what), fault_(fault), axis_(axis) {}
+  CommandFault fault() const { return fault_; }
+  int axis() const { return axis_; }  // 0-based; -1 for a card-wide command
+
+ private:
+  CommandFault fault_;
+  int axis_;
+};
+
+// The double-buffered registers of one axis (GT Table 4-10, L1158-1180). Reads of the staged set are what
+// GT_GetPos / GetVel / GetKp ... return (GT L4024-4036: the set value, not the profile's).
+struct AxisRegisters {
+  double pos = 0.0;   // target, whole pulses, -2^30..2^30-1
+  double vel = 0.0;   // pulse/tick (signed in jog mode)
+  double acc = 0.0;   // pulse/tick^2 (T-curve, jog)
+  double macc = 0.0;  // pulse/tick^2 (S-curve)
+  double jerk = 0.0;  // pulse/tick^3 (S-curve)
+  double ratio = 0.0;     // electronic gear ratio (gear mode, not simulated yet)
+  double brk_cn = 0.0;    // breakpoint compare value, whole pulses
+  double pos_err = 32767; // following-error limit, pulse, 0..32767 (GT HardRst [8])
+  LawParams law = control::GtServoLawParams{};
+};
+
+// Which staged registers (and staged commands) wait for an update.
+enum StagedBit : std::uint32_t {
+  kStagedPos = 1u << 0, kStagedVel = 1u << 1, kStagedAcc = 1u << 2, kStagedMAcc = 1u << 3,
+  kStagedJerk = 1u << 4, kStagedRatio = 1u << 5, kStagedBrkCn = 1u << 6, kStagedPosErr = 1u << 7,
+  kStagedLaw = 1u << 8, kStagedSmoothStop = 1u << 9, kStagedSynchPos = 1u << 10,
+};
+constexpr std::uint32_t kStagedMotion = kStagedPos | kStagedVel | kStagedAcc | kStagedMAcc | kStagedJerk;
+
+// Limit configuration of an axis. Hard limits are the switches of the axis (plant/switches.hpp, load angle);
+// the input level is 1 while the switch is hit (a normally-closed switch opens: GT L627-631), and an input
+// "triggers" when level != active_low. Soft limits compare the actual position (card coordinates).
+struct LimitConfig {
+  bool enabled = true;           // GT_LmtsOn (default) / GT_LmtsOff: react to the hard limits
+  bool pos_active_low = false;   // GT_LmtSns bit 2(k-1): 0 triggers on high (default), 1 on low
+  bool neg_active_low = false;   // GT_LmtSns bit 2(k-1)+1
+  bool soft_pos_enabled = false; // ADLINK PRA_SPEL_EN
+  bool soft_neg_enabled = false; // ADLINK PRA_SMEL_EN
+  double soft_pos_pulse = 0.0;   // ADLINK PRA_SPEL_POS: triggers at actual >= this
+  double soft_neg_pulse = 0.0;   // ADLINK PRA_SMEL_POS: triggers at actual <= this
+  void validate() const;
+};
+
+// The card's per-axis state that is not inside the MotionLoop.
+struct CardAxisState {
+  AxisMode mode = AxisMode::TCurve;  // reset default T-curve (GT HardRst [5])
+  AxisRegisters staged{}, active{};
+  std::uint32_t dirty = 0;          // StagedBit written since the last Update
+  // Update / MltiUpdt take the staged registers as they are at the call; they become active at the next
+  // (motion-cycle) tick. Later writes are staged for the next update (or a breakpoint's auto-update).
+  AxisRegisters pending{};
+  std::uint32_t pending_dirty = 0;
+  bool commit_pending = false;
+  // A breakpoint armed while an update with a new BrkCn waits: armed right after that commit (V26).
+  bool brk_deferred = false;
+  motion::BreakKind brk_deferred_kind = motion::BreakKind::None;
+  std::uint32_t events = 0;         // latched CardEvent bits
+  bool enabled = false;             // drive enabled (GT_AxisOn / AxisOff; status bit 9); off at power-on (V11)
+  bool closed_loop = true;          // GT_CloseLp (default) / GT_OpenLp
+  double mtr_cmd = 0.0;             // open-loop output, DAC counts -32767..32767 (GT_SetMtrCmd)
+  bool auto_stop = false;           // GT_AuStpOn: following error stops and disables the axis
+  bool auto_update = false;         // GT_AuUpdtOn: a breakpoint commits the staged registers
+  bool alarm_enabled = true;        // GE GT_AlarmOn/Off: react to the drive-alarm input
+  bool alarm_input = false;         // the ALM input forced by the user (besides the drive's own alarm)
+  bool alarm_prev = false;          // the alarm input level at the previous tick
+  double error_level_pulse = 0.0;   // ADLINK PRA_ERR_POS_LEVEL: |E| above it turns the servo off; 0 = off
+  LimitConfig limits{};
+  double error_pulse = 0.0;         // the law's error E_n of the last tick (planned - actual), pulse
+  bool following_error_now = false; // the check failed in the last tick (enabled, closed loop, |E| > limit)
+  StopCause stop_cause = StopCause::None;
+  bool was_moving = false;
+};
+
+// What one tick of one axis records (each a buffer of n doubles or null), besides the Axis and loop traces.
+struct CardTrace {
+  Trace axis{};
+  LoopTrace loop{};
+  double* events = nullptr;    // latched CardEvent bits after the tick
+  double* moving = nullptr;    // 1 while the profile moves (GT status bit 10)
+  double* servo_on = nullptr;  // 1 while the drive is enabled (GT status bit 9)
+  double* prf_vel = nullptr;   // profile velocity, pulse/tick
+};
+
+class Card {
+ public:
+  // A card that owns `axes` (4 or 8) axes built from `axis_config`.
+  Card(double axes, const AxisConfig& axis_config, const CardCycles& cycles = {});
+  // A card around the given axes (kept by pointer; they must outlive the card): 4 or 8 of them, one servo period.
+  explicit Card(const std::vector<Axis*>& axes, const CardCycles& cycles = {});
+  Card(const Card&) = delete;
+  Card& operator=(const Card&) = delete;
+
+  // -- structure and clocks ------------------------------------------------------------------------------
+  std::size_t axis_count() const { return loops_.size(); }
+  Axis& axis(std::size_t i) { return loop(i).axis(); }
+  MotionLoop& loop(std::size_t i);
+  const MotionLoop& loop(std::size_t i) const;
+  const CardAxisState& state(std::size_t i) const;
+  long long tick() const { return tick_; }
+  double servo_period_s() const { return period_s_; }
+  const CardCycles& cycles() const { return cycles_; }
+
+  // Reset (GT_Reset / GT_HardRst, L4124-4142; GE L4769-4786): registers, events, capture and breakpoints
+  // cleared, T-curve, gains 0, ILmt/MtrLmt/PosErr 32767, auto-update and auto-stop off, closed loop, limits
+  // on with polarity 0, soft limits off, drives disabled, e-stop released; the clock and mechanics keep going.
+  void reset();
+
+  // -- staged (double-buffered) registers: GT_SetPos/Vel/Acc/MAcc/Jerk/Ratio/BrkCn/PosErr/Kp.../SmthStp/SynchPos
+  void stage_pos(std::size_t i, double pos);
+  void stage_vel(std::size_t i, double vel);
+  void stage_acc(std::size_t i, double acc);
+  void stage_macc(std::size_t i, double macc);
+  void stage_jerk(std::size_t i, double jerk);
+  void stage_ratio(std::size_t i, double ratio);
+  void stage_brk_cn(std::size_t i, double brk_cn);
+  void stage_pos_err(std::size_t i, double pos_err);
+  void stage_law(std::size_t i, const LawParams& law);  // validated; must be the axis's law family
+  void stage_smooth_stop(std::size_t i);
+  void stage_synch_pos(std::size_t i);
+  // GT_Update (one axis) / GT_MltiUpdt (bit k = axis k+1): every staged change of the masked axes is
+  // committed together at the next tick. Checked now against the axis state; a refused update commits nothing.
+  void update(std::uint32_t mask);
+
+  // -- immediate commands ---------------------------------------------------------------------------------
+  void set_mode(std::size_t i, AxisMode mode);  // GT_PrflT/S/V; refused while moving (GT L837)
+  void abrupt_stop(std::size_t i);              // GT_AbptStp: velocity 0 at once, motion complete
+  void zero_pos(std::size_t i) { set_actual_pos(i, 0.0); }  // GT_ZeroPos
+  void set_actual_pos(std::size_t i, double pos);  // GT_SetAtlPos: actual = target = profile = pos, at rest
+  void axis_on(std::size_t i);                   // GT_AxisOn: refused with the alarm latched; motion complete
+  void axis_off(std::size_t i);                  // GT_AxisOff
+  void drive_reset(std::size_t i);               // GT_DrvRst: only with the drive disabled
+  void set_closed_loop(std::size_t i, bool closed);  // GT_CloseLp / GT_OpenLp
+  void set_mtr_cmd(std::size_t i, double counts);    // GT_SetMtrCmd: open-loop output, -32767..32767
+  void set_auto_stop(std::size_t i, bool on) { at(i).auto_stop = on; }
+  void set_auto_update(std::size_t i, bool on) { at(i).auto_update = on; }
+  void arm_breakpoint(std::size_t i, motion::BreakKind kind);  // GT_PosBrk/NegBrk/MtnBrk/ExtBrk, None = BrkOff
+  void arm_capture(std::size_t i, CaptureTrigger trigger);    // GT_CaptHome/CaptIndex (None disarms)
+  void home(std::size_t i, const motion::GtHomeParams& p);    // GT_Home / GT_Index automatic homing
+
+  // -- safety configuration and inputs ----------------------------------------------------------------------
+  void set_limits(std::size_t i, const LimitConfig& limits);
+  void set_alarm_enabled(std::size_t i, bool on) { at(i).alarm_enabled = on; }
+  void set_alarm_input(std::size_t i, bool alarm) { at(i).alarm_input = alarm; }
+  void set_error_level(std::size_t i, double pulse);  // 0 = off
+  void set_emergency_stop(bool active) { estop_ = active; }
+  bool emergency_stop() const { return estop_; }
+
+  // -- events ---------------------------------------------------------------------------------------------
+  // Clears the latched events in `which` (CardEvent bits). The following-error event stays while the check
+  // still fails (GT L1453: "only when the axis is not in motion error status"). Clearing a limit event ends
+  // the direction inhibit (a limit still triggered latches it again at the next tick).
+  void clear_events(std::size_t i, std::uint32_t which);
+  std::uint32_t events(std::size_t i) const { return state(i).events; }
+  // Records a refusal decided outside (a dialect's own range check): command-error event and fault register.
+  void record_fault(int axis, CommandFault fault);
+  // The last refusal's cause (GT_GetCmdSts).
+  CommandFault last_fault() const { return last_fault_; }
+
+  // -- readbacks ------------------------------------------------------------------------------------------
+  bool moving(std::size_t i) const;        // the profile runs (GT status bit 10; always in gear mode)
+  bool servo_on(std::size_t i) const { return state(i).enabled; }  // drive enabled (GT status bit 9)
+  bool closed_loop(std::size_t i) const { return state(i).closed_loop; }
+  long long profile_pos(std::size_t i) const { return loops_[i]->generator().reported_pos(); }
+  double profile_vel(std::size_t i) const { return loops_[i]->generator().state().vel; }
+  double actual_pos(std::size_t i) const { return loops_[i]->actual_pos(); }
+  double following_error(std::size_t i) const { return state(i).error_pulse; }  // GT_GetAtlErr
+  bool pos_limit_input(std::size_t i) const;  // hard-limit inputs as triggered (polarity applied)
+  bool neg_limit_input(std::size_t i) const;
+
+  // -- running ----------------------------------------------------------------------------------------------
+  // Runs n ticks. traces: empty, or one per axis whose non-null buffers hold n doubles each.
+  void run(std::size_t n, const std::vector<CardTrace>& traces = {});
+
+ private:
+  void init(const CardCycles& cycles);
+  CardAxisState& at(std::size_t i);
+  [[noreturn]] void refuse(int axis, CommandFault fault, const std::string& what);
+  void touch(std::size_t i, std::uint32_t bits);
+  template <class F>
+  void checked(std::size_t i, CommandFault fault, F&& check);
+  void apply_output(std::size_t i);
+  void stop_profile(std::size_t i);
+  void fault_stop(std::size_t i, StopCause cause, bool servo_off);
+  bool inhibited_pos(std::size_t i) const;
+  bool inhibited_neg(std::size_t i) const;
+  // What committing registers r with changes d on axis i would refuse now (None = fine); `why` gets the message.
+  CommandFault check_commit(std::size_t i, const AxisRegisters& r, std::uint32_t d, std::string* why) const;
+  void commit(std::size_t i, const AxisRegisters& r, std::uint32_t d);
+  void tick_once(const std::vector<CardTrace>& traces, std::size_t k);
+  void safety_before(std::size_t i);
+  void after_tick(std::size_t i, double error);
+
+  std::vector<std::unique_ptr<Axis>> owned_;
+  std::vector<std::unique_ptr<MotionLoop>> loops_;
+  std::vector<CardAxisState> st_;
+  CardCycles cycles_{};
+  double period_s_ = 0.0;
+  long long tick_ = 0;
+  bool estop_ = false;
+  CommandFault last_fault_ = CommandFault::None;
+};
+
+}  // namespace servobench::machine

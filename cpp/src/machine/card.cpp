@@ -1,0 +1,726 @@
+#include "servobench/machine/card.hpp"
+
+#include <cmath>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+#include "servobench/common/validate.hpp"
+
+namespace servobench::machine {
+
+namespace {
+
+constexpr double kPosMin = -1073741824.0;  // -2^30 (GT L854, GE L991)
+constexpr double kPosMax = 1073741823.0;   // 2^30 - 1
+
+Trace shifted(const Trace& t, std::size_t k) {
+  Trace out;
+#define SERVOBENCH_SHIFT(name, unit, doc) out.name = t.name ? t.name + k : nullptr;
+  SERVOBENCH_TRACE_SIGNALS(SERVOBENCH_SHIFT)
+#undef SERVOBENCH_SHIFT
+  return out;
+}
+
+LoopTrace shifted(const LoopTrace& t, std::size_t k) {
+  LoopTrace out;
+#define SERVOBENCH_SHIFT(name, unit, doc) out.name = t.name ? t.name + k : nullptr;
+  SERVOBENCH_LOOP_SIGNALS(SERVOBENCH_SHIFT)
+#undef SERVOBENCH_SHIFT
+  return out;
+}
+
+std::string axis_name(std::size_t i) { return "axis " + std::to_string(i + 1); }
+
+}  // namespace
+
+const char* to_string(AxisMode mode) {
+  switch (mode) {
+    case AxisMode::TCurve: return "t_curve";
+    case AxisMode::Jog: return "jog";
+    case AxisMode::SCurve: return "s_curve";
+    case AxisMode::Gear: return "gear";
+    case AxisMode::Coordinated: return "coordinated";
+  }
+  return "?";
+}
+
+const char* to_string(CommandFault fault) {
+  switch (fault) {
+    case CommandFault::None: return "none";
+    case CommandFault::MotionParamOverflow: return "motion_param_overflow";
+    case CommandFault::IllegalControlParam: return "illegal_control_param";
+    case CommandFault::NoAxisInMask: return "no_axis_in_mask";
+    case CommandFault::DriveResetWhileEnabled: return "drive_reset_while_enabled";
+    case CommandFault::ModeChangeInMotion: return "mode_change_in_motion";
+    case CommandFault::IndexCaptureArmed: return "index_capture_armed";
+    case CommandFault::HomeCaptureArmed: return "home_capture_armed";
+    case CommandFault::AxisOnWhileAlarm: return "axis_on_while_alarm";
+    case CommandFault::ChangeInMotion: return "change_in_motion";
+    case CommandFault::DirectionInhibited: return "direction_inhibited";
+    case CommandFault::EmergencyStopActive: return "emergency_stop_active";
+    case CommandFault::InvalidInMode: return "invalid_in_mode";
+  }
+  return "?";
+}
+
+const char* to_string(StopCause cause) {
+  switch (cause) {
+    case StopCause::None: return "none";
+    case StopCause::EmergencyStop: return "emergency_stop";
+    case StopCause::DriveAlarm: return "drive_alarm";
+    case StopCause::PosLimit: return "pos_limit";
+    case StopCause::NegLimit: return "neg_limit";
+    case StopCause::SoftPosLimit: return "soft_pos_limit";
+    case StopCause::SoftNegLimit: return "soft_neg_limit";
+    case StopCause::ErrorLevel: return "error_level";
+    case StopCause::FollowingError: return "following_error";
+  }
+  return "?";
+}
+
+void CardCycles::validate() const {
+  check_integer("CardCycles", "motion_cycle_ticks", motion_cycle_ticks, 1, 1000);
+  check_integer("CardCycles", "host_cycle_ticks", host_cycle_ticks, 1, 10000);
+  if (std::fmod(host_cycle_ticks, motion_cycle_ticks) != 0.0)
+    throw_invalid("CardCycles", "host_cycle_ticks", host_cycle_ticks,
+                  "must be a whole multiple of motion_cycle_ticks = " + format_value(motion_cycle_ticks));
+}
+
+void LimitConfig::validate() const {
+  if (!std::isfinite(soft_pos_pulse)) throw_invalid("CardLimits", "soft_pos_pulse", soft_pos_pulse, "must be finite");
+  if (!std::isfinite(soft_neg_pulse)) throw_invalid("CardLimits", "soft_neg_pulse", soft_neg_pulse, "must be finite");
+  if (soft_pos_enabled && soft_neg_enabled && !(soft_neg_pulse < soft_pos_pulse))
+    throw_invalid("CardLimits", "soft_neg_pulse", soft_neg_pulse,
+                  "must be below soft_pos_pulse = " + format_value(soft_pos_pulse) + " when both soft limits are on");
+}
+
+// -- construction -------------------------------------------------------------------------------------------
+
+Card::Card(double axes, const AxisConfig& axis_config, const CardCycles& cycles) {
+  check_integer("Card", "axes", axes, 4, 8);
+  if (axes != 4 && axes != 8) throw_invalid("Card", "axes", axes, "must be 4 or 8 (the cards' axis counts)");
+  for (int i = 0; i < static_cast<int>(axes); ++i) {
+    owned_.push_back(std::make_unique<Axis>(axis_config));
+    loops_.push_back(std::make_unique<MotionLoop>(*owned_.back()));
+  }
+  init(cycles);
+}
+
+Card::Card(const std::vector<Axis*>& axes, const CardCycles& cycles) {
+  const auto n = static_cast<double>(axes.size());
+  if (axes.size() != 4 && axes.size() != 8) throw_invalid("Card", "axes", n, "must be 4 or 8 axes");
+  std::set<const Axis*> seen;
+  for (Axis* a : axes) {
+    if (a == nullptr) throw std::invalid_argument("Card.axes: an axis is missing (null)");
+    if (!seen.insert(a).second) throw std::invalid_argument("Card.axes: the same Axis is given twice; each card axis needs its own");
+    if (a->servo_period_s() != axes[0]->servo_period_s())
+      throw_invalid("Card", "servo_period_s", a->servo_period_s(),
+                    "differs between axes; one card has one servo clock (axis 1: " +
+                        format_value(axes[0]->servo_period_s()) + " s)");
+    loops_.push_back(std::make_unique<MotionLoop>(*a));
+  }
+  init(cycles);
+}
+
+void Card::init(const CardCycles& cycles) {
+  cycles.validate();
+  cycles_ = cycles;
+  period_s_ = loops_[0]->axis().servo_period_s();
+  st_.assign(loops_.size(), CardAxisState{});
+  for (std::size_t i = 0; i < loops_.size(); ++i) {
+    // The given laws are the power-on registers; the drives start disabled (V11).
+    st_[i].staged.law = st_[i].active.law = loops_[i]->axis().config().law;
+    apply_output(i);
+  }
+}
+
+MotionLoop& Card::loop(std::size_t i) {
+  if (i >= loops_.size()) throw_invalid("Card", "axis", static_cast<double>(i), "is not an axis of this card");
+  return *loops_[i];
+}
+const MotionLoop& Card::loop(std::size_t i) const {
+  if (i >= loops_.size()) throw_invalid("Card", "axis", static_cast<double>(i), "is not an axis of this card");
+  return *loops_[i];
+}
+const CardAxisState& Card::state(std::size_t i) const {
+  if (i >= st_.size()) throw_invalid("Card", "axis", static_cast<double>(i), "is not an axis of this card");
+  return st_[i];
+}
+CardAxisState& Card::at(std::size_t i) {
+  if (i >= st_.size()) throw_invalid("Card", "axis", static_cast<double>(i), "is not an axis of this card");
+  return st_[i];
+}
+
+void Card::reset() {
+  estop_ = false;
+  last_fault_ = CommandFault::None;
+  for (std::size_t i = 0; i < loops_.size(); ++i) {
+    MotionLoop& l = *loops_[i];
+    l.cancel_sequence();
+    l.generator().abrupt_stop();
+    l.set_position(0.0);  // registers = 0 (HardRst [1]) with the coordinates where the axis stands (V12)
+    l.breakpoint().off();
+    l.breakpoint().set_compare(0.0);
+    l.capture().arm(CaptureTrigger::None);
+    l.clear_status();
+    l.capture().shift(-l.capture().value());
+    CardAxisState s;
+    if (std::holds_alternative<control::ApsServoLawParams>(st_[i].active.law)) {
+      s.staged.law = s.active.law = control::ApsServoLawParams{};
+    } else {
+      s.staged.law = s.active.law = control::GtServoLawParams{};  // gains 0, ILmt/MtrLmt 32767 (HardRst [6,7,13])
+    }
+    st_[i] = s;
+    l.axis().set_law(s.active.law);
+    apply_output(i);
+  }
+}
+
+// -- faults -------------------------------------------------------------------------------------------------
+
+void Card::record_fault(int axis, CommandFault fault) {
+  last_fault_ = fault;
+  if (axis >= 0 && static_cast<std::size_t>(axis) < st_.size())
+    st_[static_cast<std::size_t>(axis)].events |= event_bit(CardEvent::CommandError);
+}
+
+void Card::refuse(int axis, CommandFault fault, const std::string& what) {
+  record_fault(axis, fault);
+  const std::string who = axis >= 0 ? axis_name(static_cast<std::size_t>(axis)) + ": " : std::string();
+  throw CardCommandRefused(fault, axis, who + what + " [refused: " + to_string(fault) + "; return code 1]");
+}
+
+template <class F>
+void Card::checked(std::size_t i, CommandFault fault, F&& check) {
+  try {
+    check();
+  } catch (const std::invalid_argument&) {
+    record_fault(static_cast<int>(i), fault);
+    throw;
+  }
+}
+
+void Card::touch(std::size_t i, std::uint32_t bits) { st_[i].dirty |= bits; }
+
+// -- staged registers ---------------------------------------------------------------------------------------
+
+void Card::stage_pos(std::size_t i, double pos) {
+  at(i);
+  checked(i, CommandFault::MotionParamOverflow,
+          [&] { check_integer("Card", "pos", pos, kPosMin, kPosMax, "whole pulses, GT L854"); });
+  st_[i].staged.pos = pos;
+  touch(i, kStagedPos);
+}
+
+void Card::stage_vel(std::size_t i, double vel) {
+  at(i);
+  checked(i, CommandFault::MotionParamOverflow, [&] {
+    if (!std::isfinite(vel)) throw_invalid("Card", "vel", vel, "must be finite (pulse/tick)");
+  });
+  st_[i].staged.vel = vel;
+  touch(i, kStagedVel);
+}
+
+void Card::stage_acc(std::size_t i, double acc) {
+  at(i);
+  checked(i, CommandFault::MotionParamOverflow, [&] { check_nonnegative("Card", "acc", acc); });
+  st_[i].staged.acc = acc;
+  touch(i, kStagedAcc);
+}
+
+void Card::stage_macc(std::size_t i, double macc) {
+  at(i);
+  checked(i, CommandFault::IllegalControlParam, [&] { check_nonnegative("Card", "macc", macc); });
+  st_[i].staged.macc = macc;
+  touch(i, kStagedMAcc);
+}
+
+void Card::stage_jerk(std::size_t i, double jerk) {
+  at(i);
+  checked(i, CommandFault::IllegalControlParam, [&] { check_nonnegative("Card", "jerk", jerk); });
+  st_[i].staged.jerk = jerk;
+  touch(i, kStagedJerk);
+}
+
+void Card::stage_ratio(std::size_t i, double ratio) {
+  at(i);
+  checked(i, CommandFault::IllegalControlParam,
+          [&] { check_range("Card", "ratio", ratio, -16384, 16384, "GT L1043, L5020"); });
+  st_[i].staged.ratio = ratio;
+  touch(i, kStagedRatio);
+}
+
+void Card::stage_brk_cn(std::size_t i, double brk_cn) {
+  at(i);
+  checked(i, CommandFault::MotionParamOverflow,
+          [&] { check_integer("Card", "brk_cn", brk_cn, kPosMin, kPosMax, "GT L4721-4727"); });
+  st_[i].staged.brk_cn = brk_cn;
+  touch(i, kStagedBrkCn);
+}
+
+void Card::stage_pos_err(std::size_t i, double pos_err) {
+  at(i);
+  checked(i, CommandFault::IllegalControlParam,
+          [&] { check_range("Card", "pos_err", pos_err, 0, 32767, "GT L5000-5012"); });
+  st_[i].staged.pos_err = pos_err;
+  touch(i, kStagedPosErr);
+}
+
+void Card::stage_law(std::size_t i, const LawParams& law) {
+  at(i);
+  checked(i, CommandFault::IllegalControlParam, [&] {
+    std::visit([](const auto& p) { p.validate(); }, law);
+    if (law.index() != st_[i].staged.law.index())
+      throw std::invalid_argument("Card.law: " + axis_name(i) + " runs the other card family's servo law; stage " +
+                                  "the same kind (GtServoLaw or ApsServoLaw)");
+  });
+  st_[i].staged.law = law;
+  touch(i, kStagedLaw);
+}
+
+void Card::stage_smooth_stop(std::size_t i) {
+  if (at(i).mode == AxisMode::Gear)
+    refuse(static_cast<int>(i), CommandFault::InvalidInMode, "GT_SmthStp is not valid in gear mode (GT L1144, L5096)");
+  touch(i, kStagedSmoothStop);
+}
+
+void Card::stage_synch_pos(std::size_t i) {
+  at(i);
+  touch(i, kStagedSynchPos);
+}
+
+CommandFault Card::check_commit(std::size_t i, const AxisRegisters& r, std::uint32_t d, std::string* why) const {
+  const CardAxisState& s = st_[i];
+  const motion::ProfileGenerator& gen = loops_[i]->generator();
+  const bool mv = gen.moving();
+  auto fail = [&](CommandFault f, const std::string& w) {
+    if (why) *why = w;
+    return f;
+  };
+  if (d & kStagedSynchPos) {
+    if (s.mode == AxisMode::Jog) return fail(CommandFault::ChangeInMotion, "GT_SynchPos is an error in jog mode (GT L474)");
+    if (s.mode == AxisMode::Gear) return fail(CommandFault::InvalidInMode, "GT_SynchPos is invalid in gear mode (GT L1425)");
+    if (mv) return fail(CommandFault::ChangeInMotion, "GT_SynchPos only at rest (GT L1425, L5154)");
+  }
+  if (d & kStagedMotion) {
+    if (estop_) return fail(CommandFault::EmergencyStopActive, "motion refused while the emergency stop is active");
+    if (mv && gen.stopping() && !(d & kStagedSmoothStop))
+      return fail(CommandFault::ChangeInMotion, "motion commands wait until the smooth stop ends");
+    double dir = 0.0;
+    switch (s.mode) {
+      case AxisMode::TCurve:
+        if (!(r.vel > 0.0) || !(r.acc > 0.0))
+          return fail(CommandFault::IllegalControlParam,
+                      "T-curve needs vel > 0 and acc > 0 (now vel = " + format_value(r.vel) +
+                          ", acc = " + format_value(r.acc) + "; GT L929-930)");
+        if (mv && r.acc != s.active.acc)
+          return fail(CommandFault::ChangeInMotion,
+                      "the T-curve acceleration cannot change during motion (GT L974-978, GE L311)");
+        dir = r.pos - gen.state().pos;
+        break;
+      case AxisMode::SCurve:
+        if (!(r.vel > 0.0) || !(r.macc > 0.0) || !(r.jerk > 0.0))
+          return fail(CommandFault::IllegalControlParam,
+                      "S-curve needs vel, macc and jerk > 0 (GT L856-858)");
+        if (mv && (r.vel != s.active.vel || r.macc != s.active.macc || r.jerk != s.active.jerk))
+          return fail(CommandFault::ChangeInMotion,
+                      "during an S-curve move only the target may change (GT L909, L474)");
+        dir = r.pos - gen.state().pos;
+        break;
+      case AxisMode::Jog:
+        if (!(r.acc > 0.0))
+          return fail(CommandFault::IllegalControlParam, "jog needs acc > 0 (GT L995)");
+        dir = r.vel;
+        break;
+      case AxisMode::Gear:
+      case AxisMode::Coordinated:
+        return fail(CommandFault::InvalidInMode, std::string("no profile registers in ") + to_string(s.mode) + " mode");
+    }
+    if (!(d & kStagedSmoothStop)) {
+      if (dir > 0.0 && inhibited_pos(i))
+        return fail(CommandFault::DirectionInhibited,
+                    "motion toward the positive limit is refused until the limit event is cleared (GT L2209)");
+      if (dir < 0.0 && inhibited_neg(i))
+        return fail(CommandFault::DirectionInhibited,
+                    "motion toward the negative limit is refused until the limit event is cleared (GT L2209)");
+    }
+  }
+  return CommandFault::None;
+}
+
+void Card::update(std::uint32_t mask) {
+  const std::uint32_t all = (1u << loops_.size()) - 1u;
+  mask &= all;
+  if (mask == 0)
+    refuse(-1, CommandFault::NoAxisInMask, "GT_MltiUpdt(0): no axis of this card in the mask (GT L460)");
+  for (std::size_t i = 0; i < loops_.size(); ++i) {
+    if (!(mask & (1u << i))) continue;
+    std::string why;
+    const CommandFault f = check_commit(i, st_[i].staged, st_[i].dirty, &why);
+    if (f != CommandFault::None) refuse(static_cast<int>(i), f, "update: " + why);
+  }
+  for (std::size_t i = 0; i < loops_.size(); ++i) {
+    if (!(mask & (1u << i))) continue;
+    CardAxisState& s = st_[i];
+    s.pending = s.staged;
+    s.pending_dirty |= s.dirty;
+    s.dirty = 0;
+    s.commit_pending = true;
+  }
+}
+
+void Card::commit(std::size_t i, const AxisRegisters& r, std::uint32_t d) {
+  CardAxisState& s = st_[i];
+  if (d == 0) return;
+  const CommandFault f = check_commit(i, r, d, nullptr);
+  if (f != CommandFault::None) {
+    // The state changed between the Update and this tick (a limit, an e-stop): nothing is committed.
+    record_fault(static_cast<int>(i), f);
+    return;
+  }
+  MotionLoop& l = *loops_[i];
+  motion::ProfileGenerator& gen = l.generator();
+  if (d & kStagedLaw) {
+    l.axis().set_law(r.law);
+    s.active.law = r.law;
+  }
+  if (d & kStagedPosErr) s.active.pos_err = r.pos_err;
+  if (d & kStagedBrkCn) {
+    l.breakpoint().set_compare(r.brk_cn);
+    s.active.brk_cn = r.brk_cn;
+  }
+  if (d & kStagedRatio) s.active.ratio = r.ratio;
+  try {
+    if (d & kStagedSynchPos) {
+      const double a = std::nearbyint(l.actual_pos());
+      gen.set_position(a);
+      s.staged.pos = s.active.pos = a;
+    }
+    if (d & kStagedMotion) {
+      s.active.pos = r.pos;
+      s.active.vel = r.vel;
+      s.active.acc = r.acc;
+      s.active.macc = r.macc;
+      s.active.jerk = r.jerk;
+      switch (s.mode) {
+        case AxisMode::TCurve: gen.move_t_curve(r.pos, {r.vel, r.acc}); break;
+        case AxisMode::SCurve: gen.move_s_curve(r.pos, {r.vel, r.macc, r.jerk}); break;
+        case AxisMode::Jog: gen.jog(r.vel, r.acc); break;
+        default: break;
+      }
+    }
+    if (d & kStagedSmoothStop) gen.smooth_stop();
+  } catch (const motion::MotionCommandRefused&) {
+    record_fault(static_cast<int>(i), CommandFault::ChangeInMotion);
+  } catch (const std::invalid_argument&) {
+    record_fault(static_cast<int>(i), CommandFault::IllegalControlParam);
+  }
+}
+
+// -- immediate commands -------------------------------------------------------------------------------------
+
+void Card::set_mode(std::size_t i, AxisMode mode) {
+  CardAxisState& s = at(i);
+  if (mode == AxisMode::Gear || mode == AxisMode::Coordinated)
+    refuse(static_cast<int>(i), CommandFault::InvalidInMode,
+           std::string(to_string(mode)) + " mode is not simulated by the card yet");
+  if (moving(i) && s.mode != AxisMode::Gear)
+    refuse(static_cast<int>(i), CommandFault::ModeChangeInMotion,
+           "the motion mode can change only when the motion has ended (GT L837, L464)");
+  s.mode = mode;
+}
+
+void Card::stop_profile(std::size_t i) {
+  loops_[i]->generator().abrupt_stop();
+  st_[i].was_moving = false;
+  st_[i].events |= event_bit(CardEvent::MotionComplete);
+}
+
+void Card::abrupt_stop(std::size_t i) {
+  at(i);
+  stop_profile(i);
+}
+
+void Card::set_actual_pos(std::size_t i, double pos) {
+  CardAxisState& s = at(i);
+  checked(i, CommandFault::MotionParamOverflow,
+          [&] { check_integer("Card", "pos", pos, kPosMin, kPosMax, "whole pulses, GT L4617"); });
+  if (s.mode == AxisMode::Gear)
+    refuse(static_cast<int>(i), CommandFault::InvalidInMode, "ZeroPos/SetAtlPos are invalid in gear mode (GT L1421-1429)");
+  if (moving(i) || loops_[i]->sequence_active())
+    refuse(static_cast<int>(i), CommandFault::ChangeInMotion, "ZeroPos/SetAtlPos only at rest (GT L1421, L4617)");
+  loops_[i]->set_position(pos);
+  s.staged.pos = s.active.pos = pos;
+}
+
+void Card::apply_output(std::size_t i) {
+  const CardAxisState& s = st_[i];
+  Axis& a = loops_[i]->axis();
+  a.set_servo_on(s.enabled && s.closed_loop);
+  loops_[i]->set_output_add(s.enabled && !s.closed_loop, control::GtServoLaw::counts_to_volts(s.mtr_cmd));
+}
+
+void Card::axis_on(std::size_t i) {
+  CardAxisState& s = at(i);
+  if (s.events & event_bit(CardEvent::DriveAlarm))
+    refuse(static_cast<int>(i), CommandFault::AxisOnWhileAlarm,
+           "AxisOn with the drive-alarm event set: DrvRst and clear it first (GT L472, L2188-2192)");
+  s.enabled = true;
+  s.events |= event_bit(CardEvent::MotionComplete);  // GT L1481
+  apply_output(i);
+}
+
+void Card::axis_off(std::size_t i) {
+  at(i).enabled = false;
+  apply_output(i);
+}
+
+void Card::drive_reset(std::size_t i) {
+  if (at(i).enabled)
+    refuse(static_cast<int>(i), CommandFault::DriveResetWhileEnabled,
+           "DrvRst only with the drive disabled (GT L461, L3216)");
+  loops_[i]->axis().clear_drive_alarm();
+}
+
+void Card::set_closed_loop(std::size_t i, bool closed) {
+  at(i).closed_loop = closed;
+  apply_output(i);
+}
+
+void Card::set_mtr_cmd(std::size_t i, double counts) {
+  at(i);
+  checked(i, CommandFault::IllegalControlParam,
+          [&] { check_range("Card", "mtr_cmd", counts, -32767, 32767, "GT L4960-4966"); });
+  st_[i].mtr_cmd = counts;
+  apply_output(i);
+}
+
+void Card::arm_breakpoint(std::size_t i, motion::BreakKind kind) {
+  CardAxisState& s = at(i);
+  s.brk_deferred = false;
+  if (kind != motion::BreakKind::None && s.commit_pending && (s.pending_dirty & kStagedBrkCn)) {
+    s.brk_deferred = true;  // the compare value the program just updated becomes active first (V26)
+    s.brk_deferred_kind = kind;
+    return;
+  }
+  if (kind == motion::BreakKind::None) {
+    loops_[i]->breakpoint().off();
+  } else {
+    loops_[i]->breakpoint().arm(kind);
+  }
+}
+
+void Card::arm_capture(std::size_t i, CaptureTrigger trigger) {
+  at(i);
+  if (trigger == CaptureTrigger::Probe)
+    refuse(static_cast<int>(i), CommandFault::InvalidInMode, "probe capture is not wired to the card yet");
+  try {
+    loops_[i]->capture().arm(trigger);
+  } catch (const motion::MotionCommandRefused& e) {
+    refuse(static_cast<int>(i),
+           trigger == CaptureTrigger::Index ? CommandFault::IndexCaptureArmed : CommandFault::HomeCaptureArmed,
+           e.what());
+  }
+}
+
+void Card::home(std::size_t i, const motion::GtHomeParams& p) {
+  at(i);
+  p.validate();
+  if (moving(i)) refuse(static_cast<int>(i), CommandFault::ChangeInMotion, "GT_Home only at rest");
+  if (estop_) refuse(static_cast<int>(i), CommandFault::EmergencyStopActive, "GT_Home refused while the e-stop is active");
+  try {
+    loops_[i]->home(p);
+  } catch (const motion::MotionCommandRefused& e) {
+    refuse(static_cast<int>(i), CommandFault::ChangeInMotion, e.what());
+  }
+}
+
+void Card::set_limits(std::size_t i, const LimitConfig& limits) {
+  at(i);
+  limits.validate();
+  st_[i].limits = limits;
+}
+
+void Card::set_error_level(std::size_t i, double pulse) {
+  at(i);
+  check_nonnegative("Card", "error_level_pulse", pulse);
+  st_[i].error_level_pulse = pulse;
+}
+
+void Card::clear_events(std::size_t i, std::uint32_t which) {
+  CardAxisState& s = at(i);
+  which &= kAllEvents;
+  if (s.following_error_now) which &= ~event_bit(CardEvent::FollowingError);  // GT L1453
+  s.events &= ~which;
+  if (which & event_bit(CardEvent::Breakpoint)) loops_[i]->clear_breakpoint_flag();
+  if (which & event_bit(CardEvent::Captured)) loops_[i]->capture().clear();
+}
+
+// -- readbacks ----------------------------------------------------------------------------------------------
+
+bool Card::moving(std::size_t i) const {
+  const MotionLoop& l = loop(i);
+  return state(i).mode == AxisMode::Gear || l.generator().moving() || l.sequence_active();
+}
+
+bool Card::pos_limit_input(std::size_t i) const {
+  const Axis& a = loop(i).axis();
+  const bool hit = a.config().switches.pos_limit(a.load_angle_rad());
+  return hit != state(i).limits.pos_active_low;
+}
+
+bool Card::neg_limit_input(std::size_t i) const {
+  const Axis& a = loop(i).axis();
+  const bool hit = a.config().switches.neg_limit(a.load_angle_rad());
+  return hit != state(i).limits.neg_active_low;
+}
+
+bool Card::inhibited_pos(std::size_t i) const {
+  const CardAxisState& s = st_[i];
+  return (s.limits.enabled && (s.events & event_bit(CardEvent::PosLimit))) ||
+         (s.limits.soft_pos_enabled && (s.events & event_bit(CardEvent::SoftPosLimit)));
+}
+
+bool Card::inhibited_neg(std::size_t i) const {
+  const CardAxisState& s = st_[i];
+  return (s.limits.enabled && (s.events & event_bit(CardEvent::NegLimit))) ||
+         (s.limits.soft_neg_enabled && (s.events & event_bit(CardEvent::SoftNegLimit)));
+}
+
+// -- the tick -----------------------------------------------------------------------------------------------
+
+void Card::fault_stop(std::size_t i, StopCause cause, bool servo_off) {
+  CardAxisState& s = st_[i];
+  if (loops_[i]->generator().moving() || loops_[i]->sequence_active()) {
+    loops_[i]->cancel_sequence();
+    stop_profile(i);
+  } else if (servo_off && s.enabled) {
+    s.events |= event_bit(CardEvent::MotionComplete);
+  }
+  s.stop_cause = cause;
+  if (servo_off && s.enabled) {
+    s.enabled = false;
+    apply_output(i);
+  }
+}
+
+void Card::safety_before(std::size_t i) {
+  CardAxisState& s = st_[i];
+  MotionLoop& l = *loops_[i];
+  const double vel = l.generator().state().vel;
+  // Emergency stop (ADLINK L3924-3938): moving axes stop at once.
+  if (estop_ && l.generator().moving()) {
+    s.events |= event_bit(CardEvent::EmergencyStop);
+    fault_stop(i, StopCause::EmergencyStop, false);
+  }
+  // Drive alarm (GT L2180-2194): bits 1 and 0, drive disabled like AxisOff.
+  const bool alarm = s.alarm_enabled && (l.axis().alarm() || s.alarm_input);
+  if (alarm && (!s.alarm_prev || s.enabled || l.generator().moving())) {
+    s.events |= event_bit(CardEvent::DriveAlarm) | event_bit(CardEvent::MotionComplete);
+    fault_stop(i, StopCause::DriveAlarm, true);
+  }
+  s.alarm_prev = alarm;
+  // Hard limits (GT L2196-2213): latch the event while triggered; stop motion toward the limit.
+  if (s.limits.enabled) {
+    if (pos_limit_input(i)) s.events |= event_bit(CardEvent::PosLimit);
+    if (neg_limit_input(i)) s.events |= event_bit(CardEvent::NegLimit);
+  }
+  const double act = l.actual_pos();
+  if (s.limits.soft_pos_enabled && act >= s.limits.soft_pos_pulse) s.events |= event_bit(CardEvent::SoftPosLimit);
+  if (s.limits.soft_neg_enabled && act <= s.limits.soft_neg_pulse) s.events |= event_bit(CardEvent::SoftNegLimit);
+  // Direction inhibit: motion toward a latched limit stops at once (GT L2206-2209).
+  if (vel > 0.0 && inhibited_pos(i)) {
+    const bool hard = s.limits.enabled && (s.events & event_bit(CardEvent::PosLimit));
+    fault_stop(i, hard ? StopCause::PosLimit : StopCause::SoftPosLimit, false);
+  } else if (vel < 0.0 && inhibited_neg(i)) {
+    const bool hard = s.limits.enabled && (s.events & event_bit(CardEvent::NegLimit));
+    fault_stop(i, hard ? StopCause::NegLimit : StopCause::SoftNegLimit, false);
+  }
+}
+
+void Card::after_tick(std::size_t i, double error) {
+  CardAxisState& s = st_[i];
+  MotionLoop& l = *loops_[i];
+  s.error_pulse = error;
+  // Following error (GT L2154-2178): every sample, closed loop, drive enabled.
+  s.following_error_now = s.enabled && s.closed_loop && std::fabs(error) > s.active.pos_err;
+  if (s.following_error_now) {
+    s.events |= event_bit(CardEvent::FollowingError);
+    if (s.auto_stop) {
+      fault_stop(i, StopCause::FollowingError, true);
+      s.following_error_now = false;  // the drive is off: the check is no longer in effect (V13)
+    }
+  }
+  // Position-error protection (ADLINK PRA_ERR_POS_LEVEL, L4012-4023): servo off.
+  if (s.error_level_pulse > 0.0 && s.enabled && s.closed_loop && std::fabs(error) > s.error_level_pulse) {
+    s.events |= event_bit(CardEvent::ErrorLevel);
+    fault_stop(i, StopCause::ErrorLevel, true);
+  }
+  if (l.breakpoint_flag()) s.events |= event_bit(CardEvent::Breakpoint);
+  if (l.capture().captured()) s.events |= event_bit(CardEvent::Captured);
+  const bool mv = l.generator().moving();
+  if (s.was_moving && !mv) s.events |= event_bit(CardEvent::MotionComplete);
+  s.was_moving = mv;
+}
+
+void Card::tick_once(const std::vector<CardTrace>& traces, std::size_t k) {
+  const auto n = loops_.size();
+  // 1. commits, at a motion-cycle boundary
+  if (tick_ % static_cast<long long>(cycles_.motion_cycle_ticks) == 0)
+    for (std::size_t i = 0; i < n; ++i)
+      if (st_[i].commit_pending) {
+        CardAxisState& s = st_[i];
+        s.commit_pending = false;
+        const std::uint32_t d = s.pending_dirty;
+        s.pending_dirty = 0;
+        commit(i, s.pending, d);
+        if (s.brk_deferred) {
+          s.brk_deferred = false;
+          loops_[i]->breakpoint().arm(s.brk_deferred_kind);
+        }
+      }
+  // 2. safety on this instant's inputs
+  for (std::size_t i = 0; i < n; ++i) safety_before(i);
+  // 3. the loops; 4. the checks after the law
+  for (std::size_t i = 0; i < n; ++i) {
+    MotionLoop& l = *loops_[i];
+    double error = 0.0;
+    Trace tr;
+    LoopTrace lt;
+    if (!traces.empty()) {
+      tr = shifted(traces[i].axis, k);
+      lt = shifted(traces[i].loop, k);
+    }
+    double* user_error = tr.error;
+    tr.error = &error;
+    const bool armed = l.breakpoint().armed() != motion::BreakKind::None;
+    l.run(1, tr, lt);
+    if (user_error) *user_error = error;
+    if (armed && l.breakpoint().armed() == motion::BreakKind::None && st_[i].auto_update) {
+      // GT L1263: the auto-update commits everything staged; effective from the next tick.
+      CardAxisState& s = st_[i];
+      const std::uint32_t d = s.dirty;
+      s.dirty = 0;
+      commit(i, s.staged, d);
+    }
+    after_tick(i, error);
+    if (!traces.empty()) {
+      const CardTrace& ct = traces[i];
+      if (ct.events) ct.events[k] = static_cast<double>(st_[i].events);
+      if (ct.moving) ct.moving[k] = moving(i) ? 1.0 : 0.0;
+      if (ct.servo_on) ct.servo_on[k] = st_[i].enabled ? 1.0 : 0.0;
+      if (ct.prf_vel) ct.prf_vel[k] = l.generator().state().vel;
+    }
+  }
+  ++tick_;
+}
+
+void Card::run(std::size_t n, const std::vector<CardTrace>& traces) {
+  if (!traces.empty() && traces.size() != loops_.size())
+    throw_invalid("Card.run", "traces", static_cast<double>(traces.size()),
+                  "must be empty or one per axis (" + std::to_string(loops_.size()) + ")");
+  for (std::size_t k = 0; k < n; ++k) tick_once(traces, k);
+}
+
+}  // namespace servobench::machine

@@ -1,0 +1,59 @@
+#include "servobench/machine/gt_status.hpp"
+
+namespace servobench::machine {
+
+std::uint16_t gt_axis_status(const Card& card, std::size_t axis) {
+  const CardAxisState& s = card.state(axis);
+  std::uint32_t w = s.events & 0xFFu;
+  if (s.events & event_bit(CardEvent::SoftPosLimit)) w |= 1u << 5;
+  if (s.events & event_bit(CardEvent::SoftNegLimit)) w |= 1u << 6;
+  if (s.closed_loop) w |= 1u << 8;
+  if (s.enabled) w |= 1u << 9;
+  if (card.moving(axis)) w |= 1u << 10;
+  if (s.limits.enabled) w |= 1u << 11;
+  w |= static_cast<std::uint32_t>(axis & 3u) << 12;
+  const CaptureTrigger armed = card.loop(axis).capture().armed();
+  if (armed == CaptureTrigger::Home) w |= 1u << 14;
+  if (armed == CaptureTrigger::Index) w |= 1u << 15;
+  return static_cast<std::uint16_t>(w);
+}
+
+std::uint16_t gt_mode_register(const Card& card, std::size_t axis) {
+  const CardAxisState& s = card.state(axis);
+  std::uint32_t w = 0;
+  if (s.auto_stop) w |= 1u << 7;
+  if (s.auto_update) w |= 1u << 10;
+  w |= static_cast<std::uint32_t>(static_cast<int>(s.mode) & 7) << 11;
+  return static_cast<std::uint16_t>(w);
+}
+
+std::uint16_t gt_command_status_bit(CommandFault fault) {
+  switch (fault) {
+    case CommandFault::MotionParamOverflow: return 1u << 0;
+    case CommandFault::IllegalControlParam: return 1u << 1;
+    case CommandFault::NoAxisInMask: return 1u << 2;
+    case CommandFault::DriveResetWhileEnabled: return 1u << 3;
+    case CommandFault::ModeChangeInMotion: return 1u << 6;
+    case CommandFault::IndexCaptureArmed: return 1u << 7;
+    case CommandFault::HomeCaptureArmed: return 1u << 8;
+    case CommandFault::AxisOnWhileAlarm: return 1u << 9;
+    case CommandFault::ChangeInMotion:
+    case CommandFault::InvalidInMode: return 1u << 11;
+    case CommandFault::None:
+    case CommandFault::DirectionInhibited:
+    case CommandFault::EmergencyStopActive: return 0;
+  }
+  return 0;
+}
+
+std::uint16_t gt_command_status(const Card& card) { return gt_command_status_bit(card.last_fault()); }
+
+std::uint32_t gt_events_to_clear(std::uint16_t rst_sts_mask) {
+  const std::uint32_t clear = ~static_cast<std::uint32_t>(rst_sts_mask) & 0xFFu;
+  std::uint32_t e = clear;
+  if (clear & (1u << 5)) e |= event_bit(CardEvent::SoftPosLimit);
+  if (clear & (1u << 6)) e |= event_bit(CardEvent::SoftNegLimit);
+  return e;
+}
+
+}  // namespace servobench::machine

@@ -1,0 +1,598 @@
+"""The Googol GT series programming interface (GT manual, seed 000) on the virtual :class:`~servobench.Card`.
+
+Current-axis style as in the manual: ``GT_Axis(n)`` (n = 1..4) selects the axis the argument-less commands act
+on. Units are the manual's, per sample time ST (= the card's servo tick): pulse, pulse/ST, pulse/ST^2, pulse/ST^3;
+gains in the GT law's integers; DAC counts (32767 = 10 V). Every command returns the manual's code (Table 2-1,
+L393-408): 0 success, 1 command error (the card ignored it; the reason is in ``GT_GetCmdSts``, axis status bit 7
+is set), 7 parameter error (out of range), -1 when no card is open. A read command ``GT_GetX(&x)`` returns the
+tuple ``(rtn, x)``. Illegal sequences leave the card's state unchanged.
+
+This module only translates: the behaviour (double buffering, status, safety) is the Card's.
+
+Module-level functions act on the card opened last with :func:`GT_Open`; :class:`GtController` holds one card
+for programs that drive several. Simulation helpers (not in the manual): :func:`run` (ticks), :func:`delay`
+(ms, as the manual's ``delay()``), :func:`wait_until` and :func:`card`.
+"""
+
+from __future__ import annotations
+
+import math
+
+from .. import _core
+from .._core import CardCommandRefused, GtHome, MotionCommandRefused
+from ..card import Card
+
+# Return codes (Table 2-1, L393-408).
+RTN_SUCCESS = 0
+RTN_COMMAND_ERROR = 1
+RTN_PARAMETER_ERROR = 7
+RTN_COMM_ERROR = -1
+
+_POS_MIN, _POS_MAX = -1073741824, 1073741823  # L854
+
+
+def _int_in(value, lo, hi) -> bool:
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        return False
+    return math.isfinite(v) and v == int(v) and lo <= v <= hi
+
+
+def _real_in(value, lo, hi, hi_open=False) -> bool:
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        return False
+    return math.isfinite(v) and lo <= v and (v < hi if hi_open else v <= hi)
+
+
+class GtController:
+    """One GT card program's view of a :class:`~servobench.Card`: the current axis and the GT_* commands."""
+
+    def __init__(self):
+        self._card: Card | None = None
+        self._axis = 0          # current axis, 0-based (default axis 1, L754)
+        self._lmt_sns = 0       # GT_LmtSns bits (L4217-4231)
+        self._index = [0] * 4   # GT_Index per axis (L4190-4196)
+
+    # -- plumbing -------------------------------------------------------------------------------------------
+    @property
+    def card(self) -> Card | None:
+        """The open card (None before GT_Open / after GT_Close)."""
+        return self._card
+
+    def _do(self, fn, *args) -> int:
+        if self._card is None:
+            return RTN_COMM_ERROR
+        try:
+            fn(*args)
+        except (CardCommandRefused, MotionCommandRefused):
+            return RTN_COMMAND_ERROR
+        except ValueError:
+            return RTN_PARAMETER_ERROR
+        return RTN_SUCCESS
+
+    def _param_error(self, fault: str) -> int:
+        if self._card is None:
+            return RTN_COMM_ERROR
+        self._card.record_fault(self._axis, fault)
+        return RTN_PARAMETER_ERROR
+
+    def _get(self, fn):
+        if self._card is None:
+            return RTN_COMM_ERROR, 0
+        return RTN_SUCCESS, fn()
+
+    def _law(self):
+        law = self._card.staged(self._axis)["law"]
+        return law if isinstance(law, _core.GtServoLaw) else None
+
+    def _set_gain(self, field: str, value, lo=0, hi=32767) -> int:
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if not _int_in(value, lo, hi):
+            return self._param_error("illegal_control_param")
+        law = self._law()
+        if law is None:  # an axis with the ADLINK law has no GT filter registers
+            self._card.record_fault(self._axis, "illegal_control_param")
+            return RTN_COMMAND_ERROR
+        return self._do(self._card.stage_law, self._axis, law.replace(**{field: float(value)}))
+
+    def _get_gain(self, field: str):
+        if self._card is None:
+            return RTN_COMM_ERROR, 0
+        law = self._law()
+        return (RTN_SUCCESS, int(getattr(law, field))) if law is not None else (RTN_COMMAND_ERROR, 0)
+
+    # -- simulation helpers -----------------------------------------------------------------------------------
+    def run(self, ticks: int):
+        """Runs the card ``ticks`` servo ticks (ST); returns the :class:`~servobench.card.CardRun`."""
+        return self._card.run(int(ticks))
+
+    def delay(self, ms: float):
+        """The manual's ``delay(ms)``: runs the card for ``ms`` milliseconds (rounded to whole ticks)."""
+        return self._card.run(int(round(ms * 1e-3 / self._card.servo_period_s)))
+
+    def wait_until(self, predicate, max_ticks: int = 10**7, chunk: int = 1) -> int:
+        """Runs ``chunk`` ticks at a time until ``predicate()`` is true, at most ``max_ticks``; returns the ticks."""
+        return self._card.run_until(lambda _c: predicate(), max_ticks, chunk)
+
+    # -- 8.1 system -------------------------------------------------------------------------------------------
+    def GT_Open(self, card: Card | None = None, **axis_parts) -> int:
+        """Opens the card (PCI form, L4381-4391): ``card`` or a new 4-axis :class:`~servobench.Card` built from
+        ``axis_parts``. The GT has 4 axes (L752-756)."""
+        if card is None:
+            card = Card(4, **axis_parts)
+        if len(card) != 4:
+            raise ValueError(f"a GT card has 4 axes (GT L752-756); this Card has {len(card)}")
+        self._card = card
+        self._axis = 0
+        return RTN_SUCCESS
+
+    def GT_Close(self) -> int:
+        """Closes the card (L3051-3061)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        self._card = None
+        return RTN_SUCCESS
+
+    def GT_Reset(self) -> int:
+        """Command reset, the HardRst defaults (L4124-4142): registers 0, T-curve, gains 0, limits 32767,
+        auto-update/auto-stop off, closed loop, limits on, drives off, events cleared."""
+        self._lmt_sns = 0
+        self._index = [0] * 4
+        return self._do(lambda: self._card.reset())
+
+    def GT_HardRst(self) -> None:
+        """Hardware reset (returns nothing, L4122)."""
+        self.GT_Reset()
+
+    def GT_GetSmplTm(self):
+        """(rtn, sample time in us) (L4066-4078)."""
+        return self._get(lambda: self._card.servo_period_s * 1e6)
+
+    def GT_GetCmdSts(self):
+        """(rtn, command status register) (Table 2-2, L455-478)."""
+        return self._get(lambda: _core.gt_command_status(self._card._card))
+
+    # -- 8.2 axis selection, enable, output ---------------------------------------------------------------
+    def GT_Axis(self, num: int) -> int:
+        """Selects the current axis, 1..4 (L2825-2846)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if not _int_in(num, 1, 4):
+            return self._param_error("illegal_control_param")
+        self._axis = int(num) - 1
+        return RTN_SUCCESS
+
+    def GT_AxisOn(self) -> int:
+        """Enables the drive; sets motion complete; refused while the drive-alarm bit is set (L2910-2933)."""
+        return self._do(lambda: self._card.axis_on(self._axis))
+
+    def GT_AxisOff(self) -> int:
+        """Disables the drive (L2884-2908)."""
+        return self._do(lambda: self._card.axis_off(self._axis))
+
+    def GT_DrvRst(self) -> int:
+        """Pulses the drive reset; only with the drive disabled (L3212-3239)."""
+        return self._do(lambda: self._card.drive_reset(self._axis))
+
+    def GT_CtrlMode(self, mode) -> int:
+        """Output type: 0 analog (default), 1 pulse (L3189-3210). The simulated output is fixed by the axis's drive
+        (a StepperDrive or ServoPositionDrive takes pulses): a mode that does not match it returns 1."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if mode not in (0, 1):
+            return self._param_error("illegal_control_param")
+        pulse = type(self._card.axes[self._axis].drive).__name__ in ("StepperDrive", "ServoPositionDrive")
+        if bool(mode) != pulse:
+            self._card.record_fault(self._axis, "illegal_control_param")
+            return RTN_COMMAND_ERROR
+        return RTN_SUCCESS
+
+    def GT_CloseLp(self) -> int:
+        """Closed loop (L3063-3087)."""
+        return self._do(lambda: self._card.set_closed_loop(self._axis, True))
+
+    def GT_OpenLp(self) -> int:
+        """Open loop: the output is GT_SetMtrCmd (L4355-4365)."""
+        return self._do(lambda: self._card.set_closed_loop(self._axis, False))
+
+    def GT_SetMtrCmd(self, mcmd) -> int:
+        """Open-loop output, DAC counts -32767..32767 (L4958-4970)."""
+        if self._card is not None and not _int_in(mcmd, -32767, 32767):
+            return self._param_error("illegal_control_param")
+        return self._do(lambda: self._card.set_mtr_cmd(self._axis, float(mcmd)))
+
+    def GT_GetMtrCmd(self):
+        """(rtn, open-loop output counts) (L3996-4008)."""
+        return self._get(lambda: int(self._card.mtr_cmd(self._axis)))
+
+    def GT_LmtSns(self, sense) -> int:
+        """Limit polarity for all axes: bit 2(k-1) axis k positive, 2(k-1)+1 negative; 0 = triggers on a high
+        level (default), 1 = on a low level (L4215-4248)."""
+        if self._card is not None and not _int_in(sense, 0, 0xFFFF):
+            return self._param_error("illegal_control_param")
+
+        def apply():
+            for k in range(4):
+                lim = self._card.limits(k).replace(pos_active_low=bool(int(sense) >> (2 * k) & 1),
+                                                   neg_active_low=bool(int(sense) >> (2 * k + 1) & 1))
+                self._card.set_limits(k, lim)
+            self._lmt_sns = int(sense)
+
+        return self._do(apply)
+
+    def GT_LmtsOn(self) -> int:
+        """Limit monitoring on for the current axis (default) (L4262-4272)."""
+        return self._do(lambda: self._card.set_limits(self._axis, self._card.limits(self._axis).replace(enabled=True)))
+
+    def GT_LmtsOff(self) -> int:
+        """Limit monitoring off for the current axis (L4250-4260)."""
+        return self._do(lambda: self._card.set_limits(self._axis, self._card.limits(self._axis).replace(enabled=False)))
+
+    def GT_GetLmtSwt(self):
+        """(rtn, limit input levels): bit 2(k-1) axis k positive, 2(k-1)+1 negative; 1 = the switch is hit
+        (the input is high with the default normally-closed wiring), whatever LmtSns says (L3915-3938)."""
+        def levels():
+            w = 0
+            for k in range(4):
+                lim = self._card.limits(k)
+                w |= int(self._card.pos_limit_input(k) != lim.pos_active_low) << (2 * k)
+                w |= int(self._card.neg_limit_input(k) != lim.neg_active_low) << (2 * k + 1)
+            return w
+
+        return self._get(levels)
+
+    # -- 8.3 servo filter (double-buffered) -----------------------------------------------------------------
+    def GT_SetKp(self, kp) -> int:
+        """Proportional gain 0..32767 (staged) (L4902-4914)."""
+        return self._set_gain("kp", kp)
+
+    def GT_SetKi(self, ki) -> int:
+        """Integral gain 0..32767, the term is Ki*SumE/256 (staged) (L4888-4900)."""
+        return self._set_gain("ki", ki)
+
+    def GT_SetKd(self, kd) -> int:
+        """Derivative gain 0..32767 (staged) (L4874-4886)."""
+        return self._set_gain("kd", kd)
+
+    def GT_SetKvff(self, kvff) -> int:
+        """Velocity feed-forward 0..32767 on V_target pulse/ST (staged) (L4916-4928)."""
+        return self._set_gain("kvff", kvff)
+
+    def GT_SetKaff(self, kaff) -> int:
+        """Acceleration feed-forward 0..32767 on A_target pulse/ST^2 (staged) (L4860-4872)."""
+        return self._set_gain("kaff", kaff)
+
+    def GT_SetILmt(self, ilmt) -> int:
+        """Integral limit 0..32767 on the error sum (staged; 0 clears it) (L4749-4761)."""
+        return self._set_gain("ilmt", ilmt)
+
+    def GT_SetMtrLmt(self, mlmt) -> int:
+        """Output limit 0..32767 counts (staged) (L4972-4984)."""
+        return self._set_gain("mtr_lmt", mlmt)
+
+    def GT_SetMtrBias(self, bias) -> int:
+        """Output bias -32768..32767 counts (staged) (L4944-4956)."""
+        return self._set_gain("bias", bias, -32768, 32767)
+
+    def GT_GetKp(self):
+        """(rtn, staged Kp)."""
+        return self._get_gain("kp")
+
+    def GT_GetKi(self):
+        """(rtn, staged Ki)."""
+        return self._get_gain("ki")
+
+    def GT_GetKd(self):
+        """(rtn, staged Kd)."""
+        return self._get_gain("kd")
+
+    def GT_GetKvff(self):
+        """(rtn, staged Kvff)."""
+        return self._get_gain("kvff")
+
+    def GT_GetKaff(self):
+        """(rtn, staged Kaff)."""
+        return self._get_gain("kaff")
+
+    def GT_GetILmt(self):
+        """(rtn, staged integral limit)."""
+        return self._get_gain("ilmt")
+
+    def GT_GetMtrLmt(self):
+        """(rtn, staged output limit, counts)."""
+        return self._get_gain("mtr_lmt")
+
+    def GT_GetMtrBias(self):
+        """(rtn, staged bias, counts)."""
+        return self._get_gain("bias")
+
+    def GT_SetPosErr(self, perr) -> int:
+        """Following-error limit 0..32767 pulse (staged) (L5000-5012)."""
+        if self._card is not None and not _int_in(perr, 0, 32767):
+            return self._param_error("illegal_control_param")
+        return self._do(lambda: self._card.stage_pos_err(self._axis, float(perr)))
+
+    def GT_GetPosErr(self):
+        """(rtn, staged following-error limit, pulse)."""
+        return self._get(lambda: int(self._card.staged(self._axis)["pos_err"]))
+
+    def GT_GetIntgr(self):
+        """(rtn, integral accumulator, pulse*ST, as a short) (L3775-3785)."""
+        return self._get(lambda: int(self._card.integral(self._axis)))
+
+    def GT_GetAtlErr(self):
+        """(rtn, planned - actual position of the last tick, pulse, as a short) (L3554-3576)."""
+        return self._get(lambda: int(max(-32768, min(32767, round(self._card.following_error(self._axis))))))
+
+    def GT_AuStpOn(self) -> int:
+        """Auto-stop on following error: stop, motion complete, drive off (mode bit 7) (L2752-2773)."""
+        return self._do(lambda: self._card.set_auto_stop(self._axis, True))
+
+    def GT_AuStpOff(self) -> int:
+        """Following error only flags bit 4 (default) (L2729-2750)."""
+        return self._do(lambda: self._card.set_auto_stop(self._axis, False))
+
+    # -- 8.4 profile / motion ---------------------------------------------------------------------------------
+    def GT_PrflT(self) -> int:
+        """T-curve mode (L4467-4492); refused while moving (command status bit 6)."""
+        return self._do(lambda: self._card.set_mode(self._axis, "t_curve"))
+
+    def GT_PrflS(self) -> int:
+        """S-curve mode (L4439-4465)."""
+        return self._do(lambda: self._card.set_mode(self._axis, "s_curve"))
+
+    def GT_PrflV(self) -> int:
+        """Velocity (jog) mode (L4494-4518)."""
+        return self._do(lambda: self._card.set_mode(self._axis, "jog"))
+
+    def GT_PrflG(self, master) -> int:
+        """Electronic gear mode, master 1..6 (L4407-4437). Not simulated by the card yet: returns 1."""
+        if self._card is not None and not _int_in(master, 1, 6):
+            return self._param_error("illegal_control_param")
+        return self._do(lambda: self._card.set_mode(self._axis, "gear"))
+
+    def GT_SetPos(self, pos) -> int:
+        """Target position, whole pulses -2^30..2^30-1 (staged) (L4986-4998)."""
+        if self._card is not None and not _int_in(pos, _POS_MIN, _POS_MAX):
+            return self._param_error("motion_param_overflow")
+        return self._do(lambda: self._card.stage_pos(self._axis, float(pos)))
+
+    def GT_GetPos(self):
+        """(rtn, staged target, pulse) (L4024-4036)."""
+        return self._get(lambda: int(self._card.staged(self._axis)["pos"]))
+
+    def GT_SetVel(self, vel) -> int:
+        """Velocity, pulse/ST: 0..16384 in T/S mode, -16384..16384 in jog mode (staged) (L5076-5090)."""
+        if self._card is not None:
+            lo = -16384 if self._card.mode(self._axis) == "jog" else 0
+            if not _real_in(vel, lo, 16384):
+                return self._param_error("motion_param_overflow")
+        return self._do(lambda: self._card.stage_vel(self._axis, float(vel)))
+
+    def GT_GetVel(self):
+        """(rtn, staged velocity, pulse/ST)."""
+        return self._get(lambda: self._card.staged(self._axis)["vel"])
+
+    def GT_SetAcc(self, acc) -> int:
+        """Acceleration, pulse/ST^2, 0..16384, T-curve and jog (staged) (L4571-4583)."""
+        if self._card is not None and not _real_in(acc, 0, 16384):
+            return self._param_error("motion_param_overflow")
+        return self._do(lambda: self._card.stage_acc(self._axis, float(acc)))
+
+    def GT_GetAcc(self):
+        """(rtn, staged acceleration, pulse/ST^2)."""
+        return self._get(lambda: self._card.staged(self._axis)["acc"])
+
+    def GT_SetMAcc(self, macc) -> int:
+        """S-curve maximum acceleration, pulse/ST^2, 0 <= MAcc < 0.5 (staged) (L4930-4942)."""
+        if self._card is not None and not _real_in(macc, 0, 0.5, hi_open=True):
+            return self._param_error("illegal_control_param")
+        return self._do(lambda: self._card.stage_macc(self._axis, float(macc)))
+
+    def GT_GetMAcc(self):
+        """(rtn, staged MAcc, pulse/ST^2)."""
+        return self._get(lambda: self._card.staged(self._axis)["macc"])
+
+    def GT_SetJerk(self, jerk) -> int:
+        """S-curve jerk, pulse/ST^3, 0 <= J < 0.5 (staged) (L4846-4858)."""
+        if self._card is not None and not _real_in(jerk, 0, 0.5, hi_open=True):
+            return self._param_error("illegal_control_param")
+        return self._do(lambda: self._card.stage_jerk(self._axis, float(jerk)))
+
+    def GT_GetJerk(self):
+        """(rtn, staged jerk, pulse/ST^3)."""
+        return self._get(lambda: self._card.staged(self._axis)["jerk"])
+
+    def GT_SetRatio(self, ratio) -> int:
+        """Gear ratio -16384..16384 (staged) (L5014-5026)."""
+        if self._card is not None and not _real_in(ratio, -16384, 16384):
+            return self._param_error("illegal_control_param")
+        return self._do(lambda: self._card.stage_ratio(self._axis, float(ratio)))
+
+    def GT_GetRatio(self):
+        """(rtn, staged gear ratio)."""
+        return self._get(lambda: self._card.staged(self._axis)["ratio"])
+
+    def GT_SmthStp(self) -> int:
+        """Smooth stop at the commanded deceleration (staged: needs Update) (L5092-5102)."""
+        return self._do(lambda: self._card.stage_smooth_stop(self._axis))
+
+    def GT_AbptStp(self) -> int:
+        """Abrupt stop: profile velocity 0 at once, motion complete (immediate) (L2702-2727)."""
+        return self._do(lambda: self._card.abrupt_stop(self._axis))
+
+    def GT_Update(self) -> int:
+        """Commits the current axis's staged registers at the next sample (L5184-5194)."""
+        return self._do(lambda: self._card.update(1 << self._axis))
+
+    def GT_MltiUpdt(self, mask) -> int:
+        """Commits the masked axes (bit k-1 = axis k) in the same sample; mask 0 is an error (cmd bit 2)
+        (L4274-4310)."""
+        if self._card is not None and not _int_in(mask, 0, 0xFFFF):
+            return self._param_error("illegal_control_param")
+        return self._do(lambda: self._card.update(int(mask) & 0xF))
+
+    def GT_ZeroPos(self) -> int:
+        """Actual = target = profile = 0; at rest only (cmd bit 11) (L5196-5206)."""
+        return self._do(lambda: self._card.zero_pos(self._axis))
+
+    def GT_SynchPos(self) -> int:
+        """Target = profile = actual (staged: needs Update); an error in jog mode (L5152-5162)."""
+        return self._do(lambda: self._card.stage_synch_pos(self._axis))
+
+    def GT_SetAtlPos(self, pos) -> int:
+        """Actual = target = profile = pos, whole pulses; at rest only (L4613-4639)."""
+        if self._card is not None and not _int_in(pos, _POS_MIN, _POS_MAX):
+            return self._param_error("motion_param_overflow")
+        return self._do(lambda: self._card.set_actual_pos(self._axis, float(pos)))
+
+    def GT_GetAtlPos(self):
+        """(rtn, actual position, pulse) (L3578-3606)."""
+        return self._get(lambda: int(round(self._card.actual_pos(self._axis))))
+
+    # -- 8.5 breakpoints ----------------------------------------------------------------------------------------
+    def GT_SetBrkCn(self, brk) -> int:
+        """Breakpoint compare value, whole pulses +-2^30 (staged) (L4717-4731)."""
+        if self._card is not None and not _int_in(brk, _POS_MIN, _POS_MAX):
+            return self._param_error("motion_param_overflow")
+        return self._do(lambda: self._card.stage_brk_cn(self._axis, float(brk)))
+
+    def GT_GetBrkCn(self):
+        """(rtn, staged breakpoint value, pulse) (L3624-3638)."""
+        return self._get(lambda: int(self._card.staged(self._axis)["brk_cn"]))
+
+    def GT_PosBrk(self) -> int:
+        """Arms: actual >= BrkCn (L4393-4405)."""
+        return self._do(lambda: self._card.arm_breakpoint(self._axis, "pos"))
+
+    def GT_NegBrk(self) -> int:
+        """Arms: actual <= BrkCn (L4341-4353)."""
+        return self._do(lambda: self._card.arm_breakpoint(self._axis, "neg"))
+
+    def GT_MtnBrk(self) -> int:
+        """Arms: on motion complete (L4312-4339)."""
+        return self._do(lambda: self._card.arm_breakpoint(self._axis, "motion"))
+
+    def GT_ExtBrk(self) -> int:
+        """Arms: on the home capture (L3443-3470)."""
+        return self._do(lambda: self._card.arm_breakpoint(self._axis, "home"))
+
+    def GT_BrkOff(self) -> int:
+        """Disarms an untriggered breakpoint (L2935-2956)."""
+        return self._do(lambda: self._card.arm_breakpoint(self._axis, "none"))
+
+    def GT_AuUpdtOn(self) -> int:
+        """Auto-update at a breakpoint on (mode bit 10) (L2802-2823)."""
+        return self._do(lambda: self._card.set_auto_update(self._axis, True))
+
+    def GT_AuUpdtOff(self) -> int:
+        """Auto-update off (default) (L2775-2800)."""
+        return self._do(lambda: self._card.set_auto_update(self._axis, False))
+
+    # -- 8.6 status and mode ----------------------------------------------------------------------------------
+    def GT_GetSts(self):
+        """(rtn, axis status register) (Table 4-14, L4080-4104)."""
+        return self._get(lambda: _core.gt_axis_status(self._card._card, self._axis))
+
+    def GT_ClrSts(self) -> int:
+        """Clears status bits 0-7 (bit 4 only once out of error) (L3138-3161)."""
+        return self._do(lambda: self._card.clear_events(self._axis, _core.gt_events_to_clear(0)))
+
+    def GT_RstSts(self, mask) -> int:
+        """Clears the status bits 0-7 whose mask bit is 0 (L4557-4569)."""
+        if self._card is not None and not _int_in(mask, 0, 0xFFFF):
+            return self._param_error("illegal_control_param")
+        return self._do(lambda: self._card.clear_events(self._axis, _core.gt_events_to_clear(int(mask))))
+
+    def GT_GetMode(self):
+        """(rtn, axis mode register) (Table 4-15, L3954-3978)."""
+        return self._get(lambda: _core.gt_mode_register(self._card._card, self._axis))
+
+    # -- 8.7 capture / homing ---------------------------------------------------------------------------------
+    def GT_CaptHome(self) -> int:
+        """Arms a one-shot home capture (status bit 14) (L2958-2982)."""
+        return self._do(lambda: self._card.arm_capture(self._axis, "home"))
+
+    def GT_CaptIndex(self) -> int:
+        """Arms a one-shot index capture (status bit 15) (L2984-3006)."""
+        return self._do(lambda: self._card.arm_capture(self._axis, "index"))
+
+    def GT_GetCapt(self):
+        """(rtn, captured position, pulse) (L3640-3674)."""
+        return self._get(lambda: int(round(self._card.capture_value(self._axis))))
+
+    def GT_Index(self, value=1) -> int:
+        """0 home only (default), 1 home + index for GT_Home (L4188-4213)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if value not in (0, 1):
+            return self._param_error("illegal_control_param")
+        self._index[self._axis] = int(value)
+        return RTN_SUCCESS
+
+    def GT_Home(self, pos) -> int:
+        """Automatic homing toward ``pos`` (pulse, beyond the home switch) at the staged T-curve Vel and Acc
+        (decision V24) (L4152-4168)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if not _int_in(pos, _POS_MIN, _POS_MAX):
+            return self._param_error("motion_param_overflow")
+        reg = self._card.staged(self._axis)
+        if not (reg["vel"] > 0 and reg["acc"] > 0):
+            self._card.record_fault(self._axis, "illegal_control_param")
+            return RTN_COMMAND_ERROR
+        p = GtHome(pos=float(pos), vel=reg["vel"], acc=reg["acc"], index=bool(self._index[self._axis]), zero=False)
+        return self._do(lambda: self._card.home(self._axis, p))
+
+
+_default = GtController()
+
+
+def controller() -> GtController:
+    """The module's controller (the one the module-level GT_* functions use)."""
+    return _default
+
+
+def card() -> Card | None:
+    """The card opened with :func:`GT_Open`."""
+    return _default.card
+
+
+def run(ticks: int):
+    """Runs the open card ``ticks`` servo ticks; returns the :class:`~servobench.card.CardRun`."""
+    return _default.run(ticks)
+
+
+def delay(ms: float):
+    """The manual's ``delay(ms)``: runs the open card for ``ms`` milliseconds."""
+    return _default.delay(ms)
+
+
+def wait_until(predicate, max_ticks: int = 10**7, chunk: int = 1) -> int:
+    """Runs the open card until ``predicate()`` is true (at most ``max_ticks``); returns the ticks run."""
+    return _default.wait_until(predicate, max_ticks, chunk)
+
+
+def _export(name):
+    method = getattr(GtController, name)
+
+    def f(*args, **kwargs):
+        return getattr(_default, name)(*args, **kwargs)
+
+    f.__name__ = name
+    f.__qualname__ = name
+    f.__doc__ = method.__doc__
+    return f
+
+
+GT_FUNCTIONS: tuple[str, ...] = tuple(n for n in dir(GtController) if n.startswith("GT_"))
+for _name in GT_FUNCTIONS:
+    globals()[_name] = _export(_name)
+del _name
+
+__all__ = ["GtController", "GT_FUNCTIONS", "RTN_COMMAND_ERROR", "RTN_COMM_ERROR", "RTN_PARAMETER_ERROR",
+           "RTN_SUCCESS", "card", "controller", "delay", "run", "wait_until", *GT_FUNCTIONS]
