@@ -169,10 +169,24 @@ class IdentificationLog:
         return len(self.measured)
 
     @classmethod
-    def from_arrays(cls, time_s, torque_nm, measured, *, measured_unit: str = "rad", counts_per_rev: float = 10000.0,
-                    current_bw_hz: float = math.inf, measured_on_load: bool = False) -> "IdentificationLog":
-        """A log from recorded arrays (e.g. a real machine's trace). time_s must be uniformly spaced and increasing;
-        measured_unit: 'rad', 'pulse' (position, converted with counts_per_rev), 'rad/s' or 'pulse/s' (speed)."""
+    def from_arrays(cls, time_s, command, measured, *, command_unit: str = "N*m", torque_per_volt: float | None = None,
+                    measured_unit: str = "rad", counts_per_rev: float = 10000.0, current_bw_hz: float = math.inf,
+                    measured_on_load: bool = False) -> "IdentificationLog":
+        """A log from recorded arrays (e.g. a real machine's trace). time_s must be uniformly spaced and increasing.
+
+        command
+            the drive command held over each sample: torque (command_unit 'N*m') or the DAC voltage (command_unit
+            'V', converted with torque_per_volt, N*m/V = the drive's A/V times kt; see :func:`torque_per_volt`).
+        measured_unit
+            'rad', 'pulse' (position, converted with counts_per_rev), 'rad/s' or 'pulse/s' (speed).
+        """
+        if command_unit not in ("N*m", "V"):
+            raise ValueError(f"command_unit = {command_unit!r} must be 'N*m' (torque) or 'V' (DAC voltage)")
+        if command_unit == "V":
+            if torque_per_volt is None or not (math.isfinite(torque_per_volt) and torque_per_volt > 0):
+                raise ValueError(f"torque_per_volt = {torque_per_volt} must be > 0 (N*m/V) for a command in volts")
+            command = np.asarray(command, dtype=float) * torque_per_volt
+        torque_nm = command
         t = np.asarray(time_s, dtype=float)
         if t.ndim != 1 or len(t) < 3:
             raise ValueError("time_s must be a 1-D array of at least 3 samples")
@@ -192,7 +206,7 @@ class IdentificationLog:
             raise ValueError(f"measured_unit = {measured_unit!r} is not one of {sorted(units)}")
         scale, speed = units[measured_unit]
         if len(np.asarray(measured)) != len(t) or len(np.asarray(torque_nm)) != len(t):
-            raise ValueError(f"time_s, torque_nm and measured must have the same length (got {len(t)}, "
+            raise ValueError(f"time_s, command and measured must have the same length (got {len(t)}, "
                              f"{len(np.asarray(torque_nm))}, {len(np.asarray(measured))})")
         return cls(ts, np.asarray(torque_nm, float), np.asarray(measured, float) * scale, speed, measured_on_load,
                    counts_per_rev, current_bw_hz)
@@ -200,7 +214,8 @@ class IdentificationLog:
     @classmethod
     def from_csv(cls, path: str, *, time="time_s", torque="torque_nm", measured="position_rad",
                  measured_unit: str = "rad", **kwargs) -> "IdentificationLog":
-        """A log from a CSV file with a header row; the column names are arguments."""
+        """A log from a CSV file with a header row; the column names are arguments, the others those of
+        :meth:`from_arrays` (command_unit='V' with torque_per_volt for a DAC-voltage column)."""
         with open(path, newline="") as f:
             rows = list(csv.DictReader(f))
         if not rows:

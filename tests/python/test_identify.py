@@ -104,6 +104,15 @@ def test_two_mass_within_2pct_from_50pct_guesses(pattern):
     sb.Axis(plant=plant).run(np.zeros(10))
 
 
+def test_two_mass_soft_shaft_within_2pct():
+    # A second two-mass plant: the shaft half as stiff (resonance 239 Hz), every guess 50 % off the other way.
+    true = dict(TWO_MASS, k_nm_per_rad=150.0)
+    fit = sb.fit_time(two_mass_log(true), "two_mass",
+                      guess={k: v * f for (k, v), f in zip(true.items(), [0.5, 1.5, 0.5, 1.5, 0.5, 1.5])})
+    err = errors_pct(fit, true)
+    assert max(abs(e) for e in err.values()) < 2.0, err
+
+
 @pytest.mark.parametrize("seed", [0, 1])
 def test_two_mass_within_5pct_with_encoder_noise(seed):
     log = two_mass_log(noise=0.5, seed=seed)
@@ -200,6 +209,20 @@ def test_to_plant_and_csv_round_trip(tmp_path):
     assert back.sample_period_s == pytest.approx(TS, rel=1e-9)
     np.testing.assert_allclose(back.measured, log.measured, rtol=0, atol=1e-15)
     np.testing.assert_allclose(back.torque_nm, log.torque_nm, rtol=0, atol=1e-15)
+
+
+def test_log_from_dac_volts():
+    # A trace of the DAC voltage (what a card records) instead of the torque: converted with the drive's A/V x kt.
+    log = sb.run_experiment(axis_with(_core.RigidPlant(**RIGID_A)), amplitude_v=0.1, duration_s=0.5)
+    tpv = log.extra["torque_per_volt"]
+    assert tpv == pytest.approx(0.4)
+    v = IdentificationLog.from_arrays(log.time_s, log.torque_nm / tpv, log.measured, command_unit="V",
+                                      torque_per_volt=tpv, current_bw_hz=1500.0)
+    np.testing.assert_allclose(v.torque_nm, log.torque_nm, rtol=1e-15, atol=0)
+    with pytest.raises(ValueError, match="torque_per_volt = None must be > 0"):
+        IdentificationLog.from_arrays(log.time_s, log.torque_nm, log.measured, command_unit="V")
+    with pytest.raises(ValueError, match="command_unit = 'A'"):
+        IdentificationLog.from_arrays(log.time_s, log.torque_nm, log.measured, command_unit="A")
 
 
 def test_bad_logs_are_refused():
