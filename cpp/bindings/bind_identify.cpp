@@ -72,43 +72,6 @@ std::function<bool(int, double)> iteration_callback(const py::object& f) {
   };
 }
 
-identify::TimeFitOptions time_options(const std::string& model, double segment_samples, double initial_segment_samples,
-                                      double min_segment_samples,
-                                      double edge_samples, double direction_window, double rest_threshold,
-                                      double substeps,
-                                      double current_bw_hz, double stribeck_exponent, double measurement_scale,
-                                      double continuity_weight, const std::string& loss, double loss_scale, double max_iterations,
-                                      double num_threads, double max_relative_std_error) {
-  identify::TimeFitOptions o;
-  o.model = model_of(model);
-  check_integer("TimeFitOptions", "segment_samples", segment_samples, 10, 100000);
-  check_integer("TimeFitOptions", "substeps", substeps, 1, 1000);
-  check_integer("TimeFitOptions", "max_iterations", max_iterations, 1, 10000);
-  check_integer("TimeFitOptions", "num_threads", num_threads, 1, 64);
-  o.segment_samples = static_cast<int>(segment_samples);
-  check_integer("TimeFitOptions", "initial_segment_samples", initial_segment_samples, 10, 100000);
-  o.initial_segment_samples = static_cast<int>(initial_segment_samples);
-  check_integer("TimeFitOptions", "min_segment_samples", min_segment_samples, 3, segment_samples);
-  check_integer("TimeFitOptions", "edge_samples", edge_samples, 0, 1000);
-  check_integer("TimeFitOptions", "direction_window", direction_window, 2, 1000);
-  o.min_segment_samples = static_cast<int>(min_segment_samples);
-  o.edge_samples = static_cast<int>(edge_samples);
-  o.direction_window = static_cast<int>(direction_window);
-  o.rest_threshold = rest_threshold;
-  o.substeps = static_cast<int>(substeps);
-  o.current_bw_hz = current_bw_hz;
-  o.stribeck_exponent = stribeck_exponent;
-  o.measurement_scale = measurement_scale;
-  o.continuity_weight = continuity_weight;
-  o.loss = loss_of(loss);
-  o.loss_scale = loss_scale;
-  o.max_iterations = static_cast<int>(max_iterations);
-  o.num_threads = static_cast<int>(num_threads);
-  o.max_relative_std_error = max_relative_std_error;
-  o.validate();
-  return o;
-}
-
 // A log from arrays.
 identify::TimeLog time_log(const py::handle& torque_nm, const py::handle& measured, double sample_period_s,
                            bool measured_is_speed, bool measured_on_load) {
@@ -136,7 +99,8 @@ identify::TimeFitOptions options_from(const std::string& model, const py::kwargs
   };
   static const char* known[] = {"segment_samples", "initial_segment_samples", "min_segment_samples", "edge_samples",
                                 "direction_window", "rest_threshold", "substeps", "current_bw_hz",
-                                "stribeck_exponent", "measurement_scale", "num_threads"};
+                                "stribeck_exponent", "measurement_scale", "num_threads", "continuity_weight", "loss",
+                                "loss_scale", "max_iterations", "max_relative_std_error", "hold_stribeck_first"};
   for (const auto& item : kw) {
     const std::string k = py::str(item.first);
     bool ok = false;
@@ -154,6 +118,12 @@ identify::TimeFitOptions options_from(const std::string& model, const py::kwargs
   real("current_bw_hz", o.current_bw_hz);
   real("stribeck_exponent", o.stribeck_exponent);
   real("measurement_scale", o.measurement_scale);
+  real("continuity_weight", o.continuity_weight);
+  real("loss_scale", o.loss_scale);
+  real("max_relative_std_error", o.max_relative_std_error);
+  whole("max_iterations", o.max_iterations, 1, 10000);
+  if (kw.contains("loss")) o.loss = loss_of(kw["loss"].cast<std::string>());
+  if (kw.contains("hold_stribeck_first")) o.hold_stribeck_first = kw["hold_stribeck_first"].cast<bool>();
   o.validate();
   return o;
 }
@@ -176,24 +146,11 @@ void bind_identify(py::module_& m) {
       "identify_time",
       [](const py::handle& torque_nm, const py::handle& measured, double sample_period_s, bool measured_is_speed,
          bool measured_on_load, const std::string& model, const py::handle& initial, const std::vector<bool>& fixed,
-         const py::handle& lower, const py::handle& upper, double segment_samples, double initial_segment_samples,
-         double min_segment_samples,
-         double edge_samples, double direction_window, double rest_threshold, double substeps,
-         double current_bw_hz, double stribeck_exponent, double measurement_scale, double continuity_weight,
-         const std::string& loss, double loss_scale, double max_iterations, double num_threads,
-         double max_relative_std_error, bool hold_stribeck_first, const py::object& progress) {
-        identify::TimeLog log;
-        log.sample_period_s = sample_period_s;
-        log.torque_nm = real_vector(torque_nm, "torque_nm");
-        log.measured = real_vector(measured, "measured");
-        log.measured_is_speed = measured_is_speed;
-        log.measured_on_load = measured_on_load;
-        identify::TimeFitOptions o =
-            time_options(model, segment_samples, initial_segment_samples, min_segment_samples, edge_samples, direction_window, rest_threshold,
-                         substeps, current_bw_hz, stribeck_exponent, measurement_scale,
-                         continuity_weight, loss, loss_scale, max_iterations, num_threads, max_relative_std_error);
+         const py::handle& lower, const py::handle& upper, const py::object& progress, const py::kwargs& kw) {
+        const identify::TimeLog log = time_log(torque_nm, measured, sample_period_s, measured_is_speed,
+                                               measured_on_load);
+        identify::TimeFitOptions o = options_from(model, kw);
         o.progress = iteration_callback(progress);
-        o.hold_stribeck_first = hold_stribeck_first;
         const identify::ParameterSetup s = setup_of(initial, fixed, lower, upper);
         identify::TimeFitResult r;
         {
@@ -211,12 +168,8 @@ void bind_identify(py::module_& m) {
       },
       py::arg("torque_nm"), py::arg("measured"), py::kw_only(), py::arg("sample_period_s"),
       py::arg("measured_is_speed"), py::arg("measured_on_load"), py::arg("model"), py::arg("initial"),
-      py::arg("fixed"), py::arg("lower"), py::arg("upper"), py::arg("segment_samples"),
-      py::arg("initial_segment_samples"), py::arg("min_segment_samples"), py::arg("edge_samples"), py::arg("direction_window"), py::arg("rest_threshold"),
-      py::arg("substeps"),
-      py::arg("current_bw_hz"), py::arg("stribeck_exponent"), py::arg("measurement_scale"), py::arg("continuity_weight"), py::arg("loss"),
-      py::arg("loss_scale"), py::arg("max_iterations"), py::arg("num_threads"), py::arg("max_relative_std_error"),
-      py::arg("hold_stribeck_first") = true, py::arg("progress") = py::none(), "Time-domain grey-box fit of the plant (Ceres). Releases the GIL.");
+      py::arg("fixed"), py::arg("lower"), py::arg("upper"), py::arg("progress") = py::none(),
+      "Time-domain grey-box fit of the plant (Ceres). Options: TimeFitOptions field names. Releases the GIL.");
 
   m.def(
       "identify_shooting_problem",
@@ -270,15 +223,10 @@ void bind_identify(py::module_& m) {
   m.def(
       "identify_simulate",
       [](const py::handle& torque_nm, double sample_period_s, bool measured_is_speed, bool measured_on_load,
-         const std::string& model, const py::handle& parameters, const py::handle& initial_state, double substeps,
-         double current_bw_hz, double stribeck_exponent) {
-        identify::TimeLog log;
-        log.sample_period_s = sample_period_s;
-        log.torque_nm = real_vector(torque_nm, "torque_nm");
-        log.measured_is_speed = measured_is_speed;
-        log.measured_on_load = measured_on_load;
-        identify::TimeFitOptions o = time_options(model, 1000, 250, 20, 3, 6, 2.0, substeps, current_bw_hz, stribeck_exponent, 1.0, 0.0,
-                                                  "none", 1.0, 100, 1, 0.2);
+         const std::string& model, const py::handle& parameters, const py::handle& initial_state,
+         const py::kwargs& kw) {
+        identify::TimeLog log = time_log(torque_nm, torque_nm, sample_period_s, measured_is_speed, measured_on_load);
+        const identify::TimeFitOptions o = options_from(model, kw);
         std::vector<double> out;
         const auto p = real_vector(parameters, "parameters");
         const auto x0 = real_vector(initial_state, "initial_state");
@@ -290,8 +238,8 @@ void bind_identify(py::module_& m) {
       },
       py::arg("torque_nm"), py::kw_only(), py::arg("sample_period_s"), py::arg("measured_is_speed"),
       py::arg("measured_on_load"), py::arg("model"), py::arg("parameters"), py::arg("initial_state"),
-      py::arg("substeps"), py::arg("current_bw_hz"), py::arg("stribeck_exponent"),
-      "The identification model run open loop over a torque log (the code the fit differentiates, on double).");
+      "The identification model run open loop over a torque log (the code the fit differentiates, on double). "
+      "Options: TimeFitOptions field names (substeps, current_bw_hz, stribeck_exponent).");
 
   m.def(
       "identify_frequency",
