@@ -11,6 +11,7 @@
 #include "arrays.hpp"
 #include "param_class.hpp"
 #include "servobench/common/validate.hpp"
+#include "servobench/machine/aps_status.hpp"
 #include "servobench/machine/card.hpp"
 #include "servobench/machine/gt_status.hpp"
 
@@ -53,7 +54,7 @@ machine::CaptureTrigger capture_from(const std::string& s) {
 }
 
 machine::CommandFault fault_from(const std::string& s) {
-  for (int f = 0; f <= static_cast<int>(machine::CommandFault::InvalidInMode); ++f) {
+  for (int f = 0; f <= static_cast<int>(machine::CommandFault::DistanceTooShort); ++f) {
     const auto c = static_cast<machine::CommandFault>(f);
     if (s == to_string(c)) return c;
   }
@@ -233,12 +234,23 @@ void bind_card(py::module_& m) {
            py::arg("axis"), py::arg("trigger"))
       .def("capture_value", [](Card& k, double i) { return k.loop(idx(k, i)).capture().value(); }, py::arg("axis"))
       .def("home", [](Card& k, double i, const motion::GtHomeParams& p) { k.home(idx(k, i), p); }, py::arg("axis"), py::arg("params"))
+      .def("move_ptp", [](Card& k, double i, const motion::AdlinkPtpParams& p) { k.move_ptp(idx(k, i), p); },
+           py::arg("axis"), py::arg("params"))
+      .def("move_velocity", [](Card& k, double i, double v, const motion::AdlinkPtpParams& p) {
+             k.move_velocity(idx(k, i), v, p);
+           }, py::arg("axis"), py::arg("vel_pulse_per_s"), py::arg("params"))
+      .def("stop_move", [](Card& k, double i, const motion::AdlinkPtpParams& p) { k.stop_move(idx(k, i), p); },
+           py::arg("axis"), py::arg("params"))
+      .def("set_in_position_band", [](Card& k, double i, double v) { k.set_in_position_band(idx(k, i), v); },
+           py::arg("axis"), py::arg("pulse"))
+      .def("in_position", [](const Card& k, double i) { return k.in_position(idx(k, i)); }, py::arg("axis"))
       .def("set_limits", [](Card& k, double i, const machine::LimitConfig& l) { k.set_limits(idx(k, i), l); },
            py::arg("axis"), py::arg("limits"))
       .def("limits", [](const Card& k, double i) { return k.state(idx(k, i)).limits; }, py::arg("axis"))
       .def("set_alarm_enabled", [](Card& k, double i, bool on) { k.set_alarm_enabled(idx(k, i), on); }, py::arg("axis"), py::arg("on"))
       .def("set_alarm_input", [](Card& k, double i, bool on) { k.set_alarm_input(idx(k, i), on); }, py::arg("axis"), py::arg("alarm"))
       .def("set_error_level", [](Card& k, double i, double v) { k.set_error_level(idx(k, i), v); }, py::arg("axis"), py::arg("pulse"))
+      .def("error_level", [](const Card& k, double i) { return k.state(idx(k, i)).error_level_pulse; }, py::arg("axis"))
       .def_property("emergency_stop", &Card::emergency_stop, &Card::set_emergency_stop)
       .def("clear_events", [](Card& k, double i, double which) {
              check_integer("Card", "which", which, 0, 4095);
@@ -270,6 +282,12 @@ void bind_card(py::module_& m) {
 
   m.def("gt_axis_status", [](const Card& k, double i) { return machine::gt_axis_status(k, idx(k, i)); },
         py::arg("card"), py::arg("axis"), "GT axis status register (Table 4-14) of a card axis (0-based).");
+  m.def("aps_motion_status", [](const Card& k, double i) { return machine::aps_motion_status(k, idx(k, i)); },
+        py::arg("card"), py::arg("axis"), "ADLINK APS_motion_status (MSTS) of a card axis (0-based), L3164-3206");
+  m.def("aps_motion_io_status", [](const Card& k, double i) { return machine::aps_motion_io_status(k, idx(k, i)); },
+        py::arg("card"), py::arg("axis"), "ADLINK APS_motion_io_status (MIO) of a card axis (0-based), L3611-3631");
+  m.def("aps_stop_code", [](const Card& k, double i) { return machine::aps_stop_code(k, idx(k, i)); },
+        py::arg("card"), py::arg("axis"), "ADLINK APS_get_stop_code of a card axis (0-based), L3922-4023");
   m.def("gt_mode_register", [](const Card& k, double i) { return machine::gt_mode_register(k, idx(k, i)); },
         py::arg("card"), py::arg("axis"), "GT axis mode register (Table 4-15) of a card axis (0-based).");
   m.def("gt_command_status", [](const Card& k) { return machine::gt_command_status(k); }, py::arg("card"),

@@ -60,6 +60,8 @@ const char* to_string(CommandFault fault) {
     case CommandFault::DirectionInhibited: return "direction_inhibited";
     case CommandFault::EmergencyStopActive: return "emergency_stop_active";
     case CommandFault::InvalidInMode: return "invalid_in_mode";
+    case CommandFault::DriveAlarmActive: return "drive_alarm_active";
+    case CommandFault::DistanceTooShort: return "distance_too_short";
   }
   return "?";
 }
@@ -358,6 +360,15 @@ void Card::update(std::uint32_t mask) {
     if (!(mask & (1u << i))) continue;
     std::string why;
     const CommandFault f = check_commit(i, st_[i].staged, st_[i].dirty, &why);
+    if (f == CommandFault::EmergencyStopActive) st_[i].stop_cause = StopCause::EmergencyStop;
+    if (f == CommandFault::DirectionInhibited) {
+      const CardAxisState& s = st_[i];
+      const double dir = s.mode == AxisMode::Jog ? s.staged.vel : s.staged.pos - loops_[i]->generator().state().pos;
+      const bool pos = dir > 0.0;
+      const bool hard = s.limits.enabled && (s.events & event_bit(pos ? CardEvent::PosLimit : CardEvent::NegLimit));
+      st_[i].stop_cause = pos ? (hard ? StopCause::PosLimit : StopCause::SoftPosLimit)
+                              : (hard ? StopCause::NegLimit : StopCause::SoftNegLimit);
+    }
     if (f != CommandFault::None) refuse(static_cast<int>(i), f, "update: " + why);
   }
   for (std::size_t i = 0; i < loops_.size(); ++i) {
@@ -409,6 +420,7 @@ void Card::commit(std::size_t i, const AxisRegisters& r, std::uint32_t d) {
         case AxisMode::Jog: gen.jog(r.vel, r.acc); break;
         default: break;
       }
+      if (gen.moving()) s.stop_cause = StopCause::None;  // a new motion clears the abnormal stop (ADLINK L3652)
     }
     if (d & kStagedSmoothStop) gen.smooth_stop();
   } catch (const motion::MotionCommandRefused&) {
@@ -536,6 +548,92 @@ void Card::home(std::size_t i, const motion::GtHomeParams& p) {
   }
 }
 
+bool Card::alarm_active(std::size_t i) const {
+  const CardAxisState& s = st_[i];
+  return s.alarm_enabled && (loops_[i]->axis().alarm() || s.alarm_input);
+}
+
+void Card::check_move_allowed(std::size_t i, double dir) {
+  CardAxisState& s = at(i);
+  const int ai = static_cast<int>(i);
+  if (s.mode == AxisMode::Gear || s.mode == AxisMode::Coordinated)
+    refuse(ai, CommandFault::InvalidInMode, std::string("no point-to-point or velocity move in ") + to_string(s.mode) + " mode");
+  if (loops_[i]->sequence_active()) refuse(ai, CommandFault::ChangeInMotion, "a homing sequence runs");
+  if (estop_) {
+    s.stop_cause = StopCause::EmergencyStop;
+    refuse(ai, CommandFault::EmergencyStopActive, "motion ignored while the emergency stop is active (ADLINK L3936)");
+  }
+  if (alarm_active(i)) {
+    s.stop_cause = StopCause::DriveAlarm;
+    refuse(ai, CommandFault::DriveAlarmActive, "motion ignored while the alarm input is active (ADLINK L3953)");
+  }
+  if (dir > 0.0 && inhibited_pos(i)) {
+    const bool hard = s.limits.enabled && (s.events & event_bit(CardEvent::PosLimit));
+    s.stop_cause = hard ? StopCause::PosLimit : StopCause::SoftPosLimit;
+    refuse(ai, CommandFault::DirectionInhibited, "positive motion ignored while the positive limit is active (ADLINK L3971, L4007)");
+  }
+  if (dir < 0.0 && inhibited_neg(i)) {
+    const bool hard = s.limits.enabled && (s.events & event_bit(CardEvent::NegLimit));
+    s.stop_cause = hard ? StopCause::NegLimit : StopCause::SoftNegLimit;
+    refuse(ai, CommandFault::DirectionInhibited, "negative motion ignored while the negative limit is active (ADLINK L3973, L4009)");
+  }
+}
+
+void Card::move_ptp(std::size_t i, const motion::AdlinkPtpParams& p) {
+  at(i);
+  checked(i, CommandFault::MotionParamOverflow, [&] { p.validate(); });
+  motion::ProfileGenerator& gen = loops_[i]->generator();
+  check_move_allowed(i, p.pos - gen.state().pos);
+  try {
+    gen.move_adlink_ptp(p.pos, p.limits(period_s_));
+  } catch (const motion::MotionCommandRefused& e) {
+    refuse(static_cast<int>(i), CommandFault::ChangeInMotion, e.what());
+  } catch (const std::invalid_argument& e) {
+    refuse(static_cast<int>(i), CommandFault::DistanceTooShort, e.what());
+  }
+  CardAxisState& s = st_[i];
+  s.staged.pos = s.active.pos = p.pos;
+  if (gen.moving()) s.stop_cause = StopCause::None;
+}
+
+void Card::move_velocity(std::size_t i, double vel_pulse_per_s, const motion::AdlinkPtpParams& p) {
+  at(i);
+  checked(i, CommandFault::MotionParamOverflow, [&] {
+    p.validate();
+    check_range("Card", "vel_pulse_per_s", vel_pulse_per_s, -p.vm, p.vm, "-PRA_VM..PRA_VM, pulse/s");
+  });
+  check_move_allowed(i, vel_pulse_per_s);
+  motion::ProfileGenerator& gen = loops_[i]->generator();
+  try {
+    gen.move_adlink_velocity(vel_pulse_per_s * period_s_, p.limits(period_s_));
+  } catch (const motion::MotionCommandRefused& e) {
+    refuse(static_cast<int>(i), CommandFault::ChangeInMotion, e.what());
+  }
+  if (gen.moving()) st_[i].stop_cause = StopCause::None;
+}
+
+void Card::stop_move(std::size_t i, const motion::AdlinkPtpParams& p) {
+  at(i);
+  checked(i, CommandFault::MotionParamOverflow, [&] { p.validate(); });
+  if (loops_[i]->sequence_active()) {
+    loops_[i]->cancel_sequence();
+    stop_profile(i);
+    return;
+  }
+  loops_[i]->generator().adlink_stop_move(p);
+}
+
+void Card::set_in_position_band(std::size_t i, double pulse) {
+  at(i);
+  check_nonnegative("Card", "in_position_pulse", pulse);
+  st_[i].in_position_pulse = pulse;
+}
+
+bool Card::in_position(std::size_t i) const {
+  const CardAxisState& s = state(i);
+  return s.enabled && !moving(i) && std::fabs(s.error_pulse) <= s.in_position_pulse;
+}
+
 void Card::set_limits(std::size_t i, const LimitConfig& limits) {
   at(i);
   limits.validate();
@@ -660,6 +758,9 @@ void Card::after_tick(std::size_t i, double error) {
   if (l.breakpoint_flag()) s.events |= event_bit(CardEvent::Breakpoint);
   if (l.capture().captured()) s.events |= event_bit(CardEvent::Captured);
   const bool mv = l.generator().moving();
+  const double v = l.generator().state().vel;
+  if (v > 0.0) s.dir_positive = true;
+  if (v < 0.0) s.dir_positive = false;
   if (s.was_moving && !mv) s.events |= event_bit(CardEvent::MotionComplete);
   s.was_moving = mv;
 }

@@ -41,7 +41,9 @@ std::uint16_t gt_command_status_bit(CommandFault fault) {
     case CommandFault::InvalidInMode: return 1u << 11;
     case CommandFault::None:
     case CommandFault::DirectionInhibited:
-    case CommandFault::EmergencyStopActive: return 0;
+    case CommandFault::EmergencyStopActive:
+    case CommandFault::DriveAlarmActive: return 0;
+    case CommandFault::DistanceTooShort: return 1u << 0;
   }
   return 0;
 }

@@ -75,6 +75,8 @@ enum class CommandFault : int {
   DirectionInhibited,      // motion toward a latched limit (no GT cmd bit; axis bit 7)
   EmergencyStopActive,     // motion while the e-stop input is active (ADLINK: ignored, stop code 1)
   InvalidInMode,           // a command the current mode does not have (e.g. SmthStp in gear mode)
+  DriveAlarmActive,        // motion while the alarm input is active (ADLINK L3950-3953: ignored, stop code 2)
+  DistanceTooShort,        // a point-to-point move shorter than its VS -> VE ramps (ADLINK, decision M9)
 };
 const char* to_string(CommandFault fault);
 
@@ -159,8 +161,10 @@ struct CardAxisState {
   LimitConfig limits{};
   double error_pulse = 0.0;         // the law's error E_n of the last tick (planned - actual), pulse
   bool following_error_now = false; // the check failed in the last tick (enabled, closed loop, |E| > limit)
-  StopCause stop_cause = StopCause::None;
+  StopCause stop_cause = StopCause::None;  // cleared when the next motion starts (ADLINK ASTP, L3652)
   bool was_moving = false;
+  bool dir_positive = false;        // direction of the last profile motion, kept after the stop (ADLINK DIR, L3218)
+  double in_position_pulse = 10.0;  // in-position band |E| (the drive's INP output, ADLINK MIO bit 6; V46)
 };
 
 // What one tick of one axis records (each a buffer of n doubles or null), besides the Axis and loop traces.
@@ -228,6 +232,16 @@ class Card {
   void arm_breakpoint(std::size_t i, motion::BreakKind kind);  // GT_PosBrk/NegBrk/MtnBrk/ExtBrk, None = BrkOff
   void arm_capture(std::size_t i, CaptureTrigger trigger);    // GT_CaptHome/CaptIndex (None disarms)
   void home(std::size_t i, const motion::GtHomeParams& p);    // GT_Home / GT_Index automatic homing
+  // ADLINK-style immediate moves (no Update; pulse/s units in p, converted with the servo period): point to
+  // point to p.pos (APS_ptp / relative / absolute move, on the fly during a PTP or velocity move), velocity
+  // move to the signed vel_pulse_per_s (APS_vel / APS_velocity_move), decelerating stop at p.sd_dec (or p.dec)
+  // (APS_stop_move). Motion while the e-stop, the alarm input or a latched limit in the move's direction is
+  // active is refused and records that cause as the stop cause (ADLINK L3931-4010: ignored, stop code, ASTP).
+  void move_ptp(std::size_t i, const motion::AdlinkPtpParams& p);
+  void move_velocity(std::size_t i, double vel_pulse_per_s, const motion::AdlinkPtpParams& p);
+  void stop_move(std::size_t i, const motion::AdlinkPtpParams& p);
+  void set_in_position_band(std::size_t i, double pulse);  // |E| <= band at rest counts as in position
+  bool in_position(std::size_t i) const;  // servo on, at rest, |E| <= band (ADLINK MIO INP)
 
   // -- safety configuration and inputs ----------------------------------------------------------------------
   void set_limits(std::size_t i, const LimitConfig& limits);
@@ -279,6 +293,10 @@ class Card {
   CommandFault check_commit(std::size_t i, const AxisRegisters& r, std::uint32_t d, std::string* why) const;
   void commit(std::size_t i, const AxisRegisters& r, std::uint32_t d);
   void tick_once(const std::vector<CardTrace>& traces, std::size_t k);
+  // Before an immediate move of direction dir on axis i: refuses (recording the ignored command's stop cause)
+  // while the e-stop, the alarm input or a latched limit toward dir is active.
+  void check_move_allowed(std::size_t i, double dir);
+  bool alarm_active(std::size_t i) const;
   void safety_before(std::size_t i);
   void after_tick(std::size_t i, double error);
 

@@ -1,0 +1,426 @@
+"""The ADLINK APS function library (PCI-8254/8258 manual, seed 004) on the virtual :class:`~servobench.Card`.
+
+Names, argument order and units are the manual's: axis IDs from 0 (``I32 axis_id = 0``, L2608), positions in
+pulse, velocities in pulse/s, accelerations in pulse/s^2 (unit factor 1), axis parameters by their PRA_* numbers
+(L1746-1762, L2744-2751, L3998-4019). Every function returns an I32 code: ``ERR_NoError`` (0) or a negative
+error code of the APS library header ErrorCodeDef.h (the manual names only ERR_NoError; decision V49).
+``APS_motion_status`` / ``APS_motion_io_status`` return the status word itself (L3168, L3611); a getter
+``APS_get_x(axis, &x)`` returns the tuple ``(rtn, x)``.
+
+A motion command the controller ignores while EMG, ALM or a limit toward the move is active returns
+ERR_NoError and changes nothing but the stop code and ASTP, as the manual describes (L3931-4010; V47). A command
+refused in this state of the axis (a move during homing, servo on with the alarm latched, position set while
+moving) returns ERR_FunctionNotAvailable (-13) and leaves the state unchanged.
+
+This module only translates: the behaviour (moves, status words, safety) is the Card's. Simulation helpers (not
+in the manual): :func:`run` (ticks), :func:`Sleep` (ms, as the manual's examples), :func:`wait_until`, :func:`card`.
+"""
+
+from __future__ import annotations
+
+import math
+
+from .. import _core
+from .._core import AdlinkPtp, ApsServoLaw, CardCommandRefused, MotionCommandRefused
+from ..card import Card
+
+# -- return codes (APS library ErrorCodeDef.h; the manual uses ERR_NoError, L2309) -------------------------------
+ERR_NoError = 0
+ERR_DeviceNotInitial = -4
+ERR_DeviceAlreadyInitialed = -7
+ERR_ParametersInvalid = -10
+ERR_FunctionNotAvailable = -13
+ERR_DistantNotEnough = -22
+
+# -- axis parameters (hex numbers of the manual) ---------------------------------------------------------------------
+PRA_EL_LOGIC = 0x00       # PEL/MEL input logic, 0 normal / 1 inverted (L1614)
+PRA_SD_DEC = 0x07         # deceleration of APS_stop_move, pulse/s^2 (L2744, L4001)
+PRA_STP_DEC = PRA_SD_DEC  # the name the velocity example uses (L2613)
+PRA_SPEL_EN = 0x08        # soft PEL switch (L4002)
+PRA_SMEL_EN = 0x09        # soft MEL switch (L4003)
+PRA_SPEL_POS = 0x0A       # soft PEL position, pulse (L4004)
+PRA_SMEL_POS = 0x0B       # soft MEL position, pulse (L4005)
+PRA_SF = 0x20             # S-factor 0..1 (L2236)
+PRA_CURVE = PRA_SF        # the name the velocity example uses (L2614)
+PRA_ACC = 0x21            # acceleration, pulse/s^2 (L2746)
+PRA_DEC = 0x22            # deceleration, pulse/s^2 (L2747)
+PRA_VS = 0x23             # start velocity, pulse/s (L2748)
+PRA_VM = 0x24             # maximum velocity, pulse/s (L2749)
+PRA_VE = 0x25             # end velocity, pulse/s (L2750)
+PRA_KP_GAIN = 0x90        # servo law (L1746-1762)
+PRA_KI_GAIN = 0x91
+PRA_KD_GAIN = 0x92
+PRA_KVFF_GAIN = 0x93
+PRA_KAFF_GAIN = 0x9A
+PRA_KP_SHIFT = 0x9B
+PRA_KI_SHIFT = 0x9C
+PRA_KD_SHIFT = 0x9D
+PRA_KVFF_SHIFT = 0x9E
+PRA_KAFF_SHIFT = 0x9F
+PRA_PID_SHIFT = 0xA0
+PRA_SERVO_V_BIAS = 0x120
+PRA_SERVO_V_LIMIT = 0x123
+PRA_ERR_POS_LEVEL = 0x124  # position-error protection level, pulse, 0 = off (L4019)
+PRA_SERVO_V_INVERSE = 0x125
+PRA_INTEGRAL_LIMIT = 0x12B
+
+# -- status bits (L3164-3206, L3611-3631) and stop codes (L3922-4023) ---------------------------------------------
+MTS_CSTP, MTS_VM, MTS_ACC, MTS_DEC, MTS_DIR, MTS_MDN, MTS_HMV = 0, 1, 2, 3, 4, 5, 6
+MTS_WAIT, MTS_PTB, MTS_JOG, MTS_ASTP, MTS_BLD, MTS_PRED, MTS_POSTD, MTS_GER = 10, 11, 15, 16, 17, 18, 19, 28
+MIO_ALM, MIO_PEL, MIO_MEL, MIO_ORG, MIO_EMG, MIO_EZ, MIO_INP, MIO_SVON = 0, 1, 2, 3, 4, 5, 6, 7
+MIO_SPEL, MIO_SMEL = 11, 12
+STOP_NORMAL, STOP_EMG, STOP_ALM, STOP_SVNO, STOP_PEL, STOP_MEL, STOP_SPEL, STOP_SMEL = 0, 1, 2, 3, 4, 5, 6, 7
+STOP_ERROR_LEVEL = 13  # the manual prints 6 (L4023), colliding with STOP_SPEL; APS_define.h has 13 (V41)
+
+# PRA_* parameters of the servo law: ApsServoLaw field, allowed range, integer?
+_LAW = {
+    PRA_KP_GAIN: ("kp", 0, 65535), PRA_KI_GAIN: ("ki", 0, 65535), PRA_KD_GAIN: ("kd", 0, 65535),
+    PRA_KVFF_GAIN: ("kvff", 0, 65535), PRA_KAFF_GAIN: ("kaff", 0, 65535),
+    PRA_KP_SHIFT: ("kp_shift", -31, 31), PRA_KI_SHIFT: ("ki_shift", -31, 31), PRA_KD_SHIFT: ("kd_shift", -31, 31),
+    PRA_KVFF_SHIFT: ("kvff_shift", -31, 31), PRA_KAFF_SHIFT: ("kaff_shift", -31, 31),
+    PRA_PID_SHIFT: ("pid_shift", -31, 31), PRA_INTEGRAL_LIMIT: ("integral_limit", 0, 2147483647),
+    PRA_SERVO_V_BIAS: ("v_bias", 0, 10), PRA_SERVO_V_LIMIT: ("v_limit", 0, 10), PRA_SERVO_V_INVERSE: ("v_inverse", 0, 1),
+}
+_INTEGER_LAW = {PRA_KP_GAIN, PRA_KI_GAIN, PRA_KD_GAIN, PRA_KVFF_GAIN, PRA_KAFF_GAIN, PRA_KP_SHIFT, PRA_KI_SHIFT,
+                PRA_KD_SHIFT, PRA_KVFF_SHIFT, PRA_KAFF_SHIFT, PRA_PID_SHIFT, PRA_INTEGRAL_LIMIT, PRA_SERVO_V_INVERSE}
+# PRA_* motion parameters: AdlinkPtp field, range (V48: defaults of the manual's home example, L2295-2303).
+_MOTION = {PRA_SD_DEC: ("sd_dec", 0.0, 1e12), PRA_SF: ("sf", 0.0, 1.0), PRA_ACC: ("acc", 0.0, 1e12),
+           PRA_DEC: ("dec", 0.0, 1e12), PRA_VS: ("vs", 0.0, 1e9), PRA_VM: ("vm", 0.0, 1e9), PRA_VE: ("ve", 0.0, 1e9)}
+_MOTION_DEFAULTS = {"sd_dec": 1e6, "sf": 0.0, "acc": 1e6, "dec": 1e6, "vs": 0.0, "vm": 1e5, "ve": 0.0}
+_POS_MAX = 2147483647
+_IGNORED = {"emergency_stop_active", "direction_inhibited", "drive_alarm_active"}  # L3931-4010
+
+
+def _num(value):
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        return None
+    return v if math.isfinite(v) else None
+
+
+class ApsController:
+    """One APS program's view of a :class:`~servobench.Card`: the APS_* functions with the card's axes 0..n-1."""
+
+    def __init__(self):
+        self._card: Card | None = None
+        self._motion: list[dict] = []
+
+    @property
+    def card(self) -> Card | None:
+        """The initialised card (None before APS_initial / after APS_close)."""
+        return self._card
+
+    # -- plumbing ----------------------------------------------------------------------------------------------
+    def _axis(self, axis_id):
+        """The 0-based axis or None (not initialised / not an axis of the card)."""
+        v = _num(axis_id)
+        if self._card is None or v is None or v != int(v) or not 0 <= v < len(self._card):
+            return None
+        return int(v)
+
+    def _bad(self) -> int:
+        return ERR_DeviceNotInitial if self._card is None else ERR_ParametersInvalid
+
+    def _do(self, fn, *args) -> int:
+        try:
+            fn(*args)
+        except (CardCommandRefused, MotionCommandRefused):
+            fault = self._card.last_fault
+            if fault in _IGNORED:
+                return ERR_NoError
+            return ERR_DistantNotEnough if fault == "distance_too_short" else ERR_FunctionNotAvailable
+        except ValueError:
+            return ERR_ParametersInvalid
+        return ERR_NoError
+
+    def _params(self, axis: int, **override) -> AdlinkPtp:
+        p = dict(self._motion[axis])
+        p.update(override)
+        return AdlinkPtp(**p)
+
+    # -- simulation helpers ------------------------------------------------------------------------------------
+    def run(self, ticks: int):
+        """Runs the card ``ticks`` servo ticks; returns the :class:`~servobench.card.CardRun`."""
+        return self._card.run(int(ticks))
+
+    def Sleep(self, ms: float):
+        """The examples' ``Sleep(ms)``: runs the card ``ms`` milliseconds (rounded to whole servo ticks)."""
+        return self._card.run(int(round(ms * 1e-3 / self._card.servo_period_s)))
+
+    def wait_until(self, predicate, max_ticks: int = 10**7, chunk: int = 1) -> int:
+        """Runs ``chunk`` ticks at a time until ``predicate()`` is true, at most ``max_ticks``; returns the ticks."""
+        return self._card.run_until(lambda _c: predicate(), max_ticks, chunk)
+
+    # -- system --------------------------------------------------------------------------------------------------
+    def APS_initial(self, mode: int = 0, card: Card | None = None, **axis_parts):
+        """``APS_initial(&BoardID_InBits, Mode)``: opens ``card`` (or a new 4-axis PCI-8254 Card with the ADLINK
+        servo period 250 us, L1733, built from ``axis_parts``). Returns ``(rtn, board_id_in_bits)`` (board 0 -> 1).
+        ERR_DeviceAlreadyInitialed while a card is open."""
+        if self._card is not None:
+            return ERR_DeviceAlreadyInitialed, 0
+        if card is None:
+            axis_parts.setdefault("law", ApsServoLaw())
+            axis_parts.setdefault("servo_period_s", 250e-6)
+            card = Card(4, **axis_parts)
+        if len(card) not in (4, 8):
+            return ERR_ParametersInvalid, 0
+        self._card = card
+        self._motion = [dict(_MOTION_DEFAULTS) for _ in range(len(card))]
+        return ERR_NoError, 1
+
+    def APS_close(self) -> int:
+        """``APS_close()``: releases the card."""
+        if self._card is None:
+            return ERR_DeviceNotInitial
+        self._card = None
+        return ERR_NoError
+
+    # -- axis parameters -----------------------------------------------------------------------------------------
+    def APS_set_axis_param(self, Axis_ID, AxisPara, Data) -> int:
+        """``APS_set_axis_param(Axis_ID, AxisPara, I32 Data)``: sets a PRA_* parameter (integer value)."""
+        v = _num(Data)
+        if v is None or v != int(v):
+            return self._bad()
+        return self.APS_set_axis_param_f(Axis_ID, AxisPara, v)
+
+    def APS_set_axis_param_f(self, Axis_ID, AxisPara, Data) -> int:
+        """``APS_set_axis_param_f(Axis_ID, AxisPara, F64 Data)``: sets a PRA_* parameter. Servo-law parameters
+        (90h-A0h, 120h-12Bh) take effect at the next servo tick; motion parameters at the next move;
+        limits and PRA_ERR_POS_LEVEL at once."""
+        i = self._axis(Axis_ID)
+        v = _num(Data)
+        if i is None or v is None:
+            return self._bad()
+        c = self._card
+        para = _num(AxisPara)
+        if para in _LAW:
+            field, lo, hi = _LAW[para]
+            if not lo <= v <= hi or (para in _INTEGER_LAW and v != int(v)):
+                return ERR_ParametersInvalid
+            law = c.staged(i)["law"]
+            if not isinstance(law, ApsServoLaw):
+                return ERR_FunctionNotAvailable  # an axis with the GT law has no PRA gains
+            value = bool(v) if field == "v_inverse" else v
+            return self._do(lambda: (c.stage_law(i, law.replace(**{field: value})), c.update(1 << i)))
+        if para in _MOTION:
+            field, lo, hi = _MOTION[para]
+            if not lo <= v <= hi:
+                return ERR_ParametersInvalid
+            self._motion[i][field] = v
+            return ERR_NoError
+        if para == PRA_ERR_POS_LEVEL:
+            if v != int(v) or not 0 <= v <= _POS_MAX:
+                return ERR_ParametersInvalid
+            return self._do(c.set_error_level, i, v)
+        if para in (PRA_EL_LOGIC, PRA_SPEL_EN, PRA_SMEL_EN):
+            if v not in (0, 1):
+                return ERR_ParametersInvalid
+            field = {PRA_EL_LOGIC: ("pos_active_low", "neg_active_low"), PRA_SPEL_EN: ("soft_pos_enabled",),
+                     PRA_SMEL_EN: ("soft_neg_enabled",)}[para]
+            return self._do(c.set_limits, i, c.limits(i).replace(**{f: bool(v) for f in field}))
+        if para in (PRA_SPEL_POS, PRA_SMEL_POS):
+            if v != int(v) or abs(v) > _POS_MAX:
+                return ERR_ParametersInvalid
+            field = "soft_pos_pulse" if para == PRA_SPEL_POS else "soft_neg_pulse"
+            return self._do(c.set_limits, i, c.limits(i).replace(**{field: v}))
+        return ERR_ParametersInvalid
+
+    def APS_get_axis_param_f(self, Axis_ID, AxisPara):
+        """``APS_get_axis_param_f(Axis_ID, AxisPara, &Data)`` -> ``(rtn, data)`` (F64)."""
+        i = self._axis(Axis_ID)
+        if i is None:
+            return self._bad(), 0.0
+        c = self._card
+        para = _num(AxisPara)
+        if para in _LAW:
+            law = c.staged(i)["law"]
+            if not isinstance(law, ApsServoLaw):
+                return ERR_FunctionNotAvailable, 0.0
+            return ERR_NoError, float(getattr(law, _LAW[para][0]))
+        if para in _MOTION:
+            return ERR_NoError, float(self._motion[i][_MOTION[para][0]])
+        lim = c.limits(i)
+        table = {PRA_ERR_POS_LEVEL: lambda: c.error_level(i), PRA_EL_LOGIC: lambda: lim.pos_active_low,
+                 PRA_SPEL_EN: lambda: lim.soft_pos_enabled, PRA_SMEL_EN: lambda: lim.soft_neg_enabled,
+                 PRA_SPEL_POS: lambda: lim.soft_pos_pulse, PRA_SMEL_POS: lambda: lim.soft_neg_pulse}
+        if para in table:
+            return ERR_NoError, float(table[para]())
+        return ERR_ParametersInvalid, 0.0
+
+    def APS_get_axis_param(self, Axis_ID, AxisPara):
+        """``APS_get_axis_param(Axis_ID, AxisPara, &Data)`` -> ``(rtn, data)`` (I32: the value truncated)."""
+        rtn, v = self.APS_get_axis_param_f(Axis_ID, AxisPara)
+        return rtn, int(v)
+
+    # -- servo and motion ------------------------------------------------------------------------------------------
+    def APS_set_servo_on(self, Axis_ID, Servo_on) -> int:
+        """``APS_set_servo_on(Axis_ID, Servo_on)``: 1 servo on (SVON), 0 off (L1603). Servo on with the drive
+        alarm latched is refused (ERR_FunctionNotAvailable)."""
+        i = self._axis(Axis_ID)
+        if i is None or Servo_on not in (0, 1):
+            return self._bad()
+        return self._do(self._card.axis_on if Servo_on else self._card.axis_off, i)
+
+    def _ptp(self, i: int, target: float, vm) -> int:
+        if target is None or target != int(target) or abs(target) > _POS_MAX:
+            return ERR_ParametersInvalid
+        if vm is None or not 0 < vm <= 1e9:
+            return ERR_ParametersInvalid
+        try:
+            p = self._params(i, pos=target, vm=vm)
+        except ValueError:
+            return ERR_ParametersInvalid
+        return self._do(self._card.move_ptp, i, p)
+
+    def APS_relative_move(self, Axis_ID, Distance, Max_Speed) -> int:
+        """``APS_relative_move(Axis_ID, I32 Distance, I32 Max_Speed)``: point to point by ``Distance`` pulse from
+        the command position at ``Max_Speed`` pulse/s with PRA_ACC/DEC/VS/VE/SF (L2728-2740). During a PTP or
+        velocity move it changes the move on the fly (L2757-2767)."""
+        i = self._axis(Axis_ID)
+        d = _num(Distance)
+        if i is None or d is None:
+            return self._bad()
+        return self._ptp(i, self._card.profile_pos(i) + d if d == int(d) else None, _num(Max_Speed))
+
+    def APS_absolute_move(self, Axis_ID, Position, Max_Speed) -> int:
+        """``APS_absolute_move(Axis_ID, I32 Position, I32 Max_Speed)``: point to point to ``Position`` pulse."""
+        i = self._axis(Axis_ID)
+        if i is None:
+            return self._bad()
+        return self._ptp(i, _num(Position), _num(Max_Speed))
+
+    def APS_ptp(self, Axis_ID, Option, Position, Wait=None) -> int:
+        """``APS_ptp(Axis_ID, Option, F64 Position, ASYNCALL *Wait)``: Option bit 0 absolute (0) / relative (1)
+        (L3686-3691), at PRA_VM. MF_WAIT (bit 8) and the buffer modes are not simulated
+        (ERR_FunctionNotAvailable); ``Wait`` must be None/0 (synchronous call)."""
+        i = self._axis(Axis_ID)
+        o, pos = _num(Option), _num(Position)
+        if i is None or o is None or o != int(o) or pos is None or Wait not in (None, 0):
+            return self._bad()
+        if int(o) & ~1:
+            return ERR_FunctionNotAvailable
+        target = self._card.profile_pos(i) + pos if int(o) & 1 else pos
+        return self._ptp(i, target, self._motion[i]["vm"])
+
+    def APS_velocity_move(self, Axis_ID, Max_Speed) -> int:
+        """``APS_velocity_move(Axis_ID, I32 Max_Speed)``: velocity move at the signed ``Max_Speed`` pulse/s with
+        PRA_ACC/DEC/SF until a stop; a new call changes the speed on the fly (L2560-2566)."""
+        i = self._axis(Axis_ID)
+        v = _num(Max_Speed)
+        if i is None or v is None:
+            return self._bad()
+        if v == 0 or abs(v) > 1e9:
+            return ERR_ParametersInvalid
+        return self._do(self._card.move_velocity, i, v, self._params(i, vm=abs(v)))
+
+    def APS_vel(self, Axis_ID, Dir, Vel, Wait=None) -> int:
+        """``APS_vel(Axis_ID, Dir, F64 Vel, ASYNCALL *Wait)``: velocity move at ``Vel`` pulse/s, Dir 0 positive,
+        1 negative (the example passes 0 with positive speeds, L2618; V50)."""
+        i = self._axis(Axis_ID)
+        v = _num(Vel)
+        if i is None or v is None or Dir not in (0, 1) or Wait not in (None, 0) or not 0 < v <= 1e9:
+            return self._bad()
+        return self._do(self._card.move_velocity, i, -v if Dir else v, self._params(i, vm=v))
+
+    def APS_stop_move(self, Axis_ID) -> int:
+        """``APS_stop_move(Axis_ID)``: decelerating stop at PRA_SD_DEC (L2570-2574), a normal stop (V45)."""
+        i = self._axis(Axis_ID)
+        if i is None:
+            return self._bad()
+        return self._do(self._card.stop_move, i, self._params(i))
+
+    def APS_emg_stop(self, Axis_ID) -> int:
+        """``APS_emg_stop(Axis_ID)``: immediate stop (L2576), a normal stop (V45)."""
+        i = self._axis(Axis_ID)
+        if i is None:
+            return self._bad()
+        return self._do(self._card.abrupt_stop, i)
+
+    # -- positions -------------------------------------------------------------------------------------------------
+    def APS_get_position(self, Axis_ID):
+        """``APS_get_position(Axis_ID, &Position)`` -> ``(rtn, feedback position)``, whole pulses (L2085)."""
+        i = self._axis(Axis_ID)
+        return (self._bad(), 0) if i is None else (ERR_NoError, int(round(self._card.actual_pos(i))))
+
+    def APS_set_position(self, Axis_ID, Position) -> int:
+        """``APS_set_position(Axis_ID, Position)``: sets the feedback (and command) position, at rest only
+        (ERR_FunctionNotAvailable while moving)."""
+        i = self._axis(Axis_ID)
+        p = _num(Position)
+        if i is None or p is None or p != int(p) or abs(p) > _POS_MAX:
+            return self._bad()
+        return self._do(self._card.set_actual_pos, i, p)
+
+    def APS_get_command(self, Axis_ID):
+        """``APS_get_command(Axis_ID, &Command)`` -> ``(rtn, command position)``, whole pulses (L2083)."""
+        i = self._axis(Axis_ID)
+        return (self._bad(), 0) if i is None else (ERR_NoError, int(self._card.profile_pos(i)))
+
+    def APS_get_error_position(self, Axis_ID):
+        """``APS_get_error_position(Axis_ID, &Err_Pos)`` -> ``(rtn, E)``: the law's error of the last servo tick
+        (command - feedback), pulse (SAMP_SRC_ERR_POS, L3574)."""
+        i = self._axis(Axis_ID)
+        return (self._bad(), 0) if i is None else (ERR_NoError, int(round(self._card.following_error(i))))
+
+    # -- status ------------------------------------------------------------------------------------------------------
+    def APS_motion_status(self, Axis_ID) -> int:
+        """``I32 APS_motion_status(Axis_ID)``: the motion status word (MTS_* bits) or a negative error code."""
+        i = self._axis(Axis_ID)
+        return self._bad() if i is None else int(_core.aps_motion_status(self._card._card, i))
+
+    def APS_motion_io_status(self, Axis_ID) -> int:
+        """``I32 APS_motion_io_status(Axis_ID)``: the motion I/O word (MIO_* bits) or a negative error code."""
+        i = self._axis(Axis_ID)
+        return self._bad() if i is None else int(_core.aps_motion_io_status(self._card._card, i))
+
+    def APS_get_stop_code(self, Axis_ID):
+        """``APS_get_stop_code(Axis_ID, &Code)`` -> ``(rtn, STOP_* code)`` of the last abnormal stop (0 none)."""
+        i = self._axis(Axis_ID)
+        return (self._bad(), 0) if i is None else (ERR_NoError, int(_core.aps_stop_code(self._card._card, i)))
+
+
+_default = ApsController()
+
+
+def controller() -> ApsController:
+    """The module's default :class:`ApsController` (the one the module-level APS_* functions use)."""
+    return _default
+
+
+def card() -> Card | None:
+    """The card opened with :func:`APS_initial`."""
+    return _default.card
+
+
+def run(ticks: int):
+    """Runs the open card ``ticks`` servo ticks; returns the :class:`~servobench.card.CardRun`."""
+    return _default.run(ticks)
+
+
+def Sleep(ms: float):
+    """The examples' ``Sleep(ms)``: runs the open card for ``ms`` milliseconds."""
+    return _default.Sleep(ms)
+
+
+def wait_until(predicate, max_ticks: int = 10**7, chunk: int = 1) -> int:
+    """Runs the open card until ``predicate()`` is true (at most ``max_ticks``); returns the ticks run."""
+    return _default.wait_until(predicate, max_ticks, chunk)
+
+
+def _export(name):
+    method = getattr(ApsController, name)
+
+    def f(*args, **kwargs):
+        return getattr(_default, name)(*args, **kwargs)
+
+    f.__name__ = name
+    f.__qualname__ = name
+    f.__doc__ = method.__doc__
+    return f
+
+
+APS_FUNCTIONS: tuple[str, ...] = tuple(n for n in dir(ApsController) if n.startswith("APS_"))
+for _name in APS_FUNCTIONS:
+    globals()[_name] = _export(_name)
+del _name
