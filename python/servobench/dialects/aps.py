@@ -23,6 +23,7 @@ import math
 from .. import _core
 from .._core import AdlinkPtp, ApsServoLaw, CardCommandRefused, MotionCommandRefused
 from ..card import Card
+from ._controller import DialectController, export_functions
 
 # -- return codes (APS library ErrorCodeDef.h; the manual uses ERR_NoError, L2309) -------------------------------
 ERR_NoError = 0
@@ -99,17 +100,12 @@ def _num(value):
     return v if math.isfinite(v) else None
 
 
-class ApsController:
+class ApsController(DialectController):
     """One APS program's view of a :class:`~servobench.Card`: the APS_* functions with the card's axes 0..n-1."""
 
     def __init__(self):
-        self._card: Card | None = None
+        super().__init__()
         self._motion: list[dict] = []
-
-    @property
-    def card(self) -> Card | None:
-        """The initialised card (None before APS_initial / after APS_close)."""
-        return self._card
 
     # -- plumbing ----------------------------------------------------------------------------------------------
     def _axis(self, axis_id):
@@ -140,17 +136,9 @@ class ApsController:
         return AdlinkPtp(**p)
 
     # -- simulation helpers ------------------------------------------------------------------------------------
-    def run(self, ticks: int):
-        """Runs the card ``ticks`` servo ticks; returns the :class:`~servobench.card.CardRun`."""
-        return self._card.run(int(ticks))
-
     def Sleep(self, ms: float):
         """The examples' ``Sleep(ms)``: runs the card ``ms`` milliseconds (rounded to whole servo ticks)."""
-        return self._card.run(int(round(ms * 1e-3 / self._card.servo_period_s)))
-
-    def wait_until(self, predicate, max_ticks: int = 10**7, chunk: int = 1) -> int:
-        """Runs ``chunk`` ticks at a time until ``predicate()`` is true, at most ``max_ticks``; returns the ticks."""
-        return self._card.run_until(lambda _c: predicate(), max_ticks, chunk)
+        return self.run_ms(ms)
 
     # -- system --------------------------------------------------------------------------------------------------
     def APS_initial(self, mode: int = 0, card: Card | None = None, **axis_parts):
@@ -381,46 +369,9 @@ class ApsController:
 
 
 _default = ApsController()
-
-
-def controller() -> ApsController:
-    """The module's default :class:`ApsController` (the one the module-level APS_* functions use)."""
-    return _default
-
-
-def card() -> Card | None:
-    """The card opened with :func:`APS_initial`."""
-    return _default.card
-
-
-def run(ticks: int):
-    """Runs the open card ``ticks`` servo ticks; returns the :class:`~servobench.card.CardRun`."""
-    return _default.run(ticks)
+APS_FUNCTIONS: tuple[str, ...] = export_functions(globals(), _default, "APS_")
 
 
 def Sleep(ms: float):
-    """The examples' ``Sleep(ms)``: runs the open card for ``ms`` milliseconds."""
+    """The examples' ``Sleep(ms)``: runs the open card ``ms`` milliseconds (rounded to whole servo ticks)."""
     return _default.Sleep(ms)
-
-
-def wait_until(predicate, max_ticks: int = 10**7, chunk: int = 1) -> int:
-    """Runs the open card until ``predicate()`` is true (at most ``max_ticks``); returns the ticks run."""
-    return _default.wait_until(predicate, max_ticks, chunk)
-
-
-def _export(name):
-    method = getattr(ApsController, name)
-
-    def f(*args, **kwargs):
-        return getattr(_default, name)(*args, **kwargs)
-
-    f.__name__ = name
-    f.__qualname__ = name
-    f.__doc__ = method.__doc__
-    return f
-
-
-APS_FUNCTIONS: tuple[str, ...] = tuple(n for n in dir(ApsController) if n.startswith("APS_"))
-for _name in APS_FUNCTIONS:
-    globals()[_name] = _export(_name)
-del _name

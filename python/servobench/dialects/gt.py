@@ -21,6 +21,7 @@ import math
 from .. import _core
 from .._core import CardCommandRefused, GtHome, MotionCommandRefused
 from ..card import Card
+from ._controller import DialectController, export_functions
 
 # Return codes (Table 2-1, L393-408).
 RTN_SUCCESS = 0
@@ -47,21 +48,16 @@ def _real_in(value, lo, hi, hi_open=False) -> bool:
     return math.isfinite(v) and lo <= v and (v < hi if hi_open else v <= hi)
 
 
-class GtController:
+class GtController(DialectController):
     """One GT card program's view of a :class:`~servobench.Card`: the current axis and the GT_* commands."""
 
     def __init__(self):
-        self._card: Card | None = None
+        super().__init__()
         self._axis = 0          # current axis, 0-based (default axis 1, L754)
         self._lmt_sns = 0       # GT_LmtSns bits (L4217-4231)
         self._index = [0] * 4   # GT_Index per axis (L4190-4196)
 
     # -- plumbing -------------------------------------------------------------------------------------------
-    @property
-    def card(self) -> Card | None:
-        """The open card (None before GT_Open / after GT_Close)."""
-        return self._card
-
     def _do(self, fn, *args) -> int:
         if self._card is None:
             return RTN_COMM_ERROR
@@ -106,17 +102,9 @@ class GtController:
         return (RTN_SUCCESS, int(getattr(law, field))) if law is not None else (RTN_COMMAND_ERROR, 0)
 
     # -- simulation helpers -----------------------------------------------------------------------------------
-    def run(self, ticks: int):
-        """Runs the card ``ticks`` servo ticks (ST); returns the :class:`~servobench.card.CardRun`."""
-        return self._card.run(int(ticks))
-
     def delay(self, ms: float):
         """The manual's ``delay(ms)``: runs the card for ``ms`` milliseconds (rounded to whole ticks)."""
-        return self._card.run(int(round(ms * 1e-3 / self._card.servo_period_s)))
-
-    def wait_until(self, predicate, max_ticks: int = 10**7, chunk: int = 1) -> int:
-        """Runs ``chunk`` ticks at a time until ``predicate()`` is true, at most ``max_ticks``; returns the ticks."""
-        return self._card.run_until(lambda _c: predicate(), max_ticks, chunk)
+        return self.run_ms(ms)
 
     # -- 8.1 system -------------------------------------------------------------------------------------------
     def GT_Open(self, card: Card | None = None, **axis_parts) -> int:
@@ -550,49 +538,12 @@ class GtController:
 
 
 _default = GtController()
-
-
-def controller() -> GtController:
-    """The module's controller (the one the module-level GT_* functions use)."""
-    return _default
-
-
-def card() -> Card | None:
-    """The card opened with :func:`GT_Open`."""
-    return _default.card
-
-
-def run(ticks: int):
-    """Runs the open card ``ticks`` servo ticks; returns the :class:`~servobench.card.CardRun`."""
-    return _default.run(ticks)
+GT_FUNCTIONS: tuple[str, ...] = export_functions(globals(), _default, "GT_")
 
 
 def delay(ms: float):
-    """The manual's ``delay(ms)``: runs the open card for ``ms`` milliseconds."""
+    """The manual's ``delay(ms)``: runs the open card for ``ms`` milliseconds (rounded to whole ticks)."""
     return _default.delay(ms)
-
-
-def wait_until(predicate, max_ticks: int = 10**7, chunk: int = 1) -> int:
-    """Runs the open card until ``predicate()`` is true (at most ``max_ticks``); returns the ticks run."""
-    return _default.wait_until(predicate, max_ticks, chunk)
-
-
-def _export(name):
-    method = getattr(GtController, name)
-
-    def f(*args, **kwargs):
-        return getattr(_default, name)(*args, **kwargs)
-
-    f.__name__ = name
-    f.__qualname__ = name
-    f.__doc__ = method.__doc__
-    return f
-
-
-GT_FUNCTIONS: tuple[str, ...] = tuple(n for n in dir(GtController) if n.startswith("GT_"))
-for _name in GT_FUNCTIONS:
-    globals()[_name] = _export(_name)
-del _name
 
 __all__ = ["GtController", "GT_FUNCTIONS", "RTN_COMMAND_ERROR", "RTN_COMM_ERROR", "RTN_PARAMETER_ERROR",
            "RTN_SUCCESS", "card", "controller", "delay", "run", "wait_until", *GT_FUNCTIONS]
