@@ -234,6 +234,33 @@ void bind_card(py::module_& m) {
            py::arg("axis"), py::arg("trigger"))
       .def("capture_value", [](Card& k, double i) { return k.loop(idx(k, i)).capture().value(); }, py::arg("axis"))
       .def("home", [](Card& k, double i, const motion::GtHomeParams& p) { k.home(idx(k, i), p); }, py::arg("axis"), py::arg("params"))
+      .def("home", [](Card& k, double i, const motion::AdlinkHomeParams& p) { k.home(idx(k, i), p); }, py::arg("axis"),
+           py::arg("params"))
+      .def("jog", [](Card& k, double i, const motion::AdlinkJogParams& p) { k.jog(idx(k, i), p); }, py::arg("axis"),
+           py::arg("params"))
+      .def("set_jog_on", [](Card& k, double i, bool on) { k.set_jog_on(idx(k, i), on); }, py::arg("axis"), py::arg("on"))
+      .def("jog_on", [](const Card& k, double i) { return k.jog_on(idx(k, i)); }, py::arg("axis"))
+      .def("jogging", [](const Card& k, double i) { return k.jogging(idx(k, i)); }, py::arg("axis"))
+      .def("move_ptp_wait", [](Card& k, double i, const motion::AdlinkPtpParams& p) { k.move_ptp_wait(idx(k, i), p); },
+           py::arg("axis"), py::arg("params"))
+      .def("move_trigger", [](Card& k, double mask) {
+             check_integer("Card", "mask", mask, 1, 255);
+             k.move_trigger(static_cast<std::uint32_t>(mask));
+           }, py::arg("mask"))
+      .def("waiting_trigger", [](const Card& k, double i) { return k.waiting_trigger(idx(k, i)); }, py::arg("axis"))
+      .def("set_limit_stop_mode", [](Card& k, double i, bool dec, double d) { k.set_limit_stop_mode(idx(k, i), dec, d); },
+           py::arg("axis"), py::arg("decelerate"), py::arg("dec_pulse_per_s2"))
+      .def("limit_stop_mode", [](const Card& k, double i) {
+             const auto& s = k.state(idx(k, i));
+             return py::make_tuple(s.limit_decelerate, s.limit_dec);
+           }, py::arg("axis"))
+      .def("set_move_event_distances", [](Card& k, double i, double pre, double post) {
+             k.set_move_event_distances(idx(k, i), pre, post);
+           }, py::arg("axis"), py::arg("pre_pulse"), py::arg("post_pulse"))
+      .def("move_event_distances", [](const Card& k, double i) {
+             const auto& s = k.state(idx(k, i));
+             return py::make_tuple(s.pre_event_dist, s.post_event_dist);
+           }, py::arg("axis"))
       .def("move_ptp", [](Card& k, double i, const motion::AdlinkPtpParams& p) { k.move_ptp(idx(k, i), p); },
            py::arg("axis"), py::arg("params"))
       .def("move_velocity", [](Card& k, double i, double v, const motion::AdlinkPtpParams& p) {

@@ -126,7 +126,7 @@ def test_ptp_in_position_and_motion_done(a):
     assert a.APS_ptp(2, 1, -3000.0) == 0
     a.wait_until(lambda: bit(a.APS_motion_status(2), aps.MTS_MDN), max_ticks=10000)
     assert a.APS_get_command(2) == (0, -3000)
-    assert a.APS_ptp(2, 0x100, 0.0) == aps.ERR_FunctionNotAvailable  # MF_WAIT not simulated
+    assert a.APS_ptp(2, 0x1000, 0.0) == aps.ERR_FunctionNotAvailable  # buffer modes (bits 12-15) not simulated
 
 
 def test_error_pos_level_trips_servo_off(a):

@@ -24,7 +24,11 @@ std::uint32_t aps_motion_status(const Card& card, std::size_t axis) {
   }
   if (s.dir_positive) w |= bit(ApsMsts::DIR);
   if (!card.moving(axis)) w |= bit(ApsMsts::MDN);
-  if (l.sequence_active()) w |= bit(ApsMsts::HMV);
+  if (l.homing() && !l.homing()->finished()) w |= bit(ApsMsts::HMV);
+  if (s.wait_trigger) w |= bit(ApsMsts::WAIT);
+  if (card.jogging(axis)) w |= bit(ApsMsts::JOG);
+  if (s.pre_event) w |= bit(ApsMsts::PRED);
+  if (s.post_event) w |= bit(ApsMsts::POSTD);
   if (s.stop_cause != StopCause::None) w |= bit(ApsMsts::ASTP);
   if (s.mode == AxisMode::Gear) w |= bit(ApsMsts::GER);
   return w;

@@ -1,6 +1,7 @@
 #include "servobench/machine/card.hpp"
 
 #include <cmath>
+#include <limits>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -582,8 +583,14 @@ void Card::check_move_allowed(std::size_t i, double dir) {
 void Card::move_ptp(std::size_t i, const motion::AdlinkPtpParams& p) {
   at(i);
   checked(i, CommandFault::MotionParamOverflow, [&] { p.validate(); });
+  check_move_allowed(i, p.pos - loops_[i]->generator().state().pos);
+  start_ptp(i, p);
+}
+
+void Card::start_ptp(std::size_t i, const motion::AdlinkPtpParams& p) {
   motion::ProfileGenerator& gen = loops_[i]->generator();
-  check_move_allowed(i, p.pos - gen.state().pos);
+  const double start = gen.state().pos;
+  const bool was_ptp = st_[i].ptp_active && gen.moving();
   try {
     gen.move_adlink_ptp(p.pos, p.limits(period_s_));
   } catch (const motion::MotionCommandRefused& e) {
@@ -593,7 +600,17 @@ void Card::move_ptp(std::size_t i, const motion::AdlinkPtpParams& p) {
   }
   CardAxisState& s = st_[i];
   s.staged.pos = s.active.pos = p.pos;
-  if (gen.moving()) s.stop_cause = StopCause::None;
+  s.wait_trigger = false;
+  if (gen.moving()) {
+    s.stop_cause = StopCause::None;
+    // PRED/POSTD are cleared when the axis starts moving (L3661-3662); an on-the-fly change keeps the start.
+    if (!was_ptp) {
+      s.move_start = start;
+      s.pre_event = s.post_event = false;
+    }
+    s.ptp_active = true;
+    s.move_target = p.pos;
+  }
 }
 
 void Card::move_velocity(std::size_t i, double vel_pulse_per_s, const motion::AdlinkPtpParams& p) {
@@ -609,18 +626,127 @@ void Card::move_velocity(std::size_t i, double vel_pulse_per_s, const motion::Ad
   } catch (const motion::MotionCommandRefused& e) {
     refuse(static_cast<int>(i), CommandFault::ChangeInMotion, e.what());
   }
-  if (gen.moving()) st_[i].stop_cause = StopCause::None;
+  if (gen.moving()) {
+    st_[i].stop_cause = StopCause::None;
+    st_[i].ptp_active = false;
+    st_[i].pre_event = st_[i].post_event = false;
+  }
 }
 
 void Card::stop_move(std::size_t i, const motion::AdlinkPtpParams& p) {
   at(i);
   checked(i, CommandFault::MotionParamOverflow, [&] { p.validate(); });
-  if (loops_[i]->sequence_active()) {
-    loops_[i]->cancel_sequence();
-    stop_profile(i);
+  st_[i].wait_trigger = false;
+  // A homing or jog sequence ends; the axis decelerates at PRA_SD_DEC like any other move (L2570-2574).
+  if (loops_[i]->sequence_active()) loops_[i]->cancel_sequence();
+  loops_[i]->generator().adlink_stop_move(p);
+}
+
+// -- ADLINK sequences and synchronous start ------------------------------------------------------------------
+
+void Card::home(std::size_t i, const motion::AdlinkHomeParams& p) {
+  at(i);
+  checked(i, CommandFault::MotionParamOverflow, [&] { p.validate(); });
+  if (st_[i].mode == AxisMode::Gear || st_[i].mode == AxisMode::Coordinated)
+    refuse(static_cast<int>(i), CommandFault::InvalidInMode, "APS_home_move: not in gear or coordinated mode");
+  if (moving(i)) refuse(static_cast<int>(i), CommandFault::ChangeInMotion, "APS_home_move only at rest (L2706-2708)");
+  check_move_allowed(i, 0.0);
+  try {
+    loops_[i]->home(p);
+  } catch (const motion::MotionCommandRefused& e) {
+    refuse(static_cast<int>(i), CommandFault::ChangeInMotion, e.what());
+  }
+  CardAxisState& s = st_[i];
+  s.stop_cause = StopCause::None;
+  s.ptp_active = false;
+  s.pre_event = s.post_event = false;
+}
+
+void Card::jog(std::size_t i, const motion::AdlinkJogParams& p) {
+  at(i);
+  checked(i, CommandFault::MotionParamOverflow, [&] { p.validate(); });
+  if (st_[i].mode == AxisMode::Gear || st_[i].mode == AxisMode::Coordinated)
+    refuse(static_cast<int>(i), CommandFault::InvalidInMode, "jog: not in gear or coordinated mode");
+  try {
+    loops_[i]->jog(p);
+  } catch (const motion::MotionCommandRefused& e) {
+    refuse(static_cast<int>(i), CommandFault::ChangeInMotion, e.what());
+  }
+}
+
+void Card::set_jog_on(std::size_t i, bool on) {
+  at(i);
+  MotionLoop& l = *loops_[i];
+  if (!l.jogger())
+    refuse(static_cast<int>(i), CommandFault::InvalidInMode, "JOG-ON: no jog parameters installed (jog() first)");
+  if (on && !l.jog_on()) {
+    check_move_allowed(i, l.jogger()->params().dir >= 0.5 ? 1.0 : -1.0);
+    CardAxisState& s = st_[i];
+    s.stop_cause = StopCause::None;
+    s.ptp_active = false;
+    s.pre_event = s.post_event = false;
+  }
+  l.set_jog_on(on);
+}
+
+bool Card::jogging(std::size_t i) const {
+  const MotionLoop& l = loop(i);
+  return l.jogger() && (l.jog_on() || l.jogger()->phase() != motion::JogPhase::Idle);
+}
+
+void Card::move_ptp_wait(std::size_t i, const motion::AdlinkPtpParams& p) {
+  at(i);
+  checked(i, CommandFault::MotionParamOverflow, [&] { p.validate(); });
+  if (moving(i)) refuse(static_cast<int>(i), CommandFault::ChangeInMotion, "a move waiting for the trigger only at rest");
+  check_move_allowed(i, p.pos - loops_[i]->generator().state().pos);
+  st_[i].waiting = p;
+  st_[i].wait_trigger = true;
+}
+
+void Card::move_trigger(std::uint32_t mask) {
+  const auto n = st_.size();
+  if (mask == 0 || (n < 32 && (mask >> n) != 0))
+    throw_invalid("Card", "mask", static_cast<double>(mask), "must name axes of this card (bit k = axis k)");
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!(mask & (1u << i)) || !st_[i].wait_trigger) continue;
+    const motion::AdlinkPtpParams p = st_[i].waiting;
+    st_[i].wait_trigger = false;
+    // Conditions may have changed while waiting (a limit, the e-stop): such an axis is ignored (stop code).
+    try {
+      check_move_allowed(i, p.pos - loops_[i]->generator().state().pos);
+      start_ptp(i, p);
+    } catch (const CardCommandRefused&) {
+    }
+  }
+}
+
+void Card::set_limit_stop_mode(std::size_t i, bool decelerate, double dec_pulse_per_s2) {
+  at(i);
+  check_range("Card", "dec_pulse_per_s2", dec_pulse_per_s2, 1e-9, 1e12, "PRA_SD_DEC, pulse/s^2");
+  st_[i].limit_decelerate = decelerate;
+  st_[i].limit_dec = dec_pulse_per_s2;
+}
+
+void Card::set_move_event_distances(std::size_t i, double pre_pulse, double post_pulse) {
+  at(i);
+  check_range("Card", "pre_pulse", pre_pulse, 0.0, 2147483647.0, "PRA_PRE_EVENT_DIST, pulse");
+  check_range("Card", "post_pulse", post_pulse, 0.0, 2147483647.0, "PRA_POST_EVENT_DIST, pulse");
+  st_[i].pre_event_dist = pre_pulse;
+  st_[i].post_event_dist = post_pulse;
+}
+
+void Card::limit_stop(std::size_t i, StopCause cause) {
+  CardAxisState& s = st_[i];
+  if (!s.limit_decelerate) {
+    fault_stop(i, cause, false);
     return;
   }
-  loops_[i]->generator().adlink_stop_move(p);
+  // PRA_EL_MODE 1: a decelerating stop at PRA_SD_DEC, issued once; the axis passes the limit while stopping.
+  s.stop_cause = cause;
+  if (s.limit_stopping) return;
+  s.limit_stopping = true;
+  loops_[i]->cancel_sequence();
+  loops_[i]->generator().smooth_stop_with(s.limit_dec * period_s_ * period_s_, std::numeric_limits<double>::infinity());
 }
 
 void Card::set_in_position_band(std::size_t i, double pulse) {
@@ -727,13 +853,15 @@ void Card::safety_before(std::size_t i) {
   const double act = l.actual_pos();
   if (s.limits.soft_pos_enabled && act >= s.limits.soft_pos_pulse) s.events |= event_bit(CardEvent::SoftPosLimit);
   if (s.limits.soft_neg_enabled && act <= s.limits.soft_neg_pulse) s.events |= event_bit(CardEvent::SoftNegLimit);
-  // Direction inhibit: motion toward a latched limit stops at once (GT L2206-2209).
+  // Direction inhibit: motion toward a latched limit stops at once (GT L2206-2209), or decelerates with
+  // PRA_EL_MODE 1. An ADLINK homing sequence meets the limits itself (it reverses or stops at them, L2341-2508).
+  if (l.homing() && !l.homing()->finished() && !l.homing()->is_gt()) return;
   if (vel > 0.0 && inhibited_pos(i)) {
     const bool hard = s.limits.enabled && (s.events & event_bit(CardEvent::PosLimit));
-    fault_stop(i, hard ? StopCause::PosLimit : StopCause::SoftPosLimit, false);
+    limit_stop(i, hard ? StopCause::PosLimit : StopCause::SoftPosLimit);
   } else if (vel < 0.0 && inhibited_neg(i)) {
     const bool hard = s.limits.enabled && (s.events & event_bit(CardEvent::NegLimit));
-    fault_stop(i, hard ? StopCause::NegLimit : StopCause::SoftNegLimit, false);
+    limit_stop(i, hard ? StopCause::NegLimit : StopCause::SoftNegLimit);
   }
 }
 
@@ -763,6 +891,14 @@ void Card::after_tick(std::size_t i, double error) {
   if (v < 0.0) s.dir_positive = false;
   if (s.was_moving && !mv) s.events |= event_bit(CardEvent::MotionComplete);
   s.was_moving = mv;
+  if (!mv) s.limit_stopping = false;
+  // ADLINK pre/post-distance events of a point-to-point move (L3284-3292).
+  if (s.ptp_active) {
+    const double p = l.generator().state().pos;
+    if (s.pre_event_dist > 0.0 && std::fabs(p - s.move_start) > s.pre_event_dist) s.pre_event = true;
+    if (s.post_event_dist > 0.0 && std::fabs(s.move_target - p) < s.post_event_dist) s.post_event = true;
+    if (!mv) s.ptp_active = false;
+  }
 }
 
 void Card::tick_once(const std::vector<CardTrace>& traces, std::size_t k) {

@@ -21,7 +21,7 @@ from __future__ import annotations
 import math
 
 from .. import _core
-from .._core import AdlinkPtp, ApsServoLaw, CardCommandRefused, MotionCommandRefused
+from .._core import AdlinkHome, AdlinkJog, AdlinkPtp, ApsServoLaw, CardCommandRefused, MotionCommandRefused
 from ..card import Card
 from ._controller import DialectController, export_functions
 
@@ -35,12 +35,23 @@ ERR_DistantNotEnough = -22
 
 # -- axis parameters (hex numbers of the manual) ---------------------------------------------------------------------
 PRA_EL_LOGIC = 0x00       # PEL/MEL input logic, 0 normal / 1 inverted (L1614)
+PRA_EL_MODE = 0x02        # limit stop mode: 0 immediate (default) / 1 decelerate at PRA_SD_DEC (L3994; V28)
 PRA_SD_DEC = 0x07         # deceleration of APS_stop_move, pulse/s^2 (L2744, L4001)
 PRA_STP_DEC = PRA_SD_DEC  # the name the velocity example uses (L2613)
 PRA_SPEL_EN = 0x08        # soft PEL switch (L4002)
 PRA_SMEL_EN = 0x09        # soft MEL switch (L4003)
 PRA_SPEL_POS = 0x0A       # soft PEL position, pulse (L4004)
 PRA_SMEL_POS = 0x0B       # soft MEL position, pulse (L4005)
+PRA_HOME_MODE = 0x10      # 0 ORG, 1 EL, 2 single EZ (L2268)
+PRA_HOME_DIR = 0x11       # 0 positive, 1 negative (L2269, L2357)
+PRA_HOME_CURVE = 0x12     # home S-factor 0..1 (L2270)
+PRA_HOME_S = PRA_HOME_CURVE  # the name the mode tables use (L2359)
+PRA_HOME_ACC = 0x13       # acceleration = deceleration, pulse/s^2 (L2271)
+PRA_HOME_VM = 0x15        # search speed, pulse/s (L2272)
+PRA_HOME_SHIFT = 0x17     # final offset from the reference signal, pulse (L2275)
+PRA_HOME_EZA = 0x18       # EZ alignment 0/1 (L2276)
+PRA_HOME_VO = 0x19        # approach (low) speed, pulse/s (L2277)
+PRA_HOME_POS = 0x1B       # position set after homing, pulse (L2278)
 PRA_SF = 0x20             # S-factor 0..1 (L2236)
 PRA_CURVE = PRA_SF        # the name the velocity example uses (L2614)
 PRA_ACC = 0x21            # acceleration, pulse/s^2 (L2746)
@@ -48,6 +59,20 @@ PRA_DEC = 0x22            # deceleration, pulse/s^2 (L2747)
 PRA_VS = 0x23             # start velocity, pulse/s (L2748)
 PRA_VM = 0x24             # maximum velocity, pulse/s (L2749)
 PRA_VE = 0x25             # end velocity, pulse/s (L2750)
+PRA_PRE_EVENT_DIST = 0x2A   # PRED when the travelled distance > this, pulse; 0 off (L3284-3292)
+PRA_POST_EVENT_DIST = 0x2B  # POSTD when the remaining distance < this, pulse; 0 off
+PRA_JG_MODE = 0x40        # jog: 0 continuous, 1 step (L2677)
+PRA_JG_DIR = 0x41         # jog direction: 0 negative, 1 positive
+PRA_JG_SF = 0x42          # jog S-factor 0..1
+PRA_JG_ACC = 0x43         # jog acceleration, pulse/s^2
+PRA_JG_DEC = 0x44         # jog deceleration, pulse/s^2
+PRA_JG_VM = 0x45          # jog speed, pulse/s
+PRA_JG_OFFSET = 0x46      # step-mode offset, pulse
+PRA_JG_DELAY = 0x47       # step-mode delay, us, 0..10,000,000
+PRA_JG_MAP_DI_EN = 0x48   # DI linking (not simulated: only 0 is accepted, V30)
+PRA_JG_P_JOG_DI = 0x49
+PRA_JG_N_JOG_DI = 0x4A
+PRA_JG_JOG_DI = 0x4B
 PRA_KP_GAIN = 0x90        # servo law (L1746-1762)
 PRA_KI_GAIN = 0x91
 PRA_KD_GAIN = 0x92
@@ -87,8 +112,24 @@ _INTEGER_LAW = {PRA_KP_GAIN, PRA_KI_GAIN, PRA_KD_GAIN, PRA_KVFF_GAIN, PRA_KAFF_G
 # PRA_* motion parameters: AdlinkPtp field, range (V48: defaults of the manual's home example, L2295-2303).
 _MOTION = {PRA_SD_DEC: ("sd_dec", 0.0, 1e12), PRA_SF: ("sf", 0.0, 1.0), PRA_ACC: ("acc", 0.0, 1e12),
            PRA_DEC: ("dec", 0.0, 1e12), PRA_VS: ("vs", 0.0, 1e9), PRA_VM: ("vm", 0.0, 1e9), PRA_VE: ("ve", 0.0, 1e9)}
-_MOTION_DEFAULTS = {"sd_dec": 1e6, "sf": 0.0, "acc": 1e6, "dec": 1e6, "vs": 0.0, "vm": 1e5, "ve": 0.0}
 _POS_MAX = 2147483647
+_MOTION_DEFAULTS = {"sd_dec": 1e6, "sf": 0.0, "acc": 1e6, "dec": 1e6, "vs": 0.0, "vm": 1e5, "ve": 0.0}
+# PRA_HOME_* (AdlinkHome field, range); defaults are the manual's home example (L2295-2303; V27).
+_HOME = {PRA_HOME_MODE: ("mode", 0, 2), PRA_HOME_DIR: ("dir", 0, 1), PRA_HOME_CURVE: ("curve", 0.0, 1.0),
+         PRA_HOME_ACC: ("acc", 0.0, 1e12), PRA_HOME_VM: ("vm", 0.0, 1e9), PRA_HOME_SHIFT: ("shift", -_POS_MAX, _POS_MAX),
+         PRA_HOME_EZA: ("eza", 0, 1), PRA_HOME_VO: ("vo", 0.0, 1e9), PRA_HOME_POS: ("pos", -_POS_MAX, _POS_MAX)}
+_INTEGER_HOME = {PRA_HOME_MODE, PRA_HOME_DIR, PRA_HOME_EZA, PRA_HOME_SHIFT, PRA_HOME_POS}
+_HOME_DEFAULTS = {"mode": 0, "dir": 1, "curve": 0.0, "acc": 1e6, "vm": 1e5, "vo": 5e4, "shift": 0, "eza": 0, "pos": 0}
+# PRA_JG_* (AdlinkJog field, range); defaults V29.
+_JOG = {PRA_JG_MODE: ("mode", 0, 1), PRA_JG_DIR: ("dir", 0, 1), PRA_JG_SF: ("sf", 0.0, 1.0),
+        PRA_JG_ACC: ("acc", 0.0, 1e12), PRA_JG_DEC: ("dec", 0.0, 1e12), PRA_JG_VM: ("vm", 0.0, 1e9),
+        PRA_JG_OFFSET: ("offset", 0.0, _POS_MAX), PRA_JG_DELAY: ("delay_us", 0.0, 1e7)}
+_INTEGER_JOG = {PRA_JG_MODE, PRA_JG_DIR}
+_JOG_DEFAULTS = {"mode": 0, "dir": 1, "sf": 0.0, "acc": 1e6, "dec": 1e6, "vm": 1e5, "offset": 1000, "delay_us": 0}
+_JOG_DI = (PRA_JG_MAP_DI_EN, PRA_JG_P_JOG_DI, PRA_JG_N_JOG_DI, PRA_JG_JOG_DI)
+MF_WAIT = 0x100           # APS_ptp Option bit 8: wait for APS_move_trigger (L3249, L3686-3691)
+# Latched limit events of the card (CARD_EVENTS bits): ADLINK limits are level inputs (V31).
+_LIMIT_EVENTS = {"pos_limit": 5, "neg_limit": 6, "soft_pos_limit": 8, "soft_neg_limit": 9}
 _IGNORED = {"emergency_stop_active", "direction_inhibited", "drive_alarm_active"}  # L3931-4010
 
 
@@ -106,6 +147,9 @@ class ApsController(DialectController):
     def __init__(self):
         super().__init__()
         self._motion: list[dict] = []
+        self._home: list[dict] = []
+        self._jog: list[dict] = []
+        self._el_mode: list[int] = []
 
     # -- plumbing ----------------------------------------------------------------------------------------------
     def _axis(self, axis_id):
@@ -155,6 +199,9 @@ class ApsController(DialectController):
             return ERR_ParametersInvalid, 0
         self._card = card
         self._motion = [dict(_MOTION_DEFAULTS) for _ in range(len(card))]
+        self._home = [dict(_HOME_DEFAULTS) for _ in range(len(card))]
+        self._jog = [dict(_JOG_DEFAULTS) for _ in range(len(card))]
+        self._el_mode = [0] * len(card)
         return ERR_NoError, 1
 
     def APS_close(self) -> int:
@@ -196,7 +243,29 @@ class ApsController(DialectController):
             if not lo <= v <= hi:
                 return ERR_ParametersInvalid
             self._motion[i][field] = v
+            if para == PRA_SD_DEC and v > 0:
+                c.set_limit_stop_mode(i, bool(self._el_mode[i]), v)
             return ERR_NoError
+        for table, integers, store in ((_HOME, _INTEGER_HOME, self._home), (_JOG, _INTEGER_JOG, self._jog)):
+            if para in table:
+                field, lo, hi = table[para]
+                if not lo <= v <= hi or (para in integers and v != int(v)):
+                    return ERR_ParametersInvalid
+                store[i][field] = v
+                return ERR_NoError
+        if para in _JOG_DI:  # DI-linked jog is not simulated: only "off" (0) is accepted (V30)
+            return ERR_NoError if v == 0 else ERR_FunctionNotAvailable
+        if para == PRA_EL_MODE:
+            if v not in (0, 1):
+                return ERR_ParametersInvalid
+            self._el_mode[i] = int(v)
+            return self._do(c.set_limit_stop_mode, i, bool(v), self._motion[i]["sd_dec"] or 1e6)
+        if para in (PRA_PRE_EVENT_DIST, PRA_POST_EVENT_DIST):
+            if v != int(v) or not 0 <= v <= _POS_MAX:
+                return ERR_ParametersInvalid
+            pre, post = c.move_event_distances(i)
+            return self._do(c.set_move_event_distances, i, v if para == PRA_PRE_EVENT_DIST else pre,
+                            v if para == PRA_POST_EVENT_DIST else post)
         if para == PRA_ERR_POS_LEVEL:
             if v != int(v) or not 0 <= v <= _POS_MAX:
                 return ERR_ParametersInvalid
@@ -228,6 +297,16 @@ class ApsController(DialectController):
             return ERR_NoError, float(getattr(law, _LAW[para][0]))
         if para in _MOTION:
             return ERR_NoError, float(self._motion[i][_MOTION[para][0]])
+        if para in _HOME:
+            return ERR_NoError, float(self._home[i][_HOME[para][0]])
+        if para in _JOG:
+            return ERR_NoError, float(self._jog[i][_JOG[para][0]])
+        if para in _JOG_DI:
+            return ERR_NoError, 0.0
+        if para == PRA_EL_MODE:
+            return ERR_NoError, float(self._el_mode[i])
+        if para in (PRA_PRE_EVENT_DIST, PRA_POST_EVENT_DIST):
+            return ERR_NoError, float(c.move_event_distances(i)[0 if para == PRA_PRE_EVENT_DIST else 1])
         lim = c.limits(i)
         table = {PRA_ERR_POS_LEVEL: lambda: c.error_level(i), PRA_EL_LOGIC: lambda: lim.pos_active_low,
                  PRA_SPEL_EN: lambda: lim.soft_pos_enabled, PRA_SMEL_EN: lambda: lim.soft_neg_enabled,
@@ -250,16 +329,34 @@ class ApsController(DialectController):
             return self._bad()
         return self._do(self._card.axis_on if Servo_on else self._card.axis_off, i)
 
-    def _ptp(self, i: int, target: float, vm) -> int:
+    def _release_limits(self, i: int) -> None:
+        """ADLINK limits are level inputs (V31): a latched limit event whose input is no longer active ends
+        before a new command, so the direction inhibit lasts exactly while the limit is active."""
+        c = self._card
+        act = c.actual_pos(i)
+        lim = c.limits(i)
+        active = {"pos_limit": c.pos_limit_input(i), "neg_limit": c.neg_limit_input(i),
+                  "soft_pos_limit": lim.soft_pos_enabled and act >= lim.soft_pos_pulse,
+                  "soft_neg_limit": lim.soft_neg_enabled and act <= lim.soft_neg_pulse}
+        bits = sum(1 << b for name, b in _LIMIT_EVENTS.items() if not active[name])
+        if c.events(i) & bits:
+            c.clear_events(i, bits)
+
+    def _ptp(self, i: int, target: float, vm, wait: bool = False, **speeds) -> int:
         if target is None or target != int(target) or abs(target) > _POS_MAX:
             return ERR_ParametersInvalid
         if vm is None or not 0 < vm <= 1e9:
             return ERR_ParametersInvalid
+        for k, v in speeds.items():
+            field, lo, hi = next(t for t in _MOTION.values() if t[0] == k)
+            if v is None or not lo <= v <= hi:
+                return ERR_ParametersInvalid
         try:
-            p = self._params(i, pos=target, vm=vm)
+            p = self._params(i, pos=target, vm=vm, **speeds)
         except ValueError:
             return ERR_ParametersInvalid
-        return self._do(self._card.move_ptp, i, p)
+        self._release_limits(i)
+        return self._do(self._card.move_ptp_wait if wait else self._card.move_ptp, i, p)
 
     def APS_relative_move(self, Axis_ID, Distance, Max_Speed) -> int:
         """``APS_relative_move(Axis_ID, I32 Distance, I32 Max_Speed)``: point to point by ``Distance`` pulse from
@@ -278,18 +375,112 @@ class ApsController(DialectController):
             return self._bad()
         return self._ptp(i, _num(Position), _num(Max_Speed))
 
-    def APS_ptp(self, Axis_ID, Option, Position, Wait=None) -> int:
-        """``APS_ptp(Axis_ID, Option, F64 Position, ASYNCALL *Wait)``: Option bit 0 absolute (0) / relative (1)
-        (L3686-3691), at PRA_VM. MF_WAIT (bit 8) and the buffer modes are not simulated
-        (ERR_FunctionNotAvailable); ``Wait`` must be None/0 (synchronous call)."""
+    def _option(self, Axis_ID, Option, Position, Wait):
+        """(axis, target, wait) of an APS_ptp-family call, or an error code."""
         i = self._axis(Axis_ID)
         o, pos = _num(Option), _num(Position)
         if i is None or o is None or o != int(o) or pos is None or Wait not in (None, 0):
             return self._bad()
-        if int(o) & ~1:
-            return ERR_FunctionNotAvailable
-        target = self._card.profile_pos(i) + pos if int(o) & 1 else pos
-        return self._ptp(i, target, self._motion[i]["vm"])
+        o = int(o)
+        if o & ~(1 | MF_WAIT):
+            return ERR_FunctionNotAvailable  # buffer modes (bits 12-15) are not simulated (V32)
+        if pos != int(pos) or abs(pos) > _POS_MAX:
+            return ERR_ParametersInvalid
+        target = self._card.profile_pos(i) + pos if o & 1 else pos
+        return i, target, bool(o & MF_WAIT)
+
+    def APS_ptp(self, Axis_ID, Option, Position, Wait=None) -> int:
+        """``APS_ptp(Axis_ID, Option, F64 Position, ASYNCALL *Wait)``: point to point at PRA_VM with PRA_ACC/DEC/
+        VS/VE/SF. Option bit 0 absolute (0) / relative (1); bit 8 (MF_WAIT, 0x100) waits for
+        :func:`APS_move_trigger` (MTS WAIT on) (L3686-3691). The buffer modes (bits 12-15) are not simulated
+        (ERR_FunctionNotAvailable); ``Wait`` must be None/0 (a synchronous call)."""
+        r = self._option(Axis_ID, Option, Position, Wait)
+        if isinstance(r, int):
+            return r
+        i, target, wait = r
+        return self._ptp(i, target, self._motion[i]["vm"], wait)
+
+    def APS_ptp_v(self, Axis_ID, Option, Position, Vm, Wait=None) -> int:
+        """``APS_ptp_v(Axis_ID, Option, F64 Position, F64 Vm, ASYNCALL *Wait)``: :func:`APS_ptp` at the given
+        maximum speed ``Vm`` pulse/s (L2728-2740)."""
+        r = self._option(Axis_ID, Option, Position, Wait)
+        if isinstance(r, int):
+            return r
+        i, target, wait = r
+        return self._ptp(i, target, _num(Vm), wait)
+
+    def APS_ptp_all(self, Axis_ID, Option, Position, Vs, Vm, Ve, Acc, Dec, SFac, Wait=None) -> int:
+        """``APS_ptp_all(Axis_ID, Option, F64 Position, F64 Vs, F64 Vm, F64 Ve, F64 Acc, F64 Dec, F64 SFac,
+        ASYNCALL *Wait)``: :func:`APS_ptp` with every speed given (pulse/s, pulse/s^2, S-factor 0..1); the
+        axis parameters are not changed (L2716-2718)."""
+        r = self._option(Axis_ID, Option, Position, Wait)
+        if isinstance(r, int):
+            return r
+        i, target, wait = r
+        return self._ptp(i, target, _num(Vm), wait, vs=_num(Vs), ve=_num(Ve), acc=_num(Acc), dec=_num(Dec),
+                         sf=_num(SFac))
+
+    def APS_move_trigger(self, Dimension, Axis_ID_Array) -> int:
+        """``APS_move_trigger(I32 Dimension, I32 *Axis_ID_Array)``: starts the waiting (MF_WAIT) moves of the
+        listed axes in the same servo tick (L3787-3790). Each axis then runs its own profile; an axis whose
+        move became impossible while waiting (a limit, EMG, ALM) is ignored with its stop code."""
+        d = _num(Dimension)
+        if self._card is None:
+            return ERR_DeviceNotInitial
+        try:
+            ids = list(Axis_ID_Array)
+        except TypeError:
+            return ERR_ParametersInvalid
+        if d is None or d != int(d) or not 1 <= d <= len(self._card) or len(ids) < d:
+            return ERR_ParametersInvalid
+        mask = 0
+        for a in ids[: int(d)]:
+            i = self._axis(a)
+            if i is None:
+                return ERR_ParametersInvalid
+            mask |= 1 << i
+        return self._do(self._card.move_trigger, mask)
+
+    def APS_home_move(self, Axis_ID) -> int:
+        """``APS_home_move(Axis_ID)``: starts homing with the PRA_HOME_* parameters (modes 0 ORG, 1 EL, 2 EZ;
+        L2246-2556). Completion: MTS MDN; failure: MTS ASTP and :func:`APS_get_stop_code` (L2308-2326).
+        Refused (ERR_FunctionNotAvailable) while the axis moves."""
+        i = self._axis(Axis_ID)
+        if i is None:
+            return self._bad()
+        h = dict(self._home[i])
+        h["eza"] = bool(h["eza"])
+        try:
+            p = AdlinkHome(**h)
+        except ValueError:
+            return ERR_ParametersInvalid
+        self._release_limits(i)
+        return self._do(self._card.home, i, p)
+
+    def APS_jog_on(self, Axis_ID, On) -> int:
+        """``APS_jog_on(Axis_ID, On)``: the software JOG-ON signal (1 on, 0 off; L2653, L2672) with the
+        PRA_JG_* parameters. Continuous mode moves while on and decelerates when off; step mode moves
+        PRA_JG_OFFSET, waits PRA_JG_DELAY, then moves on while the signal stays on, stopping on a whole
+        multiple of the offset (L2645-2657). While jogging, other motion commands are refused; while another
+        motion runs, JOG-ON is ignored (ERR_FunctionNotAvailable, L2706-2708)."""
+        i = self._axis(Axis_ID)
+        if i is None or On not in (0, 1):
+            return self._bad()
+        c = self._card
+        if On and not c.jog_on(i):
+            if not c.jogging(i):
+                try:
+                    p = AdlinkJog(**self._jog[i])
+                except ValueError:
+                    return ERR_ParametersInvalid
+                self._release_limits(i)
+                rtn = self._do(c.jog, i, p)
+                if rtn != ERR_NoError:
+                    return rtn
+            return self._do(c.set_jog_on, i, True)
+        if not On and c.jog_on(i):
+            return self._do(c.set_jog_on, i, False)
+        return ERR_NoError
 
     def APS_velocity_move(self, Axis_ID, Max_Speed) -> int:
         """``APS_velocity_move(Axis_ID, I32 Max_Speed)``: velocity move at the signed ``Max_Speed`` pulse/s with
@@ -300,6 +491,7 @@ class ApsController(DialectController):
             return self._bad()
         if v == 0 or abs(v) > 1e9:
             return ERR_ParametersInvalid
+        self._release_limits(i)
         return self._do(self._card.move_velocity, i, v, self._params(i, vm=abs(v)))
 
     def APS_vel(self, Axis_ID, Dir, Vel, Wait=None) -> int:
@@ -309,6 +501,7 @@ class ApsController(DialectController):
         v = _num(Vel)
         if i is None or v is None or Dir not in (0, 1) or Wait not in (None, 0) or not 0 < v <= 1e9:
             return self._bad()
+        self._release_limits(i)
         return self._do(self._card.move_velocity, i, -v if Dir else v, self._params(i, vm=v))
 
     def APS_stop_move(self, Axis_ID) -> int:

@@ -8,9 +8,12 @@
 //   bit 4 DIR   1 positive / 0 negative, the last motion's direction kept after the stop (L3218)
 //   bit 5 MDN   motion done: no profile and no homing sequence (also after an abnormal stop, L3229-3231)
 //   bit 6 HMV   a homing sequence runs
+//   bit 10 WAIT a move issued with MF_WAIT waits for APS_move_trigger (L3669-3720)
+//   bit 15 JOG  a jog sequence runs (JOG-ON on, or its step/delay/stop still running)
 //   bit 16 ASTP abnormal stop: the card recorded a stop cause; cleared when the next motion starts (L3652)
+//   bit 18 PRED / 19 POSTD  pre-/post-distance event of the point-to-point move (L3284-3292, cleared at the next start)
 //   bit 28 GER  slave of a gear (the card's gear mode)
-//   WAIT (10), PTB (11), JOG (15), BLD (17), PRED (18), POSTD (19) are 0: not simulated (V43).
+//   PTB (11) and BLD (17) are 0: point tables and blending are not simulated (V43).
 // Motion I/O status APS_motion_io_status (MIO, L3611-3631):
 //   bit 0 ALM, 1 PEL, 2 MEL (inputs as triggered, polarity applied), 3 ORG (home switch), 4 EMG (card-wide),
 //   5 EZ (0: the index mark is an instant, not a level; V44), 6 INP (servo on, at rest, |E| <= the band; V46),

@@ -165,6 +165,17 @@ struct CardAxisState {
   bool was_moving = false;
   bool dir_positive = false;        // direction of the last profile motion, kept after the stop (ADLINK DIR, L3218)
   double in_position_pulse = 10.0;  // in-position band |E| (the drive's INP output, ADLINK MIO bit 6; V46)
+  // ADLINK synchronous start, limit stop mode and distance events (APS dialect; decisions V27-V33).
+  bool wait_trigger = false;          // an APS_ptp with MF_WAIT waits for APS_move_trigger (MTS WAIT, bit 10)
+  motion::AdlinkPtpParams waiting{};  // the move it will start
+  bool limit_decelerate = false;      // PRA_EL_MODE 1: a limit stops at limit_dec (0: at once, the default)
+  double limit_dec = 1e6;             // PRA_SD_DEC at the time PRA_EL_MODE was set, pulse/s^2
+  bool limit_stopping = false;        // a decelerating limit stop runs
+  double pre_event_dist = 0.0;        // PRA_PRE_EVENT_DIST (2Ah), pulse; 0 = off
+  double post_event_dist = 0.0;       // PRA_POST_EVENT_DIST (2Bh), pulse; 0 = off
+  bool ptp_active = false;            // a point-to-point move runs: the distance events are measured on it
+  double move_start = 0.0, move_target = 0.0;  // its start and target, pulse
+  bool pre_event = false, post_event = false;  // MTS PRED (bit 18) / POSTD (bit 19), cleared at the next start
 };
 
 // What one tick of one axis records (each a buffer of n doubles or null), besides the Axis and loop traces.
@@ -243,6 +254,25 @@ class Card {
   void set_in_position_band(std::size_t i, double pulse);  // |E| <= band at rest counts as in position
   bool in_position(std::size_t i) const;  // servo on, at rest, |E| <= band (ADLINK MIO INP)
 
+  // -- ADLINK sequences and synchronous start (APS dialect) ---------------------------------------------------
+  // APS_home_move with the PRA_HOME_* parameters (modes 0 ORG, 1 EL, 2 EZ; L2246-2556). Refused while moving.
+  void home(std::size_t i, const motion::AdlinkHomeParams& p);
+  // Installs the PRA_JG_* jog parameters (JOG-ON off). Ignored (refused) while another motion runs (L2708).
+  void jog(std::size_t i, const motion::AdlinkJogParams& p);
+  // The JOG-ON signal (APS_jog_on): continuous mode moves while on; step mode steps, waits, then moves.
+  void set_jog_on(std::size_t i, bool on);
+  bool jog_on(std::size_t i) const { return loop(i).jog_on(); }
+  bool jogging(std::size_t i) const;  // a jog sequence is installed and running (MTS JOG, bit 15)
+  // APS_ptp with Option bit 8 (MF_WAIT): the move is checked now and waits for move_trigger (MTS WAIT, L3669-3720).
+  void move_ptp_wait(std::size_t i, const motion::AdlinkPtpParams& p);
+  // APS_move_trigger: starts every waiting move of the masked axes in this same tick (L3787-3790).
+  void move_trigger(std::uint32_t mask);
+  bool waiting_trigger(std::size_t i) const { return state(i).wait_trigger; }
+  // PRA_EL_MODE: false stops at once on a limit (default), true decelerates at dec_pulse_per_s2 (PRA_SD_DEC).
+  void set_limit_stop_mode(std::size_t i, bool decelerate, double dec_pulse_per_s2);
+  // PRA_PRE_EVENT_DIST / PRA_POST_EVENT_DIST (L3284-3292), pulse, 0 = off.
+  void set_move_event_distances(std::size_t i, double pre_pulse, double post_pulse);
+
   // -- safety configuration and inputs ----------------------------------------------------------------------
   void set_limits(std::size_t i, const LimitConfig& limits);
   void set_alarm_enabled(std::size_t i, bool on) { at(i).alarm_enabled = on; }
@@ -299,6 +329,8 @@ class Card {
   bool alarm_active(std::size_t i) const;
   void safety_before(std::size_t i);
   void after_tick(std::size_t i, double error);
+  void limit_stop(std::size_t i, StopCause cause);
+  void start_ptp(std::size_t i, const motion::AdlinkPtpParams& p);
 
   std::vector<std::unique_ptr<Axis>> owned_;
   std::vector<std::unique_ptr<MotionLoop>> loops_;
