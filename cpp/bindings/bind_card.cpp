@@ -215,6 +215,8 @@ void bind_card(py::module_& m) {
       .def("set_mode", [](Card& k, double i, const std::string& s) { k.set_mode(idx(k, i), mode_from(s)); },
            py::arg("axis"), py::arg("mode"))
       .def("mode", [](const Card& k, double i) { return std::string(to_string(k.state(idx(k, i)).mode)); }, py::arg("axis"))
+      .def("update_pending", [](const Card& k, double i) { return k.state(idx(k, i)).commit_pending; }, py::arg("axis"))
+      .def("staged_changes", [](const Card& k, double i) { return k.state(idx(k, i)).dirty; }, py::arg("axis"))
       .def("abrupt_stop", [](Card& k, double i) { k.abrupt_stop(idx(k, i)); }, py::arg("axis"))
       .def("zero_pos", [](Card& k, double i) { k.zero_pos(idx(k, i)); }, py::arg("axis"))
       .def("set_actual_pos", [](Card& k, double i, double p) { k.set_actual_pos(idx(k, i), p); }, py::arg("axis"), py::arg("pos"))

@@ -162,6 +162,28 @@ class Card:
             done += n
         return done
 
+    def snapshot(self) -> dict:
+        """The card's observable state now, for "a refused command leaves the state unchanged" checks: per axis
+        the staged and active registers, pending update, mode, latched events (without the command-error bit 7,
+        which a refusal sets by design), drive and loop state, profile and actual position (pulse), profile
+        velocity (pulse/tick), limits, breakpoint, capture and stop cause; and the e-stop. Two snapshots
+        compare with ``==``."""
+        c = self._card
+        axes = []
+        for i in range(c.axis_count):
+            staged, active = dict(c.staged(i)), dict(c.active(i))
+            staged["law"], active["law"] = repr(staged["law"]), repr(active["law"])
+            axes.append({
+                "staged": staged, "active": active, "update_pending": c.update_pending(i),
+                "staged_changes": c.staged_changes(i), "mode": c.mode(i), "events": c.events(i) & ~(1 << 7),
+                "servo_on": c.servo_on(i), "closed_loop": c.closed_loop(i), "moving": c.moving(i),
+                "profile_pos": c.profile_pos(i), "profile_vel": c.profile_vel(i), "actual_pos": c.actual_pos(i),
+                "limits": repr(c.limits(i)), "auto_stop": c.auto_stop(i), "auto_update": c.auto_update(i),
+                "mtr_cmd": c.mtr_cmd(i), "error_level": c.error_level(i), "breakpoint": c.breakpoint_armed(i),
+                "capture": c.capture_value(i), "stop_cause": c.stop_cause(i),
+                "status_bits": _core.gt_axis_status(c, i) & ~(1 << 7)})
+        return {"tick": c.tick, "emergency_stop": c.emergency_stop, "axes": axes}
+
     @staticmethod
     def units(signal: str) -> str:
         """Unit of a recorded signal."""
