@@ -20,6 +20,8 @@ namespace servobench::bindings {
 namespace py = pybind11;
 using machine::Card;
 
+void bind_card_ge(py::module_& m);  // bind_card_ge.cpp
+
 namespace {
 
 std::size_t idx(const Card& c, double i) {
@@ -54,8 +56,9 @@ machine::CaptureTrigger capture_from(const std::string& s) {
 }
 
 machine::CommandFault fault_from(const std::string& s) {
-  for (int f = 0; f <= static_cast<int>(machine::CommandFault::DistanceTooShort); ++f) {
+  for (int f = 0; f < 64; ++f) {  // every cause up to the last (to_string gives "?" past it)
     const auto c = static_cast<machine::CommandFault>(f);
+    if (std::string(to_string(c)) == "?") break;
     if (s == to_string(c)) return c;
   }
   throw py::value_error("fault: '" + s + "' is not a card command fault");
@@ -325,6 +328,7 @@ void bind_card(py::module_& m) {
           check_integer("GT_RstSts", "mask", mask, 0, 65535);
           return machine::gt_events_to_clear(static_cast<std::uint16_t>(mask));
         }, py::arg("mask"), "The card events GT_RstSts(mask) clears (mask bit 1 keeps, 0 clears; bits 0-7).");
+  bind_card_ge(m);
 }
 
 }  // namespace servobench::bindings

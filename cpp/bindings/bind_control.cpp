@@ -21,6 +21,8 @@ void bind_control(py::module_& m) {
       .field("ilmt", &GtServoLawParams::ilmt, "integral limit |SumE| <= ilmt (pulse*tick), 0..32767; 0 clears the sum")
       .field("bias", &GtServoLawParams::bias, "motor bias B, counts, -32768..32767")
       .field("mtr_lmt", &GtServoLawParams::mtr_lmt, "output limit |U| <= mtr_lmt, counts, 0..32767")
+      .field("fractional_gains", &GtServoLawParams::fractional_gains,
+             "GE series: kp..kaff may be fractional doubles in 0..32767 (GE L5530-5620); default False (GT integers)")
       .finish()
       .def_property_readonly_static("PERIOD_RANGE_S", [](py::object) {
         return py::make_tuple(GtServoLawParams::kMinPeriodS, GtServoLawParams::kMaxPeriodS);

@@ -23,6 +23,7 @@ BAD = [
     (sb.GtServoLaw, "ilmt", [-1, 32768, NAN], "0..32767"),
     (sb.GtServoLaw, "bias", [-32769, 32768, 0.5, NAN], "-32768..32767"),
     (sb.GtServoLaw, "mtr_lmt", [-1, 32768, INF], "0..32767"),
+    (sb.GtServoLaw, "fractional_gains", [2, -1, 0.5], "0/False or 1/True"),
     (sb.ApsServoLaw, "kp", [-1, 65536, 2.5, NAN], "0..65535"),
     (sb.ApsServoLaw, "ki", [-1, 65536, INF], "0..65535"),
     (sb.ApsServoLaw, "kd", [-1, 65536, NAN], "0..65535"),

@@ -7,11 +7,20 @@ namespace servobench::control {
 void GtServoLawParams::validate() const {
   constexpr const char* owner = "GtServoLaw";
   constexpr const char* table = "GT manual Table 3-4";
-  check_integer(owner, "kp", kp, 0, 32767, table);
-  check_integer(owner, "ki", ki, 0, 32767, table);
-  check_integer(owner, "kd", kd, 0, 32767, table);
-  check_integer(owner, "kvff", kvff, 0, 32767, table);
-  check_integer(owner, "kaff", kaff, 0, 32767, table);
+  if (fractional_gains) {
+    constexpr const char* ge = "GE manual L5530-5620";
+    check_range(owner, "kp", kp, 0, 32767, ge);
+    check_range(owner, "ki", ki, 0, 32767, ge);
+    check_range(owner, "kd", kd, 0, 32767, ge);
+    check_range(owner, "kvff", kvff, 0, 32767, ge);
+    check_range(owner, "kaff", kaff, 0, 32767, ge);
+  } else {
+    check_integer(owner, "kp", kp, 0, 32767, table);
+    check_integer(owner, "ki", ki, 0, 32767, table);
+    check_integer(owner, "kd", kd, 0, 32767, table);
+    check_integer(owner, "kvff", kvff, 0, 32767, table);
+    check_integer(owner, "kaff", kaff, 0, 32767, table);
+  }
   check_integer(owner, "ilmt", ilmt, 0, 32767, table);
   check_integer(owner, "bias", bias, -32768, 32767, table);
   check_integer(owner, "mtr_lmt", mtr_lmt, 0, 32767, "GT manual L829");

@@ -63,6 +63,10 @@ const char* to_string(CommandFault fault) {
     case CommandFault::InvalidInMode: return "invalid_in_mode";
     case CommandFault::DriveAlarmActive: return "drive_alarm_active";
     case CommandFault::DistanceTooShort: return "distance_too_short";
+    case CommandFault::MotorStateWhileEnabled: return "motor_state_while_enabled";
+    case CommandFault::AxisStateError: return "axis_state_error";
+    case CommandFault::NotInCommandSet: return "not_in_command_set";
+    case CommandFault::NotSimulated: return "not_simulated";
   }
   return "?";
 }
@@ -779,6 +783,42 @@ void Card::clear_events(std::size_t i, std::uint32_t which) {
   s.events &= ~which;
   if (which & event_bit(CardEvent::Breakpoint)) loops_[i]->clear_breakpoint_flag();
   if (which & event_bit(CardEvent::Captured)) loops_[i]->capture().clear();
+}
+
+// -- GE additions -------------------------------------------------------------------------------------------
+
+void Card::smooth_stop(std::size_t i) {
+  at(i);
+  if (loops_[i]->sequence_active()) {
+    loops_[i]->cancel_sequence();
+    stop_profile(i);
+    return;
+  }
+  if (loops_[i]->generator().moving()) loops_[i]->generator().smooth_stop();
+}
+
+void Card::arm_probe() {
+  for (std::size_t i = 0; i < loops_.size(); ++i) {
+    const CaptureUnit& c = loops_[i]->capture();
+    if (c.armed() != CaptureTrigger::None || c.captured())
+      refuse(static_cast<int>(i), CommandFault::HomeCaptureArmed,
+             "GT_CaptProb: the capture is armed or still flags a capture; GT_ClrSts first (GE L2334-2336)");
+  }
+  for (auto& l : loops_) l->capture().arm(CaptureTrigger::Probe);
+}
+
+void Card::synch_pos_now(std::size_t i) {
+  CardAxisState& s = at(i);
+  if (moving(i)) refuse(static_cast<int>(i), CommandFault::ChangeInMotion, "synchronise the profile only at rest");
+  const double a = std::nearbyint(loops_[i]->actual_pos());
+  loops_[i]->generator().set_position(a);
+  s.staged.pos = s.active.pos = a;
+}
+
+void Card::set_probe_time(double t_s) {
+  if (!(std::isnan(t_s) || std::isfinite(t_s)))
+    throw_invalid("Card", "probe_time_s", t_s, "must be finite (s) or NaN (never)");
+  for (auto& l : loops_) l->set_probe_time(t_s);
 }
 
 // -- readbacks ----------------------------------------------------------------------------------------------

@@ -44,6 +44,10 @@ std::uint16_t gt_command_status_bit(CommandFault fault) {
     case CommandFault::EmergencyStopActive:
     case CommandFault::DriveAlarmActive: return 0;
     case CommandFault::DistanceTooShort: return 1u << 0;
+    case CommandFault::MotorStateWhileEnabled:
+    case CommandFault::AxisStateError:
+    case CommandFault::NotInCommandSet:
+    case CommandFault::NotSimulated: return 0;  // GE causes (machine/ge_status.hpp)
   }
   return 0;
 }

@@ -2,11 +2,12 @@
 
 * :mod:`servobench.dialects.gt` -- the Googol GT series (``GT_Axis(n)`` current-axis style, per-sample units).
 * :mod:`servobench.dialects.aps` -- the ADLINK APS library (axis IDs from 0, pulse/s, PRA_* parameter numbers).
+* :mod:`servobench.dialects.ge` -- the Googol GE series (explicit axis argument from 1, pulse/ms units, PX/SX).
 
 Each dialect only translates names, argument order, units and return codes; the behaviour is the Card's.
-The GE and GUC-ECAT/iDEABOX dialects are to come.
+The GUC-ECAT/iDEABOX dialects are to come.
 """
 
-from . import aps, gt
+from . import aps, ge, gt
 
-__all__ = ["aps", "gt"]
+__all__ = ["aps", "ge", "gt"]

@@ -22,6 +22,8 @@ struct GtServoLawParams {
   double ilmt = 32767;  // integral limit: |SumE| <= ILmt (pulse*tick); 0 clears the sum; 0..32767
   double bias = 0;      // motor bias B, counts, -32768..32767 (closed loop only)
   double mtr_lmt = 32767;  // output saturation |U| <= MtrLmt, counts, 0..32767
+  // GE series (seed 001 L5530-5620): the five gains are doubles in [0, 32767], not integers (decision V87).
+  bool fractional_gains = false;
 
   // Servo sample time range and default of the GT cards (GT_SetSmplTm, L578-580, L5030-5036).
   static constexpr double kMinPeriodS = 48e-6;

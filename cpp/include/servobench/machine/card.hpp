@@ -77,6 +77,12 @@ enum class CommandFault : int {
   InvalidInMode,           // a command the current mode does not have (e.g. SmthStp in gear mode)
   DriveAlarmActive,        // motion while the alarm input is active (ADLINK L3950-3953: ignored, stop code 2)
   DistanceTooShort,        // a point-to-point move shorter than its VS -> VE ramps (ADLINK, decision M9)
+  // GE (seed 001, Tables 2-3/2-4) causes without a GT equivalent:
+  MotorStateWhileEnabled,  // AlarmOn/Off, EncOn/Off with the servo enabled (GE SX cmd bit 3)
+  AxisStateError,          // a servo command on a pulse axis, CtrlMode with the servo on, StepDir/Pulse on an
+                           // analog axis (GE SX cmd bit 6)
+  NotInCommandSet,         // a command the card variant does not have (GE SX cmd bit 14)
+  NotSimulated,            // a command the simulator does not model (no vendor bit; documented per dialect)
 };
 const char* to_string(CommandFault fault);
 
@@ -176,6 +182,7 @@ struct CardAxisState {
   bool ptp_active = false;            // a point-to-point move runs: the distance events are measured on it
   double move_start = 0.0, move_target = 0.0;  // its start and target, pulse
   bool pre_event = false, post_event = false;  // MTS PRED (bit 18) / POSTD (bit 19), cleared at the next start
+  bool encoder_fault = false;       // the encoder-abnormal input (GE PX status bit 27), set by the user
 };
 
 // What one tick of one axis records (each a buffer of n doubles or null), besides the Axis and loop traces.
@@ -302,6 +309,19 @@ class Card {
   double following_error(std::size_t i) const { return state(i).error_pulse; }  // GT_GetAtlErr
   bool pos_limit_input(std::size_t i) const;  // hard-limit inputs as triggered (polarity applied)
   bool neg_limit_input(std::size_t i) const;
+
+  // -- GE additions (dialects/ge.py; docs/card.md, decisions V86-V99) ----------------------------------------
+  // GE GT_SmthStp: an immediate smooth stop at the mode's limits (GE L1310-1312, Example 7-2 L2245); no-op at rest.
+  void smooth_stop(std::size_t i);
+  // GE GT_CaptProb: every axis's capture armed on the probe input EXI0, one shot (GE L3828-3862); refused as a
+  // whole (HomeCaptureArmed) if an axis is armed or still flags a capture.
+  void arm_probe();
+  // The simulated probe edge (EXI0) at time t_s (s, the card clock: tick * Ts); NaN: never.
+  void set_probe_time(double t_s);
+  void set_encoder_fault(std::size_t i, bool on) { at(i).encoder_fault = on; }
+  // GE GT_AxisOn's synchronisation (L3716-3720): target = profile = the actual position (whole pulses), at once;
+  // at rest only (else ChangeInMotion).
+  void synch_pos_now(std::size_t i);
 
   // -- running ----------------------------------------------------------------------------------------------
   // Runs n ticks. traces: empty, or one per axis whose non-null buffers hold n doubles each.
