@@ -355,3 +355,20 @@ def test_reset_restores_the_manual_defaults(g):
     assert sts(g) == 0x0100 | 0x0800 | 0x1000
     g.card.run(1)
     assert g.card.axes[1].law.kp == 0
+
+
+def test_motion_bit_is_set_from_the_update_so_a_polling_loop_waits(g):
+    # V34: "GT_Update(); do GT_GetSts(&s); while (s & 0x400);" must wait for the move, though the profile starts
+    # at the next tick (L1156); an update of gains only does not set it.
+    g.GT_Axis(1)
+    g.GT_AxisOn()
+    g.GT_SetKp(38)
+    assert g.GT_Update() == 0 and not sts(g) & 0x400
+    g.GT_SetAcc(0.1); g.GT_SetVel(4); g.GT_SetPos(2000)
+    assert g.GT_Update() == 0
+    assert sts(g) & 0x400 and g.card.profile_pos(0) == 0
+    polls = 0
+    while sts(g) & 0x400:
+        g.run(10)
+        polls += 1
+    assert g.card.profile_pos(0) == 2000 and polls > 40

@@ -15,7 +15,7 @@ std::uint32_t common_bits(const Card& card, std::size_t axis) {
   if (s.events & (event_bit(CardEvent::NegLimit) | event_bit(CardEvent::SoftNegLimit))) w |= 1u << 6;
   if (s.enabled) w |= 1u << 9;
   // Bit 10: the planner has a motion to plan (L871): moving, or an Update/MltiUpdt carrying motion registers
-  // waits for its commit at the next tick (V89), so a host polling right after GT_Update sees the motion.
+  // waits for its commit at the next tick (V34), so a host polling right after GT_Update sees the motion.
   if (card.moving(axis) || (s.commit_pending && (s.pending_dirty & kStagedMotion))) w |= 1u << 10;
   if (s.limits.enabled) w |= 1u << 11;
   const CaptureTrigger armed = card.loop(axis).capture().armed();

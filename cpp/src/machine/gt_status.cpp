@@ -9,7 +9,9 @@ std::uint16_t gt_axis_status(const Card& card, std::size_t axis) {
   if (s.events & event_bit(CardEvent::SoftNegLimit)) w |= 1u << 6;
   if (s.closed_loop) w |= 1u << 8;
   if (s.enabled) w |= 1u << 9;
-  if (card.moving(axis)) w |= 1u << 10;
+  // Bit 10 also while an Update carrying motion registers waits for its commit at the next tick (V34), so a host
+  // polling right after GT_Update sees the motion it started.
+  if (card.moving(axis) || (s.commit_pending && (s.pending_dirty & kStagedMotion))) w |= 1u << 10;
   if (s.limits.enabled) w |= 1u << 11;
   w |= static_cast<std::uint32_t>(axis & 3u) << 12;
   const CaptureTrigger armed = card.loop(axis).capture().armed();
