@@ -20,6 +20,8 @@ namespace servobench::bindings {
 namespace py = pybind11;
 using machine::Card;
 
+void bind_card_modes(py::class_<Card>& cls, py::module_& m);  // bind_card_modes.cpp
+
 namespace {
 
 std::size_t idx(const Card& c, double i) {
@@ -54,7 +56,7 @@ machine::CaptureTrigger capture_from(const std::string& s) {
 }
 
 machine::CommandFault fault_from(const std::string& s) {
-  for (int f = 0; f <= static_cast<int>(machine::CommandFault::DistanceTooShort); ++f) {
+  for (int f = 0; f <= static_cast<int>(machine::CommandFault::CrdStateError); ++f) {
     const auto c = static_cast<machine::CommandFault>(f);
     if (s == to_string(c)) return c;
   }
@@ -279,6 +281,7 @@ void bind_card(py::module_& m) {
       .def("pos_limit_input", [](const Card& k, double i) { return k.pos_limit_input(idx(k, i)); }, py::arg("axis"))
       .def("neg_limit_input", [](const Card& k, double i) { return k.neg_limit_input(idx(k, i)); }, py::arg("axis"))
       .def("run", &run_card, py::arg("ticks"), py::arg("signals") = py::none());
+  bind_card_modes(c, m);  // gear, PVT, FollowEx, coordinate systems
 
   m.def("gt_axis_status", [](const Card& k, double i) { return machine::gt_axis_status(k, idx(k, i)); },
         py::arg("card"), py::arg("axis"), "GT axis status register (Table 4-14) of a card axis (0-based).");

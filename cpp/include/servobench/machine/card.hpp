@@ -38,8 +38,9 @@ struct CardCycles {
   void validate() const;
 };
 
-// Profile mode of an axis. The values are the GT mode-register code (bits 11-13, GT L1500-1511).
-enum class AxisMode : int { TCurve = 0, Jog = 1, SCurve = 2, Gear = 3, Coordinated = 5 };
+// Profile mode of an axis. The values are the GT mode-register code (bits 11-13, GT L1500-1511); PVT and
+// FollowEx (GUC-ECAT / iDEABOX modes the GT does not have) take the free codes 6 and 7 (decision V52).
+enum class AxisMode : int { TCurve = 0, Jog = 1, SCurve = 2, Gear = 3, Coordinated = 5, Pvt = 6, Follow = 7 };
 const char* to_string(AxisMode mode);
 
 // Latched events of an axis (bits of CardAxisState::events). Bits 0-7 are in the GT status order (Table 4-14).
@@ -77,6 +78,7 @@ enum class CommandFault : int {
   InvalidInMode,           // a command the current mode does not have (e.g. SmthStp in gear mode)
   DriveAlarmActive,        // motion while the alarm input is active (ADLINK L3950-3953: ignored, stop code 2)
   DistanceTooShort,        // a point-to-point move shorter than its VS -> VE ramps (ADLINK, decision M9)
+  CrdStateError,           // [modes] a coordinated-motion command in the wrong state (GT cmd bit 12, L1800)
 };
 const char* to_string(CommandFault fault);
 
@@ -85,6 +87,8 @@ enum class StopCause : int {
   None = 0, EmergencyStop, DriveAlarm, PosLimit, NegLimit, SoftPosLimit, SoftNegLimit, ErrorLevel, FollowingError
 };
 const char* to_string(StopCause cause);
+
+class CardModes;  // machine/card_modes.hpp
 
 // A refused card command. fault() says why; the card has recorded it (command error event and register).
 class CardCommandRefused : public motion::MotionCommandRefused {
@@ -185,6 +189,7 @@ class Card {
   explicit Card(const std::vector<Axis*>& axes, const CardCycles& cycles = {});
   Card(const Card&) = delete;
   Card& operator=(const Card&) = delete;
+  ~Card();
 
   // -- structure and clocks ------------------------------------------------------------------------------
   std::size_t axis_count() const { return loops_.size(); }
@@ -273,6 +278,10 @@ class Card {
   bool pos_limit_input(std::size_t i) const;  // hard-limit inputs as triggered (polarity applied)
   bool neg_limit_input(std::size_t i) const;
 
+  // -- [modes] gear, PVT, FollowEx and coordinate systems: machine/card_modes.hpp (created on first use) -----
+  CardModes& modes();
+  const CardModes* modes_if_any() const { return modes_.get(); }
+
   // -- running ----------------------------------------------------------------------------------------------
   // Runs n ticks. traces: empty, or one per axis whose non-null buffers hold n doubles each.
   void run(std::size_t n, const std::vector<CardTrace>& traces = {});
@@ -299,6 +308,10 @@ class Card {
   bool alarm_active(std::size_t i) const;
   void safety_before(std::size_t i);
   void after_tick(std::size_t i, double error);
+  void tick_axis(std::size_t i, const std::vector<CardTrace>& traces, std::size_t k);
+  // [modes]
+  friend class CardModes;
+  std::unique_ptr<CardModes> modes_;
 
   std::vector<std::unique_ptr<Axis>> owned_;
   std::vector<std::unique_ptr<MotionLoop>> loops_;
