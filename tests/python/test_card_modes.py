@@ -500,3 +500,27 @@ def test_gt_streaming_and_estop_resume_tv39(gt):
     assert gt.GT_StrtMtn() == 0
     gt.wait_until(lambda: gt.GT_GetCrdSts()[1] & 1, chunk=50, max_ticks=20000)
     assert [gt.card.profile_pos(a) for a in range(3)] == [1234, 5678, 9013]
+
+
+def test_faults_stop_pvt_and_followex_axes(gts):
+    # A soft limit on a PVT axis stops its table motion at once (the card's safety, ADLINK L3983-4010 style
+    # soft limits; V54 for driven axes); a FollowEx slave on the master's encoder (masterType 1, L7345-7363)
+    # follows the actual position, and an e-stop stops it.
+    card = gts.card
+    card.set_limits(0, card.limits(0).replace(soft_pos_enabled=True, soft_pos_pulse=3000))
+    assert gts.GT_PrfPvt(1) == 0
+    assert gts.GT_PvtTable(1, 2, [0, 1000], [0, 10000], [0, 0]) == 0 and gts.GT_PvtStart(1) == 0
+    gts.run(tick_of_ms(1000))
+    assert abs(card.profile_pos(0) - 3000) < 50 and card.stop_cause(0) == "soft_pos_limit"  # actual reached 3000
+    assert not card.moving(0) and gts.GT_GetPvtLoop(1) == (0, 0, 1)
+    # FollowEx on the encoder of axis 3
+    assert gts.GT_PrfFollowEx(4, 0) == 0 and gts.GT_SetFollowMasterEx(4, 3, 1) == 0
+    assert gts.GT_FollowDataPercentEx(4, 10000, 5000, 1, 0) == 0 and gts.GT_SetFollowLoopEx(4, 0) == 0
+    assert gts.GT_FollowStartEx(0b1000) == 0
+    assert gts.GT_PrfTrap(3) == 0 and gts.GT_SetTrapPrm(3, 0.1) == 0 and gts.GT_SetVel(3, 20) == 0
+    assert gts.GT_SetPos(3, 8000) == 0 and gts.GT_Update(0b100) == 0
+    gts.run(tick_of_ms(700))
+    assert card.profile_pos(3) == pytest.approx(0.5 * card.actual_pos(2), abs=1)   # EVEN ratio 0.5 on the encoder
+    card.emergency_stop = True
+    gts.run(2)
+    assert not card.follow(3).moving and card.stop_cause(3) == "emergency_stop"
