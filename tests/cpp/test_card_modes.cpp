@@ -110,6 +110,31 @@ TEST(CardModes, GearSlaveLimitStopsTheMaster) {
   EXPECT_THROW(c.modes().set_gear(0, 0), mc::CardCommandRefused);  // its own master
 }
 
+TEST(CardModes, GearSlaveAtALimitRestrictsTheMastersDirection) {
+  // GT L2213: slave negative limit + negative ratio -> the master may move only negative.
+  mc::Card c(4, tuned_axis());
+  all_on(c);
+  c.modes().set_gear(0, 1);
+  c.stage_ratio(0, -1);
+  c.update(1u);
+  mc::LimitConfig lim;
+  lim.soft_neg_enabled = true;
+  lim.soft_neg_pulse = 0;  // the slave stands on its negative (soft) limit
+  c.set_limits(0, lim);
+  c.run(2);
+  ASSERT_TRUE(c.events(0) & mc::event_bit(mc::CardEvent::SoftNegLimit));
+  c.stage_acc(1, 0.01);
+  c.stage_vel(1, 1);
+  c.stage_pos(1, 1000);
+  EXPECT_THROW(c.update(2u), mc::CardCommandRefused);
+  EXPECT_EQ(c.last_fault(), mc::CommandFault::DirectionInhibited);
+  c.stage_pos(1, -1000);
+  EXPECT_NO_THROW(c.update(2u));
+  c.run(2000);
+  EXPECT_EQ(c.profile_pos(1), -1000);
+  EXPECT_EQ(c.profile_pos(0), 1000);
+}
+
 TEST(CardModes, CrdPairOnTheCardRunsTheHexagonSideAndTracks) {
   // GUC L802-843 (guc-ecat.md §6.2): a 200000-pulse side at v 100 pulse/ms, a 0.1 takes 3000 ms (15000 ticks).
   mc::Card c(8, tuned_axis());

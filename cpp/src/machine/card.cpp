@@ -355,6 +355,9 @@ CommandFault Card::check_commit(std::size_t i, const AxisRegisters& r, std::uint
         return fail(CommandFault::InvalidInMode, std::string("no profile registers in ") + to_string(s.mode) + " mode");
     }
     if (!(d & kStagedSmoothStop)) {
+      if (modes_ && modes_->gear_inhibits(i, dir))  // [modes] a geared slave's latched limit (GT L2213)
+        return fail(CommandFault::DirectionInhibited,
+                    "a gear slave of this axis is at a limit in the direction this move would drive it (GT L2213)");
       if (dir > 0.0 && inhibited_pos(i))
         return fail(CommandFault::DirectionInhibited,
                     "motion toward the positive limit is refused until the limit event is cleared (GT L2209)");

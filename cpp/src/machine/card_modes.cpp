@@ -130,6 +130,16 @@ std::size_t CardModes::gear_master(std::size_t slave) const {
 
 bool CardModes::gear_halted(std::size_t slave) const { return kind_.at(slave) == Kind::Gear && gear_[slave].halted; }
 
+bool CardModes::gear_inhibits(std::size_t master, double dir) const {
+  if (dir == 0.0 || n_driven_ == 0) return false;
+  for (std::size_t s = 0; s < n_; ++s) {
+    if (kind_[s] != Kind::Gear || gear_[s].master != master || gear_[s].halted) continue;
+    const double slave_dir = dir * gear_[s].gear->ratio();
+    if ((slave_dir > 0.0 && card_.inhibited_pos(s)) || (slave_dir < 0.0 && card_.inhibited_neg(s))) return true;
+  }
+  return false;
+}
+
 void CardModes::on_ratio(std::size_t i, double ratio) {
   if (kind_[i] != Kind::Gear) return;
   GearSlave& g = gear_[i];

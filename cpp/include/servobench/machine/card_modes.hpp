@@ -60,6 +60,9 @@ class CardModes {
   // bit 6) and for master == slave. Engages at the present positions (no jump).
   void set_gear(std::size_t slave, std::size_t master);
   std::size_t gear_master(std::size_t slave) const;
+  // A move of `master` in direction dir would drive one of its slaves toward a latched limit (GT L2213: slave
+  // negative limit + negative ratio -> the master may move only negative).
+  bool gear_inhibits(std::size_t master, double dir) const;
   // A fault or GT_AbptStp halted the gear: the slave holds until the next PrflG or ratio Update (V53).
   bool gear_halted(std::size_t slave) const;
 
