@@ -21,6 +21,7 @@ namespace py = pybind11;
 using machine::Card;
 
 void bind_card_ge(py::module_& m);  // bind_card_ge.cpp
+void bind_card_modes(py::class_<Card>& cls, py::module_& m);  // bind_card_modes.cpp
 
 namespace {
 
@@ -311,6 +312,7 @@ void bind_card(py::module_& m) {
       .def("pos_limit_input", [](const Card& k, double i) { return k.pos_limit_input(idx(k, i)); }, py::arg("axis"))
       .def("neg_limit_input", [](const Card& k, double i) { return k.neg_limit_input(idx(k, i)); }, py::arg("axis"))
       .def("run", &run_card, py::arg("ticks"), py::arg("signals") = py::none());
+  bind_card_modes(c, m);  // gear, PVT, FollowEx, coordinate systems
 
   m.def("gt_axis_status", [](const Card& k, double i) { return machine::gt_axis_status(k, idx(k, i)); },
         py::arg("card"), py::arg("axis"), "GT axis status register (Table 4-14) of a card axis (0-based).");

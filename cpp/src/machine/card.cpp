@@ -7,6 +7,7 @@
 #include <string>
 
 #include "servobench/common/validate.hpp"
+#include "servobench/machine/card_modes.hpp"
 
 namespace servobench::machine {
 
@@ -42,6 +43,8 @@ const char* to_string(AxisMode mode) {
     case AxisMode::SCurve: return "s_curve";
     case AxisMode::Gear: return "gear";
     case AxisMode::Coordinated: return "coordinated";
+    case AxisMode::Pvt: return "pvt";
+    case AxisMode::Follow: return "follow";
   }
   return "?";
 }
@@ -67,6 +70,7 @@ const char* to_string(CommandFault fault) {
     case CommandFault::AxisStateError: return "axis_state_error";
     case CommandFault::NotInCommandSet: return "not_in_command_set";
     case CommandFault::NotSimulated: return "not_simulated";
+    case CommandFault::CrdStateError: return "crd_state_error";
   }
   return "?";
 }
@@ -130,6 +134,14 @@ Card::Card(const std::vector<Axis*>& axes, const CardCycles& cycles) {
   init(cycles);
 }
 
+Card::~Card() = default;
+
+// [modes] the driven modes live in CardModes (machine/card_modes.cpp), created on first use.
+CardModes& Card::modes() {
+  if (!modes_) modes_ = std::make_unique<CardModes>(*this);
+  return *modes_;
+}
+
 void Card::init(const CardCycles& cycles) {
   cycles.validate();
   cycles_ = cycles;
@@ -160,6 +172,7 @@ CardAxisState& Card::at(std::size_t i) {
 }
 
 void Card::reset() {
+  if (modes_) modes_->reset();  // [modes] no gear, PVT, cam or mapping after a reset (GT HardRst [17])
   estop_ = false;
   last_fault_ = CommandFault::None;
   for (std::size_t i = 0; i < loops_.size(); ++i) {
@@ -342,9 +355,14 @@ CommandFault Card::check_commit(std::size_t i, const AxisRegisters& r, std::uint
         break;
       case AxisMode::Gear:
       case AxisMode::Coordinated:
+      case AxisMode::Pvt:
+      case AxisMode::Follow:
         return fail(CommandFault::InvalidInMode, std::string("no profile registers in ") + to_string(s.mode) + " mode");
     }
     if (!(d & kStagedSmoothStop)) {
+      if (modes_ && modes_->gear_inhibits(i, dir))  // [modes] a geared slave's latched limit (GT L2213)
+        return fail(CommandFault::DirectionInhibited,
+                    "a gear slave of this axis is at a limit in the direction this move would drive it (GT L2213)");
       if (dir > 0.0 && inhibited_pos(i))
         return fail(CommandFault::DirectionInhibited,
                     "motion toward the positive limit is refused until the limit event is cleared (GT L2209)");
@@ -406,7 +424,10 @@ void Card::commit(std::size_t i, const AxisRegisters& r, std::uint32_t d) {
     l.breakpoint().set_compare(r.brk_cn);
     s.active.brk_cn = r.brk_cn;
   }
-  if (d & kStagedRatio) s.active.ratio = r.ratio;
+  if (d & kStagedRatio) {
+    s.active.ratio = r.ratio;
+    if (modes_) modes_->on_ratio(i, r.ratio);  // [modes] a geared slave takes the ratio from this tick
+  }
   try {
     if (d & kStagedSynchPos) {
       const double a = std::nearbyint(l.actual_pos());
@@ -439,12 +460,14 @@ void Card::commit(std::size_t i, const AxisRegisters& r, std::uint32_t d) {
 
 void Card::set_mode(std::size_t i, AxisMode mode) {
   CardAxisState& s = at(i);
-  if (mode == AxisMode::Gear || mode == AxisMode::Coordinated)
+  if (mode != AxisMode::TCurve && mode != AxisMode::SCurve && mode != AxisMode::Jog)
     refuse(static_cast<int>(i), CommandFault::InvalidInMode,
-           std::string(to_string(mode)) + " mode is not simulated by the card yet");
+           std::string(to_string(mode)) + " mode is entered through Card::modes() (set_gear, set_pvt, set_follow, "
+           "a coordinate system)");
   if (moving(i) && s.mode != AxisMode::Gear)
     refuse(static_cast<int>(i), CommandFault::ModeChangeInMotion,
            "the motion mode can change only when the motion has ended (GT L837, L464)");
+  if (modes_) modes_->leave(i);  // [modes] leaving gear / PVT / cam / a coordinate system
   s.mode = mode;
 }
 
@@ -456,6 +479,7 @@ void Card::stop_profile(std::size_t i) {
 
 void Card::abrupt_stop(std::size_t i) {
   at(i);
+  if (modes_) modes_->on_abrupt_stop(i);  // [modes] halts the gear / PVT / cam / the axis's coordinate system
   stop_profile(i);
 }
 
@@ -465,6 +489,8 @@ void Card::set_actual_pos(std::size_t i, double pos) {
           [&] { check_integer("Card", "pos", pos, kPosMin, kPosMax, "whole pulses, GT L4617"); });
   if (s.mode == AxisMode::Gear)
     refuse(static_cast<int>(i), CommandFault::InvalidInMode, "ZeroPos/SetAtlPos are invalid in gear mode (GT L1421-1429)");
+  if (s.mode == AxisMode::Coordinated)  // [modes] the coordinate system owns the position (V55)
+    refuse(static_cast<int>(i), CommandFault::InvalidInMode, "ZeroPos/SetAtlPos are invalid in a coordinate system (GT L1659)");
   if (moving(i) || loops_[i]->sequence_active())
     refuse(static_cast<int>(i), CommandFault::ChangeInMotion, "ZeroPos/SetAtlPos only at rest (GT L1421, L4617)");
   loops_[i]->set_position(pos);
@@ -561,7 +587,7 @@ bool Card::alarm_active(std::size_t i) const {
 void Card::check_move_allowed(std::size_t i, double dir) {
   CardAxisState& s = at(i);
   const int ai = static_cast<int>(i);
-  if (s.mode == AxisMode::Gear || s.mode == AxisMode::Coordinated)
+  if (s.mode != AxisMode::TCurve && s.mode != AxisMode::SCurve && s.mode != AxisMode::Jog)
     refuse(ai, CommandFault::InvalidInMode, std::string("no point-to-point or velocity move in ") + to_string(s.mode) + " mode");
   if (loops_[i]->sequence_active()) refuse(ai, CommandFault::ChangeInMotion, "a homing sequence runs");
   if (estop_) {
@@ -825,6 +851,8 @@ void Card::set_probe_time(double t_s) {
 
 bool Card::moving(std::size_t i) const {
   const MotionLoop& l = loop(i);
+  if (modes_)  // [modes] a halted gear / a PVT or cam axis: the mode says
+    if (const std::optional<bool> m = modes_->moving(i)) return *m || l.generator().moving();
   return state(i).mode == AxisMode::Gear || l.generator().moving() || l.sequence_active();
 }
 
@@ -856,6 +884,7 @@ bool Card::inhibited_neg(std::size_t i) const {
 
 void Card::fault_stop(std::size_t i, StopCause cause, bool servo_off) {
   CardAxisState& s = st_[i];
+  if (modes_) modes_->on_fault(i, cause);  // [modes] the gear master / the coordinate system stops too
   if (loops_[i]->generator().moving() || loops_[i]->sequence_active()) {
     loops_[i]->cancel_sequence();
     stop_profile(i);
@@ -960,37 +989,47 @@ void Card::tick_once(const std::vector<CardTrace>& traces, std::size_t k) {
   // 2. safety on this instant's inputs
   for (std::size_t i = 0; i < n; ++i) safety_before(i);
   // 3. the loops; 4. the checks after the law
-  for (std::size_t i = 0; i < n; ++i) {
-    MotionLoop& l = *loops_[i];
-    double error = 0.0;
-    Trace tr;
-    LoopTrace lt;
-    if (!traces.empty()) {
-      tr = shifted(traces[i].axis, k);
-      lt = shifted(traces[i].loop, k);
+  if (modes_ && modes_->active()) {  // [modes] driven axes get their command first, in axis order
+    modes_->begin_tick(tick_);
+    for (std::size_t i = 0; i < n; ++i) {
+      modes_->feed(i);
+      tick_axis(i, traces, k);
     }
-    double* user_error = tr.error;
-    tr.error = &error;
-    const bool armed = l.breakpoint().armed() != motion::BreakKind::None;
-    l.run(1, tr, lt);
-    if (user_error) *user_error = error;
-    if (armed && l.breakpoint().armed() == motion::BreakKind::None && st_[i].auto_update) {
-      // GT L1263: the auto-update commits everything staged; effective from the next tick.
-      CardAxisState& s = st_[i];
-      const std::uint32_t d = s.dirty;
-      s.dirty = 0;
-      commit(i, s.staged, d);
-    }
-    after_tick(i, error);
-    if (!traces.empty()) {
-      const CardTrace& ct = traces[i];
-      if (ct.events) ct.events[k] = static_cast<double>(st_[i].events);
-      if (ct.moving) ct.moving[k] = moving(i) ? 1.0 : 0.0;
-      if (ct.servo_on) ct.servo_on[k] = st_[i].enabled ? 1.0 : 0.0;
-      if (ct.prf_vel) ct.prf_vel[k] = l.generator().state().vel;
-    }
+  } else {
+    for (std::size_t i = 0; i < n; ++i) tick_axis(i, traces, k);
   }
   ++tick_;
+}
+
+void Card::tick_axis(std::size_t i, const std::vector<CardTrace>& traces, std::size_t k) {
+  MotionLoop& l = *loops_[i];
+  double error = 0.0;
+  Trace tr;
+  LoopTrace lt;
+  if (!traces.empty()) {
+    tr = shifted(traces[i].axis, k);
+    lt = shifted(traces[i].loop, k);
+  }
+  double* user_error = tr.error;
+  tr.error = &error;
+  const bool armed = l.breakpoint().armed() != motion::BreakKind::None;
+  l.run(1, tr, lt);
+  if (user_error) *user_error = error;
+  if (armed && l.breakpoint().armed() == motion::BreakKind::None && st_[i].auto_update) {
+    // GT L1263: the auto-update commits everything staged; effective from the next tick.
+    CardAxisState& s = st_[i];
+    const std::uint32_t d = s.dirty;
+    s.dirty = 0;
+    commit(i, s.staged, d);
+  }
+  after_tick(i, error);
+  if (!traces.empty()) {
+    const CardTrace& ct = traces[i];
+    if (ct.events) ct.events[k] = static_cast<double>(st_[i].events);
+    if (ct.moving) ct.moving[k] = moving(i) ? 1.0 : 0.0;
+    if (ct.servo_on) ct.servo_on[k] = st_[i].enabled ? 1.0 : 0.0;
+    if (ct.prf_vel) ct.prf_vel[k] = l.generator().state().vel;
+  }
 }
 
 void Card::run(std::size_t n, const std::vector<CardTrace>& traces) {

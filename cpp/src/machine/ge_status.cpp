@@ -51,7 +51,9 @@ std::uint16_t ge_mode_register(const Card& card, std::size_t axis) {
     case AxisMode::Jog: w |= 1u << 11; break;         // 001 velocity
     case AxisMode::SCurve: w |= 1u << 12; break;      // 010
     case AxisMode::Gear:                              // not GE modes: the dialect never selects them
-    case AxisMode::Coordinated: break;
+    case AxisMode::Coordinated:
+    case AxisMode::Pvt:
+    case AxisMode::Follow: break;
   }
   return static_cast<std::uint16_t>(w);
 }
@@ -71,6 +73,7 @@ std::uint16_t ge_command_status_bit(GeVariant variant, CommandFault fault) {
     case CommandFault::AxisOnWhileAlarm: return px ? (1u << 9) : (1u << 3);
     case CommandFault::ChangeInMotion: return 1u << 11;
     case CommandFault::NotInCommandSet: return px ? 0 : (1u << 14);
+    case CommandFault::CrdStateError: return px ? 0 : (1u << 8);  // SX path-command error (Table 2-4, L324-347)
     case CommandFault::None:
     case CommandFault::InvalidInMode:
     case CommandFault::DirectionInhibited:

@@ -50,6 +50,7 @@ std::uint16_t gt_command_status_bit(CommandFault fault) {
     case CommandFault::AxisStateError:
     case CommandFault::NotInCommandSet:
     case CommandFault::NotSimulated: return 0;  // GE causes (machine/ge_status.hpp)
+    case CommandFault::CrdStateError: return 1u << 12;
   }
   return 0;
 }

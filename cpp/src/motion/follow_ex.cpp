@@ -158,6 +158,15 @@ FollowEx::FollowEx(const FollowExSetup& setup, double slave_pos) : setup_(setup)
   state_.pos = slave_pos;
 }
 
+void FollowEx::configure(const FollowExSetup& setup) {
+  setup.validate();
+  if (running_) throw MotionCommandRefused("FollowEx: the setup cannot change while following (return code 1)");
+  if (setup.fifo_capacity() != setup_.fifo_capacity() && (!fifo_data_[0].empty() || !fifo_data_[1].empty()))
+    throw MotionCommandRefused("GT_SetFollowMemoryEx: the FIFO size is set before data is written (return code 1; "
+                               "iDEABOX L514)");
+  setup_ = setup;
+}
+
 void FollowEx::check_fifo(double fifo) const {
   check_integer("FollowEx", "fifo", fifo, 0, 1, "two FIFOs per axis; iDEABOX L4837-4916");
 }

@@ -212,6 +212,14 @@ void ProfileGenerator::set_position(double pos) {
   start(Profile::rest(pos));
 }
 
+void ProfileGenerator::follow(const MotionState& s) {
+  stopping_ = false;
+  Profile p(MotionState{s.pos, s.vel, s.acc, 0.0});
+  p.push(0.5, 0.0).finish_at_rest(s.pos);  // at(0) = s; from t = 0.5 on at rest at s.pos
+  start(p);
+  t_ = -1.0;  // the next step() lands on t = 0
+}
+
 const MotionState& ProfileGenerator::step() {
   if (pending_ && t_ + 1.0 >= pending_ptp_.at) {
     // The deferred on-the-fly PTP change starts at the instant the ramp ended (between two ticks).

@@ -19,7 +19,7 @@ from __future__ import annotations
 import math
 
 from .. import _core
-from .._core import CardCommandRefused, GtHome, MotionCommandRefused
+from .._core import CardCommandRefused, GtHome, MotionCommandRefused, PathSegment
 from ..card import Card
 from ._controller import DialectController, export_functions
 
@@ -337,11 +337,17 @@ class GtController(DialectController):
         """Velocity (jog) mode (L4494-4518)."""
         return self._do(lambda: self._card.set_mode(self._axis, "jog"))
 
+    # -- [modes] electronic gear (GT L1029-1090, L4407-4437) --------------------------------------------------
     def GT_PrflG(self, master) -> int:
-        """Electronic gear mode, master 1..6 (L4407-4437). Not simulated by the card yet: returns 1."""
+        """Electronic gear mode: the current axis follows the profile position of axis ``master`` (1..4) with the
+        staged ratio (GT_SetRatio + Update); bit 10 stays set (L1090). Masters 5, 6 (auxiliary encoders) are not
+        simulated: 1 (command error). Refused while the axis moves in another mode (bit 6) (L4407-4437)."""
         if self._card is not None and not _int_in(master, 1, 6):
             return self._param_error("illegal_control_param")
-        return self._do(lambda: self._card.set_mode(self._axis, "gear"))
+        if self._card is not None and int(master) > 4:
+            self._card.record_fault(self._axis, "invalid_in_mode")
+            return RTN_COMMAND_ERROR
+        return self._do(lambda: self._card.set_gear(self._axis, int(master) - 1))
 
     def GT_SetPos(self, pos) -> int:
         """Target position, whole pulses -2^30..2^30-1 (staged) (L4986-4998)."""
@@ -535,6 +541,282 @@ class GtController(DialectController):
             return RTN_COMMAND_ERROR
         p = GtHome(pos=float(pos), vel=reg["vel"], acc=reg["acc"], index=bool(self._index[self._axis]), zero=False)
         return self._do(lambda: self._card.home(self._axis, p))
+
+
+    # -- [modes] coordinated motion (GT L1513-2011; gt.md §4, §8.11) -----------------------------------------
+    # The coordinate system is the card's GT_MapAxis system (Card.gt_map_axis / gt_path, units per sample time);
+    # this block keeps the GT's list bookkeeping (immediate / buffer mode, list open, Mv done, SynVel/SynAcc).
+    def _crd(self):
+        if not hasattr(self, "_crd_state"):
+            self._crd_state = dict(vel=0.0, acc=0.0, buffer=False, open=False, mv=False, started=False,
+                                   error=False, au_stp=True)
+        return self._crd_state
+
+    def _crd_refuse(self) -> int:
+        self._crd()["error"] = True
+        self._card.record_fault(self._axis, "crd_state_error")
+        return RTN_COMMAND_ERROR
+
+    def _crd_do(self, fn) -> int:
+        rtn = self._do(fn)
+        self._crd()["error"] = rtn != RTN_SUCCESS
+        if rtn == RTN_COMMAND_ERROR and self._card.last_fault in ("change_in_motion", "invalid_in_mode"):
+            self._card.record_fault(self._axis, "crd_state_error")  # a path command refused: bit 12 (L1800)
+        return rtn
+
+    def GT_MapAxis(self, axis_num, map_count) -> int:
+        """Maps motor axis 1..4: Axis = Cx x + Cy y + Cz z + Ca a + C, map_count = [Cx, Cy, Cz, Ca, C] (L1533-1538);
+        the axis enters coordinated mode. Only at rest (1); a map that determines no coordinate returns 6
+        (L1528, L1660)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if not _int_in(axis_num, 1, 4) or len(map_count) != 5 or not all(_real_in(c, -1e12, 1e12) for c in map_count):
+            return self._param_error("illegal_control_param")
+        try:
+            self._card.gt_map_axis(int(axis_num), [float(c) for c in map_count])
+        except (CardCommandRefused, MotionCommandRefused):
+            return self._crd_refuse()
+        except ValueError as e:
+            return 6 if "return code 6" in str(e) else RTN_PARAMETER_ERROR
+        return RTN_SUCCESS
+
+    def GT_SetSynVel(self, vel) -> int:
+        """Vector velocity, coordinate units/ST, modal for the later path commands (L1725)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if not _real_in(vel, 0, 16384) or float(vel) == 0:
+            return self._param_error("motion_param_overflow")
+        self._crd()["vel"] = float(vel)
+        return RTN_SUCCESS
+
+    def GT_SetSynAcc(self, acc) -> int:
+        """Vector acceleration, coordinate units/ST^2, modal (L1729)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if not _real_in(acc, 0, 16384) or float(acc) == 0:
+            return self._param_error("motion_param_overflow")
+        self._crd()["acc"] = float(acc)
+        return RTN_SUCCESS
+
+    def _path_cmd(self, make_segment) -> int:
+        """A line or arc: immediate mode runs it at once (1 while a path moves, L1800); buffer mode appends it."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        st = self._crd()
+        try:
+            path = self._card.gt_path()
+        except (CardCommandRefused, MotionCommandRefused):
+            return self._crd_refuse()
+        if st["buffer"] and st["open"] and not st["mv"]:
+            return self._crd_refuse()  # Mv* must follow StrtList (L1843)
+        if not (st["vel"] > 0 and st["acc"] > 0):
+            return self._param_error("motion_param_overflow")
+        try:
+            seg = make_segment(list(path.tail))
+        except ValueError as e:
+            st["error"] = True
+            code = getattr(e, "gt_code", None)
+            for c in (2, 3, 5):
+                if f"return code {c}" in str(e):
+                    code = c
+            return code or RTN_PARAMETER_ERROR
+        if st["buffer"] and st["open"]:
+            return self._crd_do(lambda: path.push_segment(seg, st["vel"], st["acc"], auto_end=True))
+        if st["buffer"] and path.breakpoint is not None:
+            # stopped buffer: a path command runs at once as a single line, the buffer waits (L1938, V64)
+            if seg.kind != "line" or path.busy:
+                return self._crd_refuse()
+            return self._crd_do(lambda: (self._card.group_start(2),
+                                         path.move_immediate(list(seg.end), st["vel"], st["acc"])))
+        if path.busy or path.running or path.fifo_size or path.window_size:
+            return self._crd_refuse()  # a second path command before the first finishes (L1800)
+
+        def run_now():
+            path.clear()
+            path.push_segment(seg, st["vel"], st["acc"], stop_at_end=True)
+            self._card.group_start(2)
+            path.start()
+
+        rtn = self._crd_do(run_now)
+        if rtn == RTN_SUCCESS:
+            st.update(buffer=False, started=False)  # immediate (single-segment) mode again (V64)
+        return rtn
+
+    def GT_LnXY(self, x, y) -> int:
+        """Line to the absolute point (x, y), coordinate units (L1749, L1787)."""
+        return self._path_cmd(lambda t: PathSegment.line(t, [float(x), float(y), t[2], t[3]]))
+
+    def GT_LnXYZ(self, x, y, z) -> int:
+        """3-D line (L1750)."""
+        return self._path_cmd(lambda t: PathSegment.line(t, [float(x), float(y), float(z), t[3]]))
+
+    def GT_LnXYZA(self, x, y, z, a) -> int:
+        """4-D line (L1751)."""
+        return self._path_cmd(lambda t: PathSegment.line(t, [float(x), float(y), float(z), float(a)]))
+
+    def GT_ArcXY(self, x_center, y_center, angle) -> int:
+        """Arc about the centre (absolute) by ``angle`` degrees, positive CCW seen from +Z (L1752, L1793, L1913);
+        the radius is the distance of the present point (2: zero radius)."""
+        return self._path_cmd(lambda t: PathSegment.arc_center_angle(t, "xy", (float(x_center), float(y_center)),
+                                                                     float(angle)))
+
+    def GT_ArcYZ(self, y_center, z_center, angle) -> int:
+        """Arc in the YZ plane (L1754)."""
+        return self._path_cmd(lambda t: PathSegment.arc_center_angle(t, "yz", (float(y_center), float(z_center)),
+                                                                     float(angle)))
+
+    def GT_ArcZX(self, z_center, x_center, angle) -> int:
+        """Arc in the ZX plane (L1756)."""
+        return self._path_cmd(lambda t: PathSegment.arc_center_angle(t, "zx", (float(z_center), float(x_center)),
+                                                                     float(angle)))
+
+    def GT_StrtList(self) -> int:
+        """Opens and clears the buffer (buffer mode); refused while the buffer executes (bit 12) (L1841)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        try:
+            path = self._card.gt_path()
+        except (CardCommandRefused, MotionCommandRefused):
+            return self._crd_refuse()
+        if path.busy or path.running:
+            return self._crd_refuse()
+        rtn = self._crd_do(path.clear)
+        if rtn == RTN_SUCCESS:
+            self._crd().update(buffer=True, open=True, mv=False, started=False)
+        return rtn
+
+    def _mv(self, point, vel, acc) -> int:
+        if self._card is None:
+            return RTN_COMM_ERROR
+        st = self._crd()
+        if not st["open"] or st["mv"]:
+            return self._crd_refuse()  # Mv* must follow StrtList (L1843)
+        if not _real_in(vel, 0, 16384) or not _real_in(acc, 0, 16384) or float(vel) == 0 or float(acc) == 0:
+            return self._param_error("motion_param_overflow")
+        path = self._card.gt_path()
+        t = list(path.tail)
+        end = [float(p) for p in point] + t[len(point):]
+
+        def push():
+            if end != t:
+                path.push_segment(PathSegment.line(t, end), float(vel), float(acc), stop_at_end=True)
+
+        rtn = self._crd_do(push)
+        if rtn == RTN_SUCCESS:
+            st.update(mv=True, vel=float(vel), acc=float(acc))  # the Mv vel/acc become the defaults (L1845)
+        return rtn
+
+    def GT_MvXY(self, x, y, vel, acc) -> int:
+        """Buffer start point (x, y) reached by a line at vel/acc that ends at rest; vel/acc become the defaults
+        (L1843-1845)."""
+        return self._mv((x, y), vel, acc)
+
+    def GT_MvXYZ(self, x, y, z, vel, acc) -> int:
+        """3-D start point (L3351)."""
+        return self._mv((x, y, z), vel, acc)
+
+    def GT_MvXYZA(self, x, y, z, a, vel, acc) -> int:
+        """4-D start point (L1901)."""
+        return self._mv((x, y, z, a), vel, acc)
+
+    def GT_EndList(self) -> int:
+        """Closes the buffer (only while open) (L1849)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if not self._crd()["open"]:
+            return self._crd_refuse()
+        self._crd()["open"] = False
+        return RTN_SUCCESS
+
+    def GT_AddList(self) -> int:
+        """Reopens a closed buffer; while open: bit 12 (L1853-1859)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        st = self._crd()
+        if st["open"] or not st["buffer"]:
+            return self._crd_refuse()
+        st["open"] = True
+        return RTN_SUCCESS
+
+    def GT_StrtMtn(self) -> int:
+        """Runs the buffer (needs StrtList + Mv*), or resumes it after a stop, first returning to the stop point
+        (L1928, L1940); refused while it executes (bit 12)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        st = self._crd()
+        if not st["buffer"] or not st["mv"]:
+            return self._crd_refuse()
+        path = self._card.gt_path()
+        if path.busy or (path.running and not path.stopped):
+            return self._crd_refuse()
+
+        def start():
+            self._card.group_start(2)
+            path.start()
+
+        rtn = self._crd_do(start)
+        if rtn == RTN_SUCCESS:
+            st["started"] = True
+        return rtn
+
+    def _stp(self, abrupt) -> int:
+        if self._card is None:
+            return RTN_COMM_ERROR
+        st = self._crd()
+        try:
+            path = self._card.gt_path()
+        except (CardCommandRefused, MotionCommandRefused):
+            return self._crd_refuse()
+        rtn = self._crd_do(lambda: path.stop(abrupt))
+        if rtn == RTN_SUCCESS:
+            st["open"] = False  # both stops close the buffer (L1936)
+        return rtn
+
+    def GT_StpMtn(self) -> int:
+        """Smooth stop of the coordinated motion; closes the buffer (L1934-1936)."""
+        return self._stp(False)
+
+    def GT_EStpMtn(self) -> int:
+        """Abrupt stop: vector velocity 0 at once; closes the buffer; the buffer resumes with StrtMtn
+        (L3332-3359)."""
+        return self._stp(True)
+
+    def GT_CrdAuStpOn(self) -> int:
+        """Coordinate status bit 6 on (default): an axis abnormality stops the whole coordinated motion (L2011)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        self._crd()["au_stp"] = True
+        return RTN_SUCCESS
+
+    def GT_CrdAuStpOff(self) -> int:
+        """Coordinate status bit 6 off. The card still stops the whole path on an axis fault (decision V64)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        self._crd()["au_stp"] = False
+        return RTN_SUCCESS
+
+    def GT_GetBrkPnt(self):
+        """(rtn, coordinate point where the buffer was stopped, or None) (L1971)."""
+        return self._get(lambda: None if self._card.gt_path().breakpoint is None
+                         else [float(v) for v in self._card.gt_path().breakpoint])
+
+    def GT_GetCrdSts(self):
+        """(rtn, coordinate status register) (Table 5-6, L1990-2011): 0 finished/none, 1 buffer input finished,
+        3 last coordinated command in error, 4 segment completed, 6 auto-stop on, 7 immediate mode, 9 an axis
+        fault stopped the motion, 13 buffer empty after the start."""
+        if self._card is None:
+            return RTN_COMM_ERROR, 0
+        st = self._crd()
+        info = self._card.group_info(2)
+        if not info["set_up"]:
+            return RTN_SUCCESS, _core.gt_crd_status(last_command_error=st["error"], auto_stop_on=st["au_stp"])
+        path = self._card.gt_path()
+        empty = path.fifo_size == 0 and path.window_size == 0 and not path.busy
+        moving = path.busy or (st["buffer"] and st["started"] and st["open"] and not path.stopped)
+        return RTN_SUCCESS, _core.gt_crd_status(
+            moving=moving, buffer_closed=not st["open"], last_command_error=st["error"],
+            segment_complete=not path.busy, auto_stop_on=st["au_stp"], immediate_mode=not st["buffer"],
+            fault_stopped=info["fault_stopped"], buffer_empty=empty, buffer_started=st["started"])
 
 
 _default = GtController()

@@ -38,8 +38,9 @@ struct CardCycles {
   void validate() const;
 };
 
-// Profile mode of an axis. The values are the GT mode-register code (bits 11-13, GT L1500-1511).
-enum class AxisMode : int { TCurve = 0, Jog = 1, SCurve = 2, Gear = 3, Coordinated = 5 };
+// Profile mode of an axis. The values are the GT mode-register code (bits 11-13, GT L1500-1511); PVT and
+// FollowEx (GUC-ECAT / iDEABOX modes the GT does not have) take the free codes 6 and 7 (decision V52).
+enum class AxisMode : int { TCurve = 0, Jog = 1, SCurve = 2, Gear = 3, Coordinated = 5, Pvt = 6, Follow = 7 };
 const char* to_string(AxisMode mode);
 
 // Latched events of an axis (bits of CardAxisState::events). Bits 0-7 are in the GT status order (Table 4-14).
@@ -83,6 +84,7 @@ enum class CommandFault : int {
                            // analog axis (GE SX cmd bit 6)
   NotInCommandSet,         // a command the card variant does not have (GE SX cmd bit 14)
   NotSimulated,            // a command the simulator does not model (no vendor bit; documented per dialect)
+  CrdStateError,           // [modes] a coordinated-motion command in the wrong state (GT cmd bit 12, L1800)
 };
 const char* to_string(CommandFault fault);
 
@@ -91,6 +93,8 @@ enum class StopCause : int {
   None = 0, EmergencyStop, DriveAlarm, PosLimit, NegLimit, SoftPosLimit, SoftNegLimit, ErrorLevel, FollowingError
 };
 const char* to_string(StopCause cause);
+
+class CardModes;  // machine/card_modes.hpp
 
 // A refused card command. fault() says why; the card has recorded it (command error event and register).
 class CardCommandRefused : public motion::MotionCommandRefused {
@@ -203,6 +207,7 @@ class Card {
   explicit Card(const std::vector<Axis*>& axes, const CardCycles& cycles = {});
   Card(const Card&) = delete;
   Card& operator=(const Card&) = delete;
+  ~Card();
 
   // -- structure and clocks ------------------------------------------------------------------------------
   std::size_t axis_count() const { return loops_.size(); }
@@ -322,6 +327,9 @@ class Card {
   // GE GT_AxisOn's synchronisation (L3716-3720): target = profile = the actual position (whole pulses), at once;
   // at rest only (else ChangeInMotion).
   void synch_pos_now(std::size_t i);
+  // -- [modes] gear, PVT, FollowEx and coordinate systems: machine/card_modes.hpp (created on first use) -----
+  CardModes& modes();
+  const CardModes* modes_if_any() const { return modes_.get(); }
 
   // -- running ----------------------------------------------------------------------------------------------
   // Runs n ticks. traces: empty, or one per axis whose non-null buffers hold n doubles each.
@@ -351,6 +359,10 @@ class Card {
   void after_tick(std::size_t i, double error);
   void limit_stop(std::size_t i, StopCause cause);
   void start_ptp(std::size_t i, const motion::AdlinkPtpParams& p);
+  void tick_axis(std::size_t i, const std::vector<CardTrace>& traces, std::size_t k);
+  // [modes]
+  friend class CardModes;
+  std::unique_ptr<CardModes> modes_;
 
   std::vector<std::unique_ptr<Axis>> owned_;
   std::vector<std::unique_ptr<MotionLoop>> loops_;

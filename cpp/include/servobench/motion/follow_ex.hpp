@@ -100,6 +100,9 @@ class FollowEx {
   // GT_FollowDataCompleteEx: n knots -> n-1 segments, all or nothing.
   void data_complete(const std::vector<double>& master, const std::vector<double>& slave, double ratio_begin,
                      double ratio_end, int fifo = 0);
+  // GT_SetFollowMasterEx / MemoryEx / EventEx / LoopEx / MaxSegment after construction: refused while moving,
+  // and a FIFO-size change once a FIFO holds data (the size is set before the data, L514).
+  void configure(const FollowExSetup& setup);
   // GT_FollowSpaceEx: free segments in a FIFO.
   long space(int fifo) const;
   long size(int fifo) const;

@@ -75,6 +75,10 @@ class ProfileGenerator {
   void abrupt_stop();
   // Sets the position (at rest only): GT_SetAtlPos / GT_ZeroPos.
   void set_position(double pos);
+  // An outside source drives the axis (a card's gear, PVT, cam or coordinated path): the next step() returns
+  // exactly `s` (velocity and acceleration kept for the feed-forward); moving() is true after that step. Without
+  // a further follow() the step after rests at s.pos (velocity 0). Any running profile is dropped.
+  void follow(const MotionState& s);
 
   // Advances one tick and returns the state at the new tick.
   const MotionState& step();

@@ -1,0 +1,599 @@
+#include "servobench/machine/card_modes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "servobench/common/validate.hpp"
+
+namespace servobench::machine {
+
+namespace {
+std::string axis_name(std::size_t i) { return "axis " + std::to_string(i + 1); }
+
+// Runs a check; a bad value (std::invalid_argument) records the fault on the card before it propagates.
+template <class F>
+void checked(Card& card, std::size_t i, CommandFault fault, F&& check) {
+  try {
+    check();
+  } catch (const std::invalid_argument&) {
+    card.record_fault(static_cast<int>(i), fault);
+    throw;
+  }
+}
+}  // namespace
+
+CardModes::CardModes(Card& card)
+    : card_(card),
+      n_(card.axis_count()),
+      kind_(n_, Kind::None),
+      gear_(n_),
+      pvt_(n_),
+      follow_(n_),
+      follow_master_(n_),
+      group_of_(n_, -1),
+      cmd_(n_),
+      aux_fed_(n_, 0),
+      cycle_ticks_(card.cycles().motion_cycle_ticks) {}
+
+// -- common ------------------------------------------------------------------------------------------------
+
+void CardModes::check_at_rest(std::size_t i, const char* what) {
+  card_.at(i);
+  const CardAxisState& s = card_.st_[i];
+  if (card_.moving(i) && s.mode != AxisMode::Gear)
+    card_.refuse(static_cast<int>(i), CommandFault::ModeChangeInMotion,
+                 std::string(what) + ": the axis must be at rest (GT L837; GUC L743; iDEABOX L7168)");
+}
+
+void CardModes::set_kind(std::size_t i, Kind k) {
+  const auto counted = [](Kind x) { return x != Kind::None && x != Kind::Group; };
+  if (counted(kind_[i])) --n_driven_;
+  if (counted(k)) ++n_driven_;
+  kind_[i] = k;
+}
+
+long long CardModes::master_profile(std::size_t m) const { return card_.loops_[m]->generator().reported_pos(); }
+
+std::vector<double> CardModes::profile_positions() const {
+  std::vector<double> p(n_);
+  for (std::size_t k = 0; k < n_; ++k) p[k] = static_cast<double>(card_.loops_[k]->generator().reported_pos());
+  return p;
+}
+
+void CardModes::leave(std::size_t i) {
+  switch (kind_[i]) {
+    case Kind::Gear: gear_[i] = GearSlave{}; break;
+    case Kind::Pvt:
+      if (pvt_[i]) pvt_[i]->stop();
+      pvt_[i].reset();
+      break;
+    case Kind::Follow: follow_[i].reset(); break;
+    case Kind::Group: {
+      // Switching an axis of a crd to another mode destroys the crd (iDEABOX L1616-1622): its other axes
+      // fall back to the T-curve mode (V56).
+      const auto g = static_cast<std::size_t>(group_of_[i]);
+      const std::vector<std::size_t> axes = groups_[g].group->axes();
+      remove_group(g);
+      for (std::size_t a : axes)
+        if (a != i) card_.st_[a].mode = AxisMode::TCurve;
+      return;
+    }
+    case Kind::None: break;
+  }
+  set_kind(i, Kind::None);
+}
+
+void CardModes::reset() {
+  for (std::size_t s = 0; s < kGroupSlots; ++s) remove_group(s);
+  for (std::size_t i = 0; i < n_; ++i) leave(i);
+  gt_rows_.clear();
+  tables_ = motion::PvtTables{};
+}
+
+std::optional<bool> CardModes::moving(std::size_t i) const {
+  switch (kind_[i]) {
+    case Kind::Gear: return !gear_[i].halted;
+    case Kind::Pvt: return pvt_[i] && pvt_[i]->moving();
+    case Kind::Follow: return follow_[i] && follow_[i]->moving();
+    case Kind::Group: return groups_[static_cast<std::size_t>(group_of_[i])].feeding;
+    case Kind::None: break;
+  }
+  return std::nullopt;
+}
+
+// -- electronic gear -----------------------------------------------------------------------------------------
+
+void CardModes::set_gear(std::size_t slave, std::size_t master) {
+  card_.at(slave);
+  if (master >= n_)
+    card_.refuse(static_cast<int>(slave), CommandFault::IllegalControlParam,
+                 "GT_PrflG: the master " + std::to_string(master + 1) + " is not an axis of this card");
+  if (master == slave)
+    card_.refuse(static_cast<int>(slave), CommandFault::IllegalControlParam,
+                 "GT_PrflG: an axis cannot be its own master");
+  check_at_rest(slave, "GT_PrflG");
+  if (kind_[slave] != Kind::Gear) leave(slave);
+  CardAxisState& s = card_.st_[slave];
+  GearSlave& g = gear_[slave];
+  g.master = master;
+  g.halted = false;
+  g.gear.emplace(s.active.ratio, master_profile(master), card_.loops_[slave]->generator().state().pos);
+  s.mode = AxisMode::Gear;
+  set_kind(slave, Kind::Gear);
+}
+
+std::size_t CardModes::gear_master(std::size_t slave) const {
+  if (kind_.at(slave) != Kind::Gear) throw_invalid("Card", "axis", static_cast<double>(slave), "is not in gear mode");
+  return gear_[slave].master;
+}
+
+bool CardModes::gear_halted(std::size_t slave) const { return kind_.at(slave) == Kind::Gear && gear_[slave].halted; }
+
+bool CardModes::gear_inhibits(std::size_t master, double dir) const {
+  if (dir == 0.0 || n_driven_ == 0) return false;
+  for (std::size_t s = 0; s < n_; ++s) {
+    if (kind_[s] != Kind::Gear || gear_[s].master != master || gear_[s].halted) continue;
+    const double slave_dir = dir * gear_[s].gear->ratio();
+    if ((slave_dir > 0.0 && card_.inhibited_pos(s)) || (slave_dir < 0.0 && card_.inhibited_neg(s))) return true;
+  }
+  return false;
+}
+
+void CardModes::on_ratio(std::size_t i, double ratio) {
+  if (kind_[i] != Kind::Gear) return;
+  GearSlave& g = gear_[i];
+  if (g.halted) {  // re-engage where the slave stands (V53)
+    g.gear.emplace(ratio, master_profile(g.master), card_.loops_[i]->generator().state().pos);
+    g.halted = false;
+  } else {
+    g.gear->set_ratio(ratio, master_profile(g.master));
+  }
+}
+
+// -- PVT --------------------------------------------------------------------------------------------------------
+
+void CardModes::pvt_download(int table_id, const motion::PvtCurve& curve) {
+  try {
+    tables_.download(table_id, curve);
+  } catch (const motion::MotionCommandRefused& e) {
+    card_.refuse(-1, CommandFault::ChangeInMotion, e.what());
+  }
+}
+
+void CardModes::set_pvt(std::size_t i) {
+  check_at_rest(i, "GT_PrfPvt");
+  leave(i);
+  pvt_[i] = std::make_unique<motion::PvtAxis>(tables_, card_.loops_[i]->generator().state().pos, card_.period_s_);
+  card_.st_[i].mode = AxisMode::Pvt;
+  set_kind(i, Kind::Pvt);
+}
+
+motion::PvtAxis& CardModes::pvt(std::size_t i) {
+  card_.at(i);
+  if (kind_[i] != Kind::Pvt)
+    card_.refuse(static_cast<int>(i), CommandFault::InvalidInMode, "the axis is not in PVT mode (GT_PrfPvt first)");
+  return *pvt_[i];
+}
+const motion::PvtAxis& CardModes::pvt(std::size_t i) const {
+  if (kind_.at(i) != Kind::Pvt) throw_invalid("Card", "axis", static_cast<double>(i), "is not in PVT mode");
+  return *pvt_[i];
+}
+
+void CardModes::pvt_select(std::size_t i, int table_id) {
+  motion::PvtAxis& a = pvt(i);
+  try {
+    a.select(table_id);
+  } catch (const motion::MotionCommandRefused& e) {
+    card_.refuse(static_cast<int>(i), CommandFault::ChangeInMotion, e.what());
+  }
+}
+
+void CardModes::pvt_loop(std::size_t i, double loop) {
+  motion::PvtAxis& a = pvt(i);
+  checked(card_, i, CommandFault::IllegalControlParam, [&] { a.set_loop(loop); });
+}
+
+void CardModes::pvt_start(std::uint32_t mask) {
+  std::vector<motion::PvtAxis*> axes;
+  for (std::size_t i = 0; i < n_; ++i)
+    if (mask & (1u << i)) axes.push_back(&pvt(i));
+  if (axes.empty()) card_.refuse(-1, CommandFault::NoAxisInMask, "GT_PvtStart: no axis of this card in the mask");
+  if (card_.estop_) card_.refuse(-1, CommandFault::EmergencyStopActive, "GT_PvtStart refused while the e-stop is active");
+  for (std::size_t i = 0; i < n_; ++i)
+    if ((mask & (1u << i)) && card_.alarm_active(i))
+      card_.refuse(static_cast<int>(i), CommandFault::DriveAlarmActive, "GT_PvtStart refused while the alarm is active");
+  try {
+    motion::pvt_start(axes);
+  } catch (const motion::MotionCommandRefused& e) {
+    for (auto* a : axes) a->stop();  // all or nothing
+    card_.refuse(-1, CommandFault::ChangeInMotion, e.what());
+  }
+  for (std::size_t i = 0; i < n_; ++i)
+    if (mask & (1u << i)) card_.st_[i].stop_cause = StopCause::None;
+}
+
+// -- FollowEx -----------------------------------------------------------------------------------------------------
+
+void CardModes::set_follow(std::size_t i, const motion::FollowExSetup& setup, const FollowMaster& master) {
+  card_.at(i);
+  checked(card_, i, CommandFault::IllegalControlParam, [&] { setup.validate(); });
+  check_at_rest(i, "GT_PrfFollowEx");
+  leave(i);
+  follow_[i] = std::make_shared<motion::FollowEx>(setup, card_.loops_[i]->generator().state().pos);
+  card_.st_[i].mode = AxisMode::Follow;
+  set_kind(i, Kind::Follow);
+  follow_master(i, master);
+}
+
+motion::FollowEx& CardModes::follow(std::size_t i) {
+  card_.at(i);
+  if (kind_[i] != Kind::Follow)
+    card_.refuse(static_cast<int>(i), CommandFault::InvalidInMode, "the axis is not in FollowEx mode (GT_PrfFollowEx first)");
+  return *follow_[i];
+}
+std::shared_ptr<motion::FollowEx> CardModes::follow_shared(std::size_t i) {
+  follow(i);
+  return follow_[i];
+}
+
+const motion::FollowEx& CardModes::follow(std::size_t i) const {
+  if (kind_.at(i) != Kind::Follow) throw_invalid("Card", "axis", static_cast<double>(i), "is not in FollowEx mode");
+  return *follow_[i];
+}
+
+void CardModes::follow_configure(std::size_t i, const motion::FollowExSetup& setup) {
+  motion::FollowEx& f = follow(i);
+  checked(card_, i, CommandFault::IllegalControlParam, [&] { setup.validate(); });
+  try {
+    f.configure(setup);
+  } catch (const motion::MotionCommandRefused& e) {
+    card_.refuse(static_cast<int>(i), CommandFault::ChangeInMotion, e.what());
+  }
+}
+
+void CardModes::follow_master(std::size_t i, const FollowMaster& master) {
+  motion::FollowEx& f = follow(i);
+  if (master.master >= n_ || master.master == i)
+    card_.refuse(static_cast<int>(i), CommandFault::IllegalControlParam,
+                 "GT_SetFollowMasterEx: the master must be another axis of this card (iDEABOX L7341)");
+  if (f.moving()) card_.refuse(static_cast<int>(i), CommandFault::ChangeInMotion, "GT_SetFollowMasterEx while following");
+  follow_master_[i] = master;
+}
+
+const FollowMaster& CardModes::follow_master_of(std::size_t i) const {
+  follow(i);
+  return follow_master_[i];
+}
+
+double CardModes::follow_master_pos(std::size_t i) const {
+  // GT_SetFollowMasterEx (iDEABOX L7345-7363): type 1 encoder, 2 planned profile, 3 axis with item 0 planned /
+  // 1 encoder; the type and item are the FollowEx setup's, the master axis is follow_master_[i].
+  const MotionLoop& l = *card_.loops_[follow_master_[i].master];
+  const motion::FollowExSetup& s = follow_[i]->setup();
+  const bool encoder = s.master_type == 1 || (s.master_type == 3 && s.master_item == 1);
+  return encoder ? std::nearbyint(l.actual_pos()) : static_cast<double>(l.generator().reported_pos());
+}
+
+void CardModes::follow_start(std::uint32_t mask, std::uint32_t option) {
+  std::vector<std::size_t> axes;
+  for (std::size_t i = 0; i < n_; ++i)
+    if (mask & (1u << i)) {
+      motion::FollowEx& f = follow(i);
+      if (f.moving()) card_.refuse(static_cast<int>(i), CommandFault::ChangeInMotion, "GT_FollowStartEx: already following");
+      const int fifo = (option >> i) & 1u ? 1 : 0;
+      if (f.size(fifo) == 0)
+        card_.refuse(static_cast<int>(i), CommandFault::ChangeInMotion, "GT_FollowStartEx: the FIFO holds no data");
+      axes.push_back(i);
+    }
+  if (axes.empty()) card_.refuse(-1, CommandFault::NoAxisInMask, "GT_FollowStartEx: no axis of this card in the mask");
+  if (card_.estop_) card_.refuse(-1, CommandFault::EmergencyStopActive, "GT_FollowStartEx refused while the e-stop is active");
+  for (std::size_t i : axes) {
+    try {
+      follow_[i]->start(follow_master_pos(i), (option >> i) & 1u ? 1 : 0);
+    } catch (const motion::MotionCommandRefused& e) {
+      card_.refuse(static_cast<int>(i), CommandFault::ChangeInMotion, e.what());
+    }
+    card_.st_[i].stop_cause = StopCause::None;
+  }
+}
+
+void CardModes::follow_switch(std::uint32_t mask) {
+  for (std::size_t i = 0; i < n_; ++i)
+    if (mask & (1u << i)) {
+      motion::FollowEx& f = follow(i);
+      try {
+        f.switch_fifo();
+      } catch (const motion::MotionCommandRefused& e) {
+        card_.refuse(static_cast<int>(i), CommandFault::ChangeInMotion, e.what());
+      }
+    }
+}
+
+// -- coordinate systems ---------------------------------------------------------------------------------------
+
+HostedGroup& CardModes::slot(std::size_t s) {
+  if (s >= kGroupSlots) throw_invalid("Card", "group slot", static_cast<double>(s), "must be 0..3");
+  return groups_[s];
+}
+
+CardGroup* CardModes::group(std::size_t s) { return slot(s).group.get(); }
+
+const HostedGroup& CardModes::hosted(std::size_t s) const {
+  if (s >= kGroupSlots) throw_invalid("Card", "group slot", static_cast<double>(s), "must be 0..3");
+  return groups_[s];
+}
+
+void CardModes::add_group(std::size_t s, std::unique_ptr<CardGroup> g) {
+  HostedGroup& h = slot(s);
+  if (h.group && (h.feeding || h.group->busy()))
+    card_.refuse(-1, CommandFault::ChangeInMotion, "the coordinate system moves; it can be set up again only at rest");
+  for (std::size_t a : g->axes()) {
+    if (a >= n_) throw_invalid("Card", "coordinate-system axis", static_cast<double>(a + 1), "is not an axis of this card");
+    if (group_of_[a] >= 0 && static_cast<std::size_t>(group_of_[a]) != s)
+      card_.refuse(static_cast<int>(a), CommandFault::ChangeInMotion,
+                   axis_name(a) + " is in another coordinate system (iDEABOX L7139-7140, L7174)");
+    check_at_rest(a, "coordinate system set-up");
+  }
+  const std::vector<std::size_t> old = h.group ? h.group->axes() : std::vector<std::size_t>{};
+  remove_group(s);
+  for (std::size_t a : old) card_.st_[a].mode = AxisMode::TCurve;
+  for (std::size_t a : g->axes()) {
+    leave(a);
+    group_of_[a] = static_cast<int>(s);
+    set_kind(a, Kind::Group);
+    card_.st_[a].mode = AxisMode::Coordinated;
+  }
+  h = HostedGroup{};
+  h.group = std::move(g);
+  const std::size_t m = h.group->axes().size();
+  h.cur.assign(m, 0.0);
+  h.group->positions(h.cur.data());
+  h.prev = h.cur;
+  h.vel.assign(m, 0.0);
+  ++n_groups_;
+}
+
+void CardModes::remove_group(std::size_t s) {
+  HostedGroup& h = slot(s);
+  if (!h.group) return;
+  for (std::size_t a : h.group->axes()) {
+    group_of_[a] = -1;
+    set_kind(a, Kind::None);
+  }
+  h = HostedGroup{};
+  --n_groups_;
+}
+
+void CardModes::before_group_start(std::size_t s) {
+  HostedGroup& h = slot(s);
+  if (!h.group) card_.refuse(-1, CommandFault::InvalidInMode, "the coordinate system is not set up");
+  if (card_.estop_) card_.refuse(-1, CommandFault::EmergencyStopActive, "the path cannot start while the e-stop is active");
+  for (std::size_t a : h.group->axes())
+    if (card_.alarm_active(a))
+      card_.refuse(static_cast<int>(a), CommandFault::DriveAlarmActive, "the path cannot start while the drive alarm is active");
+  h.fault_stopped = false;
+  h.fault_cause = StopCause::None;
+  h.fault_axis = -1;
+  h.group->set_outside_positions(profile_positions());
+  h.group->aux_positions(h.aux_cur);
+  h.aux_prev = h.aux_cur;
+  for (std::size_t a : h.group->axes()) card_.st_[a].stop_cause = StopCause::None;
+}
+
+void CardModes::stop_group(std::size_t s, bool abrupt) {
+  HostedGroup& h = slot(s);
+  if (!h.group) card_.refuse(-1, CommandFault::InvalidInMode, "the coordinate system is not set up");
+  h.group->stop(abrupt);
+}
+
+// -- GUC-ECAT / iDEABOX ---------------------------------------------------------------------------------------
+
+void CardModes::set_crd_prm(int crd, const motion::CrdPrm& prm) {
+  if (crd < 1 || crd > 2) throw_invalid("Card", "crd", crd, "must be 1 or 2 (GUC L370)");
+  prm.validate();
+  std::array<double, 8> pp{};
+  const std::vector<double> p = profile_positions();
+  for (std::size_t k = 0; k < std::min<std::size_t>(8, n_); ++k) pp[k] = p[k];
+  for (std::size_t k = 0; k < 8; ++k)
+    if (prm.profile[k] != 0 && k >= n_)
+      throw_invalid("CrdPrm", "profile[k]", static_cast<double>(k + 1), "maps an axis this card does not have");
+  const motion::CoordSystem cs = motion::CoordSystem::crd_prm(prm, pp);
+  motion::PathSetup setup;
+  setup.cycle_ms = cycle_ticks_ * card_.period_s_ * 1e3;
+  setup.syn_vel_max = prm.syn_vel_max;
+  setup.syn_acc_max = prm.syn_acc_max;
+  setup.even_time_ms = prm.even_time_ms;
+  setup.return_to_stop_point = false;  // GUC L1005, iDEABOX L1648-1653: resume only at the breakpoint
+  std::vector<double> axis_pos;
+  for (int a : cs.axes()) axis_pos.push_back(p[static_cast<std::size_t>(a - 1)]);
+  add_group(static_cast<std::size_t>(crd - 1),
+            std::make_unique<CrdPairGroup>(cs, setup, cs.to_crd(axis_pos), 0.5));
+  crd_prm_[static_cast<std::size_t>(crd - 1)] = prm;
+}
+
+const motion::CrdPrm& CardModes::crd_prm(int crd) const {
+  if (crd < 1 || crd > 2) throw_invalid("Card", "crd", crd, "must be 1 or 2 (GUC L370)");
+  return crd_prm_[static_cast<std::size_t>(crd - 1)];
+}
+
+motion::CrdFifoPair& CardModes::crd(int crd) {
+  if (crd < 1 || crd > 2) throw_invalid("Card", "crd", crd, "must be 1 or 2 (GUC L370)");
+  auto* g = dynamic_cast<CrdPairGroup*>(groups_[static_cast<std::size_t>(crd - 1)].group.get());
+  if (!g) card_.refuse(-1, CommandFault::InvalidInMode, "crd " + std::to_string(crd) + " is not set up (GT_SetCrdPrm)");
+  return g->pair();
+}
+
+void CardModes::crd_start(std::uint32_t mask, std::uint32_t option) {
+  if ((mask & 3u) == 0) card_.refuse(-1, CommandFault::NoAxisInMask, "GT_CrdStart: no coordinate system in the mask");
+  for (int c = 1; c <= 2; ++c)
+    if (mask & (1u << (c - 1))) {
+      crd(c);
+      before_group_start(static_cast<std::size_t>(c - 1));
+    }
+  for (int c = 1; c <= 2; ++c)
+    if (mask & (1u << (c - 1))) {
+      try {
+        crd(c).start((option >> (c - 1)) & 1u ? 1 : 0);
+      } catch (const motion::MotionCommandRefused& e) {
+        card_.refuse(-1, CommandFault::ChangeInMotion, e.what());
+      }
+    }
+}
+
+motion::CrdPoint CardModes::crd_pos(int c) const {
+  if (c < 1 || c > 2) throw_invalid("Card", "crd", c, "must be 1 or 2 (GUC L370)");
+  const auto* g = dynamic_cast<const CrdPairGroup*>(groups_[static_cast<std::size_t>(c - 1)].group.get());
+  if (!g) throw_invalid("Card", "crd", c, "is not set up (GT_SetCrdPrm)");
+  return g->pair().state().pos;
+}
+
+// -- GT ---------------------------------------------------------------------------------------------------------
+
+void CardModes::gt_map_axis(const motion::GtAxisMap& row) {
+  if (row.axis < 1 || row.axis > static_cast<int>(n_))
+    throw_invalid("GtAxisMap", "axis", row.axis, "is not an axis of this card (GT L1533)");
+  std::vector<motion::GtAxisMap> rows;
+  for (const auto& r : gt_rows_)
+    if (r.axis != row.axis) rows.push_back(r);
+  rows.push_back(row);
+  const motion::CoordSystem cs = motion::CoordSystem::gt_map(rows);
+  motion::PathSetup setup;
+  setup.cycle_ms = cycle_ticks_;  // the GT's path time unit is the sample time ST (GT L1725-1729)
+  setup.return_to_stop_point = true;  // GT L1940
+  const std::vector<double> p = profile_positions();
+  std::vector<double> axis_pos;
+  for (int a : cs.axes()) axis_pos.push_back(p[static_cast<std::size_t>(a - 1)]);
+  add_group(kGtCrdSlot, std::make_unique<PathGroup>(cs, setup, cs.to_crd(axis_pos)));
+  gt_rows_ = rows;
+}
+
+motion::PathGenerator& CardModes::gt_path() {
+  auto* g = dynamic_cast<PathGroup*>(groups_[kGtCrdSlot].group.get());
+  if (!g) card_.refuse(-1, CommandFault::InvalidInMode, "no axis is mapped (GT_MapAxis)");
+  return g->path();
+}
+
+// -- the tick ---------------------------------------------------------------------------------------------------
+
+void CardModes::begin_tick(long long tick) {
+  if (n_groups_ == 0) return;
+  const auto mc = static_cast<long long>(cycle_ticks_);
+  const long long j = tick % mc;
+  std::fill(aux_fed_.begin(), aux_fed_.end(), 0);
+  for (HostedGroup& h : groups_) {
+    if (!h.group) continue;
+    const std::vector<std::size_t>& axes = h.group->axes();
+    if (j == 0) {  // a motion-cycle boundary: one interpolator cycle
+      h.prev = h.cur;
+      h.group->step_cycle();
+      h.group->positions(h.cur.data());
+      h.feeding = h.group->busy() || h.cur != h.prev;
+      h.aux_prev = h.aux_cur;
+      h.group->aux_positions(h.aux_cur);
+    }
+    const double f = static_cast<double>(j + 1) / static_cast<double>(mc);
+    for (std::size_t k = 0; k < axes.size(); ++k) {
+      motion::MotionState& c = cmd_[axes[k]];
+      const double v = (h.cur[k] - h.prev[k]) / static_cast<double>(mc);
+      c.pos = h.prev[k] + (h.cur[k] - h.prev[k]) * f;
+      c.acc = v - h.vel[k];
+      c.vel = v;
+      c.jerk = 0.0;
+      if (h.feeding) h.vel[k] = v;
+    }
+    if (!h.feeding)
+      std::fill(h.vel.begin(), h.vel.end(), 0.0);
+    // Outside axes moved by the buffer (BufMove / BufGear) while they stay in an independent mode.
+    for (std::size_t q = 0; q < h.aux_cur.size(); ++q) {
+      const std::size_t a = h.aux_cur[q].first;
+      if (a >= n_ || kind_[a] != Kind::None) continue;
+      double p0 = h.aux_cur[q].second;
+      for (const auto& pr : h.aux_prev)
+        if (pr.first == a) p0 = pr.second;
+      const double p1 = h.aux_cur[q].second;
+      if (p1 == p0) continue;
+      motion::MotionState& c = cmd_[a];
+      const double v = (p1 - p0) / static_cast<double>(mc);
+      c.pos = p0 + (p1 - p0) * f;
+      c.acc = v - c.vel;
+      c.vel = v;
+      aux_fed_[a] = 1;
+    }
+  }
+}
+
+void CardModes::feed(std::size_t i) {
+  motion::ProfileGenerator& gen = card_.loops_[i]->generator();
+  switch (kind_[i]) {
+    case Kind::None:
+      if (aux_fed_[i]) gen.follow(cmd_[i]);
+      return;
+    case Kind::Gear: {
+      GearSlave& g = gear_[i];
+      if (!g.halted) gen.follow(g.gear->step(master_profile(g.master)));
+      return;
+    }
+    case Kind::Pvt: {
+      motion::PvtAxis& a = *pvt_[i];
+      if (a.moving()) gen.follow(a.step());
+      return;
+    }
+    case Kind::Follow: {
+      motion::FollowEx& f = *follow_[i];
+      if (f.moving()) gen.follow(f.step(follow_master_pos(i)));
+      return;
+    }
+    case Kind::Group:
+      if (groups_[static_cast<std::size_t>(group_of_[i])].feeding) gen.follow(cmd_[i]);
+      return;
+  }
+}
+
+void CardModes::on_fault(std::size_t i, StopCause cause) {
+  switch (kind_[i]) {
+    case Kind::Gear: {
+      // A slave fault stops the master too, unless the master runs open loop (GT L1082).
+      GearSlave& g = gear_[i];
+      if (g.halted) return;
+      g.halted = true;
+      const std::size_t m = g.master;
+      if (card_.st_[m].closed_loop) {
+        on_abrupt_stop(m);
+        if (card_.loops_[m]->generator().moving()) card_.stop_profile(m);
+      }
+      return;
+    }
+    case Kind::Pvt:
+      pvt_[i]->stop();
+      return;
+    case Kind::Follow:
+      follow_[i]->stop();
+      return;
+    case Kind::Group: {
+      // An axis fault stops the whole coordinated motion (GT crd status bit 6 default, L2011; GE bit 9).
+      HostedGroup& h = groups_[static_cast<std::size_t>(group_of_[i])];
+      if (h.fault_stopped && !h.group->busy()) return;
+      if (!h.fault_stopped) {
+        h.fault_stopped = true;
+        h.fault_cause = cause;
+        h.fault_axis = static_cast<int>(i);
+        h.group->fault_stop();
+      }
+      return;
+    }
+    case Kind::None: return;
+  }
+}
+
+void CardModes::on_abrupt_stop(std::size_t i) {
+  switch (kind_[i]) {
+    case Kind::Gear: gear_[i].halted = true; return;
+    case Kind::Pvt: pvt_[i]->stop(); return;
+    case Kind::Follow: follow_[i]->stop(); return;
+    case Kind::Group: groups_[static_cast<std::size_t>(group_of_[i])].group->stop(true); return;
+    case Kind::None: return;
+  }
+}
+
+}  // namespace servobench::machine
