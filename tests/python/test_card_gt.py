@@ -214,7 +214,7 @@ def test_return_codes_and_command_status_bits(g):
     assert g.GT_SetVel(6) == 0 and g.GT_Update() == 1 and g.GT_GetCmdSts() == (0, 1 << 11)
     assert g.card.active(1)["vel"] == 5
     assert g.GT_SynchPos() == 0 and g.GT_Update() == 1                   # SynchPos only at rest
-    assert g.GT_PrflG(1) == 1                                           # gear: not simulated yet (V25)
+    assert g.GT_PrflG(1) == 1 and g.GT_GetCmdSts() == (0, 1 << 6)     # a mode change while moving (L837)
 
 
 def test_status_bits_events_and_clear_tv4(g):
