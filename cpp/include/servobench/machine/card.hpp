@@ -31,6 +31,8 @@
 
 namespace servobench::machine {
 
+class CardScope;  // machine/card_scope.hpp
+
 // The card's clocks, in servo ticks.
 struct CardCycles {
   double motion_cycle_ticks = 1;  // profile/commit cycle, 1..1000 (GT: 1, the profile is per ST; ADLINK: 4)
@@ -185,6 +187,7 @@ class Card {
   explicit Card(const std::vector<Axis*>& axes, const CardCycles& cycles = {});
   Card(const Card&) = delete;
   Card& operator=(const Card&) = delete;
+  ~Card();
 
   // -- structure and clocks ------------------------------------------------------------------------------
   std::size_t axis_count() const { return loops_.size(); }
@@ -277,6 +280,18 @@ class Card {
   // Runs n ticks. traces: empty, or one per axis whose non-null buffers hold n doubles each.
   void run(std::size_t n, const std::vector<CardTrace>& traces = {});
 
+  // -- scope, events, compare, probe (issue 10 point 3; machine/card_scope.hpp, docs/card.md "Scope") ------------
+  // The sampler, the position compare, the event watch and the probe-at-a-position, created on first use; a card
+  // that never asks for it runs as before.
+  CardScope& scope();
+  bool has_scope() const { return scope_ != nullptr; }
+  // Runs at most n ticks and stops after the tick in which a watched event fired (scope().fired() lists them);
+  // returns the ticks run. traces: as for run(), buffers of n doubles.
+  std::size_t run_until_event(std::size_t n, const std::vector<CardTrace>& traces = {});
+  // The probe input EXI0 at time t_s on the card clock (s, tick k spans [k Ts, (k+1) Ts); NaN: never): every
+  // axis armed for the probe latches its actual position at that instant (GT_CaptProb, GT L3008-3049).
+  void set_probe_time(double t_s);
+
  private:
   void init(const CardCycles& cycles);
   CardAxisState& at(std::size_t i);
@@ -308,6 +323,9 @@ class Card {
   long long tick_ = 0;
   bool estop_ = false;
   CommandFault last_fault_ = CommandFault::None;
+  // scope, events, compare, probe (issue 10 point 3)
+  std::unique_ptr<CardScope> scope_;
+  void scope_tick();
 };
 
 }  // namespace servobench::machine
