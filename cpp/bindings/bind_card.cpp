@@ -54,7 +54,7 @@ machine::CaptureTrigger capture_from(const std::string& s) {
 }
 
 machine::CommandFault fault_from(const std::string& s) {
-  for (int f = 0; f <= static_cast<int>(machine::CommandFault::DistanceTooShort); ++f) {
+  for (int f = 0; f <= static_cast<int>(machine::CommandFault::NoInterruptPending); ++f) {
     const auto c = static_cast<machine::CommandFault>(f);
     if (s == to_string(c)) return c;
   }

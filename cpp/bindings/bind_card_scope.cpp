@@ -4,6 +4,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <string>
@@ -72,7 +73,8 @@ py::list fired_list(const Card& c) {
 }
 
 // Runs until an event fires (at most `ticks`), recording the named signals of every axis (the names of
-// Card.run). Returns (ticks run, [per-axis dict of arrays], [(tick, axis, word, bits), ...]).
+// Card.run). Returns (ticks run, [per-axis dict of arrays], [(tick, axis, word, bits), ...]). The buffers grow
+// in chunks, so a run that stops early costs what it ran, not what it might have.
 py::tuple run_until_event(Card& card, double ticks, const std::vector<std::string>& wanted) {
   check_integer("Card.run_until_event", "ticks", ticks, 0, 1e9);
   const std::size_t n_ax = card.axis_count();
@@ -80,29 +82,31 @@ py::tuple run_until_event(Card& card, double ticks, const std::vector<std::strin
   std::vector<std::map<std::string, std::vector<double>>> buf(n_ax);
   std::size_t ran = 0;
   {
+    py::gil_scoped_release release;
+    constexpr std::size_t kChunk = 4096;
     std::vector<machine::CardTrace> tr;
-    if (!wanted.empty()) {
-      tr.resize(n_ax);
-      for (std::size_t i = 0; i < n_ax; ++i) {
+    if (!wanted.empty()) tr.resize(n_ax);
+    do {
+      const std::size_t chunk = std::min(kChunk, n - ran);
+      for (std::size_t i = 0; i < n_ax && !wanted.empty(); ++i) {
         auto& b = buf[i];
-        for (const auto& w : wanted) b[w].assign(n, 0.0);
+        for (const auto& w : wanted) b[w].resize(ran + chunk);
         machine::CardTrace& t = tr[i];
 #define SERVOBENCH_POINT(name, unit, doc) \
-  if (auto it = b.find(#name); it != b.end()) t.axis.name = it->second.data();
+  if (auto it = b.find(#name); it != b.end()) t.axis.name = it->second.data() + ran;
         SERVOBENCH_TRACE_SIGNALS(SERVOBENCH_POINT)
 #undef SERVOBENCH_POINT
 #define SERVOBENCH_POINT(name, unit, doc) \
-  if (auto it = b.find(#name); it != b.end()) t.loop.name = it->second.data();
+  if (auto it = b.find(#name); it != b.end()) t.loop.name = it->second.data() + ran;
         SERVOBENCH_LOOP_SIGNALS(SERVOBENCH_POINT)
 #undef SERVOBENCH_POINT
-        if (auto it = b.find("events"); it != b.end()) t.events = it->second.data();
-        if (auto it = b.find("moving"); it != b.end()) t.moving = it->second.data();
-        if (auto it = b.find("servo_on"); it != b.end()) t.servo_on = it->second.data();
-        if (auto it = b.find("prf_vel"); it != b.end()) t.prf_vel = it->second.data();
+        if (auto it = b.find("events"); it != b.end()) t.events = it->second.data() + ran;
+        if (auto it = b.find("moving"); it != b.end()) t.moving = it->second.data() + ran;
+        if (auto it = b.find("servo_on"); it != b.end()) t.servo_on = it->second.data() + ran;
+        if (auto it = b.find("prf_vel"); it != b.end()) t.prf_vel = it->second.data() + ran;
       }
-    }
-    py::gil_scoped_release release;
-    ran = card.run_until_event(n, tr);
+      ran += card.run_until_event(chunk, tr);
+    } while (ran < n && card.scope().fired().empty());
   }
   py::list rec;
   for (std::size_t i = 0; i < n_ax; ++i) {

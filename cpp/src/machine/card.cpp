@@ -63,6 +63,7 @@ const char* to_string(CommandFault fault) {
     case CommandFault::InvalidInMode: return "invalid_in_mode";
     case CommandFault::DriveAlarmActive: return "drive_alarm_active";
     case CommandFault::DistanceTooShort: return "distance_too_short";
+    case CommandFault::NoInterruptPending: return "no_interrupt_pending";
   }
   return "?";
 }

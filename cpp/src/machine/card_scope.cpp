@@ -22,6 +22,12 @@ CardScope::CardScope(Card& card) : card_(card), n_(card.axis_count()) {
   w_events_.assign(n_, 0u);
   w_msts_.assign(n_, 0u);
   w_mio_.assign(n_, 0u);
+  for (std::size_t i = 0; i < n_; ++i) {
+    prev_events_[i] = card_.events(i);
+    prev_msts_[i] = aps_motion_status(card_, i);
+    prev_mio_[i] = aps_motion_io_status(card_, i);
+  }
+  prev_estop_ = card_.emergency_stop();
   resync();
 }
 
@@ -30,11 +36,13 @@ void CardScope::resync() {
   for (std::size_t i = 0; i < n_; ++i) {
     prev_actual_[i] = card_.actual_pos(i);
     prev_command_[i] = static_cast<double>(card_.profile_pos(i));
-    prev_events_[i] = card_.events(i);
-    if (w_msts_[i]) prev_msts_[i] = aps_motion_status(card_, i);
-    if (w_mio_[i]) prev_mio_[i] = aps_motion_io_status(card_, i);
+    // Bits the host cleared between runs count as off (their next latch fires); bits it set are not taken as
+    // seen, so an input the host switched on (alarm, e-stop) fires at the next tick.
+    prev_events_[i] &= card_.events(i);
+    if (w_msts_[i]) prev_msts_[i] &= aps_motion_status(card_, i);
+    if (w_mio_[i]) prev_mio_[i] &= aps_motion_io_status(card_, i);
   }
-  prev_estop_ = card_.emergency_stop();
+  prev_estop_ = prev_estop_ && card_.emergency_stop();
 }
 
 void CardScope::start_sampler(const SamplerConfig& config) {
@@ -56,7 +64,10 @@ void CardScope::set_watch(std::size_t axis, std::uint32_t events, std::uint32_t 
   w_events_[axis] = events & kAllEvents;
   w_msts_[axis] = msts;
   w_mio_[axis] = mio;
-  resync();
+  prev_events_[axis] = card_.events(axis);
+  prev_msts_[axis] = aps_motion_status(card_, axis);
+  prev_mio_[axis] = aps_motion_io_status(card_, axis);
+  fired_.clear();
 }
 
 void CardScope::set_timer(double ticks) {

@@ -44,6 +44,7 @@ std::uint16_t gt_command_status_bit(CommandFault fault) {
     case CommandFault::EmergencyStopActive:
     case CommandFault::DriveAlarmActive: return 0;
     case CommandFault::DistanceTooShort: return 1u << 0;
+    case CommandFault::NoInterruptPending: return 1u << 4;
   }
   return 0;
 }

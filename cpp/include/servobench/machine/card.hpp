@@ -79,6 +79,7 @@ enum class CommandFault : int {
   InvalidInMode,           // a command the current mode does not have (e.g. SmthStp in gear mode)
   DriveAlarmActive,        // motion while the alarm input is active (ADLINK L3950-3953: ignored, stop code 2)
   DistanceTooShort,        // a point-to-point move shorter than its VS -> VE ramps (ADLINK, decision M9)
+  NoInterruptPending,      // an interrupt command (GT_AxisI, GT_RstIntr) with no interrupt pending (GT cmd bit 4)
 };
 const char* to_string(CommandFault fault);
 
