@@ -226,6 +226,8 @@ def test_adlink_interrupt_win32_example_l4292_and_factors(a):
     a.card.on_event(lambda c, f: setattr(c, "emergency_stop", True), timer_ticks=40)
     assert a.APS_wait_single_int(emg, 100) == 0
     assert a.card.emergency_stop
+    card = a.card
+    assert a.APS_close() == 0 and len(card._subs) == 1           # the interrupt watches left with APS_close
 
 
 # -- ADLINK position compare (L3348-3435) ---------------------------------------------------------------------------
@@ -531,3 +533,48 @@ def test_gt_reset_masks_every_interrupt(g):
     gt_move(g, 1, 300)
     g.run(300)
     assert served == []
+
+
+def test_gt_capture_status_conditions_bit_by_bit():
+    # GT L2013-2017, L2958-3006, L3640-3674, Table 2-2 bits 7/8 (L465-471): arming sets 14 (home) / 15 (index),
+    # the capture sets 3 and clears 14/15, one arm one capture, re-arming while armed or captured is refused with
+    # the bit of the command called, GetCapt holds the value until the next capture.
+    rad = 2 * math.pi / 8000
+    card = sb.Card(4, law=sb.GtServoLaw(kp=30, ki=0, kd=600, kaff=8000),
+                   encoder=sb.Encoder(counts_per_rev=8000, index_angle_rad=6000 * rad),
+                   switches=sb.Switches(home_min_rad=50000 * rad, home_max_rad=60000 * rad))
+    g = GtController()
+    g.GT_Open(card)
+    g.GT_Axis(1)
+    g.GT_AxisOn()
+    g.GT_ClrSts()
+    assert sts_of(g) & 0xC008 == 0
+    assert g.GT_CaptHome() == 0 and sts_of(g) & 0xC008 == 0x4000          # armed: bit 14
+    assert g.GT_CaptHome() == 1 and g.GT_GetCmdSts() == (0, 0x100)        # again while armed: bit 8
+    assert g.GT_CaptIndex() == 1 and g.GT_GetCmdSts() == (0, 0x80)        # CaptIndex while armed: bit 7
+    assert sts_of(g) & 0x80                                                # command error on the axis status
+    gt_move(g, 1, 70000, vel=4, acc=1)
+    g.wait_until(lambda: sts_of(g) & 0x8, max_ticks=100000, chunk=5)
+    st = sts_of(g)
+    assert st & 0x8 and not st & 0xC000                                    # captured: bit 3 on, 14 off
+    rtn, home = g.GT_GetCapt()
+    assert abs(home - 50000) <= 1
+    assert g.GT_CaptIndex() == 1 and g.GT_GetCmdSts() == (0, 0x80)        # bit 3 still set: refused
+    g.GT_ClrSts()
+    assert not sts_of(g) & 0x8 and g.GT_GetCapt() == (0, home)            # the value holds (L3644)
+    assert g.GT_CaptIndex() == 0 and sts_of(g) & 0xC008 == 0x8000         # armed: bit 15
+    g.wait_until(lambda: sts_of(g) & 0x8, max_ticks=100000, chunk=5)
+    assert sts_of(g) & 0xC008 == 0x8 and g.GT_GetCapt()[1] != home        # one capture, the next index mark
+    assert (g.GT_GetCapt()[1] - 6000) % 8000 in (0, 1, 7999)
+    g.GT_ClrSts()
+    assert g.GT_CaptIndex() == 0
+    g.GT_ClrSts()                                                          # ClrSts keeps the arm (bit 15)
+    assert sts_of(g) & 0x8000
+    card.arm_capture(0, "none")
+    assert not sts_of(g) & 0xC000
+
+
+def sts_of(g):
+    rtn, s = g.GT_GetSts()
+    assert rtn == 0
+    return s

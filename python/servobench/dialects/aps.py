@@ -164,6 +164,8 @@ class ApsController(DialectController):
         """``APS_close()``: releases the card."""
         if self._card is None:
             return ERR_DeviceNotInitial
+        for sid in getattr(self, "_int_subs", []):  # the interrupt watches go with the card (issue 10.3)
+            self._card.remove_event(sid)
         self._card = None
         return ERR_NoError
 
