@@ -313,6 +313,17 @@ def test_adlink_sampling_sources_units_and_trigger(a):
     assert a.APS_wait_trigger_sampling(0, 10, 10, 10)[0] == aps.ERR_ParametersInvalid
     rtn, none = a.APS_wait_trigger_sampling(0, 10, 2, 50)                  # no crossing of 5000 at rest
     assert rtn == aps.ERR_TimeOut and none is None
+    # asynchronous: start, let the card run, the count grows, the array fills
+    a.APS_set_sampling_param(0, aps.SAMP_PA_EDGE, 2)
+    rtn, arr = a.APS_wait_trigger_sampling_async(0, 100, 0, 1000)
+    assert rtn == 0 and a.APS_get_sampling_count(0) == (0, 0)
+    a.card.run(41)                                                         # samples at ticks 0, 4, ..., 40
+    assert a.APS_get_sampling_count(0) == (0, 11) and arr["tick"][10] - arr["tick"][0] == 40
+    a.card.run(400)
+    assert a.APS_get_sampling_count(0) == (0, 100) and np.all(np.diff(arr["tick"]) == 4)
+    rtn, arr = a.APS_wait_trigger_sampling_async(0, 100, 0, 1000)
+    a.card.run(10)
+    assert a.APS_stop_wait_sampling(0) == 0 and a.APS_get_sampling_count(0) == (0, 0)
     assert law is not None
 
 

@@ -501,6 +501,44 @@ class _ApsScope:
             out.append(((v & SAMP_AXIS_MASK) >> 8, _SAMP[v & SAMP_PARAM_MASK]))
         return out
 
+    def _samp_start(self, Board_ID, Length, PreTrgLen, TimeOutMs):
+        """Validates and starts the sampler; returns an error code or None."""
+        if not self._board(Board_ID):
+            return self._bad()
+        n, pre, tmo = _num(Length), _num(PreTrgLen), _num(TimeOutMs)
+        if None in (n, pre, tmo) or n != int(n) or not 1 <= n <= 1e6 or pre != int(pre) or not 0 <= pre < n:
+            return ERR_ParametersInvalid
+        if tmo != int(tmo) or (tmo < 0 and tmo != -1):
+            return ERR_ParametersInvalid
+        c = self._card
+        chans = self._samp_channels()
+        edge = self._samp[SAMP_PA_EDGE]
+        if edge == 2 and pre > 0:
+            return ERR_ParametersInvalid
+        trig_ch = self._samp[SAMP_PA_TRIGCH]
+        name, scale, _integer, bit = chans[trig_ch][1]
+        if edge != 2 and bit is not None:
+            return ERR_FunctionNotAvailable  # a level on one status bit: trigger on the word instead (V80)
+        ts = c.servo_period_s
+        factor = 1.0 / ts if scale == "1/Ts" else float(scale)
+        c.sample([(a, sig[0]) for a, sig in chans], every_ticks=self._samp[SAMP_PA_RATE], depth=int(n),
+                 trigger=("rising", "falling", "immediate")[edge], trigger_channel=trig_ch,
+                 level=self._samp[SAMP_PA_LEVEL] / factor, pretrigger=int(pre))
+        self._samp_run = {"chans": chans, "n": int(n), "until": c.tick + int(round(
+            (_WAIT_FOREVER_S if tmo == -1 else tmo * 1e-3) / ts)), "out": np.zeros(int(n), dtype=STR_SAMP_DATA_4CH)}
+        return None
+
+    def _samp_fill(self, data, out, chans):
+        ts = self._card.servo_period_s
+        m = len(data)
+        out["tick"][:m] = data.ticks
+        for k, (_a, (_sig, sc, integer, b)) in enumerate(chans):
+            v = data.values[:, k] * (1.0 / ts if sc == "1/Ts" else sc)
+            if b is not None:
+                v = (v.astype(np.int64) >> b) & 1
+            out["data"][:m, k] = np.rint(v) if integer else v
+        return m
+
     def APS_wait_trigger_sampling(self, Board_ID, Length, PreTrgLen, TimeOutMs):
         """``APS_wait_trigger_sampling(Board_ID, Length, PreTrgLen, TimeOutMs, STR_SAMP_DATA_4CH *DataArr)`` ->
         ``(rtn, DataArr)``: samples the four channels every SAMP_PA_RATE ticks, ``Length`` samples (1..1e6) of
@@ -508,42 +546,53 @@ class _ApsScope:
         the card until the block is full or ``TimeOutMs`` simulated ms passed (-1: V83) -> ERR_TimeOut, no data.
         DataArr: a NumPy array of :data:`STR_SAMP_DATA_4CH` (``tick`` = card tick of the sample; ``data`` the
         channels in their units: pulse, pulse/s, mV, bits; whole numbers for the I32 sources)."""
-        if not self._board(Board_ID):
-            return self._bad(), None
-        n, pre, tmo = _num(Length), _num(PreTrgLen), _num(TimeOutMs)
-        if None in (n, pre, tmo) or n != int(n) or not 1 <= n <= 1e6 or pre != int(pre) or not 0 <= pre < n:
-            return ERR_ParametersInvalid, None
-        if tmo != int(tmo) or (tmo < 0 and tmo != -1):
-            return ERR_ParametersInvalid, None
-        c = self._card
-        chans = self._samp_channels()
-        edge = self._samp[SAMP_PA_EDGE]
-        if edge == 2 and pre > 0:
-            return ERR_ParametersInvalid, None
-        trig_ch = self._samp[SAMP_PA_TRIGCH]
-        name, scale, _integer, bit = chans[trig_ch][1]
-        if edge != 2 and bit is not None:
-            return ERR_FunctionNotAvailable, None  # a level on one status bit: trigger on the word instead (V80)
-        ts = c.servo_period_s
-        factor = 1.0 / ts if scale == "1/Ts" else float(scale)
-        c.sample([(a, sig[0]) for a, sig in chans], every_ticks=self._samp[SAMP_PA_RATE], depth=int(n),
-                 trigger=("rising", "falling", "immediate")[edge], trigger_channel=trig_ch,
-                 level=self._samp[SAMP_PA_LEVEL] / factor, pretrigger=int(pre))
-        limit_s = _WAIT_FOREVER_S if tmo == -1 else tmo * 1e-3
-        c.run_until(lambda k: k._card.sampler_blocks > 0, max_ticks=int(round(limit_s / ts)),
-                    chunk=max(1, int(round(1e-3 / ts))))
+        bad = self._samp_start(Board_ID, Length, PreTrgLen, TimeOutMs)
+        if bad is not None:
+            return bad, None
+        c, run = self._card, self._samp_run
+        c.run_until(lambda k: k._card.sampler_blocks > 0, max_ticks=max(0, run["until"] - c.tick),
+                    chunk=max(1, int(round(1e-3 / c.servo_period_s))))
         data = c.scope_data()
         if data is None:
             c._card.sampler_stop()
             return ERR_TimeOut, None
-        out = np.zeros(len(data), dtype=STR_SAMP_DATA_4CH)
-        out["tick"] = data.ticks
-        for k, (_a, (_sig, sc, integer, b)) in enumerate(chans):
-            v = data.values[:, k] * (1.0 / ts if sc == "1/Ts" else sc)
-            if b is not None:
-                v = (v.astype(np.int64) >> b) & 1
-            out["data"][:, k] = np.rint(v) if integer else v
-        return ERR_NoError, out
+        self._samp_fill(data, run["out"], run["chans"])
+        return ERR_NoError, run["out"]
+
+    def APS_wait_trigger_sampling_async(self, Board_ID, Length, PreTrgLen, TimeOutMs):
+        """``APS_wait_trigger_sampling_async(...)`` -> ``(rtn, DataArr)``: starts the same sampling and returns at
+        once; the card fills ``DataArr`` as it runs (the samples taken so far are copied into it at each
+        APS_get_sampling_count call, V78); after ``TimeOutMs`` of card time without a full block the sampling
+        stops."""
+        bad = self._samp_start(Board_ID, Length, PreTrgLen, TimeOutMs)
+        if bad is not None:
+            return bad, None
+        return ERR_NoError, self._samp_run["out"]
+
+    def APS_get_sampling_count(self, Board_ID):
+        """``APS_get_sampling_count(Board_ID, &SampCnt)`` -> ``(rtn, samples in DataArr)`` of the running or
+        finished asynchronous sampling (the pre-trigger samples count once the trigger came)."""
+        if not self._board(Board_ID):
+            return self._bad(), 0
+        run, c = getattr(self, "_samp_run", None), self._card
+        if run is None:
+            return ERR_NoError, 0
+        if c._card.sampler_blocks > 0:
+            run["done"] = self._samp_fill(c.scope_data(), run["out"], run["chans"])
+        if "done" in run:
+            return ERR_NoError, run["done"]
+        if c.tick >= run["until"]:
+            c._card.sampler_stop()
+        if c.sampler_state != "filling":
+            return ERR_NoError, 0
+        return ERR_NoError, self._samp_fill(c.scope_data(partial=True), run["out"], run["chans"])
+
+    def APS_stop_wait_sampling(self, Board_ID) -> int:
+        """``APS_stop_wait_sampling(Board_ID)``: stops the sampling; DataArr keeps what was copied."""
+        if not self._board(Board_ID):
+            return self._bad()
+        self._card._card.sampler_stop()
+        return ERR_NoError
 
     # -- position compare trigger (L3348-3435) ------------------------------------------------------------------
     def _trg_count_ok(self, ch) -> bool:
