@@ -220,7 +220,7 @@ def test_adlink_interrupt_win32_example_l4292_and_factors(a):
     emg = a.APS_set_int_factor(0, 8, aps.ISYS_EMG, 1)
     assert emg == 256
     assert a.APS_set_int_factor(0, 9, 0, 1) == aps.ERR_FunctionNotAvailable   # no DI on the card
-    assert a.APS_set_int_factor(0, 0, aps.IEZ, 1) == aps.ERR_FunctionNotAvailable
+    assert a.APS_set_int_factor(0, 0, aps.IPRED, 1) == aps.ERR_FunctionNotAvailable
     assert a.APS_set_int_factor(0, 4, aps.IMDN, 1) == aps.ERR_ParametersInvalid  # PCI-8254: axes 0-3
     assert a.APS_set_int_factor(0, 0, 7, 1) == aps.ERR_ParametersInvalid         # reserved bit
     a.card.on_event(lambda c, f: setattr(c, "emergency_stop", True), timer_ticks=40)
@@ -274,6 +274,25 @@ def test_adlink_linear_and_table_compare_with_the_manuals_numbers(a):
     assert a.APS_set_trigger_param(0, aps.TIMR_EN, 1) == aps.ERR_FunctionNotAvailable
     assert a.APS_set_trigger_linear(0, 0, 0, 3, 0) == aps.ERR_ParametersInvalid
     assert a.APS_set_trigger_linear(0, 2, 0, 3, 5) == aps.ERR_ParametersInvalid
+
+
+def test_adlink_iez_interrupt_on_the_index_mark():
+    rad = 2 * math.pi / 10000
+    c = ApsController()
+    c.APS_initial(0, sb.Card(4, law=APS_LAW, servo_period_s=250e-6,
+                             encoder=sb.Encoder(counts_per_rev=10000, index_angle_rad=2500 * rad)))
+    c.APS_set_servo_on(0, 1)
+    iez = c.APS_set_int_factor(0, 0, aps.IEZ, 1)
+    c.APS_int_enable(0, 1)
+    c.APS_relative_move(0, 30000, 40000)
+    rec = []
+    for _ in range(3):                                # the marks at 2500, 12500, 22500 pulse
+        assert c.APS_wait_single_int(iez, 1000) == 0
+        rec.append(c.card.actual_pos(0))
+        c.APS_reset_int(iez)
+    assert [round(p / 10000 - 0.25) for p in rec] == [0, 1, 2]
+    assert all(0 <= p - m < 20 for p, m in zip(rec, (2500, 12500, 22500)))   # within the tick that passed it
+    assert c.APS_wait_single_int(iez, 1000) == aps.ERR_TimeOut
 
 
 def test_adlink_compare_end_interrupt_ilcf0(a):

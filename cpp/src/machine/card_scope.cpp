@@ -177,7 +177,9 @@ void CardScope::after_tick(long long tick) {
     }
     if (w_mio_[i]) {
       const std::uint32_t w = aps_motion_io_status(card_, i);
-      if (const std::uint32_t r = w & ~prev_mio_[i] & w_mio_[i])
+      // EZ (bit 5) reads 0 in the word (V44); as an event it is the index mark passing during this tick.
+      const std::uint32_t ez = card_.loop(i).inputs().ez.rose ? (1u << 5) : 0u;
+      if (const std::uint32_t r = ((w & ~prev_mio_[i]) | ez) & w_mio_[i])
         fired_.push_back(FiredEvent{tick, static_cast<int>(i), WatchWord::Mio, r});
       prev_mio_[i] = w;
     }

@@ -434,7 +434,7 @@ IALM, IPEL, IMEL, IORG, IEZ, IINP, IEMG, ICSTP, IVM, IACC, IDEC, IMDN, IASTP = 0
 ISPEL, ISMEL, IPRED, IPOSTD = 15, 16, 18, 19
 ISYS_EMG, ILCF0, ILCF1, IFCF0, IFCF1, IMOV, IHOV = 0, 1, 2, 3, 4, 5, 6
 # axis factor bit -> (watch word, bit of that word)
-_AXIS_FACTORS = {IALM: ("mio", 0), IPEL: ("mio", 1), IMEL: ("mio", 2), IORG: ("mio", 3), IINP: ("mio", 6),
+_AXIS_FACTORS = {IALM: ("mio", 0), IPEL: ("mio", 1), IMEL: ("mio", 2), IORG: ("mio", 3), IEZ: ("mio", 5), IINP: ("mio", 6),
                  IEMG: ("mio", 4), ICSTP: ("msts", 0), IVM: ("msts", 1), IACC: ("msts", 2), IDEC: ("msts", 3),
                  IMDN: ("msts", 5), IASTP: ("msts", 16), ISPEL: ("mio", 11), ISMEL: ("mio", 12)}
 _WAIT_FOREVER_S = 3600.0  # Time_Out -1 waits at most one simulated hour (V83)
@@ -770,7 +770,8 @@ class _ApsScope:
 
     def APS_set_int_factor(self, Board_ID, Item_No, Factor_No, Enable) -> int:
         """``I32 APS_set_int_factor(Board_ID, Item_No, Factor_No, Enable)`` -> the interrupt number (item x 32 +
-        factor bit, V82) or a negative code. Items 0..3/7 axes (IALM..ISMEL; IEZ, IPRED, IPOSTD not simulated:
+        factor bit, V82) or a negative code. Items 0..3/7 axes (IALM..ISMEL, IEZ = the index mark passing; IPRED,
+        IPOSTD not simulated:
         ERR_FunctionNotAvailable), 8 system (IEMG, ILCF0/1, IFCF0/1; IMOV/IHOV never fire); 9/10 (DI edges): the
         card has no digital inputs. Factor_No is the bit number; a one-bit mask such as the examples' (1 << 12)
         is read as its bit (L4271-4274, V82)."""
@@ -790,7 +791,7 @@ class _ApsScope:
             if item >= len(self._card):
                 return ERR_ParametersInvalid
             if f not in _AXIS_FACTORS:
-                return ERR_FunctionNotAvailable if f in (IEZ, IPRED, IPOSTD) else ERR_ParametersInvalid
+                return ERR_FunctionNotAvailable if f in (IPRED, IPOSTD) else ERR_ParametersInvalid
         elif f > IHOV:
             return ERR_ParametersInvalid
         no = self._int_no(item, f)
