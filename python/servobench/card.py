@@ -333,6 +333,8 @@ class Card:
 SAMPLE_SIGNALS: dict[str, tuple[str, str]] = {name: (unit, doc) for name, unit, doc in _core.SAMPLE_SIGNALS}
 
 _SYSTEM_BITS = ("emg", "linear_compare_0_end", "linear_compare_1_end", "table_compare_0_end", "table_compare_1_end")
+_MSTS_BITS = {0: "CSTP", 1: "VM", 2: "ACC", 3: "DEC", 4: "DIR", 5: "MDN", 6: "HMV", 16: "ASTP", 28: "GER"}
+_MIO_BITS = {0: "ALM", 1: "PEL", 2: "MEL", 3: "ORG", 4: "EMG", 5: "EZ", 6: "INP", 7: "SVON", 11: "SPEL", 12: "SMEL"}
 
 
 def _event_mask(events, what: str) -> int:
@@ -379,12 +381,13 @@ class FiredEvent:
 
     @property
     def names(self) -> list[str]:
-        """The card event names (word ``"events"``) or system event names of ``bits``."""
+        """The names of ``bits``: card events, system events, or the ADLINK MSTS/MIO bit names (MDN, INP, ...)."""
         if self.word == "events":
             return events_named(self.bits)
         if self.word == "system":
             return [n for k, n in enumerate(_SYSTEM_BITS) if self.bits >> k & 1]
-        return []
+        table = {"msts": _MSTS_BITS, "mio": _MIO_BITS}.get(self.word, {})
+        return [n for k, n in sorted(table.items()) if self.bits >> k & 1]
 
 
 @dataclass(frozen=True)

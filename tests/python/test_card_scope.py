@@ -112,7 +112,7 @@ def test_a_callback_that_does_nothing_leaves_the_run_bit_identical():
     for name in ("actual_pos", "volts", "events"):
         np.testing.assert_array_equal(ra[0][name], rb[0][name])
     assert sum(f.word == "timer" for f in calls) == 15
-    assert any(f.word == "msts" for f in calls)   # VM: cruise reached
+    assert [f.names for f in calls if f.word == "msts"] == [["VM"]]   # cruise reached, once
     sid = a.on_event(lambda c, f: None, events=["breakpoint"])
     a.remove_event(sid)
     with pytest.raises(ValueError, match="timer"):
