@@ -52,7 +52,8 @@ TEST(CardScope, SamplerReadsWhatTheTraceRecordsEveryNTicks) {
   }
   mc::SamplerConfig cfg;
   cfg.channels = {ch(1, mc::SampleSignal::loop_pos), ch(1, mc::SampleSignal::u), ch(1, mc::SampleSignal::volts),
-                  ch(1, mc::SampleSignal::card_fbk_vel), ch(1, mc::SampleSignal::card_error_diff)};
+                  ch(1, mc::SampleSignal::card_fbk_vel), ch(1, mc::SampleSignal::card_error_diff),
+                  ch(1, mc::SampleSignal::error)};
   cfg.every_ticks = 3;
   cfg.depth = 200;
   a.scope().start_sampler(cfg);
@@ -74,12 +75,13 @@ TEST(CardScope, SamplerReadsWhatTheTraceRecordsEveryNTicks) {
   for (std::size_t j = 0; j < 200; ++j) {
     const auto k = static_cast<std::size_t>(blk.ticks[j]);
     EXPECT_EQ(k, 3 * j);
-    EXPECT_EQ(blk.values[j * 5 + 0], pos[k]);
-    EXPECT_EQ(blk.values[j * 5 + 1], u[k]);
-    EXPECT_EQ(blk.values[j * 5 + 2], volts[k]);
+    EXPECT_EQ(blk.values[j * 6 + 0], pos[k]);
+    EXPECT_EQ(blk.values[j * 6 + 1], u[k]);
+    EXPECT_EQ(blk.values[j * 6 + 2], volts[k]);
+    EXPECT_EQ(blk.values[j * 6 + 5], err[k]);
     if (k > 0) {
-      EXPECT_DOUBLE_EQ(blk.values[j * 5 + 3], act[k] - act[k - 1]);
-      EXPECT_DOUBLE_EQ(blk.values[j * 5 + 4], err[k] - err[k - 1]);
+      EXPECT_DOUBLE_EQ(blk.values[j * 6 + 3], act[k] - act[k - 1]);
+      EXPECT_DOUBLE_EQ(blk.values[j * 6 + 4], err[k] - err[k - 1]);
     }
   }
   EXPECT_EQ(a.actual_pos(1), b.actual_pos(1));

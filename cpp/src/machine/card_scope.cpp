@@ -128,6 +128,8 @@ std::uint32_t CardScope::probe(long long /*tick*/) {
 
 double CardScope::value(std::size_t i, SampleSignal s) const {
   const int k = static_cast<int>(s);
+  // The card points the trace's error at a local of its tick; the same value is kept as the following error.
+  if (s == SampleSignal::error) return card_.following_error(i);
   if (k < kLoopSignalEnd) return *ptr_[i][static_cast<std::size_t>(k)];
   switch (s) {
     case SampleSignal::card_events: return static_cast<double>(card_.events(i));
