@@ -151,6 +151,8 @@ py::list run_card(Card& card, double ticks, const py::object& signals) {
 
 }  // namespace
 
+void bind_card_scope(py::module_& m, py::class_<Card>& c);  // bind_card_scope.cpp (issue 10.3)
+
 void bind_card(py::module_& m) {
   py::register_exception<machine::CardCommandRefused>(m, "CardCommandRefused", m.attr("MotionCommandRefused"));
 
@@ -313,6 +315,7 @@ void bind_card(py::module_& m) {
       .def("neg_limit_input", [](const Card& k, double i) { return k.neg_limit_input(idx(k, i)); }, py::arg("axis"))
       .def("run", &run_card, py::arg("ticks"), py::arg("signals") = py::none());
   bind_card_modes(c, m);  // gear, PVT, FollowEx, coordinate systems
+  bind_card_scope(m, c);  // scope, events, compare, probe (issue 10.3)
 
   m.def("gt_axis_status", [](const Card& k, double i) { return machine::gt_axis_status(k, idx(k, i)); },
         py::arg("card"), py::arg("axis"), "GT axis status register (Table 4-14) of a card axis (0-based).");

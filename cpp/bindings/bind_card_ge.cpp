@@ -1,5 +1,5 @@
 // The GE series' status words (machine/ge_status) and the Card commands the GE dialect added
-// (smooth_stop, arm_probe, set_probe_time, set_encoder_fault). Thin: axis indices are 0-based here; the GE
+// (smooth_stop, arm_probe, set_encoder_fault; the probe edge set_probe_time is bind_card_scope's). Thin: axis indices are 0-based here; the GE
 // dialect (servobench.dialects.ge) numbers axes from 1.
 #include <pybind11/pybind11.h>
 
@@ -37,9 +37,6 @@ void bind_card_ge(py::module_& m) {
   cls.attr("arm_probe") = py::cpp_function(
       [](Card& k) { k.arm_probe(); }, py::is_method(cls),
       "GE GT_CaptProb: arms every axis's capture on the probe input EXI0, one shot (GE L3828-3862).");
-  cls.attr("set_probe_time") = py::cpp_function(
-      [](Card& k, double t) { k.set_probe_time(t); }, py::is_method(cls), py::arg("t_s"),
-      "The simulated probe edge (EXI0) at time t_s, s on the axes' clock (tick * Ts); NaN: never.");
   cls.attr("set_encoder_fault") = py::cpp_function(
       [](Card& k, double i, bool on) { k.set_encoder_fault(ge_idx(k, i), on); }, py::is_method(cls),
       py::arg("axis"), py::arg("on"), "The encoder-abnormal input of an axis (GE PX status bit 27).");

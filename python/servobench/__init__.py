@@ -92,6 +92,7 @@ from .paths import (
 )
 from . import card
 from .card import CARD_EVENTS, Card, CardCommandRefused, CardLimits, CardRun, events_named
+from .card import SAMPLE_SIGNALS, FiredEvent, ScopeData  # the card's scope and event callbacks (issue 10.3)
 from . import dialects
 from .motion import (
     AdlinkPtp,
@@ -117,6 +118,9 @@ __all__ = [
     "CardCommandRefused",
     "CardLimits",
     "CardRun",
+    "FiredEvent",
+    "SAMPLE_SIGNALS",
+    "ScopeData",
     "card",
     "dialects",
     "events_named",

@@ -29,7 +29,8 @@ from . import _core
 from ._core import CardCommandRefused, CardLimits
 from .axis import SIGNAL_UNITS, Axis
 
-__all__ = ["Card", "CardCommandRefused", "CardLimits", "CardRun", "CARD_EVENTS", "events_named"]
+__all__ = ["Card", "CardCommandRefused", "CardLimits", "CardRun", "CARD_EVENTS", "events_named", "FiredEvent",
+           "SAMPLE_SIGNALS", "ScopeData"]
 
 #: Names of the card's latched events, in bit order (bits 0-7 in the GT status-register order).
 CARD_EVENTS: tuple[str, ...] = tuple(_core.CARD_EVENTS)
@@ -149,6 +150,8 @@ class Card:
         """Runs ``ticks`` servo ticks of every axis and returns the recorded signals (default: ``time_s`` s,
         ``pos``/``actual_pos``/``error`` pulse, ``volts`` V, ``prf_vel`` pulse/tick, ``events`` bits, ``moving``,
         ``servo_on``). Releases the GIL."""
+        if self._subs:  # Python callbacks (on_event): the run stops where an event fires (issue 10.3)
+            return self._run_with_callbacks(ticks, signals)
         rec = self._card.run(ticks, None if signals is None else list(signals))
         return CardRun(axes=[AxisSignals(signals=d) for d in rec], servo_period_s=self._card.servo_period_s)
 
@@ -158,7 +161,10 @@ class Card:
         done = 0
         while done < max_ticks and not predicate(self):
             n = min(chunk, max_ticks - done)
-            self._card.run(n, [])
+            if self._subs:  # Python callbacks (on_event, issue 10.3)
+                self._run_with_callbacks(n, ())
+            else:
+                self._card.run(n, [])
             done += n
         return done
 
@@ -190,3 +196,278 @@ class Card:
         from .homing import LOOP_SIGNAL_UNITS
 
         return SIGNAL_UNITS.get(signal) or LOOP_SIGNAL_UNITS.get(signal) or _CARD_UNITS[signal]
+
+    # -- scope, events, compare, probe (issue 10 point 3; docs/card.md "Scope, events, compare") ----------------
+    _subs: tuple = ()  # (id, _Subscription) of on_event, in registration order
+
+    def sample(self, channels, *, every_ticks: int = 1, depth: int = 1000, trigger: str = "immediate",
+               level: float = 0.0, trigger_channel: int = 0, event_axis: int = 0, events=("motion_complete",),
+               pretrigger: int = 0, continuous: bool = False) -> None:
+        """Starts the card's sampler (the tuning workbench's scope) from the next tick.
+
+        channels
+            a list of ``(axis, signal)`` (axis 0-based; for ``trg_pulses``/``trg_level`` the trigger output 0..3),
+            1..16 of them; the signals are :data:`SAMPLE_SIGNALS` (the Axis trace, the loop's, the card's own).
+        every_ticks
+            one sample every N servo ticks (1..1e6); ``depth`` samples per block (1..1e7).
+        trigger
+            ``"immediate"``; ``"rising"``/``"falling"``: channel ``trigger_channel`` crossing ``level`` between two
+            samples; ``"event"``: one of ``events`` (CARD_EVENTS names) latching on ``event_axis``.
+        pretrigger
+            samples kept before the trigger sample (0..depth-1); the trigger counts once they are there.
+        continuous
+            after a full block start the next one at once (the GE watch); otherwise one block (one-shot).
+        Read the result with :meth:`scope_data`; :meth:`capture_scope` starts, runs and reads in one call."""
+        mask = _event_mask(events, "events") if trigger == "event" else 1
+        chans = [(float(a), str(sig)) for a, sig in channels]
+        self._card.sampler_start(chans, float(every_ticks), float(depth), str(trigger), float(trigger_channel),
+                                 float(level), float(event_axis), float(mask), float(pretrigger), bool(continuous))
+        object.__setattr__(self, "_scope_channels", tuple((int(a), s) for a, s in chans))
+
+    @property
+    def sampler_state(self) -> str:
+        """``"idle"``, ``"armed"`` (waiting for the pre-trigger samples or the trigger), ``"filling"``, ``"done"``."""
+        return self._card.sampler_state
+
+    def scope_data(self, *, partial: bool = False):
+        """The oldest finished block as :class:`ScopeData` (None if none is ready); ``partial=True`` returns what
+        the sampler holds now instead (pre-trigger samples or the block being filled)."""
+        got = self._card.sampler_snapshot() if partial else self._card.sampler_pop_block()
+        if got is None:
+            return None
+        ticks, values, trig = got
+        return ScopeData(ticks=np.asarray(ticks), values=np.asarray(values),
+                         channels=getattr(self, "_scope_channels", ()), servo_period_s=self._card.servo_period_s,
+                         trigger_tick=int(trig))
+
+    def capture_scope(self, channels, *, max_ticks: int = 10**7, **options):
+        """Starts the sampler (:meth:`sample` options), runs the card until the block is full (at most
+        ``max_ticks``) and returns the :class:`ScopeData`; raises RuntimeError if the block did not fill."""
+        self.sample(channels, **options)
+        done = self.run_until(lambda c: c._card.sampler_blocks > 0, max_ticks=max_ticks,
+                              chunk=max(1, int(options.get("every_ticks", 1))))
+        data = self.scope_data()
+        if data is None:
+            raise RuntimeError(f"capture_scope: the block did not fill in {done} ticks "
+                               f"(sampler {self._card.sampler_state}, {self._card.sampler_filled} samples)")
+        return data
+
+    def on_event(self, callback, *, axis=None, events=(), msts: int = 0, mio: int = 0, system: int = 0,
+                 timer_ticks: int = 0) -> int:
+        """Calls ``callback(card, fired)`` (a :class:`FiredEvent`) from :meth:`run` at the tick an event fires:
+        ``events`` (CARD_EVENTS names) latching on ``axis`` (None: every axis), bits of the ADLINK motion status
+        (``msts``) or motion I/O (``mio``) words turning on, the system word (bit 0 EMG, 1/2 linear compare 0/1
+        ended, 3/4 table compare 0/1 ended) or a timer every ``timer_ticks`` ticks. The C++ run stops after that
+        tick, the callback runs (it may command the card), then the run continues: deterministic. Without
+        callbacks a run never returns to Python. Returns an id for :meth:`remove_event`."""
+        if not callable(callback):
+            raise TypeError("on_event: callback must be callable as callback(card, fired)")
+        ev = _event_mask(events, "events")
+        for name, v, hi in (("msts", msts, 0xFFFFFFFF), ("mio", mio, 0xFFFFFFFF), ("system", system, 31),
+                            ("timer_ticks", timer_ticks, 10**9)):
+            if not isinstance(v, (int, np.integer)) or not 0 <= int(v) <= hi:
+                raise ValueError(f"Card.on_event.{name} = {v!r} is outside the allowed range 0..{hi}")
+        if axis is not None and not (isinstance(axis, (int, np.integer)) and 0 <= int(axis) < len(self)):
+            raise ValueError(f"Card.on_event.axis = {axis!r} is outside the allowed range 0..{len(self) - 1} (or None)")
+        timers = {s.timer for _i, s in self._subs if s.timer} | ({int(timer_ticks)} if timer_ticks else set())
+        if len(timers) > 1:
+            raise ValueError(f"Card.on_event.timer_ticks = {timer_ticks}: the card has one timer, already set to "
+                             f"{min(timers - {int(timer_ticks)})} ticks")
+        sid = max((i for i, _s in self._subs), default=0) + 1
+        sub = _Subscription(callback, None if axis is None else int(axis), ev, int(msts), int(mio), int(system),
+                            int(timer_ticks))
+        object.__setattr__(self, "_subs", self._subs + ((sid, sub),))
+        self._apply_watch()
+        return sid
+
+    def remove_event(self, sid: int) -> None:
+        """Removes the callback registered under ``sid`` (an :meth:`on_event` id)."""
+        object.__setattr__(self, "_subs", tuple((i, s) for i, s in self._subs if i != sid))
+        self._apply_watch()
+
+    def _apply_watch(self) -> None:
+        n = len(self)
+        ev, ms, mi = [0] * n, [0] * n, [0] * n
+        system, timer = 0, 0
+        for _i, s in self._subs:
+            for a in (range(n) if s.axis is None else (s.axis,)):
+                ev[a] |= s.events
+                ms[a] |= s.msts
+                mi[a] |= s.mio
+            system |= s.system
+            timer = timer or s.timer
+        for a in range(n):
+            self._card.set_watch(a, ev[a], ms[a], mi[a])
+        self._card.set_system_watch(system)
+        if timer != getattr(self, "_timer_set", 0):
+            self._card.set_timer(timer)
+            object.__setattr__(self, "_timer_set", timer)
+
+    def _run_with_callbacks(self, ticks: int, signals) -> CardRun:
+        wanted = (["time_s", "pos", "actual_pos", "error", "volts", "prf_vel", "events", "moving", "servo_on"]
+                  if signals is None else [str(s) for s in signals])
+        unknown = [w for w in wanted if w not in Card.SIGNALS]
+        if unknown:
+            raise ValueError(f"signals: unknown signal '{unknown[0]}'; the signals are: {', '.join(Card.SIGNALS)}")
+        if not isinstance(ticks, (int, np.integer)) or ticks < 0:
+            raise ValueError(f"Card.run.ticks = {ticks!r} is outside the allowed range 0..1e9 (whole ticks)")
+        parts, remaining = [], int(ticks)
+        while remaining > 0:
+            ran, rec, fired = self._card.run_until_event(remaining, wanted)
+            parts.append(rec)
+            remaining -= ran
+            self._dispatch(fired)
+            if ran == 0:
+                break
+        axes = []
+        for a in range(len(self)):
+            axes.append(AxisSignals(signals={w: np.concatenate([p[a][w] for p in parts]) if parts else np.zeros(0)
+                                             for w in wanted}))
+        return CardRun(axes=axes, servo_period_s=self._card.servo_period_s)
+
+    def _dispatch(self, fired) -> None:
+        for tick, axis, word, bits in fired:
+            for _sid, sub in self._subs:
+                hit = sub.matches(axis, word, bits)
+                if hit:
+                    sub.callback(self, FiredEvent(int(tick), int(axis), word, hit))
+
+    def run_until_fired(self, predicate, max_ticks: int) -> int:
+        """Runs with the :meth:`on_event` callbacks until ``predicate()`` is true after a callback (checked before
+        the run too), at most ``max_ticks``; returns the ticks run. What a vendor's "wait for interrupt" does."""
+        done = 0
+        while done < max_ticks and not predicate():
+            if not self._subs:
+                self._card.run(max_ticks - done, [])
+                return max_ticks
+            ran, _rec, fired = self._card.run_until_event(max_ticks - done, [])
+            done += ran
+            self._dispatch(fired)
+            if ran == 0:
+                break
+        return done
+
+    # position compare and probe: the C++ methods (compare_set_linear/table/output/source, compare_enable,
+    # compare_count, compare_log, set_probe_time, set_probe_position) are reached through __getattr__.
+
+
+#: Signals the sampler records: name -> (unit, description).
+SAMPLE_SIGNALS: dict[str, tuple[str, str]] = {name: (unit, doc) for name, unit, doc in _core.SAMPLE_SIGNALS}
+
+_SYSTEM_BITS = ("emg", "linear_compare_0_end", "linear_compare_1_end", "table_compare_0_end", "table_compare_1_end")
+_MSTS_BITS = {0: "CSTP", 1: "VM", 2: "ACC", 3: "DEC", 4: "DIR", 5: "MDN", 6: "HMV", 16: "ASTP", 28: "GER"}
+_MIO_BITS = {0: "ALM", 1: "PEL", 2: "MEL", 3: "ORG", 4: "EMG", 5: "EZ", 6: "INP", 7: "SVON", 11: "SPEL", 12: "SMEL"}
+
+
+def _event_mask(events, what: str) -> int:
+    if isinstance(events, str):
+        events = (events,)
+    mask = 0
+    for e in events:
+        if e not in CARD_EVENTS:
+            raise ValueError(f"Card.{what}: '{e}' is not a card event; the events are: {', '.join(CARD_EVENTS)}")
+        mask |= 1 << CARD_EVENTS.index(e)
+    return mask
+
+
+@dataclass(frozen=True)
+class _Subscription:
+    callback: object
+    axis: int | None
+    events: int
+    msts: int
+    mio: int
+    system: int
+    timer: int
+
+    def matches(self, axis: int, word: str, bits: int) -> int:
+        if word == "timer":
+            return 1 if self.timer else 0
+        if word == "system":
+            return bits & self.system
+        if self.axis is not None and axis != self.axis:
+            return 0
+        return bits & {"events": self.events, "msts": self.msts, "mio": self.mio}[word]
+
+
+@dataclass(frozen=True)
+class FiredEvent:
+    """An event a :meth:`Card.on_event` callback receives: it fired during tick ``tick`` (the card's ``tick`` is
+    ``tick + 1`` in the callback) on ``axis`` (-1 card-wide), in ``word`` (``"events"``, ``"msts"``, ``"mio"``,
+    ``"system"``, ``"timer"``); ``bits`` those that turned on and this callback asked for."""
+
+    tick: int
+    axis: int
+    word: str
+    bits: int
+
+    @property
+    def names(self) -> list[str]:
+        """The names of ``bits``: card events, system events, or the ADLINK MSTS/MIO bit names (MDN, INP, ...)."""
+        if self.word == "events":
+            return events_named(self.bits)
+        if self.word == "system":
+            return [n for k, n in enumerate(_SYSTEM_BITS) if self.bits >> k & 1]
+        table = {"msts": _MSTS_BITS, "mio": _MIO_BITS}.get(self.word, {})
+        return [n for k, n in sorted(table.items()) if self.bits >> k & 1]
+
+
+@dataclass(frozen=True)
+class ScopeData:
+    """One block of the card's sampler: ``ticks`` (the card tick of each sample; the values are those after that
+    tick), ``values`` (samples x channels), ``channels`` ((axis, signal) each), ``trigger_tick`` (-1: immediate).
+    ``data["actual_pos"]`` (one channel of that signal), ``data[1, "volts"]`` (axis 1's) or ``data[2]`` (the
+    third channel) give a channel's NumPy array; ``time_s`` is tick x Ts."""
+
+    ticks: np.ndarray
+    values: np.ndarray
+    channels: tuple
+    servo_period_s: float
+    trigger_tick: int = -1
+
+    @property
+    def time_s(self) -> np.ndarray:
+        """Time of each sample, s (tick x servo period)."""
+        return self.ticks * self.servo_period_s
+
+    @property
+    def names(self) -> list[str]:
+        """Channel labels ``signal[axis]``."""
+        return [f"{sig}[{a}]" for a, sig in self.channels]
+
+    @property
+    def units(self) -> list[str]:
+        """Unit of each channel."""
+        return [SAMPLE_SIGNALS[sig][0] for _a, sig in self.channels]
+
+    @property
+    def trigger_index(self) -> int:
+        """Index of the trigger sample (-1: immediate trigger)."""
+        hit = np.flatnonzero(self.ticks == self.trigger_tick) if self.trigger_tick >= 0 else []
+        return int(hit[0]) if len(hit) else -1
+
+    def __len__(self) -> int:
+        return len(self.ticks)
+
+    def __getitem__(self, key) -> np.ndarray:
+        if isinstance(key, (int, np.integer)):
+            return self.values[:, int(key)]
+        if isinstance(key, tuple):
+            idx = [k for k, c in enumerate(self.channels) if c == (int(key[0]), key[1])]
+        else:
+            idx = [k for k, c in enumerate(self.channels) if c[1] == key or self.names[k] == key]
+        if len(idx) != 1:
+            raise KeyError(f"{key!r}: {'no' if not idx else 'more than one'} channel; the channels are {self.names}")
+        return self.values[:, idx[0]]
+
+    def to_dict(self) -> dict:
+        """The block as a dict of NumPy arrays (``time_s``, ``tick`` and one per channel label)."""
+        out = {"time_s": self.time_s, "tick": self.ticks}
+        out.update({n: self.values[:, k] for k, n in enumerate(self.names)})
+        return out
+
+    def plot(self, *, path: str | None = None, title: str | None = None):
+        """One panel per unit (:func:`servobench.plot.scope`); returns the Figure, writes ``path`` if given."""
+        from . import plot
+
+        return plot.scope(self, path=path, title=title)

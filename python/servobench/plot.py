@@ -307,3 +307,27 @@ def filter_response(*filters, freq_hz=None, sample_time_s: float | None = None, 
     if path is not None:
         fig.savefig(path, dpi=120)
     return fig
+
+
+def scope(data, *, title: str | None = None, path: str | None = None):
+    """The card sampler's block (:class:`~servobench.card.ScopeData`): one panel per unit, every channel of that
+    unit over time (ms), the trigger instant marked. Returns the Figure; writes it to `path` if given."""
+    plt = _pyplot()
+    t_ms = np.asarray(data.time_s) * 1e3
+    units = list(dict.fromkeys(data.units))
+    fig, axes = plt.subplots(len(units), 1, sharex=True, figsize=(8, 2.2 * len(units) + 1), constrained_layout=True,
+                             squeeze=False)
+    for ax, unit in zip(axes[:, 0], units):
+        for k, (name, u) in enumerate(zip(data.names, data.units)):
+            if u == unit:
+                ax.plot(t_ms, data.values[:, k], lw=1.0, label=name)
+        if data.trigger_tick >= 0:
+            ax.axvline(data.trigger_tick * data.servo_period_s * 1e3, color="k", lw=0.8, ls=":")
+        ax.set_ylabel(f"[{unit}]")
+        ax.grid(True, alpha=0.3)
+        ax.legend(loc="best", fontsize=8)
+    axes[-1, 0].set_xlabel("time [ms]")
+    fig.suptitle(title or f"card scope: {len(data)} samples", fontsize=10)
+    if path is not None:
+        fig.savefig(path, dpi=120)
+    return fig

@@ -611,3 +611,39 @@ def test_unsupported_commands_say_so(g):
     assert g.GT_HomeSns(0) == 0 and g.GT_HomeSns(1) == 1            # rising edge not simulated
     assert g.GT_EncSns(0) == 0 and g.GT_EncSns(0x4) == 1 and g.GT_EncSns(0x100) == 0  # bit 8: no axis 9
     assert g.GT_CtrlMode(1, 1) == 1 and g.GT_CtrlMode(1, 2) == 7
+
+
+def test_watch_example_10_1_through_the_ge_dialect():
+    # GE Example 10-1 (L2464-2884, ge.md §6.6) as written for the card: axis 2, SetWatch(config, 400) with bits 0-1,
+    # StartWatch(0), Update, then GetWatch blocks while the axis moves. Kp 10 only, as the example.
+    from servobench.dialects.ge import GeController, TWatchBuffer
+
+    card = sb.Card(8, law=sb.GtServoLaw(), servo_period_s=200e-6,
+                   plant=sb.RigidPlant(inertia_kgm2=2e-5, viscous_nms=2e-3))
+    ge = GeController("PX", axes=8)
+    assert ge.GT_Open(card=card) == 0
+    config = [0, 3, 0, 0, 0, 0, 0, 0]
+    assert ge.GT_SetWatch(config, 400) == 0
+    assert ge.GT_SetWatch([0x10] + [0] * 7, 400) == 7          # bit 4 is reserved (Table 10-2)
+    assert ge.GT_SetWatch([0x4F] * 8, 1000) == 7               # 40000 values: more than the watch memory (L2793, V75)
+    assert ge.GT_SetWatch(config, 400) == 0
+    buf = TWatchBuffer(8)
+    buf.Axis[1].PrfPos = np.zeros(400, dtype=np.int64)
+    buf.Axis[1].AtlPos = np.zeros(400, dtype=np.int64)
+    for rtn in (ge.GT_SetKp(2, 10), ge.GT_Update(2), ge.GT_AxisOn(2), ge.GT_SetPos(2, 100000), ge.GT_SetVel(2, 10),
+                ge.GT_SetAcc(2, 1), ge.GT_StartWatch(0), ge.GT_Update(2)):
+        assert rtn == 0
+    blocks = []
+    while True:
+        rtn, available = ge.GT_GetWatch(buf)
+        assert rtn == 0
+        if available:
+            blocks.append(buf.Axis[1].PrfPos.copy())
+        rtn, sts = ge.GT_GetSts(2)
+        if not sts & 0x400:
+            break
+        ge.run(100)
+    assert ge.GT_StopWatch() == 0
+    prf = np.concatenate(blocks)
+    assert np.all(np.diff(prf) >= 0) and 40 <= prf[50] <= 60  # 10 ms ramp at 1 pulse/ms^2: ~50 pulse
+    np.testing.assert_array_equal(np.diff(prf[10000:10006]), [2] * 5)  # 10 pulse/ms = 2 pulse per 200 us tick

@@ -8,6 +8,7 @@
 
 #include "servobench/common/validate.hpp"
 #include "servobench/machine/card_modes.hpp"
+#include "servobench/machine/card_scope.hpp"
 
 namespace servobench::machine {
 
@@ -71,6 +72,7 @@ const char* to_string(CommandFault fault) {
     case CommandFault::NotInCommandSet: return "not_in_command_set";
     case CommandFault::NotSimulated: return "not_simulated";
     case CommandFault::CrdStateError: return "crd_state_error";
+    case CommandFault::NoInterruptPending: return "no_interrupt_pending";
   }
   return "?";
 }
@@ -556,8 +558,6 @@ void Card::arm_breakpoint(std::size_t i, motion::BreakKind kind) {
 
 void Card::arm_capture(std::size_t i, CaptureTrigger trigger) {
   at(i);
-  if (trigger == CaptureTrigger::Probe)
-    refuse(static_cast<int>(i), CommandFault::InvalidInMode, "probe capture is not wired to the card yet");
   try {
     loops_[i]->capture().arm(trigger);
   } catch (const motion::MotionCommandRefused& e) {
@@ -841,12 +841,6 @@ void Card::synch_pos_now(std::size_t i) {
   s.staged.pos = s.active.pos = a;
 }
 
-void Card::set_probe_time(double t_s) {
-  if (!(std::isnan(t_s) || std::isfinite(t_s)))
-    throw_invalid("Card", "probe_time_s", t_s, "must be finite (s) or NaN (never)");
-  for (auto& l : loops_) l->set_probe_time(t_s);
-}
-
 // -- readbacks ----------------------------------------------------------------------------------------------
 
 bool Card::moving(std::size_t i) const {
@@ -998,6 +992,7 @@ void Card::tick_once(const std::vector<CardTrace>& traces, std::size_t k) {
   } else {
     for (std::size_t i = 0; i < n; ++i) tick_axis(i, traces, k);
   }
+  if (scope_) scope_tick();  // scope hook (issue 10.3)
   ++tick_;
 }
 
@@ -1012,6 +1007,7 @@ void Card::tick_axis(std::size_t i, const std::vector<CardTrace>& traces, std::s
   }
   double* user_error = tr.error;
   tr.error = &error;
+  if (scope_ && scope_->needs_signals(i)) scope_->bind_signals(i, tr, lt);  // scope hook (issue 10.3)
   const bool armed = l.breakpoint().armed() != motion::BreakKind::None;
   l.run(1, tr, lt);
   if (user_error) *user_error = error;
@@ -1036,7 +1032,47 @@ void Card::run(std::size_t n, const std::vector<CardTrace>& traces) {
   if (!traces.empty() && traces.size() != loops_.size())
     throw_invalid("Card.run", "traces", static_cast<double>(traces.size()),
                   "must be empty or one per axis (" + std::to_string(loops_.size()) + ")");
+  if (scope_) scope_->resync();  // scope hook (issue 10.3)
   for (std::size_t k = 0; k < n; ++k) tick_once(traces, k);
+}
+
+// -- scope, events, compare, probe (issue 10 point 3; machine/card_scope.hpp) ----------------------------------
+
+CardScope& Card::scope() {
+  if (!scope_) scope_ = std::make_unique<CardScope>(*this);
+  return *scope_;
+}
+
+void Card::scope_tick() {
+  const std::uint32_t latched = scope_->probe(tick_);
+  for (std::size_t i = 0; i < st_.size(); ++i)
+    if (latched & (1u << i)) st_[i].events |= event_bit(CardEvent::Captured);
+  scope_->after_tick(tick_);
+}
+
+std::size_t Card::run_until_event(std::size_t n, const std::vector<CardTrace>& traces) {
+  if (!traces.empty() && traces.size() != loops_.size())
+    throw_invalid("Card.run", "traces", static_cast<double>(traces.size()),
+                  "must be empty or one per axis (" + std::to_string(loops_.size()) + ")");
+  CardScope& s = scope();
+  s.resync();
+  std::size_t k = 0;
+  while (k < n) {
+    tick_once(traces, k);
+    ++k;
+    if (!s.fired().empty()) break;
+  }
+  return k;
+}
+
+void Card::set_probe_time(double t_s) {
+  if (!std::isnan(t_s) && !std::isfinite(t_s))
+    throw_invalid("Card", "probe_time_s", t_s, "must be a finite time in s (or NaN: never)");
+  // The loops compare with their Axis's own clock; a card's axes may have run before they joined the card.
+  for (auto& l : loops_) {
+    const double offset_s = static_cast<double>(l->axis().tick() - tick_) * period_s_;
+    l->set_probe_time(std::isnan(t_s) ? t_s : t_s + offset_s);
+  }
 }
 
 }  // namespace servobench::machine

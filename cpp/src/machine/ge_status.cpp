@@ -80,6 +80,7 @@ std::uint16_t ge_command_status_bit(GeVariant variant, CommandFault fault) {
     case CommandFault::EmergencyStopActive:
     case CommandFault::DriveAlarmActive:
     case CommandFault::DistanceTooShort:
+    case CommandFault::NoInterruptPending:  // GE has no interrupts (ge.md §6.7)
     case CommandFault::NotSimulated: return 0;
   }
   return 0;

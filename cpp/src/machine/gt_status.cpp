@@ -51,6 +51,7 @@ std::uint16_t gt_command_status_bit(CommandFault fault) {
     case CommandFault::NotInCommandSet:
     case CommandFault::NotSimulated: return 0;  // GE causes (machine/ge_status.hpp)
     case CommandFault::CrdStateError: return 1u << 12;
+    case CommandFault::NoInterruptPending: return 1u << 4;
   }
   return 0;
 }

@@ -20,6 +20,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from .. import _core
 from .._core import AdlinkHome, AdlinkJog, AdlinkPtp, ApsServoLaw, CardCommandRefused, MotionCommandRefused
 from ..card import Card
@@ -202,12 +204,15 @@ class ApsController(DialectController):
         self._home = [dict(_HOME_DEFAULTS) for _ in range(len(card))]
         self._jog = [dict(_JOG_DEFAULTS) for _ in range(len(card))]
         self._el_mode = [0] * len(card)
+        self._scope_init()  # sampling, trigger, interrupts (issue 10.3)
         return ERR_NoError, 1
 
     def APS_close(self) -> int:
         """``APS_close()``: releases the card."""
         if self._card is None:
             return ERR_DeviceNotInitial
+        for sid in getattr(self, "_int_subs", []):  # the interrupt watches go with the card (issue 10.3)
+            self._card.remove_event(sid)
         self._card = None
         return ERR_NoError
 
@@ -559,6 +564,514 @@ class ApsController(DialectController):
         """``APS_get_stop_code(Axis_ID, &Code)`` -> ``(rtn, STOP_* code)`` of the last abnormal stop (0 none)."""
         i = self._axis(Axis_ID)
         return (self._bad(), 0) if i is None else (ERR_NoError, int(_core.aps_stop_code(self._card._card, i)))
+
+
+# -- sampling, position compare trigger, host interrupts (issue 10 point 3; decisions V71-V85) -------------------
+ERR_InterruptNotEnable = -8  # ErrorCodeDef.h
+ERR_TimeOut = -9
+
+# Sampling parameters (APS_define.h) and sources (Table 4-5 L3558-3588; header values; closed loop: V79).
+SAMP_PA_RATE, SAMP_PA_EDGE, SAMP_PA_LEVEL, SAMP_PA_TRIGCH = 0x0, 0x2, 0x3, 0x5
+SAMP_PA_SRC_CH0, SAMP_PA_SRC_CH1, SAMP_PA_SRC_CH2, SAMP_PA_SRC_CH3 = 0x10, 0x11, 0x12, 0x13
+SAMP_AXIS_MASK, SAMP_PARAM_MASK = 0xF00, 0xFF
+SAMP_COM_POS, SAMP_FBK_POS, SAMP_CMD_VEL, SAMP_FBK_VEL, SAMP_MIO, SAMP_MSTS = 0x00, 0x01, 0x02, 0x03, 0x04, 0x05
+SAMP_MSTS_ACC, SAMP_MSTS_MV, SAMP_MSTS_DEC, SAMP_MSTS_CSTP, SAMP_MSTS_MDN = 0x06, 0x07, 0x08, 0x09, 0x0A
+SAMP_MIO_INP, SAMP_MIO_ORG = 0x0B, 0x0D
+SAMP_CONTROL_VOL, SAMP_GTY_DEVIATION, SAMP_ENCODER_RAW, SAMP_ERROR_POS = 0x20, 0x21, 0x22, 0x23
+SAMP_COM_POS_F64, SAMP_FBK_POS_F64, SAMP_CMD_VEL_F64, SAMP_FBK_VEL_F64 = 0x10, 0x11, 0x12, 0x13
+SAMP_CONTROL_VOL_F64, SAMP_ERR_POS_F64 = 0x14, 0x15
+SAMP_SRC_COM_POS, SAMP_SRC_FBK_POS, SAMP_SRC_CMD_VEL, SAMP_SRC_FBK_VEL = 0x00, 0x01, 0x02, 0x03  # the manual's names
+SAMP_SRC_MIO, SAMP_SRC_MSTS, SAMP_SRC_CONTROL_VOL, SAMP_SRC_ENCODER_RAW, SAMP_SRC_ERR_POS = 0x04, 0x05, 0x20, 0x22, 0x23
+PID_CMD_POS_COUNT, PID_CMD_VEL_COUNT, PID_CMD_ACC_COUNT, PID_ERR_POS_COUNT = 0x40, 0x41, 0x42, 0x43  # V79
+PID_KP_CALC_COUNT, PID_KI_CALC_COUNT, PID_KD_CALC_COUNT, PID_KVFF_CALC_COUNT = 0x44, 0x45, 0x46, 0x47
+PID_KAFF_CALC_COUNT, PID_CALC_COUNT, BIQUAD_0_CALC_COUNT, BIQUAD_1_CALC_COUNT = 0x48, 0x49, 0x4A, 0x4B
+PID_ERR_POS_SUM_COUNT, PID_LAST_ERR_POS_COUNT, PID_ERR_POS_DIFF_COUNT = 0x4C, 0x4D, 0x4E
+# source -> (sampler signal, scale (x 1/Ts for pulse/s), integer?, bit of the word or None)
+_SAMP = {
+    SAMP_COM_POS: ("pos", 1, True, None), SAMP_FBK_POS: ("actual_pos", 1, True, None),
+    SAMP_CMD_VEL: ("prf_vel", "1/Ts", True, None), SAMP_FBK_VEL: ("fbk_vel", "1/Ts", True, None),
+    SAMP_MIO: ("mio", 1, True, None), SAMP_MSTS: ("msts", 1, True, None),
+    SAMP_MSTS_ACC: ("msts", 1, True, 2), SAMP_MSTS_MV: ("msts", 1, True, 1), SAMP_MSTS_DEC: ("msts", 1, True, 3),
+    SAMP_MSTS_CSTP: ("msts", 1, True, 0), SAMP_MSTS_MDN: ("msts", 1, True, 5), SAMP_MIO_INP: ("mio", 1, True, 6),
+    SAMP_MIO_ORG: ("mio", 1, True, 3), SAMP_CONTROL_VOL: ("volts", 1000, True, None),
+    SAMP_ENCODER_RAW: ("fb_pos", 1, True, None), SAMP_ERROR_POS: ("error", 1, True, None),
+    SAMP_COM_POS_F64: ("pos", 1, False, None), SAMP_FBK_POS_F64: ("actual_pos", 1, False, None),
+    SAMP_CMD_VEL_F64: ("prf_vel", "1/Ts", False, None), SAMP_FBK_VEL_F64: ("fbk_vel", "1/Ts", False, None),
+    SAMP_CONTROL_VOL_F64: ("volts", 1000, False, None), SAMP_ERR_POS_F64: ("error", 1, False, None),
+    PID_CMD_POS_COUNT: ("cmd_pos", 1, True, None), PID_CMD_VEL_COUNT: ("cmd_vel", 1, True, None),
+    PID_CMD_ACC_COUNT: ("cmd_acc", 1, True, None), PID_ERR_POS_COUNT: ("error", 1, True, None),
+    PID_KP_CALC_COUNT: ("p", 1, True, None), PID_KI_CALC_COUNT: ("i", 1, True, None),
+    PID_KD_CALC_COUNT: ("d", 1, True, None), PID_KVFF_CALC_COUNT: ("vff", 1, True, None),
+    PID_KAFF_CALC_COUNT: ("aff", 1, True, None), PID_CALC_COUNT: ("u", 1, True, None),
+    BIQUAD_0_CALC_COUNT: ("biquad0", 1, True, None), BIQUAD_1_CALC_COUNT: ("biquad1", 1, True, None),
+    PID_ERR_POS_SUM_COUNT: ("error_sum", 1, True, None), PID_LAST_ERR_POS_COUNT: ("error_prev", 1, True, None),
+    PID_ERR_POS_DIFF_COUNT: ("error_diff", 1, True, None),
+}
+#: One sample of APS_wait_trigger_sampling (STR_SAMP_DATA_4CH {I32 tick; I32 data[4]}; data F64 here, V78).
+STR_SAMP_DATA_4CH = np.dtype([("tick", np.int64), ("data", np.float64, (4,))])
+
+# Trigger parameters (APS_define.h "PCI-8258"; L3356-3420) and the TRGx_SRC bits (V77).
+TGR_LCMP0_SRC, TGR_LCMP1_SRC, TGR_TCMP0_SRC, TGR_TCMP1_SRC = 0x00, 0x01, 0x02, 0x03
+TGR_TCMP0_DIR, TGR_TCMP1_DIR, TGR_TRG_EN = 0x04, 0x05, 0x06
+TGR_TRG0_SRC, TGR_TRG1_SRC, TGR_TRG2_SRC, TGR_TRG3_SRC = 0x10, 0x11, 0x12, 0x13
+TGR_TRG0_PWD, TGR_TRG1_PWD, TGR_TRG2_PWD, TGR_TRG3_PWD = 0x14, 0x15, 0x16, 0x17
+TGR_TRG0_LOGIC, TGR_TRG1_LOGIC, TGR_TRG2_LOGIC, TGR_TRG3_LOGIC = 0x18, 0x19, 0x1A, 0x1B
+TGR_TRG0_TGL, TGR_TRG1_TGL, TGR_TRG2_TGL, TGR_TRG3_TGL = 0x1C, 0x1D, 0x1E, 0x1F
+TIMR_ITV, TIMR_DIR, TIMR_RING_EN, TIMR_EN = 0x20, 0x21, 0x22, 0x23
+TRG_SRC_MANUAL, TRG_SRC_TCMP0, TRG_SRC_TCMP1, TRG_SRC_LCMP0, TRG_SRC_LCMP1 = 0x1, 0x2, 0x4, 0x8, 0x10
+TGR_SRC_COMMAND = 0x10  # a comparator source value 0x10 + n compares axis n's command position (V76)
+_PWD_UNIT_S = 100e-9    # TGR_TRGx_PWD unit: 100 ns, the manual's minimum width (L383; V77)
+
+# Interrupt factors (L4120-4200): axis items 0-7, system item 8.
+IALM, IPEL, IMEL, IORG, IEZ, IINP, IEMG, ICSTP, IVM, IACC, IDEC, IMDN, IASTP = 0, 1, 2, 3, 4, 5, 6, 8, 9, 10, 11, 12, 13
+ISPEL, ISMEL, IPRED, IPOSTD = 15, 16, 18, 19
+ISYS_EMG, ILCF0, ILCF1, IFCF0, IFCF1, IMOV, IHOV = 0, 1, 2, 3, 4, 5, 6
+# axis factor bit -> (watch word, bit of that word)
+_AXIS_FACTORS = {IALM: ("mio", 0), IPEL: ("mio", 1), IMEL: ("mio", 2), IORG: ("mio", 3), IEZ: ("mio", 5), IINP: ("mio", 6),
+                 IEMG: ("mio", 4), ICSTP: ("msts", 0), IVM: ("msts", 1), IACC: ("msts", 2), IDEC: ("msts", 3),
+                 IMDN: ("msts", 5), IASTP: ("msts", 16), ISPEL: ("mio", 11), ISMEL: ("mio", 12)}
+_WAIT_FOREVER_S = 3600.0  # Time_Out -1 waits at most one simulated hour (V83)
+
+
+class _ApsScope:
+    """The sampling, trigger and interrupt functions of :class:`ApsController` (mixed in)."""
+
+    def _scope_init(self):
+        c = self._card
+        ticks_per_ms = max(1, int(round(1e-3 / c.servo_period_s)))
+        self._samp = {SAMP_PA_RATE: ticks_per_ms, SAMP_PA_EDGE: 2, SAMP_PA_LEVEL: 0, SAMP_PA_TRIGCH: 0,
+                      SAMP_PA_SRC_CH0: SAMP_COM_POS, SAMP_PA_SRC_CH1: SAMP_FBK_POS, SAMP_PA_SRC_CH2: SAMP_ERROR_POS,
+                      SAMP_PA_SRC_CH3: SAMP_CONTROL_VOL}
+        self._tgr = {p: 0 for p in range(0x00, 0x20)}
+        self._tgr.update({TGR_TCMP0_DIR: 1, TGR_TCMP1_DIR: 1, TGR_LCMP1_SRC: 1, TGR_TCMP1_SRC: 1})
+        for t in range(4):
+            self._tgr[TGR_TRG0_PWD + t] = 1
+        self._int_main = False
+        self._int_factors: set[int] = set()   # enabled int_no
+        self._int_signaled: dict[int, bool] = {}
+        self._int_subs: list[int] = []
+
+    def _board(self, Board_ID) -> bool:
+        return self._card is not None and _num(Board_ID) == 0
+
+    # -- data sampling (L3544-3665) --------------------------------------------------------------------------
+    def APS_set_sampling_param(self, Board_ID, ParaNum, ParaDat) -> int:
+        """``APS_set_sampling_param(Board_ID, ParaNum, ParaDat)``: SAMP_PA_RATE (a sample every N servo ticks,
+        1..65535; default the ticks of 1 ms, L3548), SAMP_PA_EDGE (0 rising, 1 falling, 2 no trigger: start at
+        once, the default; V80), SAMP_PA_LEVEL (in the trigger channel's unit), SAMP_PA_TRIGCH (0..3),
+        SAMP_PA_SRC_CH0..3 (axis << 8 | source: SAMP_* of Table 4-5, PID_* of Table 4-6)."""
+        if not self._board(Board_ID):
+            return self._bad()
+        p, v = _num(ParaNum), _num(ParaDat)
+        if p not in self._samp or v is None or v != int(v):
+            return ERR_ParametersInvalid
+        v = int(v)
+        ok = {SAMP_PA_RATE: 1 <= v <= 65535, SAMP_PA_EDGE: v in (0, 1, 2), SAMP_PA_LEVEL: abs(v) <= _POS_MAX,
+              SAMP_PA_TRIGCH: 0 <= v <= 3}.get(p)
+        if ok is None:  # a source
+            src, axis = v & SAMP_PARAM_MASK, (v & SAMP_AXIS_MASK) >> 8
+            if v & ~(SAMP_AXIS_MASK | SAMP_PARAM_MASK) or axis >= len(self._card):
+                return ERR_ParametersInvalid
+            if src not in _SAMP:
+                return ERR_FunctionNotAvailable  # gantry, PWM, VAO, point table: not simulated
+            ok = True
+        if not ok:
+            return ERR_ParametersInvalid
+        self._samp[p] = v
+        return ERR_NoError
+
+    def APS_get_sampling_param(self, Board_ID, ParaNum):
+        """``APS_get_sampling_param(Board_ID, ParaNum, &ParaDat)`` -> ``(rtn, ParaDat)``."""
+        if not self._board(Board_ID):
+            return self._bad(), 0
+        p = _num(ParaNum)
+        return (ERR_NoError, self._samp[p]) if p in self._samp else (ERR_ParametersInvalid, 0)
+
+    def _samp_channels(self):
+        out = []
+        for k in range(4):
+            v = self._samp[SAMP_PA_SRC_CH0 + k]
+            out.append(((v & SAMP_AXIS_MASK) >> 8, _SAMP[v & SAMP_PARAM_MASK]))
+        return out
+
+    def _samp_start(self, Board_ID, Length, PreTrgLen, TimeOutMs):
+        """Validates and starts the sampler; returns an error code or None."""
+        if not self._board(Board_ID):
+            return self._bad()
+        n, pre, tmo = _num(Length), _num(PreTrgLen), _num(TimeOutMs)
+        if None in (n, pre, tmo) or n != int(n) or not 1 <= n <= 1e6 or pre != int(pre) or not 0 <= pre < n:
+            return ERR_ParametersInvalid
+        if tmo != int(tmo) or (tmo < 0 and tmo != -1):
+            return ERR_ParametersInvalid
+        c = self._card
+        chans = self._samp_channels()
+        edge = self._samp[SAMP_PA_EDGE]
+        if edge == 2 and pre > 0:
+            return ERR_ParametersInvalid
+        trig_ch = self._samp[SAMP_PA_TRIGCH]
+        name, scale, _integer, bit = chans[trig_ch][1]
+        if edge != 2 and bit is not None:
+            return ERR_FunctionNotAvailable  # a level on one status bit: trigger on the word instead (V80)
+        ts = c.servo_period_s
+        factor = 1.0 / ts if scale == "1/Ts" else float(scale)
+        c.sample([(a, sig[0]) for a, sig in chans], every_ticks=self._samp[SAMP_PA_RATE], depth=int(n),
+                 trigger=("rising", "falling", "immediate")[edge], trigger_channel=trig_ch,
+                 level=self._samp[SAMP_PA_LEVEL] / factor, pretrigger=int(pre))
+        self._samp_run = {"chans": chans, "n": int(n), "until": c.tick + int(round(
+            (_WAIT_FOREVER_S if tmo == -1 else tmo * 1e-3) / ts)), "out": np.zeros(int(n), dtype=STR_SAMP_DATA_4CH)}
+        return None
+
+    def _samp_fill(self, data, out, chans):
+        ts = self._card.servo_period_s
+        m = len(data)
+        out["tick"][:m] = data.ticks
+        for k, (_a, (_sig, sc, integer, b)) in enumerate(chans):
+            v = data.values[:, k] * (1.0 / ts if sc == "1/Ts" else sc)
+            if b is not None:
+                v = (v.astype(np.int64) >> b) & 1
+            out["data"][:m, k] = np.rint(v) if integer else v
+        return m
+
+    def APS_wait_trigger_sampling(self, Board_ID, Length, PreTrgLen, TimeOutMs):
+        """``APS_wait_trigger_sampling(Board_ID, Length, PreTrgLen, TimeOutMs, STR_SAMP_DATA_4CH *DataArr)`` ->
+        ``(rtn, DataArr)``: samples the four channels every SAMP_PA_RATE ticks, ``Length`` samples (1..1e6) of
+        which ``PreTrgLen`` before the trigger (SAMP_PA_TRIGCH crossing SAMP_PA_LEVEL on SAMP_PA_EDGE), running
+        the card until the block is full or ``TimeOutMs`` simulated ms passed (-1: V83) -> ERR_TimeOut, no data.
+        DataArr: a NumPy array of :data:`STR_SAMP_DATA_4CH` (``tick`` = card tick of the sample; ``data`` the
+        channels in their units: pulse, pulse/s, mV, bits; whole numbers for the I32 sources)."""
+        bad = self._samp_start(Board_ID, Length, PreTrgLen, TimeOutMs)
+        if bad is not None:
+            return bad, None
+        c, run = self._card, self._samp_run
+        c.run_until(lambda k: k._card.sampler_blocks > 0, max_ticks=max(0, run["until"] - c.tick),
+                    chunk=max(1, int(round(1e-3 / c.servo_period_s))))
+        data = c.scope_data()
+        if data is None:
+            c._card.sampler_stop()
+            return ERR_TimeOut, None
+        self._samp_fill(data, run["out"], run["chans"])
+        return ERR_NoError, run["out"]
+
+    def APS_wait_trigger_sampling_async(self, Board_ID, Length, PreTrgLen, TimeOutMs):
+        """``APS_wait_trigger_sampling_async(...)`` -> ``(rtn, DataArr)``: starts the same sampling and returns at
+        once; the card fills ``DataArr`` as it runs (the samples taken so far are copied into it at each
+        APS_get_sampling_count call, V78); after ``TimeOutMs`` of card time without a full block the sampling
+        stops."""
+        bad = self._samp_start(Board_ID, Length, PreTrgLen, TimeOutMs)
+        if bad is not None:
+            return bad, None
+        return ERR_NoError, self._samp_run["out"]
+
+    def APS_get_sampling_count(self, Board_ID):
+        """``APS_get_sampling_count(Board_ID, &SampCnt)`` -> ``(rtn, samples in DataArr)`` of the running or
+        finished asynchronous sampling (the pre-trigger samples count once the trigger came)."""
+        if not self._board(Board_ID):
+            return self._bad(), 0
+        run, c = getattr(self, "_samp_run", None), self._card
+        if run is None:
+            return ERR_NoError, 0
+        if c._card.sampler_blocks > 0:
+            run["done"] = self._samp_fill(c.scope_data(), run["out"], run["chans"])
+        if "done" in run:
+            return ERR_NoError, run["done"]
+        if c.tick >= run["until"]:
+            c._card.sampler_stop()
+        if c.sampler_state != "filling":
+            return ERR_NoError, 0
+        return ERR_NoError, self._samp_fill(c.scope_data(partial=True), run["out"], run["chans"])
+
+    def APS_stop_wait_sampling(self, Board_ID) -> int:
+        """``APS_stop_wait_sampling(Board_ID)``: stops the sampling; DataArr keeps what was copied."""
+        if not self._board(Board_ID):
+            return self._bad()
+        self._card._card.sampler_stop()
+        return ERR_NoError
+
+    # -- position compare trigger (L3348-3435) ------------------------------------------------------------------
+    def _trg_count_ok(self, ch) -> bool:
+        v = _num(ch)
+        return v is not None and v == int(v) and 0 <= v < (2 if len(self._card) == 4 else 4)
+
+    def _apply_trigger(self):
+        c = self._card
+        for comp, p in enumerate((TGR_LCMP0_SRC, TGR_LCMP1_SRC, TGR_TCMP0_SRC, TGR_TCMP1_SRC)):
+            v = self._tgr[p]
+            c.compare_set_source(comp, v & 0xF, bool(v & TGR_SRC_COMMAND))
+        for ch in range(2):
+            c.compare_set_table_direction(ch, {0: -1, 1: 1, 2: 0}[self._tgr[TGR_TCMP0_DIR + ch]])
+        for t in range(4):
+            c.compare_set_output(t, self._tgr[TGR_TRG0_SRC + t], self._tgr[TGR_TRG0_PWD + t] * _PWD_UNIT_S,
+                                 bool(self._tgr[TGR_TRG0_LOGIC + t]), bool(self._tgr[TGR_TRG0_TGL + t]))
+        c.compare_enable(self._tgr[TGR_TRG_EN])
+
+    def APS_set_trigger_param(self, Board_ID, Param_No, Param_Val) -> int:
+        """``APS_set_trigger_param(Board_ID, Param_No, Param_Val)``: TGR_LCMPx_SRC / TGR_TCMPx_SRC (axis n = its
+        encoder, TGR_SRC_COMMAND + n its command position; V76), TGR_TCMPx_DIR (0 negative, 1 positive, 2 both),
+        TGR_TRG_EN (bit x: TRGx on), TGR_TRGx_SRC (TRG_SRC_* bits, V77), TGR_TRGx_PWD (x 100 ns, 1..10^7),
+        TGR_TRGx_LOGIC (0 active high, 1 active low), TGR_TRGx_TGL (0 pulse, 1 level toggle). The timer (TIMR_*)
+        is not simulated (ERR_FunctionNotAvailable). PCI-8254 (4 axes): TRG0-1 only."""
+        if not self._board(Board_ID):
+            return self._bad()
+        p, v = _num(Param_No), _num(Param_Val)
+        if p in (TIMR_ITV, TIMR_DIR, TIMR_RING_EN, TIMR_EN):
+            return ERR_FunctionNotAvailable
+        if p not in self._tgr or v is None or v != int(v):
+            return ERR_ParametersInvalid
+        p, v = int(p), int(v)
+        n_trg = 2 if len(self._card) == 4 else 4
+        if p <= TGR_TCMP1_SRC:
+            ok = (v & ~TGR_SRC_COMMAND) < len(self._card) and 0 <= v
+        elif p in (TGR_TCMP0_DIR, TGR_TCMP1_DIR):
+            ok = v in (0, 1, 2)
+        elif p == TGR_TRG_EN:
+            ok = 0 <= v < (1 << n_trg)
+        elif p >= TGR_TRG0_SRC:
+            t = (p - TGR_TRG0_SRC) % 4
+            kind = (p - TGR_TRG0_SRC) // 4
+            ok = t < n_trg and ((0 <= v <= 31) if kind == 0 else (1 <= v <= 10**7) if kind == 1 else v in (0, 1))
+        else:
+            ok = False
+        if not ok:
+            return ERR_ParametersInvalid
+        old = self._tgr[p]
+        self._tgr[p] = v
+        try:
+            self._apply_trigger()
+        except ValueError:
+            self._tgr[p] = old
+            return ERR_ParametersInvalid
+        return ERR_NoError
+
+    def APS_get_trigger_param(self, Board_ID, Param_No):
+        """``APS_get_trigger_param(Board_ID, Param_No, &Param_Val)`` -> ``(rtn, Param_Val)``."""
+        if not self._board(Board_ID):
+            return self._bad(), 0
+        p = _num(Param_No)
+        return (ERR_NoError, self._tgr[p]) if p in self._tgr else (ERR_ParametersInvalid, 0)
+
+    def APS_set_trigger_linear(self, Board_ID, LCmpCh, StartPoint, RepeatTimes, Interval) -> int:
+        """``APS_set_trigger_linear(Board_ID, LCmpCh, StartPoint, RepeatTimes, Interval)``: LCMP0/1 compares the
+        points StartPoint + i*Interval, i = 0..RepeatTimes-1, in the direction of Interval's sign (L3393)."""
+        if not self._board(Board_ID):
+            return self._bad()
+        ch = _num(LCmpCh)
+        if ch not in (0, 1):
+            return ERR_ParametersInvalid
+        return self._do(self._card.compare_set_linear, int(ch), _num(StartPoint), _num(RepeatTimes), _num(Interval))
+
+    def APS_set_trigger_table(self, Board_ID, TCmpCh, DataArr, ArraySize) -> int:
+        """``APS_set_trigger_table(Board_ID, TCmpCh, I32 *DataArr, ArraySize)``: TCMP0/1 compares the first
+        ArraySize points in order, in the TGR_TCMPx_DIR direction (L3397-3430; the library streams any length)."""
+        if not self._board(Board_ID):
+            return self._bad()
+        ch, n = _num(TCmpCh), _num(ArraySize)
+        try:
+            pts = [float(x) for x in DataArr]
+        except (TypeError, ValueError):
+            return ERR_ParametersInvalid
+        if ch not in (0, 1) or n is None or n != int(n) or not 0 <= n <= len(pts):
+            return ERR_ParametersInvalid
+        return self._do(self._card.compare_set_table, int(ch), pts[:int(n)])
+
+    def APS_set_trigger_manual(self, Board_ID, TrgCh) -> int:
+        """``APS_set_trigger_manual(Board_ID, TrgCh)``: one pulse on TRGx now, if its source set has
+        TRG_SRC_MANUAL and it is enabled (L3380-3385)."""
+        if not self._board(Board_ID):
+            return self._bad()
+        if not self._trg_count_ok(TrgCh):
+            return ERR_ParametersInvalid
+        return self._do(self._card.compare_manual, int(_num(TrgCh)))
+
+    def APS_get_trigger_count(self, Board_ID, TrgCh):
+        """``APS_get_trigger_count(Board_ID, TrgCh, &TrgCnt)`` -> ``(rtn, pulses TRGx emitted)``."""
+        if not self._board(Board_ID):
+            return self._bad(), 0
+        if not self._trg_count_ok(TrgCh):
+            return ERR_ParametersInvalid, 0
+        return ERR_NoError, int(self._card.compare_count(int(_num(TrgCh))))
+
+    def APS_reset_trigger_count(self, Board_ID, TrgCh) -> int:
+        """``APS_reset_trigger_count(Board_ID, TrgCh)``: TRGx's counter to 0."""
+        if not self._board(Board_ID):
+            return self._bad()
+        if not self._trg_count_ok(TrgCh):
+            return ERR_ParametersInvalid
+        return self._do(self._card.compare_reset_count, int(_num(TrgCh)))
+
+    def APS_get_trigger_linear_cmp(self, Board_ID, LCmpCh):
+        """``APS_get_trigger_linear_cmp(Board_ID, LCmpCh, &CmpVal)`` -> ``(rtn, next compare point)`` (the last
+        point once done)."""
+        return self._next_cmp(Board_ID, LCmpCh, 0)
+
+    def APS_get_trigger_table_cmp(self, Board_ID, TCmpCh):
+        """``APS_get_trigger_table_cmp(Board_ID, TCmpCh, &CmpVal)`` -> ``(rtn, next compare point)``."""
+        return self._next_cmp(Board_ID, TCmpCh, 2)
+
+    def _next_cmp(self, Board_ID, ch, base):
+        if not self._board(Board_ID):
+            return self._bad(), 0
+        if _num(ch) not in (0, 1):
+            return ERR_ParametersInvalid, 0
+        v = self._card.compare_next_point(base + int(_num(ch)))
+        return ERR_NoError, (0 if math.isnan(v) else int(v))
+
+    # -- host interrupts (L4090-4330) ---------------------------------------------------------------------------
+    def _int_no(self, item: int, factor: int) -> int:
+        return item * 32 + factor
+
+    def _rewatch(self):
+        c = self._card
+        for sid in self._int_subs:
+            c.remove_event(sid)
+        self._int_subs = []
+        if not self._int_factors:
+            return
+        msts, mio = [0] * len(c), [0] * len(c)
+        system = 0
+        for no in self._int_factors:
+            item, f = divmod(no, 32)
+            if item == 8:
+                system |= 1 << f if f <= 4 else 0
+            else:
+                word, bit = _AXIS_FACTORS[f]
+                (msts if word == "msts" else mio)[item] |= 1 << bit
+        handler = self._on_int
+        ids = [c.on_event(handler, axis=a, msts=msts[a], mio=mio[a]) for a in range(len(c)) if msts[a] or mio[a]]
+        if system:
+            ids.append(c.on_event(handler, system=system))
+        self._int_subs = ids
+
+    def _on_int(self, _card, fired):
+        if not self._int_main:
+            return
+        for no in self._int_factors:
+            item, f = divmod(no, 32)
+            if item == 8 and fired.word == "system" and fired.bits >> f & 1:
+                self._int_signaled[no] = True
+            elif item == fired.axis and item < 8:
+                word, bit = _AXIS_FACTORS[f]
+                if word == fired.word and fired.bits >> bit & 1:
+                    self._int_signaled[no] = True
+
+    def APS_int_enable(self, Board_ID, Enable) -> int:
+        """``APS_int_enable(Board_ID, Enable)``: the main interrupt switch (1 on, 0 off); no event signals while
+        off."""
+        if not self._board(Board_ID) or Enable not in (0, 1):
+            return self._bad()
+        self._int_main = bool(Enable)
+        return ERR_NoError
+
+    def APS_set_int_factor(self, Board_ID, Item_No, Factor_No, Enable) -> int:
+        """``I32 APS_set_int_factor(Board_ID, Item_No, Factor_No, Enable)`` -> the interrupt number (item x 32 +
+        factor bit, V82) or a negative code. Items 0..3/7 axes (IALM..ISMEL, IEZ = the index mark passing; IPRED,
+        IPOSTD not simulated:
+        ERR_FunctionNotAvailable), 8 system (IEMG, ILCF0/1, IFCF0/1; IMOV/IHOV never fire); 9/10 (DI edges): the
+        card has no digital inputs. Factor_No is the bit number; a one-bit mask such as the examples' (1 << 12)
+        is read as its bit (L4271-4274, V82)."""
+        if not self._board(Board_ID):
+            return self._bad()
+        item, f, en = _num(Item_No), _num(Factor_No), _num(Enable)
+        if None in (item, f, en) or item != int(item) or f != int(f) or en not in (0, 1):
+            return ERR_ParametersInvalid
+        item, f = int(item), int(f)
+        if f > 31 and f & (f - 1) == 0:
+            f = f.bit_length() - 1
+        if not 0 <= f <= 31 or not 0 <= item <= 10:
+            return ERR_ParametersInvalid
+        if item in (9, 10):
+            return ERR_FunctionNotAvailable
+        if item < 8:
+            if item >= len(self._card):
+                return ERR_ParametersInvalid
+            if f not in _AXIS_FACTORS:
+                return ERR_FunctionNotAvailable if f in (IPRED, IPOSTD) else ERR_ParametersInvalid
+        elif f > IHOV:
+            return ERR_ParametersInvalid
+        no = self._int_no(item, f)
+        if en:
+            self._int_factors.add(no)
+            self._int_signaled.setdefault(no, False)
+        else:
+            self._int_factors.discard(no)
+        self._rewatch()
+        return no
+
+    def APS_get_int_factor(self, Board_ID, Item_No, Factor_No):
+        """``APS_get_int_factor(Board_ID, Item_No, Factor_No, &Enable)`` -> ``(rtn, Enable)``."""
+        if not self._board(Board_ID):
+            return self._bad(), 0
+        item, f = _num(Item_No), _num(Factor_No)
+        if None in (item, f) or item != int(item) or f != int(f):
+            return ERR_ParametersInvalid, 0
+        f = int(f)
+        if f > 31 and f & (f - 1) == 0:
+            f = f.bit_length() - 1
+        return ERR_NoError, int(self._int_no(int(item), f) in self._int_factors)
+
+    def APS_int_no_to_handle(self, Int_No):
+        """``HANDLE APS_int_no_to_handle(Int_No)``: the simulation's handle is the interrupt number itself."""
+        return int(Int_No)
+
+    def _int_check(self, Int_No):
+        v = _num(Int_No)
+        if self._card is None:
+            return ERR_DeviceNotInitial
+        if v is None or v != int(v) or int(v) not in self._int_signaled:
+            return ERR_ParametersInvalid
+        return None
+
+    def APS_wait_single_int(self, Int_No, Time_Out) -> int:
+        """``APS_wait_single_int(Int_No, Time_Out)``: runs the card until the interrupt is signaled (at once if it
+        already is: reset it with APS_reset_int) or ``Time_Out`` simulated ms passed (ERR_TimeOut; -1: at most
+        one simulated hour, V83). ERR_InterruptNotEnable with the main switch or the factor off."""
+        return self.APS_wait_multiple_int(1, [Int_No], 1, Time_Out)
+
+    def APS_wait_multiple_int(self, Int_Count, Int_No_Array, Wait_All, Time_Out) -> int:
+        """``APS_wait_multiple_int(Int_Count, *Int_No_Array, Wait_All, Time_Out)``: as APS_wait_single_int for
+        the first Int_Count numbers, until all (Wait_All 1) or any (0) are signaled."""
+        n, tmo = _num(Int_Count), _num(Time_Out)
+        try:
+            nos = list(Int_No_Array)[: int(n)] if n is not None and n == int(n) and n >= 1 else None
+        except TypeError:
+            nos = None
+        if self._card is None:
+            return ERR_DeviceNotInitial
+        if not nos or len(nos) != int(n) or Wait_All not in (0, 1) or tmo is None or tmo != int(tmo) or \
+                (tmo < 0 and tmo != -1):
+            return ERR_ParametersInvalid
+        for no in nos:
+            bad = self._int_check(no)
+            if bad is not None:
+                return bad
+        nos = [int(no) for no in nos]
+        if not self._int_main or any(no not in self._int_factors for no in nos):
+            return ERR_InterruptNotEnable
+        agg = all if Wait_All else any
+        ts = self._card.servo_period_s
+        limit = int(round((_WAIT_FOREVER_S if tmo == -1 else tmo * 1e-3) / ts))
+        self._card.run_until_fired(lambda: agg(self._int_signaled[no] for no in nos), limit)
+        return ERR_NoError if agg(self._int_signaled[no] for no in nos) else ERR_TimeOut
+
+    def APS_reset_int(self, Int_No) -> int:
+        """``APS_reset_int(Int_No)``: back to non-signaled (L4270)."""
+        bad = self._int_check(Int_No)
+        if bad is not None:
+            return bad
+        self._int_signaled[int(Int_No)] = False
+        return ERR_NoError
+
+    def APS_set_int(self, Int_No) -> int:
+        """``APS_set_int(Int_No)``: signals the interrupt by software."""
+        bad = self._int_check(Int_No)
+        if bad is not None:
+            return bad
+        self._int_signaled[int(Int_No)] = True
+        return ERR_NoError
+
+
+for _name, _fn in list(vars(_ApsScope).items()):  # the block's functions are ApsController methods
+    if callable(_fn) and not _name.startswith("__"):
+        setattr(ApsController, _name, _fn)
 
 
 _default = ApsController()

@@ -31,6 +31,8 @@ import threading
 from .. import _core
 from .._core import CardCommandRefused, MotionCommandRefused
 from ..card import Card
+from . import _ge_watch
+from ._ge_watch import TAxis, TWatchBuffer  # noqa: F401 (the manual's watch structures)
 from ._controller import DialectController, export_functions
 
 # Return codes (Table 2-1 L263-270, Table 2-2 L272-283).
@@ -770,6 +772,27 @@ class GeController(DialectController):
         """(rtn, captured actual position, pulse); holds until the next capture (L4243-4251)."""
         return self._read(axis, lambda a: int(round(self._card.capture_value(a))))
 
+    # -- 6.6 data watch (dialects/_ge_watch.py on the card's sampler; L2464-2884, decisions V73-V75) --------------
+    def GT_SetWatch(self, config, size) -> int:
+        """``GT_SetWatch(config[AXIS_NUM], size)``: config[k] the watched signals of axis k+1 (bit 0 profile
+        position, 1 actual position, 2 profile velocity, 3 actual velocity, 6 control voltage), ``size`` samples
+        per block; 7 when the block is too large for the watch memory or a reserved bit is set (L2786-2793)."""
+        return _ge_watch.GT_SetWatch(self, config, size)
+
+    def GT_StartWatch(self, n=0) -> int:
+        """``GT_StartWatch(n)``: one sample every n+1 control periods (0: every period, L2558-2559, L2880)."""
+        return _ge_watch.GT_StartWatch(self, n)
+
+    def GT_GetWatch(self, buffer):
+        """``GT_GetWatch(&buffer, &available)`` -> ``(rtn, available)``: 1 when a full block of ``size`` samples
+        was copied into the arrays attached to ``buffer`` (:class:`TWatchBuffer`), oldest block first
+        (L2836-2870)."""
+        return _ge_watch.GT_GetWatch(self, buffer)
+
+    def GT_StopWatch(self) -> int:
+        """``GT_StopWatch()``: stops the watch."""
+        return _ge_watch.GT_StopWatch(self)
+
     # -- 7.8 digital I/O --------------------------------------------------------------------------------------
     def GT_ExInpt(self):
         """(rtn, EXI0..EXI15 levels, bit n = EXIn) (L4074); the simulated levels of ``set_inputs``."""
@@ -854,4 +877,5 @@ def delay(ms: float):
 
 
 __all__ = ["GeController", "GE_FUNCTIONS", "RTN_COMMAND_ERROR", "RTN_COMM_ERROR", "RTN_PARAMETER_ERROR",
-           "RTN_REENTERED", "RTN_SUCCESS", "card", "controller", "delay", "run", "wait_until", *GE_FUNCTIONS]
+           "RTN_REENTERED", "RTN_SUCCESS", "TAxis", "TWatchBuffer", "card", "controller", "delay", "run", "wait_until",
+           *GE_FUNCTIONS]

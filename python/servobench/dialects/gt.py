@@ -130,6 +130,8 @@ class GtController(DialectController):
         auto-update/auto-stop off, closed loop, limits on, drives off, events cleared."""
         self._lmt_sns = 0
         self._index = [0] * 4
+        if self._card is not None:
+            self._intr_reset()  # all interrupts masked after reset (L2223, L4765-4779; issue 10.3)
         return self._do(lambda: self._card.reset())
 
     def GT_HardRst(self) -> None:
@@ -817,6 +819,236 @@ class GtController(DialectController):
             moving=moving, buffer_closed=not st["open"], last_command_error=st["error"],
             segment_complete=not path.busy, auto_stop_on=st["au_stp"], immediate_mode=not st["buffer"],
             fault_stopped=info["fault_stopped"], buffer_empty=empty, buffer_started=st["started"])
+# -- probe capture and interrupts (issue 10 point 3; gt.md §5, §7, §8.9; decisions V71-V85) ---------------------
+# Interrupt mask bits (GT_SetIntrMsk / GT_RstIntr, L4534-4555, L4763-4785) in the status-register layout (the
+# tables print bit 6 = positive limit, bit 5 = negative; the status register, Table 8-1 and GT_AxisI's sample
+# (0x20 = positive limit) have bit 5 = positive: V84) -> the card events that set them.
+_INTR_EVENTS = {0: ("motion_complete",), 1: ("drive_alarm",), 2: ("breakpoint",), 3: ("captured",),
+                4: ("following_error",), 5: ("pos_limit", "soft_pos_limit"), 6: ("neg_limit", "soft_neg_limit")}
+_INTR_DISABLED_AXIS = 0x12  # on a disabled axis only motion error (bit 4) and drive alarm (bit 1) interrupt (L2257)
+_INTR_REFIRE_LIMIT = 16     # re-raises at one instant before the request is left pending (an interrupt storm)
+
+
+class _GtInterrupts:
+    """GT_CaptProb and the interrupt commands of :class:`GtController` (mixed in)."""
+
+    def _intr(self) -> dict:
+        st = self.__dict__.get("_intr_state")
+        if st is None or st["card"] is not self._card:
+            st = {"card": self._card, "mode": "event", "msk": [0] * 4, "tm": 0, "isr": None, "pending": False,
+                  "axis": 0, "subs": [], "in_isr": False, "recheck": False, "storm": (-1, 0)}
+            self.__dict__["_intr_state"] = st
+        return st
+
+    def _intr_reset(self):
+        st = self._intr()
+        for sid in st["subs"]:
+            self._card.remove_event(sid)
+        isr = st["isr"]                     # the host's hooked routine stays (it is the host's, not the card's)
+        self.__dict__.pop("_intr_state", None)
+        self._intr()["isr"] = isr
+
+    def _intr_sync(self):
+        st, c = self._intr(), self._card
+        for sid in st["subs"]:
+            c.remove_event(sid)
+        st["subs"] = []
+        if st["mode"] == "timer":
+            if st["tm"] > 0:
+                st["subs"].append(c.on_event(self._intr_timer, timer_ticks=st["tm"]))
+            return
+        for k in range(4):
+            names = [e for b, ev in _INTR_EVENTS.items() if st["msk"][k] >> b & 1 for e in ev]
+            if names:
+                st["subs"].append(c.on_event(lambda _c, _f: self._intr_raise(), axis=k, events=names))
+
+    def _intr_level(self):
+        """The lowest axis whose enabled status bits 0-6 are set (L2229), or None."""
+        st, c = self._intr(), self._card
+        for k in range(4):
+            bits = _core.gt_axis_status(c._card, k) & st["msk"][k] & 0x7F
+            if not c.servo_on(k):
+                bits &= _INTR_DISABLED_AXIS
+            if bits:
+                return k
+        return None
+
+    def _intr_raise(self):
+        st = self._intr()
+        if st["mode"] != "event" or st["pending"] or st["in_isr"]:
+            return
+        while True:
+            k = self._intr_level()
+            if k is None:
+                return
+            tick, count = st["storm"]
+            count = count + 1 if tick == self._card.tick else 1
+            st["storm"] = (self._card.tick, count)
+            st["pending"], st["axis"] = True, k
+            if st["isr"] is None or count > _INTR_REFIRE_LIMIT:
+                return
+            st["in_isr"] = True
+            try:
+                st["isr"]()
+            finally:
+                st["in_isr"] = False
+            if not (st["recheck"] and not st["pending"]):
+                st["recheck"] = False
+                return
+            st["recheck"] = False
+
+    def _intr_timer(self, _card, _fired):
+        st = self._intr()
+        st["pending"] = True
+        if st["isr"] is not None and not st["in_isr"]:
+            st["in_isr"] = True
+            try:
+                st["isr"]()
+            finally:
+                st["in_isr"] = False
+
+    def GT_CaptProb(self) -> int:
+        """Arms the probe capture (EXI0) on every axis whose capture register is free (not armed for home/index,
+        captured flag clear; V85): the probe latches each one's actual position and sets its status bit 3
+        (L3008-3049). Returns 1 (command status bit 8) when no axis could be armed. The probe input is the card's:
+        ``card.set_probe_time(t_s)`` or ``card.set_probe_position(axis, pulse)``."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        c = self._card
+        free = [k for k in range(4) if c.capture_armed(k) == "none" and not c.events(k) & 0x8]
+        if not free:
+            c.record_fault(self._axis, "home_capture_armed")
+            return RTN_COMMAND_ERROR
+        for k in free:
+            c.arm_capture(k, "probe")
+        return RTN_SUCCESS
+
+    def GT_HookIsr(self, isr):
+        """Hooks the host's interrupt service routine (a Python callable taking no argument; PCI DOS form,
+        L4170-4186) and returns the previous one (None at first). The card calls it from :meth:`run` at the tick
+        the interrupt is requested; inside it, GT_AxisI / GT_GetIntr / GT_RstIntr serve the request."""
+        if isr is not None and not callable(isr):
+            raise TypeError("GT_HookIsr: isr must be callable (or None)")
+        st = self._intr()
+        old, st["isr"] = st["isr"], isr
+        return old
+
+    def GT_UnhookIsr(self, old_isr) -> int:
+        """Restores the ISR ``old_isr`` (L5164-5182)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        self._intr()["isr"] = old_isr
+        return RTN_SUCCESS
+
+    def GT_ClearInt(self, CardNo=0) -> int:
+        """Ends the interrupt service on card ``CardNo`` (0; L3089-3122): a timer request is served."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if CardNo != 0:
+            return RTN_PARAMETER_ERROR
+        st = self._intr()
+        if st["mode"] == "timer":
+            st["pending"] = False
+        return RTN_SUCCESS
+
+    def GT_EvntIntr(self) -> int:
+        """Event interrupts (the default): axis status bits 0-6 enabled by GT_SetIntrMsk request an interrupt
+        (L2219-2223, L3361-3373)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        st = self._intr()
+        st["mode"], st["pending"] = "event", False
+        self._intr_sync()
+        return RTN_SUCCESS
+
+    def GT_TmrIntr(self) -> int:
+        """Timer interrupts every GT_SetIntrTm x ST (L5054-5074); event interrupts off."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        st = self._intr()
+        st["mode"], st["pending"] = "timer", False
+        self._intr_sync()
+        return RTN_SUCCESS
+
+    def GT_SetIntrTm(self, Timer) -> int:
+        """Timer-interrupt period in servo periods, 0..32767 (10 x 200 us = 2 ms, L4787-4801); 0: no timer
+        interrupt (V84)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if not _int_in(Timer, 0, 32767):
+            return self._param_error("illegal_control_param")
+        self._intr()["tm"] = int(Timer)
+        self._intr_sync()
+        return RTN_SUCCESS
+
+    def GT_GetIntrTm(self):
+        """(rtn, timer-interrupt period in servo periods) (L3815-3829)."""
+        return self._get(lambda: self._intr()["tm"])
+
+    def GT_SetIntrMsk(self, Mask) -> int:
+        """Interrupt mask of the current axis: bit k = status bit k may interrupt, bits 0-6 (bits 7-15 unused);
+        all masked after reset (L4763-4785). A status bit already set interrupts at once."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if not _int_in(Mask, 0, 0xFFFF):
+            return self._param_error("illegal_control_param")
+        self._intr()["msk"][self._axis] = int(Mask) & 0x7F
+        self._intr_sync()
+        self._intr_raise()
+        return RTN_SUCCESS
+
+    def GT_GetIntrMsk(self):
+        """(rtn, interrupt mask of the current axis) (L3801-3813)."""
+        return self._get(lambda: self._intr()["msk"][self._axis])
+
+    def GT_GetIntr(self):
+        """(rtn, status register of the interrupting axis; of the current axis when no interrupt is pending)
+        (L3787-3799); a timer interrupt reads 0."""
+        def status():
+            st = self._intr()
+            if st["mode"] == "timer":
+                return 0
+            k = st["axis"] if st["pending"] else self._axis
+            return _core.gt_axis_status(self._card._card, k)
+
+        return self._get(status)
+
+    def GT_AxisI(self) -> int:
+        """Makes the interrupting axis current (the lowest number first, L2229); only with an interrupt pending,
+        else command status bit 4 (L2850-2882)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        st = self._intr()
+        if not st["pending"] or st["mode"] != "event":
+            self._card.record_fault(self._axis, "no_interrupt_pending")
+            return RTN_COMMAND_ERROR
+        self._axis = st["axis"]
+        return RTN_SUCCESS
+
+    def GT_RstIntr(self, Mask) -> int:
+        """Clears the current axis's status bits 0-7 whose Mask bit is 0 (1 keeps) and ends the request; if an
+        enabled condition persists (a limit still pressed) the card requests again at once (Table 8-1,
+        L2235-2243; L4534-4555). Only with an interrupt pending, else command status bit 4."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if not _int_in(Mask, 0, 0xFFFF):
+            return self._param_error("illegal_control_param")
+        st = self._intr()
+        if not st["pending"] or st["mode"] != "event":
+            self._card.record_fault(self._axis, "no_interrupt_pending")
+            return RTN_COMMAND_ERROR
+        self._card.clear_events(self._axis, _core.gt_events_to_clear(int(Mask) & 0xFF))
+        st["pending"] = False
+        if st["in_isr"]:
+            st["recheck"] = True
+        else:
+            self._intr_raise()
+        return RTN_SUCCESS
+
+
+for _name, _fn in list(vars(_GtInterrupts).items()):  # the block's functions are GtController methods
+    if callable(_fn) and not _name.startswith("__"):
+        setattr(GtController, _name, _fn)
 
 
 _default = GtController()

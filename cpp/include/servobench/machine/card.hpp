@@ -31,6 +31,8 @@
 
 namespace servobench::machine {
 
+class CardScope;  // machine/card_scope.hpp
+
 // The card's clocks, in servo ticks.
 struct CardCycles {
   double motion_cycle_ticks = 1;  // profile/commit cycle, 1..1000 (GT: 1, the profile is per ST; ADLINK: 4)
@@ -85,6 +87,7 @@ enum class CommandFault : int {
   NotInCommandSet,         // a command the card variant does not have (GE SX cmd bit 14)
   NotSimulated,            // a command the simulator does not model (no vendor bit; documented per dialect)
   CrdStateError,           // [modes] a coordinated-motion command in the wrong state (GT cmd bit 12, L1800)
+  NoInterruptPending,      // an interrupt command (GT_AxisI, GT_RstIntr) with no interrupt pending (GT cmd bit 4)
 };
 const char* to_string(CommandFault fault);
 
@@ -321,8 +324,7 @@ class Card {
   // GE GT_CaptProb: every axis's capture armed on the probe input EXI0, one shot (GE L3828-3862); refused as a
   // whole (HomeCaptureArmed) if an axis is armed or still flags a capture.
   void arm_probe();
-  // The simulated probe edge (EXI0) at time t_s (s, the card clock: tick * Ts); NaN: never.
-  void set_probe_time(double t_s);
+  // (the probe edge itself: set_probe_time below, the scope block)
   void set_encoder_fault(std::size_t i, bool on) { at(i).encoder_fault = on; }
   // GE GT_AxisOn's synchronisation (L3716-3720): target = profile = the actual position (whole pulses), at once;
   // at rest only (else ChangeInMotion).
@@ -334,6 +336,18 @@ class Card {
   // -- running ----------------------------------------------------------------------------------------------
   // Runs n ticks. traces: empty, or one per axis whose non-null buffers hold n doubles each.
   void run(std::size_t n, const std::vector<CardTrace>& traces = {});
+
+  // -- scope, events, compare, probe (issue 10 point 3; machine/card_scope.hpp, docs/card.md "Scope") ------------
+  // The sampler, the position compare, the event watch and the probe-at-a-position, created on first use; a card
+  // that never asks for it runs as before.
+  CardScope& scope();
+  bool has_scope() const { return scope_ != nullptr; }
+  // Runs at most n ticks and stops after the tick in which a watched event fired (scope().fired() lists them);
+  // returns the ticks run. traces: as for run(), buffers of n doubles.
+  std::size_t run_until_event(std::size_t n, const std::vector<CardTrace>& traces = {});
+  // The probe input EXI0 at time t_s on the card clock (s, tick k spans [k Ts, (k+1) Ts); NaN: never): every
+  // axis armed for the probe latches its actual position at that instant (GT_CaptProb, GT L3008-3049).
+  void set_probe_time(double t_s);
 
  private:
   void init(const CardCycles& cycles);
@@ -372,6 +386,9 @@ class Card {
   long long tick_ = 0;
   bool estop_ = false;
   CommandFault last_fault_ = CommandFault::None;
+  // scope, events, compare, probe (issue 10 point 3)
+  std::unique_ptr<CardScope> scope_;
+  void scope_tick();
 };
 
 }  // namespace servobench::machine

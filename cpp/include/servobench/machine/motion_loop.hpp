@@ -91,6 +91,8 @@ class MotionLoop {
   double offset() const { return offset_; }
   // Actual position in the card's coordinates (encoder count now minus the offset), pulse.
   double actual_pos() const { return inputs_.actual_pos; }
+  // The last tick's sensed inputs and edges (card coordinates): home, limits, index (the card's IEZ interrupt).
+  const motion::HomeInputs& inputs() const { return inputs_; }
   bool breakpoint_flag() const { return brk_flag_; }
   // GT_ClrSts: clears the breakpoint (bit 2) and capture (bit 3) flags.
   void clear_status();

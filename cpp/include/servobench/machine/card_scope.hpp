@@ -1,0 +1,107 @@
+// CardScope: what the card does for the host besides motion (issue 10 point 3): the sampler (machine/sampler.hpp),
+// the position compare with its trigger outputs (machine/position_compare.hpp), the event watch that ends a
+// Card::run_until_event at the tick an enabled event fires (interrupts and Python callbacks), and the probe
+// input EXI0 at a position. The Card creates it on first use and calls it once per tick after the axes (so a
+// card that never uses it runs exactly as before, with one null-pointer test per tick).
+//
+// Event watch: per axis, masks over three words, each firing on a bit turning on (0 -> 1) between two ticks:
+//   events  the latched CardEvent bits (GT status bits 0-7 order; GT event interrupts),
+//   msts    the ADLINK motion status word (ICSTP, IVM, IACC, IDEC, IMDN, IASTP: MSTS bits 0-3, 5, 16),
+//   mio     the ADLINK motion I/O word (IALM, IPEL, IMEL, IORG, IINP, IEMG, ISPEL, ISMEL: MIO bits 0-4, 6, 11, 12);
+// card-wide the system word (ADLINK item 8: bit 0 EMG, 1/2 linear compare 0/1 ended, 3/4 table compare 0/1
+// ended) and a timer (every N ticks: GT_TmrIntr). The vendor layouts of the interrupt factors are the dialects'.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "servobench/machine/motion_loop.hpp"
+#include "servobench/machine/position_compare.hpp"
+#include "servobench/machine/sampler.hpp"
+#include "servobench/machine/trace.hpp"
+
+namespace servobench::machine {
+
+class Card;
+
+enum class WatchWord : int { Events = 0, Msts = 1, Mio = 2, System = 3, Timer = 4 };
+
+// System word bits (ADLINK interrupt item 8, L4160-4180).
+constexpr std::uint32_t kSysEmg = 1u << 0, kSysLcf0 = 1u << 1, kSysLcf1 = 1u << 2, kSysFcf0 = 1u << 3,
+                        kSysFcf1 = 1u << 4;
+
+// An event that fired: in the tick `tick` (counted from 0; the card's tick() is tick + 1 after it), on `axis`
+// (-1: card-wide), in `word`, the bits that turned on (timer: 1).
+struct FiredEvent {
+  long long tick = 0;
+  int axis = -1;
+  WatchWord word = WatchWord::Events;
+  std::uint32_t bits = 0;
+};
+
+class CardScope {
+ public:
+  explicit CardScope(Card& card);
+
+  Sampler& sampler() { return sampler_; }
+  const Sampler& sampler() const { return sampler_; }
+  // Starts the sampler now (the next tick run is its first candidate sample).
+  void start_sampler(const SamplerConfig& config);
+  PositionCompare& compare() { return compare_; }
+  const PositionCompare& compare() const { return compare_; }
+
+  // -- event watch ------------------------------------------------------------------------------------------
+  void set_watch(std::size_t axis, std::uint32_t events, std::uint32_t msts, std::uint32_t mio);
+  void set_system_watch(std::uint32_t bits) { sys_mask_ = bits & 0x1Fu; }
+  // A timer event every `ticks` servo ticks from now (0 = off), 0..1e9.
+  void set_timer(double ticks);
+  double timer_ticks() const { return static_cast<double>(timer_period_); }
+  bool watching() const;
+  const std::vector<FiredEvent>& fired() const { return fired_; }
+  void clear_fired() { fired_.clear(); }
+
+  // -- probe input EXI0 at a position: fires when `axis`'s actual position passes `pos` (either direction) --
+  void set_probe_position(double axis, double pos);
+  void clear_probe_position() { probe_axis_ = -1; }
+  int probe_axis() const { return probe_axis_; }
+  double probe_pos() const { return probe_pos_; }
+
+  // -- hooks (Card::tick_once) --------------------------------------------------------------------------------
+  bool needs_signals(std::size_t axis) const { return sampler_.active() && any_need_[axis]; }
+  // Points the trace fields the sampler needs at this tick's storage (the caller's buffer where it records).
+  void bind_signals(std::size_t axis, Trace& tr, LoopTrace& lt);
+  // The probe at a position (before the events are read): latches the axes armed for the probe. Returns the
+  // axes whose capture latched (bit i).
+  std::uint32_t probe(long long tick);
+  // After every axis ran tick `tick`: compare, event watch, sampler.
+  void after_tick(long long tick);
+  // Re-reads the words the watch compares against (after the host changed the state between runs).
+  void resync();
+
+ private:
+  double value(std::size_t axis, SampleSignal s) const;
+  void refresh_need();
+
+  Card& card_;
+  std::size_t n_;
+  Sampler sampler_;
+  PositionCompare compare_;
+  // per-axis scratch and read pointers for the sampled trace signals
+  std::vector<std::array<double, kLoopSignalEnd>> scratch_;
+  std::vector<std::array<const double*, kLoopSignalEnd>> ptr_;
+  std::vector<bool> any_need_;
+  std::vector<double> prev_actual_, prev_command_, prev_error_;
+  std::vector<std::uint32_t> prev_events_, prev_msts_, prev_mio_;
+  std::vector<std::uint32_t> w_events_, w_msts_, w_mio_;
+  std::uint32_t sys_mask_ = 0;
+  bool prev_estop_ = false;
+  long long timer_period_ = 0, timer_start_ = 0;
+  std::vector<FiredEvent> fired_;
+  int probe_axis_ = -1;
+  double probe_pos_ = 0.0;
+  std::vector<double> values_;
+};
+
+}  // namespace servobench::machine
