@@ -293,3 +293,28 @@ def test_a_slave_limit_releases_the_gear_and_the_master_keeps_moving():
     assert bit(m, aps.MTS_MDN) and not bit(m, aps.MTS_GER)
     assert c.card.profile_vel(0) / TS == pytest.approx(10000)  # the master keeps its speed
     assert c.APS_relative_move(1, -1000, 10000) == 0  # the released slave moves alone, away from the limit
+
+
+def test_v_all_and_linear_move_forms():
+    # L2855-2870: _v overrides VM, _all gives every speed (the PRA values unchanged); the I32 linear moves.
+    c = controller(vm=10000)
+    assert c.APS_line_v(2, [0, 1], 0, [6000, 8000], 0.0, 5000) == 0
+    c.run(4000)  # 1 s: cruise at 5000 pulse/s along (0.6, 0.8)
+    assert c.card.profile_vel(1) / TS == pytest.approx(4000, rel=1e-6)
+    run_until_done(c, [0, 1])
+    assert c.APS_line_all(3, [2, 0, 1], 1, [0, -6000, -8000], 0.0, 0, 20000, 0, 4e5, 4e5, 0.5) == 0
+    c.run(2000)  # 0.5 s: cruise at 20000 pulse/s, the S-curve ramps 0.075 s
+    assert c.card.profile_vel(0) / TS == pytest.approx(-12000, rel=1e-6)
+    assert c.APS_get_axis_param_f(2, aps.PRA_VM) == (0, 10000)
+    run_until_done(c, [0, 1, 2])
+    assert c.APS_absolute_linear_move(2, [0, 1], [300, 400], 1000) == 0
+    run_until_done(c, [0, 1])
+    assert c.APS_relative_linear_move(2, [0, 1], [-300, -400], 1000) == 0
+    run_until_done(c, [0, 1])
+    assert [c.APS_get_command(i)[1] for i in (0, 1)] == [0, 0]
+    assert c.APS_absolute_linear_move(2, [0, 1], [300.5, 400], 1000) == aps.ERR_ParametersInvalid  # I32
+    # spiral by centre + end (L3037-3063): the end is exact
+    assert c.APS_sprial_ce([0, 1, 2], 0, [1000, 0, 0], [0, 0, 1], [2000, 0, 300], 0, 0.0) == 0
+    _, _, err = run_until_done(c, [0, 1, 2])
+    assert [c.APS_get_command(i)[1] for i in (0, 1, 2)] == [2000, 0, 300]
+    assert np.abs(err).max() < FE_BOUND
