@@ -22,6 +22,7 @@ using machine::Card;
 
 void bind_card_ge(py::module_& m);  // bind_card_ge.cpp
 void bind_card_modes(py::class_<Card>& cls, py::module_& m);  // bind_card_modes.cpp
+void bind_card_aps(py::class_<Card>& cls, py::module_& m);    // bind_card_aps.cpp: ADLINK interpolation group, gear ramp
 
 namespace {
 
@@ -316,6 +317,7 @@ void bind_card(py::module_& m) {
       .def("run", &run_card, py::arg("ticks"), py::arg("signals") = py::none());
   bind_card_modes(c, m);  // gear, PVT, FollowEx, coordinate systems
   bind_card_scope(m, c);  // scope, events, compare, probe (issue 10.3)
+  bind_card_aps(c, m);    // [aps] ADLINK interpolation group, gear engage ramp
 
   m.def("gt_axis_status", [](const Card& k, double i) { return machine::gt_axis_status(k, idx(k, i)); },
         py::arg("card"), py::arg("axis"), "GT axis status register (Table 4-14) of a card axis (0-based).");

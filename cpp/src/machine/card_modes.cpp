@@ -130,6 +130,35 @@ std::size_t CardModes::gear_master(std::size_t slave) const {
 
 bool CardModes::gear_halted(std::size_t slave) const { return kind_.at(slave) == Kind::Gear && gear_[slave].halted; }
 
+// -- [aps] ADLINK gear engage ramp (seed 004 L3294-3325) -------------------------------------------------------
+void CardModes::set_gear_ramp(std::size_t slave, std::size_t master, double ratio, double rate_per_tick) {
+  check_range("ApsGear", "ratio", ratio, -1e6, 1e6, "PRA_GEAR_RATIO");
+  check_range("ApsGear", "rate", rate_per_tick, 0.0, 1e12, "PRA_GEAR_ENGAGE_RATE per tick, 0 = at once");
+  set_gear(slave, master);
+  GearSlave& g = gear_[slave];
+  g.target = ratio;
+  g.rate = rate_per_tick;
+  g.keep_master = true;
+  g.gear->set_ratio(rate_per_tick > 0.0 ? 0.0 : ratio, master_profile(master));
+}
+
+void CardModes::gear_ramp_to(std::size_t slave, double ratio, double rate_per_tick) {
+  check_range("ApsGear", "ratio", ratio, -1e6, 1e6, "PRA_GEAR_RATIO");
+  check_range("ApsGear", "rate", rate_per_tick, 0.0, 1e12, "PRA_GEAR_ENGAGE_RATE per tick, 0 = at once");
+  if (kind_.at(slave) != Kind::Gear || gear_[slave].halted)
+    card_.refuse(static_cast<int>(slave), CommandFault::InvalidInMode, "the axis is not an engaged gear slave");
+  GearSlave& g = gear_[slave];
+  g.target = ratio;
+  g.rate = rate_per_tick;
+  if (rate_per_tick == 0.0) g.gear->set_ratio(ratio, master_profile(g.master));
+}
+
+double CardModes::gear_ratio(std::size_t slave) const {
+  if (kind_.at(slave) != Kind::Gear) throw_invalid("Card", "axis", static_cast<double>(slave), "is not in gear mode");
+  return gear_[slave].gear->ratio();
+}
+// -- [/aps] -------------------------------------------------------------------------------------------------------
+
 bool CardModes::gear_inhibits(std::size_t master, double dir) const {
   if (dir == 0.0 || n_driven_ == 0) return false;
   for (std::size_t s = 0; s < n_; ++s) {
@@ -531,7 +560,13 @@ void CardModes::feed(std::size_t i) {
       return;
     case Kind::Gear: {
       GearSlave& g = gear_[i];
-      if (!g.halted) gen.follow(g.gear->step(master_profile(g.master)));
+      if (g.halted) return;
+      if (g.rate > 0.0 && g.gear->ratio() != g.target) {  // [aps] engage ramp
+        const double r = g.gear->ratio();
+        const double next = g.target > r ? std::min(g.target, r + g.rate) : std::max(g.target, r - g.rate);
+        g.gear->set_ratio(next, master_profile(g.master));
+      }
+      gen.follow(g.gear->step(master_profile(g.master)));
       return;
     }
     case Kind::Pvt: {
@@ -558,6 +593,7 @@ void CardModes::on_fault(std::size_t i, StopCause cause) {
       if (g.halted) return;
       g.halted = true;
       const std::size_t m = g.master;
+      if (g.keep_master) return;  // [aps] ADLINK: the master is not affected (L3321-3324)
       if (card_.st_[m].closed_loop) {
         on_abrupt_stop(m);
         if (card_.loops_[m]->generator().moving()) card_.stop_profile(m);

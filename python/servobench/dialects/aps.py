@@ -23,7 +23,7 @@ import math
 import numpy as np
 
 from .. import _core
-from .._core import AdlinkHome, AdlinkJog, AdlinkPtp, ApsServoLaw, CardCommandRefused, MotionCommandRefused
+from .._core import AdlinkHome, AdlinkJog, AdlinkPtp, ApsServoLaw, BlendMode, CardCommandRefused, MotionCommandRefused
 from ..card import Card
 from ._controller import DialectController, export_functions
 
@@ -71,6 +71,11 @@ PRA_JG_DEC = 0x44         # jog deceleration, pulse/s^2
 PRA_JG_VM = 0x45          # jog speed, pulse/s
 PRA_JG_OFFSET = 0x46      # step-mode offset, pulse
 PRA_JG_DELAY = 0x47       # step-mode delay, us, 0..10,000,000
+PRA_GEAR_MASTER = 0x60    # gear master axis of this slave (L3303-3307)
+PRA_GEAR_ENGAGE_RATE = 0x61  # ratio per second the ratio ramps at (= ratio / engage time, L3313); 0 at once (V120)
+PRA_GEAR_RATIO = 0x62     # gear ratio, slave pulse per master pulse
+PRA_GANTRY_PROTECT_1 = 0x63  # gantry deviation level 1, pulse (L3337-3345; gantry mode not simulated, V122)
+PRA_GANTRY_PROTECT_2 = 0x64  # gantry deviation level 2, pulse
 PRA_JG_MAP_DI_EN = 0x48   # DI linking (not simulated: only 0 is accepted, V30)
 PRA_JG_P_JOG_DI = 0x49
 PRA_JG_N_JOG_DI = 0x4A
@@ -130,6 +135,17 @@ _INTEGER_JOG = {PRA_JG_MODE, PRA_JG_DIR}
 _JOG_DEFAULTS = {"mode": 0, "dir": 1, "sf": 0.0, "acc": 1e6, "dec": 1e6, "vm": 1e5, "offset": 1000, "delay_us": 0}
 _JOG_DI = (PRA_JG_MAP_DI_EN, PRA_JG_P_JOG_DI, PRA_JG_N_JOG_DI, PRA_JG_JOG_DI)
 MF_WAIT = 0x100           # APS_ptp Option bit 8: wait for APS_move_trigger (L3249, L3686-3691)
+# Interpolation Option bits 12-15, the "Buffer mode" field (L3686-3691) = the transition "Flag" (L3085): the
+# values of APS_define.h ITP_OPT_* (V114); the field value f is mode f + 1 of L3085-3143.
+ITP_OPT_ABORT_BLEND, ITP_OPT_ABORT_FORCE, ITP_OPT_ABORT_STOP = 0x0000, 0x1000, 0x2000
+ITP_OPT_BUFFERED, ITP_OPT_BLEND_DEC, ITP_OPT_BLEND_RES_DIST, ITP_OPT_BLEND_PCNT = 0x3000, 0x4000, 0x5000, 0x6000
+_BLEND_MODES = (BlendMode.ABORT_BLEND, BlendMode.ABORT_FORCED, BlendMode.ABORT_STOP, BlendMode.BUFFERED,
+                BlendMode.BLEND_DECEL, BlendMode.BLEND_DISTANCE, BlendMode.BLEND_PERCENT)
+_GEAR = {PRA_GEAR_MASTER: ("master", 0, 7), PRA_GEAR_ENGAGE_RATE: ("rate", 0.0, 1e9),
+         PRA_GEAR_RATIO: ("ratio", -1e6, 1e6), PRA_GANTRY_PROTECT_1: ("protect_1", 0, _POS_MAX),
+         PRA_GANTRY_PROTECT_2: ("protect_2", 0, _POS_MAX)}
+_INTEGER_GEAR = {PRA_GEAR_MASTER, PRA_GANTRY_PROTECT_1, PRA_GANTRY_PROTECT_2}
+_GEAR_DEFAULTS = {"master": 0, "rate": 0.0, "ratio": 1.0, "protect_1": 0, "protect_2": 0}  # V120
 # Latched limit events of the card (CARD_EVENTS bits): ADLINK limits are level inputs (V31).
 _LIMIT_EVENTS = {"pos_limit": 5, "neg_limit": 6, "soft_pos_limit": 8, "soft_neg_limit": 9}
 _IGNORED = {"emergency_stop_active", "direction_inhibited", "drive_alarm_active"}  # L3931-4010
@@ -152,6 +168,7 @@ class ApsController(DialectController):
         self._home: list[dict] = []
         self._jog: list[dict] = []
         self._el_mode: list[int] = []
+        self._gear: list[dict] = []
 
     # -- plumbing ----------------------------------------------------------------------------------------------
     def _axis(self, axis_id):
@@ -205,6 +222,7 @@ class ApsController(DialectController):
         self._jog = [dict(_JOG_DEFAULTS) for _ in range(len(card))]
         self._el_mode = [0] * len(card)
         self._scope_init()  # sampling, trigger, interrupts (issue 10.3)
+        self._gear = [dict(_GEAR_DEFAULTS) for _ in range(len(card))]
         return ERR_NoError, 1
 
     def APS_close(self) -> int:
@@ -251,6 +269,8 @@ class ApsController(DialectController):
             if para == PRA_SD_DEC and v > 0:
                 c.set_limit_stop_mode(i, bool(self._el_mode[i]), v)
             return ERR_NoError
+        if para in _GEAR:
+            return self._set_gear_param(i, para, v)
         for table, integers, store in ((_HOME, _INTEGER_HOME, self._home), (_JOG, _INTEGER_JOG, self._jog)):
             if para in table:
                 field, lo, hi = table[para]
@@ -306,6 +326,8 @@ class ApsController(DialectController):
             return ERR_NoError, float(self._home[i][_HOME[para][0]])
         if para in _JOG:
             return ERR_NoError, float(self._jog[i][_JOG[para][0]])
+        if para in _GEAR:
+            return ERR_NoError, float(self._gear[i][_GEAR[para][0]])
         if para in _JOG_DI:
             return ERR_NoError, 0.0
         if para == PRA_EL_MODE:
@@ -332,12 +354,15 @@ class ApsController(DialectController):
         i = self._axis(Axis_ID)
         if i is None or Servo_on not in (0, 1):
             return self._bad()
+        if not Servo_on:
+            self._stop_modes(i, abrupt=True)  # servo off releases a gear / stops an interpolation (L3325)
         return self._do(self._card.axis_on if Servo_on else self._card.axis_off, i)
 
     def _release_limits(self, i: int) -> None:
         """ADLINK limits are level inputs (V31): a latched limit event whose input is no longer active ends
         before a new command, so the direction inhibit lasts exactly while the limit is active."""
         c = self._card
+        self._release_modes(i)
         act = c.actual_pos(i)
         lim = c.limits(i)
         active = {"pos_limit": c.pos_limit_input(i), "neg_limit": c.neg_limit_input(i),
@@ -444,7 +469,12 @@ class ApsController(DialectController):
             if i is None:
                 return ERR_ParametersInvalid
             mask |= 1 << i
-        return self._do(self._card.move_trigger, mask)
+        c = self._card
+        if c.aps_interp_trigger(mask):  # a waiting interpolation starts with its reference axis (V115)
+            mask &= ~sum(1 << a for a in c.aps_interp_info()["array"])
+            if mask == 0:
+                return ERR_NoError
+        return self._do(c.move_trigger, mask)
 
     def APS_home_move(self, Axis_ID) -> int:
         """``APS_home_move(Axis_ID)``: starts homing with the PRA_HOME_* parameters (modes 0 ORG, 1 EL, 2 EZ;
@@ -514,6 +544,8 @@ class ApsController(DialectController):
         i = self._axis(Axis_ID)
         if i is None:
             return self._bad()
+        if self._stop_modes(i, abrupt=False):
+            return ERR_NoError
         return self._do(self._card.stop_move, i, self._params(i))
 
     def APS_emg_stop(self, Axis_ID) -> int:
@@ -521,7 +553,331 @@ class ApsController(DialectController):
         i = self._axis(Axis_ID)
         if i is None:
             return self._bad()
+        if self._stop_modes(i, abrupt=True):
+            return ERR_NoError
         return self._do(self._card.abrupt_stop, i)
+
+    # -- interpolation and gear (L2813-3150, L3294-3346; decisions V113-V125) ---------------------------------------
+    def _release_modes(self, i: int) -> None:
+        """Before a single-axis command: an idle interpolation group holding axis i, or a gear released by a
+        fault of its slave, hands the axis back to the independent (T-curve) mode (V116, V121)."""
+        c = self._card
+        info = c.aps_interp_info()
+        if info["set_up"] and i in info["array"] and not info["busy"]:
+            c.set_mode(info["array"][0], "t_curve")
+        if c.mode(i) == "gear" and c.gear_halted(i):
+            c.set_mode(i, "t_curve")
+
+    def _stop_modes(self, i: int, abrupt: bool) -> bool:
+        """APS_stop_move / APS_emg_stop / servo off on an axis of a moving interpolation stops the whole group
+        (L2570-2580; V117); on a gear slave it releases the gear, the slave holding where it is (L3325, V121).
+        True if it was such an axis."""
+        c = self._card
+        info = c.aps_interp_info()
+        if info["set_up"] and i in info["array"] and info["busy"]:
+            c.group_stop(3, abrupt)
+            return True
+        if c.mode(i) == "gear":
+            c.set_mode(i, "t_curve")
+            return True
+        return False
+
+    def _set_gear_param(self, i: int, para, v: float) -> int:
+        field, lo, hi = _GEAR[para]
+        if not lo <= v <= hi or (para in _INTEGER_GEAR and v != int(v)):
+            return ERR_ParametersInvalid
+        if para == PRA_GEAR_MASTER and v >= len(self._card):
+            return ERR_ParametersInvalid
+        g = self._gear[i]
+        c = self._card
+        if para == PRA_GEAR_MASTER and c.mode(i) == "gear" and not c.gear_halted(i):
+            return ERR_FunctionNotAvailable  # the master of an engaged gear does not change (V119)
+        g[field] = v
+        if para == PRA_GEAR_RATIO and c.mode(i) == "gear" and not c.gear_halted(i):
+            return self._do(c.gear_ramp_to, i, v, g["rate"] * c.servo_period_s)  # on the fly, ramped (L3311)
+        return ERR_NoError
+
+    def APS_start_gear(self, Axis_ID, Mode) -> int:
+        """``APS_start_gear(Axis_ID, Mode)`` (the manual prints ``APS_start_gear(slave axis ID)``, L3311; the Mode
+        argument is the library's, V119): 1 engages the standard gear of slave ``Axis_ID`` on PRA_GEAR_MASTER, the
+        ratio ramping from 0 to PRA_GEAR_RATIO at PRA_GEAR_ENGAGE_RATE (ratio/s; 0 = at once; L3309-3313);
+        0 releases it (the slave holds). 2 (gantry) is not simulated (ERR_FunctionNotAvailable, V122). Refused
+        (ERR_FunctionNotAvailable) while the slave moves in another motion."""
+        i = self._axis(Axis_ID)
+        if i is None or Mode not in (0, 1, 2):
+            return self._bad()
+        c = self._card
+        if Mode == 0:
+            if c.mode(i) != "gear":
+                return ERR_NoError
+            return self._do(c.set_mode, i, "t_curve")
+        if Mode == 2:
+            return ERR_FunctionNotAvailable
+        g = self._gear[i]
+        if int(g["master"]) == i:
+            return ERR_ParametersInvalid
+        self._release_modes(i)
+        return self._do(c.set_gear_ramp, i, int(g["master"]), g["ratio"], g["rate"] * c.servo_period_s)
+
+    def _interp(self, ids, option, kind, trans, vm=None, speeds=None, **geom) -> int:
+        """One interpolation command: validates the axis array and Option, builds the move, hands it to the card
+        (Card.aps_interp). ``trans`` is TransPara: the residual distance (mode 6, pulse) or percent (mode 7)."""
+        c = self._card
+        if c is None:
+            return ERR_DeviceNotInitial
+        try:
+            arr = [self._axis(a) for a in ids]
+        except TypeError:
+            return ERR_ParametersInvalid
+        o = _num(option)
+        if None in arr or len(set(arr)) != len(arr) or not 2 <= len(arr) <= 6 or o is None or o != int(o):
+            return ERR_ParametersInvalid
+        o = int(o)
+        field = (o >> 12) & 0xF
+        if o & ~(1 | MF_WAIT | 0xF000) or field > 6:
+            return ERR_ParametersInvalid
+        mode = _BLEND_MODES[field]
+        t = _num(trans) if trans is not None else 0.0
+        if t is None:
+            return ERR_ParametersInvalid
+        blend = t if mode in (BlendMode.BLEND_DISTANCE, BlendMode.BLEND_PERCENT) else 0.0
+        for k, v in geom.items():
+            if k in ("angle_deg", "height", "final_radius", "dir"):
+                x = _num(v)
+                if x is None or (k == "dir" and (x != int(x) or abs(x) > 32767)):  # I16 Dir
+                    return ERR_ParametersInvalid
+                geom[k] = int(x) if k == "dir" else x
+                continue
+            try:
+                vals = [_num(x) for x in v]
+            except TypeError:
+                return ERR_ParametersInvalid
+            if None in vals:
+                return ERR_ParametersInvalid
+            geom[k] = vals
+        all_ = None
+        if speeds is not None:
+            vals = {k: _num(x) for k, x in speeds.items()}
+            if None in vals.values():
+                return ERR_ParametersInvalid
+            try:
+                all_ = AdlinkPtp(**vals, sd_dec=self._motion[arr[0]]["sd_dec"])
+            except ValueError:
+                return ERR_ParametersInvalid
+        v = 0.0 if vm is None else _num(vm)
+        if v is None or (vm is not None and not 0 < v <= 1e9):
+            return ERR_ParametersInvalid
+        for a in arr:
+            self._release_limits(a)
+        info = c.aps_interp_info()
+        if info["set_up"] and not info["busy"]:
+            self._release_modes(arr[0])
+        try:
+            params = [self._params(a) for a in arr]
+        except ValueError:
+            return ERR_ParametersInvalid
+        return self._do(lambda: c.aps_interp(arr, params, kind, relative=bool(o & 1), mode=mode, blend=blend, vm=v,
+                                             all=all_, wait=bool(o & MF_WAIT), **geom))
+
+    def APS_line(self, Dimension, Axis_ID_Array, Option, PositionArray, TransPara=0.0, Wait=None) -> int:
+        """``APS_line(I32 Dimension, I32 *Axis_ID_Array, I32 Option, F64 *PositionArray, F64 *TransPara,
+        ASYNCALL *Wait)`` (L2855; argument list V113): a straight line of 2..6 axes; the first axis is the
+        reference axis whose PRA_VS/VM/VE/ACC/DEC/SF give the vector profile (L2819-2855). Option bit 0
+        relative, bit 8 MF_WAIT, bits 12-15 the transition mode (ITP_OPT_*); TransPara the residual distance
+        (pulse) or percent of the blend modes. ``Wait`` must be None/0."""
+        d = _num(Dimension)
+        if Wait not in (None, 0) or d is None or d != int(d):
+            return self._bad()
+        try:
+            ids, pos = list(Axis_ID_Array)[: int(d)], list(PositionArray)[: int(d)]
+        except TypeError:
+            return ERR_ParametersInvalid
+        if len(ids) != d or len(pos) != d:
+            return ERR_ParametersInvalid
+        return self._interp(ids, Option, "line", TransPara, target=pos)
+
+    def APS_line_v(self, Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Vm, Wait=None) -> int:
+        """``APS_line_v(..., F64 *TransPara, F64 Vm, ASYNCALL *Wait)``: :func:`APS_line` at vector speed Vm."""
+        d = _num(Dimension)
+        if Wait not in (None, 0) or d is None or d != int(d):
+            return self._bad()
+        try:
+            ids, pos = list(Axis_ID_Array)[: int(d)], list(PositionArray)[: int(d)]
+        except TypeError:
+            return ERR_ParametersInvalid
+        if len(ids) != d or len(pos) != d:
+            return ERR_ParametersInvalid
+        return self._interp(ids, Option, "line", TransPara, vm=Vm, target=pos)
+
+    def APS_line_all(self, Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Vs, Vm, Ve, Acc, Dec, SFac,
+                     Wait=None) -> int:
+        """``APS_line_all(..., F64 *TransPara, F64 Vs, F64 Vm, F64 Ve, F64 Acc, F64 Dec, F64 SFac, ASYNCALL
+        *Wait)``: :func:`APS_line` with every speed of the vector profile given (the PRA values unchanged)."""
+        d = _num(Dimension)
+        if Wait not in (None, 0) or d is None or d != int(d):
+            return self._bad()
+        try:
+            ids, pos = list(Axis_ID_Array)[: int(d)], list(PositionArray)[: int(d)]
+        except TypeError:
+            return ERR_ParametersInvalid
+        if len(ids) != d or len(pos) != d:
+            return ERR_ParametersInvalid
+        return self._interp(ids, Option, "line", TransPara, vm=Vm,
+                            speeds=dict(vs=Vs, vm=Vm, ve=Ve, acc=Acc, dec=Dec, sf=SFac), target=pos)
+
+    def APS_absolute_linear_move(self, Dimension, Axis_ID_Array, Position_Array, Max_Linear_Speed) -> int:
+        """``APS_absolute_linear_move(I32 Dimension, I32 *Axis_ID_Array, I32 *Position_Array, I32
+        Max_Linear_Speed)`` (L2867): a line to whole-pulse positions at vector speed Max_Linear_Speed pulse/s."""
+        return self._linear_move(Dimension, Axis_ID_Array, Position_Array, Max_Linear_Speed, 0)
+
+    def APS_relative_linear_move(self, Dimension, Axis_ID_Array, Distance_Array, Max_Linear_Speed) -> int:
+        """``APS_relative_linear_move(I32 Dimension, I32 *Axis_ID_Array, I32 *Distance_Array, I32
+        Max_Linear_Speed)`` (L2870): a line by whole-pulse distances."""
+        return self._linear_move(Dimension, Axis_ID_Array, Distance_Array, Max_Linear_Speed, 1)
+
+    def _linear_move(self, Dimension, ids, values, speed, option) -> int:
+        try:
+            vals = [_num(x) for x in values]
+        except TypeError:
+            return ERR_ParametersInvalid
+        if None in vals or any(x != int(x) or abs(x) > _POS_MAX for x in vals):
+            return ERR_ParametersInvalid
+        s = _num(speed)
+        if s is None or s != int(s):
+            return ERR_ParametersInvalid
+        return self.APS_line_v(Dimension, ids, option, vals, 0.0, s)
+
+    def _arc(self, kind, ids, dim, Option, TransPara, Wait, vm=None, speeds=None, **geom) -> int:
+        if Wait not in (None, 0):
+            return self._bad()
+        try:
+            ids = list(ids)
+            for k in ("center", "target", "normal"):
+                if k in geom:
+                    geom[k] = list(geom[k])
+                    if len(geom[k]) != (3 if k == "normal" else dim):
+                        return ERR_ParametersInvalid
+        except TypeError:
+            return ERR_ParametersInvalid
+        if len(ids) != dim:
+            return ERR_ParametersInvalid
+        return self._interp(ids, Option, kind, TransPara, vm=vm, speeds=speeds, **geom)
+
+    @staticmethod
+    def _all(Vs, Vm, Ve, Acc, Dec, SFac):
+        return dict(vs=Vs, vm=Vm, ve=Ve, acc=Acc, dec=Dec, sf=SFac)
+
+    def APS_arc2_ca(self, Axis_ID_Array, Option, CenterArray, Angle, TransPara=0.0, Wait=None) -> int:
+        """``APS_arc2_ca(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 Angle, F64 *TransPara, ASYNCALL
+        *Wait)`` (L2978; V113): a 2-D arc about the centre by Angle degrees (+ CCW, |Angle| > 360 = laps)."""
+        return self._arc("arc2_ca", Axis_ID_Array, 2, Option, TransPara, Wait, center=CenterArray, angle_deg=Angle)
+
+    def APS_arc2_ca_v(self, Axis_ID_Array, Option, CenterArray, Angle, TransPara, Vm, Wait=None) -> int:
+        """:func:`APS_arc2_ca` at vector speed Vm."""
+        return self._arc("arc2_ca", Axis_ID_Array, 2, Option, TransPara, Wait, vm=Vm, center=CenterArray,
+                         angle_deg=Angle)
+
+    def APS_arc2_ca_all(self, Axis_ID_Array, Option, CenterArray, Angle, TransPara, Vs, Vm, Ve, Acc, Dec, SFac,
+                        Wait=None) -> int:
+        """:func:`APS_arc2_ca` with every speed given."""
+        return self._arc("arc2_ca", Axis_ID_Array, 2, Option, TransPara, Wait, vm=Vm,
+                         speeds=self._all(Vs, Vm, Ve, Acc, Dec, SFac), center=CenterArray, angle_deg=Angle)
+
+    def APS_arc2_ce(self, Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara=0.0, Wait=None) -> int:
+        """``APS_arc2_ce(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *EndArray, I16 Dir, F64
+        *TransPara, ASYNCALL *Wait)`` (L2981): a 2-D arc to an exact end point, Angle = theta + Dir*360
+        (L2943-2958); exactly 180 deg or 360 deg is ERR_ParametersInvalid (L2930-2933)."""
+        return self._arc("arc2_ce", Axis_ID_Array, 2, Option, TransPara, Wait, center=CenterArray, target=EndArray,
+                         dir=Dir)
+
+    def APS_arc2_ce_v(self, Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara, Vm, Wait=None) -> int:
+        """:func:`APS_arc2_ce` at vector speed Vm."""
+        return self._arc("arc2_ce", Axis_ID_Array, 2, Option, TransPara, Wait, vm=Vm, center=CenterArray,
+                         target=EndArray, dir=Dir)
+
+    def APS_arc2_ce_all(self, Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara, Vs, Vm, Ve, Acc, Dec,
+                        SFac, Wait=None) -> int:
+        """:func:`APS_arc2_ce` with every speed given."""
+        return self._arc("arc2_ce", Axis_ID_Array, 2, Option, TransPara, Wait, vm=Vm,
+                         speeds=self._all(Vs, Vm, Ve, Acc, Dec, SFac), center=CenterArray, target=EndArray, dir=Dir)
+
+    def APS_arc3_ca(self, Axis_ID_Array, Option, CenterArray, NormalArray, Angle, TransPara=0.0, Wait=None) -> int:
+        """``APS_arc3_ca(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *NormalArray, F64 Angle, F64
+        *TransPara, ASYNCALL *Wait)`` (L2899): a 3-D arc, right-hand rule about the normal (Gram-Schmidt, L2911)."""
+        return self._arc("arc3_ca", Axis_ID_Array, 3, Option, TransPara, Wait, center=CenterArray,
+                         normal=NormalArray, angle_deg=Angle)
+
+    def APS_arc3_ca_v(self, Axis_ID_Array, Option, CenterArray, NormalArray, Angle, TransPara, Vm, Wait=None) -> int:
+        """:func:`APS_arc3_ca` at vector speed Vm."""
+        return self._arc("arc3_ca", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm, center=CenterArray,
+                         normal=NormalArray, angle_deg=Angle)
+
+    def APS_arc3_ca_all(self, Axis_ID_Array, Option, CenterArray, NormalArray, Angle, TransPara, Vs, Vm, Ve, Acc,
+                        Dec, SFac, Wait=None) -> int:
+        """:func:`APS_arc3_ca` with every speed given."""
+        return self._arc("arc3_ca", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm,
+                         speeds=self._all(Vs, Vm, Ve, Acc, Dec, SFac), center=CenterArray, normal=NormalArray,
+                         angle_deg=Angle)
+
+    def APS_arc3_ce(self, Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara=0.0, Wait=None) -> int:
+        """``APS_arc3_ce(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *EndArray, I16 Dir, F64
+        *TransPara, ASYNCALL *Wait)`` (L2900): a 3-D arc to an exact end point (no half or full circle)."""
+        return self._arc("arc3_ce", Axis_ID_Array, 3, Option, TransPara, Wait, center=CenterArray, target=EndArray,
+                         dir=Dir)
+
+    def APS_arc3_ce_v(self, Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara, Vm, Wait=None) -> int:
+        """:func:`APS_arc3_ce` at vector speed Vm."""
+        return self._arc("arc3_ce", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm, center=CenterArray,
+                         target=EndArray, dir=Dir)
+
+    def APS_arc3_ce_all(self, Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara, Vs, Vm, Ve, Acc, Dec,
+                        SFac, Wait=None) -> int:
+        """:func:`APS_arc3_ce` with every speed given."""
+        return self._arc("arc3_ce", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm,
+                         speeds=self._all(Vs, Vm, Ve, Acc, Dec, SFac), center=CenterArray, target=EndArray, dir=Dir)
+
+    def APS_sprial_ca(self, Axis_ID_Array, Option, CenterArray, NormalArray, Angle, DeltaH, FinalR, TransPara=0.0,
+                      Wait=None) -> int:
+        """``APS_sprial_ca(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *NormalArray, F64 Angle, F64
+        DeltaH, F64 FinalR, F64 *TransPara, ASYNCALL *Wait)`` (the manual's spelling, L3047; V113): a conical
+        spiral, rise DeltaH along the normal, radius to FinalR (L3001-3035)."""
+        return self._arc("spiral_ca", Axis_ID_Array, 3, Option, TransPara, Wait, center=CenterArray,
+                         normal=NormalArray, angle_deg=Angle, height=DeltaH, final_radius=FinalR)
+
+    def APS_sprial_ca_v(self, Axis_ID_Array, Option, CenterArray, NormalArray, Angle, DeltaH, FinalR, TransPara, Vm,
+                        Wait=None) -> int:
+        """:func:`APS_sprial_ca` at vector speed Vm."""
+        return self._arc("spiral_ca", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm, center=CenterArray,
+                         normal=NormalArray, angle_deg=Angle, height=DeltaH, final_radius=FinalR)
+
+    def APS_sprial_ca_all(self, Axis_ID_Array, Option, CenterArray, NormalArray, Angle, DeltaH, FinalR, TransPara,
+                          Vs, Vm, Ve, Acc, Dec, SFac, Wait=None) -> int:
+        """:func:`APS_sprial_ca` with every speed given."""
+        return self._arc("spiral_ca", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm,
+                         speeds=self._all(Vs, Vm, Ve, Acc, Dec, SFac), center=CenterArray, normal=NormalArray,
+                         angle_deg=Angle, height=DeltaH, final_radius=FinalR)
+
+    def APS_sprial_ce(self, Axis_ID_Array, Option, CenterArray, NormalArray, EndArray, Dir, TransPara=0.0,
+                      Wait=None) -> int:
+        """``APS_sprial_ce(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *NormalArray, F64 *EndArray, I16
+        Dir, F64 *TransPara, ASYNCALL *Wait)`` (L3050): a spiral to an exact end point (L3037-3063)."""
+        return self._arc("spiral_ce", Axis_ID_Array, 3, Option, TransPara, Wait, center=CenterArray,
+                         normal=NormalArray, target=EndArray, dir=Dir)
+
+    def APS_sprial_ce_v(self, Axis_ID_Array, Option, CenterArray, NormalArray, EndArray, Dir, TransPara, Vm,
+                        Wait=None) -> int:
+        """:func:`APS_sprial_ce` at vector speed Vm."""
+        return self._arc("spiral_ce", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm, center=CenterArray,
+                         normal=NormalArray, target=EndArray, dir=Dir)
+
+    def APS_sprial_ce_all(self, Axis_ID_Array, Option, CenterArray, NormalArray, EndArray, Dir, TransPara, Vs, Vm,
+                          Ve, Acc, Dec, SFac, Wait=None) -> int:
+        """:func:`APS_sprial_ce` with every speed given."""
+        return self._arc("spiral_ce", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm,
+                         speeds=self._all(Vs, Vm, Ve, Acc, Dec, SFac), center=CenterArray, normal=NormalArray,
+                         target=EndArray, dir=Dir)
+
+    # -- [/interpolation and gear] ----------------------------------------------------------------------------------
 
     # -- positions -------------------------------------------------------------------------------------------------
     def APS_get_position(self, Axis_ID):
@@ -536,6 +892,7 @@ class ApsController(DialectController):
         p = _num(Position)
         if i is None or p is None or p != int(p) or abs(p) > _POS_MAX:
             return self._bad()
+        self._release_modes(i)
         return self._do(self._card.set_actual_pos, i, p)
 
     def APS_get_command(self, Axis_ID):
@@ -553,7 +910,7 @@ class ApsController(DialectController):
     def APS_motion_status(self, Axis_ID) -> int:
         """``I32 APS_motion_status(Axis_ID)``: the motion status word (MTS_* bits) or a negative error code."""
         i = self._axis(Axis_ID)
-        return self._bad() if i is None else int(_core.aps_motion_status(self._card._card, i))
+        return self._bad() if i is None else int(_core.aps_group_motion_status(self._card._card, i))
 
     def APS_motion_io_status(self, Axis_ID) -> int:
         """``I32 APS_motion_io_status(Axis_ID)``: the motion I/O word (MIO_* bits) or a negative error code."""
@@ -563,7 +920,7 @@ class ApsController(DialectController):
     def APS_get_stop_code(self, Axis_ID):
         """``APS_get_stop_code(Axis_ID, &Code)`` -> ``(rtn, STOP_* code)`` of the last abnormal stop (0 none)."""
         i = self._axis(Axis_ID)
-        return (self._bad(), 0) if i is None else (ERR_NoError, int(_core.aps_stop_code(self._card._card, i)))
+        return (self._bad(), 0) if i is None else (ERR_NoError, int(_core.aps_group_stop_code(self._card._card, i)))
 
 
 # -- sampling, position compare trigger, host interrupts (issue 10 point 3; decisions V71-V85) -------------------

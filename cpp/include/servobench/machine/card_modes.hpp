@@ -65,6 +65,14 @@ class CardModes {
   bool gear_inhibits(std::size_t master, double dir) const;
   // A fault or GT_AbptStp halted the gear: the slave holds until the next PrflG or ratio Update (V53).
   bool gear_halted(std::size_t slave) const;
+  // -- [aps] ADLINK gear (seed 004 L3294-3325, decisions V119-V121) -------------------------------------------
+  // APS_start_gear: set_gear, then the ratio ramps from 0 to `ratio` at `rate_per_tick` (ratio per tick; 0 = at
+  // once). A fault of the slave releases (halts) it without stopping the master (L3321-3324).
+  void set_gear_ramp(std::size_t slave, std::size_t master, double ratio, double rate_per_tick);
+  // On-the-fly PRA_GEAR_RATIO change, ramped at the engage rate (L3311).
+  void gear_ramp_to(std::size_t slave, double ratio, double rate_per_tick);
+  double gear_ratio(std::size_t slave) const;  // the ratio in effect now
+  // -- [/aps] ------------------------------------------------------------------------------------------------
 
   // -- PVT (GUC §4.2 L1116-2100, iDEABOX §4.4) --------------------------------------------------------------
   motion::PvtTables& pvt_tables() { return tables_; }
@@ -148,6 +156,8 @@ class CardModes {
     std::size_t master = 0;
     std::optional<motion::ElectronicGear> gear;
     bool halted = false;
+    double target = 0.0, rate = 0.0;  // [aps] ramp: ratio to reach, ratio per tick (0 = no ramp)
+    bool keep_master = false;         // [aps] a slave fault does not stop the master
   };
   void check_at_rest(std::size_t i, const char* what);
   void set_kind(std::size_t i, Kind k);

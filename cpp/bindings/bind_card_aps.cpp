@@ -1,0 +1,120 @@
+// The ADLINK interpolation group on the Card (machine/card_group_adlink.hpp) and the gear engage ramp: thin,
+// axes 0-based; servobench.dialects.aps translates. Called from bind_card.cpp.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <string>
+#include <vector>
+
+#include "servobench/common/validate.hpp"
+#include "servobench/machine/card.hpp"
+#include "servobench/machine/card_group_adlink.hpp"
+#include "servobench/machine/card_modes.hpp"
+
+namespace servobench::bindings {
+
+namespace py = pybind11;
+using machine::Card;
+
+namespace {
+
+std::size_t ax(const Card& c, double i) {
+  check_integer("Card", "axis", i, 0, static_cast<double>(c.axis_count()) - 1);
+  return static_cast<std::size_t>(i);
+}
+
+motion::SpacePoint point(const std::vector<double>& v, const char* name) {
+  if (v.size() > static_cast<std::size_t>(motion::kSpaceMaxDim))
+    throw_invalid("Card.aps_interp", name, static_cast<double>(v.size()), "has at most 6 values");
+  motion::SpacePoint p{};
+  for (std::size_t k = 0; k < v.size(); ++k) p[k] = v[k];
+  return p;
+}
+
+motion::AdlinkMoveSpec::Kind kind_of(const std::string& kind) {
+  using K = motion::AdlinkMoveSpec::Kind;
+  if (kind == "line") return K::Line;
+  if (kind == "arc2_ca") return K::Arc2Ca;
+  if (kind == "arc2_ce") return K::Arc2Ce;
+  if (kind == "arc3_ca") return K::Arc3Ca;
+  if (kind == "arc3_ce") return K::Arc3Ce;
+  if (kind == "spiral_ca") return K::SpiralCa;
+  if (kind == "spiral_ce") return K::SpiralCe;
+  throw std::invalid_argument("kind = '" + kind + "' is not one of line, arc2_ca, arc2_ce, arc3_ca, arc3_ce, "
+                              "spiral_ca, spiral_ce");
+}
+
+}  // namespace
+
+void bind_card_aps(py::class_<Card>& c, py::module_& m) {
+  c.def("aps_interp", [](Card& k, const std::vector<double>& array, const std::vector<motion::AdlinkPtpParams>& params,
+                         const std::string& kind, const std::vector<double>& target, const std::vector<double>& center,
+                         const std::vector<double>& normal, double angle_deg, int dir, double height,
+                         double final_radius, bool relative, motion::BlendMode mode, double blend, double vm,
+                         const motion::AdlinkPtpParams* all, bool wait) {
+         machine::AdlinkGroupMove mv;
+         for (double a : array) mv.array.push_back(ax(k, a));
+         mv.params = params;
+         mv.spec.kind = kind_of(kind);
+         mv.spec.relative = relative;
+         mv.spec.target = point(target, "target");
+         mv.spec.center = point(center, "center");
+         if (!normal.empty()) {
+           if (normal.size() != 3) throw_invalid("Card.aps_interp", "normal", static_cast<double>(normal.size()), "has 3 values");
+           mv.spec.normal = {normal[0], normal[1], normal[2]};
+         }
+         mv.spec.angle_deg = angle_deg;
+         mv.spec.dir = dir;
+         mv.spec.height = height;
+         mv.spec.final_radius = final_radius;
+         mv.mode = mode;
+         mv.blend = blend;
+         mv.vm = vm;
+         if (all != nullptr) mv.all = *all;
+         mv.wait = wait;
+         machine::adlink_group_move(k, mv);
+       }, py::arg("array"), py::arg("params"), py::arg("kind"), py::kw_only(),
+       py::arg("target") = std::vector<double>{}, py::arg("center") = std::vector<double>{},
+       py::arg("normal") = std::vector<double>{}, py::arg("angle_deg") = 0.0, py::arg("dir") = 0,
+       py::arg("height") = 0.0, py::arg("final_radius") = 0.0, py::arg("relative") = false,
+       py::arg("mode") = motion::BlendMode::AbortBlend, py::arg("blend") = 0.0, py::arg("vm") = 0.0,
+       py::arg("all") = nullptr, py::arg("wait") = false,
+       "an ADLINK interpolation (APS_line / arc / spiral) of the axis array (0-based, first = reference axis) in "
+       "group slot 3: hosted at rest, buffered with its transition mode while the same array moves")
+      .def("aps_interp_trigger", [](Card& k, double mask) {
+             check_integer("Card", "mask", mask, 0, 4294967295.0);
+             return machine::adlink_group_trigger(k, static_cast<std::uint32_t>(mask));
+           }, py::arg("mask"), "starts a waiting (MF_WAIT) interpolation whose reference axis is in mask")
+      .def("aps_interp_info", [](Card& k) {
+             py::dict d;
+             const machine::AdlinkGroup* g = machine::adlink_group(k);
+             d["set_up"] = g != nullptr;
+             if (g == nullptr) return d;
+             std::vector<std::size_t> arr = g->array();
+             d["array"] = arr;
+             d["busy"] = g->busy();
+             d["waiting"] = g->waiting();
+             d["blending"] = g->blending();
+             d["pending"] = g->interp().pending();
+             d["moves_done"] = g->interp().state().moves_done;
+             d["speed"] = g->interp().state().speed;  // vector speed, pulse/s
+             const motion::SpacePoint& p = g->interp().state().pos;
+             d["pos"] = std::vector<double>(p.begin(), p.begin() + g->interp().dim());
+             return d;
+           }, "the ADLINK interpolation group: array, busy, waiting, blending, pending, moves_done, speed, pos");
+  c.def("set_gear_ramp", [](Card& k, double i, double master, double ratio, double rate_per_tick) {
+         k.modes().set_gear_ramp(ax(k, i), ax(k, master), ratio, rate_per_tick);
+       }, py::arg("axis"), py::arg("master"), py::arg("ratio"), py::arg("rate_per_tick"),
+       "ADLINK APS_start_gear: gear on master's profile, the ratio ramped from 0 at rate_per_tick (ratio/tick)")
+      .def("gear_ramp_to", [](Card& k, double i, double ratio, double rate_per_tick) {
+             k.modes().gear_ramp_to(ax(k, i), ratio, rate_per_tick);
+           }, py::arg("axis"), py::arg("ratio"), py::arg("rate_per_tick"), "on-the-fly ratio change, ramped")
+      .def("gear_ratio", [](Card& k, double i) { return k.modes().gear_ratio(ax(k, i)); }, py::arg("axis"),
+           "the gear ratio in effect now");
+  m.def("aps_group_motion_status", [](const Card& k, double i) { return machine::aps_group_motion_status(k, ax(k, i)); },
+        py::arg("card"), py::arg("axis"), "APS_motion_status with the interpolation group's view (WAIT, BLD, MDN)");
+  m.def("aps_group_stop_code", [](const Card& k, double i) { return machine::aps_group_stop_code(k, ax(k, i)); },
+        py::arg("card"), py::arg("axis"), "APS_get_stop_code with a group fault's code on every group axis");
+}
+
+}  // namespace servobench::bindings

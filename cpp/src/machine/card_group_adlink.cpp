@@ -1,0 +1,163 @@
+#include "servobench/machine/card_group_adlink.hpp"
+
+#include <algorithm>
+#include <memory>
+#include <string>
+
+#include "servobench/common/validate.hpp"
+#include "servobench/machine/aps_status.hpp"
+#include "servobench/machine/card_modes.hpp"
+
+namespace servobench::machine {
+
+namespace {
+
+std::vector<int> ids(const std::vector<std::size_t>& a) {
+  std::vector<int> v;
+  for (std::size_t k : a) v.push_back(static_cast<int>(k));
+  return v;
+}
+
+[[noreturn]] void refuse(Card& card, int axis, CommandFault f, const std::string& what) {
+  card.record_fault(axis, f);
+  throw CardCommandRefused(f, axis, what);
+}
+
+bool in(const std::vector<std::size_t>& a, std::size_t k) { return std::find(a.begin(), a.end(), k) != a.end(); }
+
+// The motion cycle the group steps on, s (the card steps hosted groups once per motion cycle).
+double cycle_s(const Card& card) { return card.cycles().motion_cycle_ticks * card.servo_period_s(); }
+
+}  // namespace
+
+std::vector<std::size_t> AdlinkGroup::sorted(std::vector<std::size_t> a) {
+  std::sort(a.begin(), a.end());
+  return a;
+}
+
+AdlinkGroup::AdlinkGroup(const std::vector<std::size_t>& array, double period_s, const std::vector<double>& start)
+    : CardGroup(sorted(array)), array_(array), interp_(ids(array), [&] {
+        motion::AdlinkInterpSetup s;
+        s.period_s = period_s;
+        return s;
+      }(), start) {
+  for (std::size_t a : axes())
+    slot_of_.push_back(static_cast<std::size_t>(std::find(array_.begin(), array_.end(), a) - array_.begin()));
+}
+
+void AdlinkGroup::step_cycle() {
+  if (!waiting_) interp_.step();
+}
+
+void AdlinkGroup::positions(double* out) const {
+  const motion::SpacePoint& p = interp_.state().pos;
+  for (std::size_t k = 0; k < slot_of_.size(); ++k) out[k] = p[slot_of_[k]];
+}
+
+void AdlinkGroup::fault_stop() {
+  waiting_ = false;
+  interp_.emg_stop();
+}
+
+void AdlinkGroup::stop(bool abrupt) {
+  waiting_ = false;
+  if (abrupt) interp_.emg_stop();
+  else interp_.stop_move();
+}
+
+AdlinkGroup* adlink_group(Card& card) {
+  return dynamic_cast<AdlinkGroup*>(card.modes().group(kAdlinkGroupSlot));
+}
+
+const AdlinkGroup* adlink_group(const Card& card) {
+  // modes() is created on first use; creating it does not change how the card ticks (no mode is active).
+  return adlink_group(const_cast<Card&>(card));
+}
+
+void adlink_group_move(Card& card, const AdlinkGroupMove& m) {
+  const std::size_t n = card.axis_count();
+  if (m.array.size() < 2 || m.array.size() > 6)
+    throw_invalid("AdlinkGroupMove", "array", static_cast<double>(m.array.size()), "must name 2..6 axes (ADLINK L2817)");
+  for (std::size_t a : m.array)
+    if (a >= n) throw_invalid("AdlinkGroupMove", "array[k]", static_cast<double>(a), "is not an axis of this card");
+  if (m.params.size() != m.array.size())
+    throw_invalid("AdlinkGroupMove", "params", static_cast<double>(m.params.size()), "must hold one entry per axis");
+  const motion::AdlinkPtpParams* all = m.all ? &*m.all : nullptr;
+  AdlinkGroup* g = adlink_group(card);
+  const int ref = static_cast<int>(m.array[0]);
+  if (g != nullptr && g->busy()) {
+    if (g->array() != m.array)
+      refuse(card, ref, CommandFault::ChangeInMotion,
+             "another axis array interpolates; a continuous interpolation keeps its axes (ADLINK L3077-3079)");
+    for (std::size_t k = 0; k < m.array.size(); ++k) g->interp().set_axis_params(static_cast<int>(m.array[k]), m.params[k]);
+    try {
+      g->interp().push(m.spec, m.mode, m.blend, m.vm, all);
+    } catch (const CardCommandRefused&) {
+      throw;
+    } catch (const motion::MotionCommandRefused& e) {
+      refuse(card, ref, CommandFault::ChangeInMotion, e.what());
+    }
+    if (m.wait) g->set_waiting(true);
+    return;
+  }
+  for (std::size_t a : m.array) {
+    if (card.moving(a) && !(g != nullptr && in(g->axes(), a)))
+      refuse(card, static_cast<int>(a), CommandFault::ModeChangeInMotion,
+             "axis " + std::to_string(a) + " moves: an interpolation starts only with its axes at rest");
+    if (card.emergency_stop())
+      refuse(card, static_cast<int>(a), CommandFault::EmergencyStopActive, "the e-stop is active (ADLINK L3931)");
+    if (aps_motion_io_status(card, a) & (1u << static_cast<int>(ApsMio::ALM)))
+      refuse(card, static_cast<int>(a), CommandFault::DriveAlarmActive, "the alarm input is active (ADLINK L3950)");
+  }
+  std::vector<double> start;
+  for (std::size_t a : m.array) start.push_back(static_cast<double>(card.profile_pos(a)));
+  auto ng = std::make_unique<AdlinkGroup>(m.array, cycle_s(card), start);
+  for (std::size_t k = 0; k < m.array.size(); ++k) ng->interp().set_axis_params(static_cast<int>(m.array[k]), m.params[k]);
+  try {
+    ng->interp().push(m.spec, m.mode, m.blend, m.vm, all);  // bad geometry throws here: nothing changed yet
+  } catch (const motion::MotionCommandRefused& e) {
+    refuse(card, ref, CommandFault::DistanceTooShort, e.what());
+  }
+  ng->set_waiting(m.wait);
+  CardModes& modes = card.modes();
+  modes.add_group(kAdlinkGroupSlot, std::move(ng));
+  modes.before_group_start(kAdlinkGroupSlot);
+}
+
+bool adlink_group_trigger(Card& card, std::uint32_t mask) {
+  AdlinkGroup* g = adlink_group(card);
+  if (g == nullptr || !g->waiting() || !(mask & (1u << g->array()[0]))) return false;
+  g->set_waiting(false);
+  return true;
+}
+
+namespace {
+constexpr std::uint32_t mbit(ApsMsts b) { return 1u << static_cast<int>(b); }
+}  // namespace
+
+std::uint32_t aps_group_motion_status(const Card& card, std::size_t axis) {
+  std::uint32_t w = aps_motion_status(card, axis);
+  if (const_cast<Card&>(card).modes().gear_halted(axis)) w &= ~mbit(ApsMsts::GER);  // released (L3321)
+  const AdlinkGroup* g = adlink_group(card);
+  if (g == nullptr || !in(g->axes(), axis)) return w;
+  const HostedGroup& h = const_cast<Card&>(card).modes().hosted(kAdlinkGroupSlot);
+  const bool moving = g->busy() && !g->waiting();
+  w &= ~(mbit(ApsMsts::CSTP) | mbit(ApsMsts::MDN) | mbit(ApsMsts::WAIT) | mbit(ApsMsts::BLD));
+  if (!moving) w |= mbit(ApsMsts::CSTP);
+  if (!g->busy() && !h.feeding) w |= mbit(ApsMsts::MDN);
+  if (g->waiting()) w |= mbit(ApsMsts::WAIT);
+  if (moving && g->blending()) w |= mbit(ApsMsts::BLD);
+  if (h.fault_stopped) w |= mbit(ApsMsts::ASTP);
+  return w;
+}
+
+int aps_group_stop_code(const Card& card, std::size_t axis) {
+  const AdlinkGroup* g = adlink_group(card);
+  if (g != nullptr && in(g->axes(), axis)) {
+    const HostedGroup& h = const_cast<Card&>(card).modes().hosted(kAdlinkGroupSlot);
+    if (h.fault_stopped) return aps_stop_code(h.fault_cause);
+  }
+  return aps_stop_code(card, axis);
+}
+
+}  // namespace servobench::machine
