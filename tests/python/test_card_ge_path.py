@@ -316,9 +316,10 @@ def test_buffered_io_delay_and_dcc_vel():
     assert c.GT_Delay(8192) == 7
     assert [c.GT_BufIOBit(3, 1), c.GT_SetDccVel(10), c.GT_LnXY(2000, 0), c.GT_LnXY(2000, 1000),
             c.GT_EndList(), c.GT_StrtMtn()] == [0] * 6
+    c.run(5)
+    assert c.GT_GetMtnNm() == (0, 1) and c.outputs() == 0             # not before segment 1 ends
     c.wait_until(lambda: c.GT_GetMtnNm()[1] == 2)
-    out_at_2 = c.card.ge_path().state.gpo
-    assert out_at_2 & 0x7 == 0x7 and out_at_2 & 0x8                   # BufIO then BufIOBit with segment 2
+    assert c.outputs() == 0x7 | 0x8                                    # BufIO 0x7 then BufIOBit 3 with segment 2
     t0 = c.card.tick
     c.wait_until(lambda: c.card.ge_path().state.segments_done == 2)   # end of segment 2: at 10 pulse/ms
     assert c.GT_GetPrfVel()[1] == pytest.approx(10, abs=1.5)
@@ -532,7 +533,7 @@ def test_t7_example_6_4_module_b():
         if rtn == 0:
             break
         c.delay(1)
-    assert c.GT_EndList() == 0 and motion and fulls > 0 and set(m30) <= {0, 9}
+    assert c.GT_EndList() == 0 and motion and fulls > 0 and set(m30) == {0, 9} and m30[-1] == 0
     c.run(10)
     speeds = []
     while not crd(c) & BIT[0]:

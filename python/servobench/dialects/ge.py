@@ -144,6 +144,7 @@ class _GePathState:
         self.pushed = 0             # path segments buffered since StrtList
         self.ends = []              # end points of the generator's segments, in order
         self.cmd_bit = None         # SX command-error bit of the last path refusal
+        self.gpo_seen = 0           # the crd's buffered-output word last merged into the EXO word
         self.la = None              # module A
         self.ex = None              # module B
 
@@ -343,8 +344,16 @@ class GeController(DialectController):
         self._slot.inputs = int(bits)
 
     def outputs(self) -> int:
-        """The general outputs EXO0..EXO15 as last written by ``GT_ExOpt`` (bit n = EXOn)."""
-        return self._slot.outputs
+        """The general outputs EXO0..EXO15 as last written by ``GT_ExOpt`` or, on SX, by the path buffer's
+        BufIO / BufIOBit when it executed them later (bit n = EXOn)."""
+        slot = self._slot
+        st = slot.path
+        if st is not None and self._card.ge_crd_exists():   # [sx-path] buffered outputs
+            gpo = int(self._card.ge_path().state.gpo) & 0xFFFF
+            if gpo != st.gpo_seen:
+                slot.outputs = (slot.outputs & ~(gpo ^ st.gpo_seen)) | (gpo & (gpo ^ st.gpo_seen))
+                st.gpo_seen = gpo
+        return slot.outputs
 
     def set_probe_time(self, t_s: float):
         """The simulated probe edge on EXI0 at time ``t_s`` (s, the axes' clock tick * Ts; NaN: never)."""
@@ -950,8 +959,10 @@ class GeController(DialectController):
         if not self._card.ge_crd_exists() or (rebuild and st.dirty):
             n = min(st.dim or 4, len(self._card))
             self._card.ge_crd_setup(st.offsets[:n], st.strt_vel, st.max_vel, st.stp_acc, st.capacity, n)
+            self.outputs()               # outputs the old crd's buffer wrote stay
             st.dirty = False
             st.mv_pushed = 0
+            st.gpo_seen = 0
             path = self._card.ge_path()
             path.set_override(st.override)
             path.set_g0_override(st.override_g0)
