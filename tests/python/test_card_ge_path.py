@@ -143,7 +143,7 @@ def test_t36_override_clamped_to_max_vel():
 def test_t17_t20_immediate_half_circle(cmd_name, plane):
     # L3448-3465, L3529-3543, L3603-3617: SynVel 5, SynAcc 0.1, Arc(40000, 30000, 180) from (0, 0)
     c = sx()
-    assert [c.GT_SetSynVel(50), c.GT_SetSynAcc(1)] == [0, 0]   # feed x10 (the geometry is the vector)
+    assert [c.GT_SetSynVel(5), c.GT_SetSynAcc(0.1)] == [0, 0]
     assert getattr(c, cmd_name)(40000, 30000, 180) == 0
     ms, pos = run_path(c)
     i, j = plane
@@ -153,7 +153,8 @@ def test_t17_t20_immediate_half_circle(cmd_name, plane):
     assert np.all(np.abs(r - 50000) < 2)                      # on the circle, r = 50000
     # CCW seen from the positive third axis (L1481-1486): the arc passes (90000, 30000) and (40000, -20000)
     assert pos[i].max() == pytest.approx(90000, abs=1) and pos[j].min() == pytest.approx(-20000, abs=1)
-    assert ms == pytest.approx(math.pi * 50000 / 50 + 50 / 1, rel=2e-3)   # length 157080 (T17)
+    # length 157080 (T17) at 5 pulse/ms, ramps 0.5 <-> 5 at 0.1 pulse/ms^2
+    assert ms == pytest.approx(2 * 4.5 / 0.1 + (math.pi * 50000 - (25 - 0.25) / 0.1) / 5, abs=3)
 
 
 def test_arc_return_codes_2_and_5():
@@ -178,7 +179,7 @@ def test_t18_t19_buffered_arc_by_radius(cmd_name, plane, mv):
     # L3490-3505, L3567-3581, L3642-3656: StrtList; Mv(0, 0, [0,] 5, 0.1); ArcP(40000, 0, 20000, -1); EndList
     c = sx()
     assert c.GT_StrtList() == 0
-    args = (0, 0, 50, 1) if mv == "GT_MvXY" else (0, 0, 0, 50, 1)
+    args = (0, 0, 5, 0.1) if mv == "GT_MvXY" else (0, 0, 0, 5, 0.1)
     assert getattr(c, mv)(*args) == 0
     assert getattr(c, cmd_name)(40000, 0, 20000, -1) == 0
     assert [c.GT_EndList(), c.GT_StrtMtn()] == [0, 0]
@@ -245,13 +246,13 @@ def test_t26_buffered_3d_line(g0):
     # L4988-5003 / L5084-5099: MvXYZ(0,0,0,6,0.3); LnXYZ(12945,58372,65473) or its G0 form; StrtMtn
     c = sx()
     line = c.GT_LnXYZG0 if g0 else c.GT_LnXYZ
-    assert [c.GT_StrtList(), c.GT_MvXYZ(0, 0, 0, 60, 3), line(12945, 58372, 65473), c.GT_EndList(),
+    assert [c.GT_StrtList(), c.GT_MvXYZ(0, 0, 0, 6, 0.3), line(12945, 58372, 65473), c.GT_EndList(),
             c.GT_StrtMtn()] == [0] * 5
     ms, _ = run_path(c)
     length = math.sqrt(12945**2 + 58372**2 + 65473**2)
     assert length == pytest.approx(88666, abs=1)
     assert prf(c)[:3] == [12945, 58372, 65473]
-    assert ms == pytest.approx(2 * (60 - 0.5) / 3 + (length - (60**2 - 0.25) / 3) / 60, abs=3)
+    assert ms == pytest.approx(2 * (6 - 0.5) / 0.3 + (length - (6**2 - 0.25) / 0.3) / 6, abs=3)
 
 
 def test_t27_mvxyza_six_arguments_and_t29_mv_positioning():
@@ -568,3 +569,26 @@ def test_module_b_messages_and_dcc_flag():
     assert at_corner and min(at_corner) <= 0.5 + 0.4
     assert c.card.ge_path().state.gpo & 0x3 == 0x3
     assert prf(c)[:2] == [0, 0]
+
+
+def test_t33_segment_number_wraps_after_32767():
+    # L2010 vs L4582 (V109): the segment number runs 1..32767, then restarts at 1; the host streams into the
+    # buffer, re-sending when it is full (bit 15, L1575-1579)
+    c = sx()
+    assert [c.GT_StrtList(), c.GT_MvXY(0, 0, 100, 10)] == [0, 0]
+    total, started, seen = 32769, False, []
+    for k in range(1, total + 1):
+        while c.GT_LnXY(10 * k, 0) == 1:
+            assert cmd(c) == BIT[15]
+            if not started:
+                assert c.GT_StrtMtn() == 0
+                started = True
+            c.run(200)
+            seen.append(c.GT_GetMtnNm()[1])
+    assert c.GT_EndList() == 0
+    while not crd(c) & BIT[0]:
+        c.run(200)
+        seen.append(c.GT_GetMtnNm()[1])
+    assert prf(c)[0] == 10 * total
+    assert c.GT_GetMtnNm() == (0, 2)                        # 32768 -> 1, 32769 -> 2
+    assert max(seen) <= 32767 and any(n > 32000 for n in seen) and seen[-1] == 2
