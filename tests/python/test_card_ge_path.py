@@ -592,3 +592,17 @@ def test_t33_segment_number_wraps_after_32767():
     assert prf(c)[0] == 10 * total
     assert c.GT_GetMtnNm() == (0, 2)                        # 32768 -> 1, 32769 -> 2
     assert max(seen) <= 32767 and any(n > 32000 for n in seen) and seen[-1] == 2
+
+
+def test_card_ge_crd_setup_validates():
+    card = make_card()
+    with pytest.raises(ValueError, match="max_vel"):
+        card.ge_crd_setup(max_vel=0)
+    with pytest.raises(ValueError, match="dim"):
+        card.ge_crd_setup(dim=5)
+    with pytest.raises(ValueError, match="offsets"):
+        card.ge_crd_setup(offsets=[2.0**31])
+    assert not card.ge_crd_exists()
+    card.ge_crd_setup(offsets=[100], dim=2)
+    path = card.ge_path()
+    assert path.coords.dim == 2 and list(path.state.pos[:2]) == [-100, 0] and card.group_of(0) == 3
