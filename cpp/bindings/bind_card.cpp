@@ -23,6 +23,7 @@ using machine::Card;
 void bind_card_ge(py::module_& m);  // bind_card_ge.cpp
 void bind_card_modes(py::class_<Card>& cls, py::module_& m);  // bind_card_modes.cpp
 void bind_card_aps(py::class_<Card>& cls, py::module_& m);    // bind_card_aps.cpp: ADLINK interpolation group, gear ramp
+void bind_card_ge_path(py::class_<Card>& cls);  // bind_card_ge_path.cpp (GE SX path)
 
 namespace {
 
@@ -318,6 +319,7 @@ void bind_card(py::module_& m) {
   bind_card_modes(c, m);  // gear, PVT, FollowEx, coordinate systems
   bind_card_scope(m, c);  // scope, events, compare, probe (issue 10.3)
   bind_card_aps(c, m);    // [aps] ADLINK interpolation group, gear engage ramp
+  bind_card_ge_path(c);   // GE SX crd (card_group_ge.hpp)
 
   m.def("gt_axis_status", [](const Card& k, double i) { return machine::gt_axis_status(k, idx(k, i)); },
         py::arg("card"), py::arg("axis"), "GT axis status register (Table 4-14) of a card axis (0-based).");

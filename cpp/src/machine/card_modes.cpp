@@ -342,14 +342,14 @@ void CardModes::follow_switch(std::uint32_t mask) {
 // -- coordinate systems ---------------------------------------------------------------------------------------
 
 HostedGroup& CardModes::slot(std::size_t s) {
-  if (s >= kGroupSlots) throw_invalid("Card", "group slot", static_cast<double>(s), "must be 0..3");
+  if (s >= kGroupSlots) throw_invalid("Card", "group slot", static_cast<double>(s), "must be 0..4");
   return groups_[s];
 }
 
 CardGroup* CardModes::group(std::size_t s) { return slot(s).group.get(); }
 
 const HostedGroup& CardModes::hosted(std::size_t s) const {
-  if (s >= kGroupSlots) throw_invalid("Card", "group slot", static_cast<double>(s), "must be 0..3");
+  if (s >= kGroupSlots) throw_invalid("Card", "group slot", static_cast<double>(s), "must be 0..4");
   return groups_[s];
 }
 

@@ -2,8 +2,8 @@
 
 Explicit-axis style as in the GE manual: every per-axis command takes the axis first, numbered from 1
 (``GT_SetKp(axis, kp)``, ``GT_GetSts(axis)``). Two card variants (L99-103): ``"PX"`` (point to point, -PV/-PG,
-4 or 8 axes, 32-bit axis status) and ``"SX"`` (continuous path, -SV/-SG, 4 axes, 16-bit axis status; the path
-commands come with the card's coordinate systems and are not here). Units are the manual's (L991-996): pulse,
+4 or 8 axes, 32-bit axis status) and ``"SX"`` (continuous path, -SV/-SG, 4 axes, 16-bit axis status, the path
+commands, buffer and look-ahead modules A and B on the card's GE coordinate system; ``TLookAheadMsg``). Units are the manual's (L991-996): pulse,
 pulse/ms, pulse/ms^2, pulse/ms^3, converted to the card's servo tick with the controller's servo period, which
 the GE manual never states (decision V86: a constructor argument, default 200 us). Gains are doubles in
 [0, 32767] on the GT-lineage law, per servo tick (V87); DAC counts, 32767 = 10 V.
@@ -32,6 +32,8 @@ from .. import _core
 from .._core import CardCommandRefused, MotionCommandRefused
 from ..card import Card
 from . import _ge_watch
+
+_GE_CRD_SLOT = 4  # the card's group slot of the GE SX crd (machine/card_group_ge.hpp kGeCrdSlot)
 from ._ge_watch import TAxis, TWatchBuffer  # noqa: F401 (the manual's watch structures)
 from ._controller import DialectController, export_functions
 
@@ -53,12 +55,23 @@ _MAX_CARDS = 16                                 # L4299-4339
 _PX_ONLY = frozenset({
     "GT_PrflT", "GT_PrflS", "GT_PrflV", "GT_SetPos", "GT_GetPos", "GT_SetVel", "GT_GetVel", "GT_SetAcc",
     "GT_GetAcc", "GT_SetMAcc", "GT_GetMAcc", "GT_SetJerk", "GT_GetJerk", "GT_SmthStp", "GT_AbptStp",
-    "GT_GetMode", "GT_GetPrfPos", "GT_GetAtlVel", "GT_GetPrfVel", "GT_GetAtlErr", "GT_CloseLp", "GT_OpenLp",
+    "GT_GetMode", "GT_GetPrfPos", "GT_GetAtlVel", "GT_GetAtlErr", "GT_CloseLp", "GT_OpenLp",
     "GT_SetMtrCmd", "GT_GetMtrCmd", "GT_AuStpOn", "GT_AuStpOff", "GT_IndexSns"})
 # Commands of the SX set only: on a PX card they return 1 (Table 2-3 has no bit for it).
-_SX_ONLY = frozenset({"GT_EncPos", "GT_HandWheel", "GT_ExitHWheel", "GT_SetAdcChn"})
+_SX_ONLY = frozenset({"GT_EncPos", "GT_HandWheel", "GT_ExitHWheel", "GT_SetAdcChn",
+                      # [sx-path] path motion, buffer and look-ahead (ch11 Table 11-2, GE §6)
+                      "GT_LnXY", "GT_LnXYZ", "GT_LnXYZA", "GT_LnXYG0", "GT_LnXYZG0", "GT_LnXYZAG0", "GT_ArcXY",
+                      "GT_ArcYZ", "GT_ArcZX", "GT_ArcXYP", "GT_ArcYZP", "GT_ArcZXP", "GT_SetSynVel", "GT_SetSynAcc",
+                      "GT_SetStrtVel", "GT_SetMaxVel", "GT_SetStpAcc", "GT_Override", "GT_OverrideG0",
+                      "GT_SetDccVel", "GT_MapCnt", "GT_StrtList", "GT_MvXY", "GT_MvXYZ", "GT_MvXYZA", "GT_EndList",
+                      "GT_AddList", "GT_StrtMtn", "GT_StpMtn", "GT_EStpMtn", "GT_RestoreMtn", "GT_BufIO",
+                      "GT_BufIOBit", "GT_Delay", "GT_GetCrdSts", "GT_GetPrfPnt", "GT_GetSegPnt", "GT_GetBrkPnt",
+                      "GT_GetMtnNm", "GT_InitLookAhead", "GT_AddLookData", "GT_CalVel", "GT_InitLookAheadEx",
+                      "GT_InitLookAheadExx", "GT_MvXYEx", "GT_MvXYZEx", "GT_LnXYEx", "GT_LnXYZEx", "GT_LnXYG0Ex",
+                      "GT_LnXYZG0Ex", "GT_ArcXYEx", "GT_ArcYZEx", "GT_ArcZXEx", "GT_ArcXYPEx", "GT_ArcYZPEx",
+                      "GT_ArcZXPEx", "GT_BufIOEx", "GT_BufIOBitEx", "GT_DelayEx", "GT_M30"})
 # Commands whose C form writes through pointers: (rtn, value) in Python.
-_READS = frozenset({"GT_ExInpt", "GT_GetLmtSwt", "GT_GetHomeSwt", "GT_GetCmdSts", "GT_EncPos"})
+_READS = frozenset({"GT_ExInpt", "GT_GetLmtSwt", "GT_GetHomeSwt", "GT_GetCmdSts", "GT_EncPos", "GT_CalVel"})
 
 
 def _int_in(value, lo, hi) -> bool:
@@ -81,6 +94,81 @@ def _real_in(value, lo, hi) -> bool:
     return math.isfinite(v) and lo <= v <= hi
 
 
+# -- [sx-path] the GE path state and the look-ahead module B queue (see GeController's [sx-path] block) --------
+class TLookAheadMsg:
+    """The Ex commands' message (L5147-5169): mtnNum the CodeNum where an error occurred, num how many commands
+    before it were not sent, error 0 none, 1 point equals the previous one, 3 buffer full (re-send), 8 sending
+    the motion command failed (here: no InitLookAheadEx / MvXYEx, or a bad argument)."""
+
+    def __init__(self):
+        self.mtnNum = 0
+        self.num = 0
+        self.error = 0
+
+    def __repr__(self):
+        return f"TLookAheadMsg(mtnNum={self.mtnNum}, num={self.num}, error={self.error})"
+
+
+class _GeLookAheadEx:
+    """Module B: the GT_InitLookAheadEx parameters (mm, s); active after GT_MvXYEx / GT_MvXYZEx put the card's
+    look-ahead window in front of the buffer."""
+
+    def __init__(self, params):
+        self.params = params
+        self.active = False
+
+
+class _GePathState:
+    """What the GE dialect keeps about the SX path (the card's crd holds the motion)."""
+
+    def __init__(self, axes: int):
+        self.syn_vel = 0.0          # pulse/ms (SetSynVel; the Mv vel in buffer mode until changed)
+        self.syn_acc = 0.0          # pulse/ms^2 (SetSynAcc, immediate mode)
+        self.strt_vel = 0.5         # pulse/ms (L1399)
+        self.max_vel = 256.0        # pulse/ms (L1405)
+        self.stp_acc = 0.0          # pulse/ms^2; 0 = stop at once (V102)
+        self.override = 1.0
+        self.override_g0 = 1.0
+        self.offsets = [0.0] * axes  # GT_MapCnt, pulse
+        self.capacity = 4096        # buffered commands (V102)
+        self.dirty = True           # rebuild the crd at the next occasion
+        self.dim = 0                # crd coordinates (0: up to 4; 3 with look-ahead module B)
+        self.buffer = False         # buffer input/execution mode (crd bit 7 = 0)
+        self.open = False           # buffer open (crd bit 1 = 0)
+        self.mv = False
+        self.mv_dim = 4
+        self.mv_vel = 0.0
+        self.mv_acc = 0.0
+        self.mv_pushed = 0          # the Mv line is segment 0 of the generator
+        self.started = False        # StrtMtn since StrtList
+        self.dcc_vel = None         # SetDccVel for the next segment
+        self.io_count = 0           # BufIO since the last motion command (<= 2)
+        self.delay_count = 0        # Delay since the last motion command (<= 1)
+        self.pending_io = []        # BufIOBit waiting for the next path command
+        self.pushed = 0             # path segments buffered since StrtList
+        self.ends = []              # end points of the generator's segments, in order
+        self.cmd_bit = None         # SX command-error bit of the last path refusal
+        self.gpo_seen = 0           # the crd's buffered-output word last merged into the EXO word
+        self.la = None              # module A
+        self.ex = None              # module B
+
+    def open_list(self):
+        self.buffer = self.open = True
+        self.mv = self.started = False
+        self.mv_pushed = self.pushed = self.io_count = self.delay_count = 0
+        self.dcc_vel = None
+        self.pending_io = []
+        self.ends = []
+        if self.ex is not None:
+            self.ex.active = False
+
+    def seg_end(self, path):
+        i = path.state.segments_done
+        if path.busy and i < len(self.ends):
+            return self.ends[i]
+        return path.tail
+
+
 class _Slot:
     """One open card and what the dialect keeps about it (settings the Card has no register for)."""
 
@@ -101,6 +189,7 @@ class _Slot:
         self.inputs = 0              # EXI0..EXI15 (simulated levels, set_inputs)
         self.outputs = 0             # EXO0..EXO15 (GT_ExOpt)
         self.shadow = {}             # (axis, register) -> (GE-unit value, per-tick value) for exact read-backs
+        self.path = None             # [sx-path] _GePathState, created at the first path command
 
 
 def _command(name: str, fn):
@@ -259,8 +348,16 @@ class GeController(DialectController):
         self._slot.inputs = int(bits)
 
     def outputs(self) -> int:
-        """The general outputs EXO0..EXO15 as last written by ``GT_ExOpt`` (bit n = EXOn)."""
-        return self._slot.outputs
+        """The general outputs EXO0..EXO15 as last written by ``GT_ExOpt`` or, on SX, by the path buffer's
+        BufIO / BufIOBit when it executed them later (bit n = EXOn)."""
+        slot = self._slot
+        st = slot.path
+        if st is not None and self._card.ge_crd_exists():   # [sx-path] buffered outputs
+            gpo = int(self._card.ge_path().state.gpo) & 0xFFFF
+            if gpo != st.gpo_seen:
+                slot.outputs = (slot.outputs & ~(gpo ^ st.gpo_seen)) | (gpo & (gpo ^ st.gpo_seen))
+                st.gpo_seen = gpo
+        return slot.outputs
 
     def set_probe_time(self, t_s: float):
         """The simulated probe edge on EXI0 at time ``t_s`` (s, the axes' clock tick * Ts; NaN: never)."""
@@ -352,7 +449,14 @@ class GeController(DialectController):
     def GT_GetCmdSts(self):
         """(rtn, command-error register): PX Table 2-3 (L301-322), SX Table 2-4 (L324-347); the bit of the last
         refused command's cause (decision V90)."""
-        return self._get(lambda: _core.ge_command_status(self._card._card, self.variant))
+        def word():
+            path = self._slot.path   # [sx-path] bits 9 and 15 of a path refusal (V100)
+            if (self.variant == "SX" and path is not None and path.cmd_bit is not None
+                    and self._card.last_fault == "crd_state_error"):
+                return 1 << path.cmd_bit
+            return _core.ge_command_status(self._card._card, self.variant)
+
+        return self._get(word)
 
     # -- 7.2 axis configuration -------------------------------------------------------------------------------
     def GT_AxisOn(self, axis) -> int:
@@ -619,12 +723,23 @@ class GeController(DialectController):
     # -- 7.4 position, velocity and error feedback --------------------------------------------------------------
     def GT_ZeroPos(self, axis) -> int:
         """Actual = target = profile = 0; at rest only (else rtn 1, cmd bit 11) (L5907-5913)."""
-        return self._axis_cmd(axis, lambda a: self._card.zero_pos(a))
+        return self._axis_cmd(axis, lambda a: (self._leave_crd(a), self._card.zero_pos(a)))
 
     def GT_SetAtlPos(self, axis, pos) -> int:
         """Actual = target = profile = ``pos``, whole pulses -2^30..2^30-1; at rest only (cmd bit 11) (L5457)."""
-        return self._axis_cmd(axis, lambda a: self._card.set_actual_pos(a, float(pos)),
+        return self._axis_cmd(axis, lambda a: (self._leave_crd(a), self._card.set_actual_pos(a, float(pos))),
                               _int_in(pos, _POS_MIN, _POS_MAX), "motion_param_overflow")
+
+    def _leave_crd(self, a):
+        """[sx-path] ZeroPos / SetAtlPos on an SX crd axis with the path at rest and no buffer kept: the crd is
+        dropped and rebuilt at the new positions by the next path command (Example 7-1 L2190; V112)."""
+        if self.variant != "SX" or a >= 4 or not self._card.ge_crd_exists():
+            return
+        path = self._card.ge_path()
+        if path.busy or self._pth().open or self._kept(path) or self._card.moving(a):
+            return
+        self._card.set_mode(a, "t_curve")
+        self._pth().dirty = True
 
     def GT_GetAtlPos(self, axis):
         """(rtn, actual position, pulse) (L4173); with the encoder off, the profile position (L4180)."""
@@ -642,10 +757,6 @@ class GeController(DialectController):
     def GT_GetAtlErr(self, axis):
         """(rtn, following error profile - actual of the last tick, pulse) (L4144-4171)."""
         return self._read(axis, lambda a: int(round(self._card.following_error(a))))
-
-    def GT_GetPrfVel(self, axis):
-        """(rtn, profile velocity, pulse/ms) (L4713)."""
-        return self._read(axis, lambda a: self._card.profile_vel(a) / self._k)
 
     def GT_GetAtlVel(self, axis):
         """(rtn, actual velocity, pulse/ms): the encoder shaft's speed now in counts (V96) (L4203)."""
@@ -833,6 +944,880 @@ class GeController(DialectController):
 
         return self._get(levels)
 
+    # -- [sx-path] path motion, buffer, look-ahead (SX; GE §6 L1393-2040, §12; ge.md §4, §7.9-7.11) ----------
+    # The crd is the card's GE group (Card.ge_crd_setup / ge_path, machine/card_group_ge.hpp: X..A = axes 1..4,
+    # pulse, ms), built at the first path command and rebuilt at the present positions whenever nothing is
+    # buffered (StrtList, an immediate command), so a changed StrtVel/MaxVel/MapCnt takes effect there (V101).
+    # This block keeps the GE list bookkeeping; refusals leave the card unchanged and set the SX command-error
+    # bit of their cause: 8 path command, 9 buffer state, 15 buffer full, 6 MapCnt (Table 2-4 L324-347; V100).
+    def _pth(self) -> _GePathState:
+        slot = self._slot
+        if slot.path is None:
+            slot.path = _GePathState(len(self._card))
+        return slot.path
+
+    def _crd_fault(self, bit: int) -> int:
+        """A path refusal: the card records a crd-state fault; GT_GetCmdSts shows `bit` while it is the last."""
+        self._card.record_fault(-1, "crd_state_error" if bit != 6 else "axis_state_error")
+        self._pth().cmd_bit = bit
+        return RTN_COMMAND_ERROR
+
+    def _fresh(self):
+        """The crd's generator, empty, at the present profile positions: cleared, or rebuilt when a setting
+        changed or an axis moved outside the path (ZeroPos, AxisOn) (V101)."""
+        st = self._pth()
+        st.dim = 0
+        if (self._card.ge_crd_exists() and not st.dirty and not self._card.ge_path().lookahead_on
+                and self._card.ge_path().coords.dim == min(4, len(self._card))):
+            path = self._card.ge_path()
+            n = path.coords.dim
+            pos = list(path.state.pos)
+            if all(abs(pos[k] + st.offsets[k] - self._card.profile_pos(k)) < 0.5 for k in range(n)):
+                path.clear()
+                return path
+        st.dirty = True
+        return self._gp(rebuild=True)
+
+    def _gp(self, rebuild=False):
+        """The crd's generator; (re)built at the present positions when asked and nothing is kept."""
+        st = self._pth()
+        if not self._card.ge_crd_exists() or (rebuild and st.dirty):
+            n = min(st.dim or 4, len(self._card))
+            self._card.ge_crd_setup(st.offsets[:n], st.strt_vel, st.max_vel, st.stp_acc, st.capacity, n)
+            self.outputs()               # outputs the old crd's buffer wrote stay
+            st.dirty = False
+            st.mv_pushed = 0
+            st.gpo_seen = 0
+            path = self._card.ge_path()
+            path.set_override(st.override)
+            path.set_g0_override(st.override_g0)
+        return self._card.ge_path()
+
+    def _path_moving(self, path) -> bool:
+        st = self._pth()
+        return (path.busy or (path.running and path.remaining_segments > 0)
+                or (st.started and st.open and not path.stopped))
+
+    def _kept(self, path) -> bool:
+        """A stopped buffer that RestoreMtn can resume (breakpoint and unexecuted segments); a stopped immediate
+        move keeps none (L1654)."""
+        st = self._pth()
+        return st.buffer and st.started and path.breakpoint is not None and path.remaining_segments > 0
+
+    def _geom(self, make):
+        """(segment, 0) or (None, return code 2/3/5/7) for a geometry the path layer refuses."""
+        try:
+            return make(), RTN_SUCCESS
+        except ValueError as e:
+            for c in (2, 3, 5):
+                if f"return code {c}" in str(e):
+                    return None, c
+            return None, RTN_PARAMETER_ERROR
+
+    def _path_cmd(self, dim, make, g0=False) -> int:
+        """A line or arc (pulse, absolute): buffer mode appends it (the Mv dimension fixes the dimension, L5244),
+        immediate mode runs it at once at SynVel/SynAcc (L1445-1492)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        st = self._pth()
+        if st.open:
+            if not st.mv or dim > st.mv_dim:
+                return self._crd_fault(8)   # no Mv* after StrtList, or a 3-D command after MvXY (L335, L5244)
+            path = self._gp()
+            if path.fifo_space < 1 + len(st.pending_io):
+                return self._crd_fault(15)  # buffer full: re-send (L1575-1579, L347)
+            seg, rtn = self._geom(lambda: make(list(path.tail)))
+            if seg is None:
+                return rtn
+            vel = st.syn_vel if st.syn_vel > 0 else st.mv_vel
+            for do in st.pending_io:
+                path.buf_io(0, *do)
+            st.pending_io = []
+            if st.dcc_vel is not None:
+                path.push_segment(seg, vel, st.mv_acc, vel_end=st.dcc_vel, g0=g0)
+            else:
+                path.push_segment(seg, vel, st.mv_acc, g0=g0, auto_end=not g0)
+            st.dcc_vel = None
+            st.io_count = st.delay_count = 0
+            st.pushed += 1
+            st.ends.append(list(seg.end))
+            return RTN_SUCCESS
+        try:
+            path = self._gp()
+        except (CardCommandRefused, MotionCommandRefused):
+            return self._crd_fault(8)
+        if self._path_moving(path):
+            return self._crd_fault(8)       # an immediate path command while the path moves (L1492, L335)
+        if not (st.syn_vel > 0 and st.syn_acc > 0):
+            return self._crd_fault(8)       # no feed set (SetSynVel / SetSynAcc): a bad path parameter
+        kept = self._kept(path)
+        if not kept:
+            try:
+                path = self._fresh()
+            except (CardCommandRefused, MotionCommandRefused):
+                return self._crd_fault(8)
+        start = list(path.state.pos)
+        seg, rtn = self._geom(lambda: make(start))
+        if seg is None:
+            return rtn
+        if kept:
+            # a stopped buffer waits for RestoreMtn; a line runs at once from where the path stands (L1652, V104)
+            if seg.kind != "line":
+                return self._crd_fault(8)
+            return self._run(lambda: (self._card.group_start(_GE_CRD_SLOT),
+                                      path.move_immediate(list(seg.end), st.syn_vel, st.syn_acc)))
+
+        def run_now():
+            path.push_segment(seg, st.syn_vel, st.syn_acc, g0=g0, stop_at_end=True)
+            st.ends = [list(seg.end)]
+            self._card.group_start(_GE_CRD_SLOT)
+            path.start()
+
+        rtn = self._run(run_now)
+        if rtn == RTN_SUCCESS:
+            st.buffer = False   # immediate input mode again (crd bit 7, V103)
+            st.started = False
+            st.mv_pushed = 0
+        return rtn
+
+    def _run(self, fn) -> int:
+        try:
+            fn()
+        except (CardCommandRefused, MotionCommandRefused):
+            return self._crd_fault(8)
+        except ValueError:
+            return RTN_PARAMETER_ERROR
+        return RTN_SUCCESS
+
+    @staticmethod
+    def _line_to(dim, pts):
+        def make(t):
+            end = list(t)
+            for k, p in enumerate(pts):
+                end[k] = float(p)
+            return _core.PathSegment.line(t, end)
+        return make
+
+    def _pts_ok(self, *pts) -> bool:
+        return all(_real_in(p, _POS_MIN, _POS_MAX) for p in pts)
+
+    def GT_LnXY(self, x, y) -> int:
+        """Line to the absolute point (x, y), pulse (L4946); the feed is SetSynVel (L1407). Returns 3 for a zero
+        length or overflow (L280)."""
+        return self._path_cmd(2, self._line_to(2, (x, y))) if self._pts_ok(x, y) else self._len_overflow()
+
+    def GT_LnXYZ(self, x, y, z) -> int:
+        """3-D line, pulse (L4980)."""
+        return self._path_cmd(3, self._line_to(3, (x, y, z))) if self._pts_ok(x, y, z) else self._len_overflow()
+
+    def GT_LnXYZA(self, x, y, z, a) -> int:
+        """4-D line, pulse (L5010)."""
+        return (self._path_cmd(4, self._line_to(4, (x, y, z, a))) if self._pts_ok(x, y, z, a)
+                else self._len_overflow())
+
+    def GT_LnXYG0(self, x, y) -> int:
+        """Rapid line: a full profile from StrtVel to SynVel and back to rest, scaled by OverrideG0 (L1473-1477,
+        L5036)."""
+        return self._path_cmd(2, self._line_to(2, (x, y)), g0=True) if self._pts_ok(x, y) else self._len_overflow()
+
+    def GT_LnXYZG0(self, x, y, z) -> int:
+        """3-D rapid line (L5075)."""
+        return (self._path_cmd(3, self._line_to(3, (x, y, z)), g0=True) if self._pts_ok(x, y, z)
+                else self._len_overflow())
+
+    def GT_LnXYZAG0(self, x, y, z, a) -> int:
+        """4-D rapid line (L5113; printed as GT_LnXYZG0(x,y,z,a) at L5115, V110)."""
+        return (self._path_cmd(4, self._line_to(4, (x, y, z, a)), g0=True) if self._pts_ok(x, y, z, a)
+                else self._len_overflow())
+
+    def _len_overflow(self) -> int:
+        return 3 if self._card is not None else RTN_COMM_ERROR
+
+    def _arc(self, plane, c1, c2, angle) -> int:
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if not self._pts_ok(c1, c2):
+            return 3
+        if not _real_in(angle, -360, 360):
+            return RTN_PARAMETER_ERROR
+        dim = 2 if plane == "xy" else 3
+        return self._path_cmd(dim, lambda t: _core.PathSegment.arc_center_angle(t, plane, (float(c1), float(c2)),
+                                                                                float(angle)))
+
+    def GT_ArcXY(self, x_center, y_center, angle) -> int:
+        """Arc about the absolute centre by ``angle`` degrees in [-360, 360], + = CCW seen from +Z (L1481-1486,
+        L3434-3443); the radius is the distance of the start point (2: radius 0)."""
+        return self._arc("xy", x_center, y_center, angle)
+
+    def GT_ArcYZ(self, y_center, z_center, angle) -> int:
+        """Arc in the YZ plane, seen from +X (L3519-3527)."""
+        return self._arc("yz", y_center, z_center, angle)
+
+    def GT_ArcZX(self, z_center, x_center, angle) -> int:
+        """Arc in the ZX plane, seen from +Y (L3593-3601)."""
+        return self._arc("zx", z_center, x_center, angle)
+
+    def _arcp(self, plane, e1, e2, r, direction) -> int:
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if not self._pts_ok(e1, e2, r):
+            return 3
+        if not _int_in(direction, -1, 1) or int(direction) == 0:
+            return RTN_PARAMETER_ERROR
+        i, j = {"xy": (0, 1), "yz": (1, 2), "zx": (2, 0)}[plane]
+        dim = 2 if plane == "xy" else 3
+
+        def make(t):
+            end = list(t)
+            end[i], end[j] = float(e1), float(e2)
+            return _core.PathSegment.arc_radius(t, end, plane, float(r), int(direction) == 1)
+
+        return self._path_cmd(dim, make)
+
+    def GT_ArcXYP(self, x_end, y_end, r, direction) -> int:
+        """Arc to the end point with signed radius: r > 0 the minor arc, r < 0 the major one; direction +1 CCW,
+        -1 CW (L3477-3483). 2: radius or chord 0; 5: chord > diameter (L280-282)."""
+        return self._arcp("xy", x_end, y_end, r, direction)
+
+    def GT_ArcYZP(self, y_end, z_end, r, direction) -> int:
+        """YZ arc by end point and radius (L3555-3561)."""
+        return self._arcp("yz", y_end, z_end, r, direction)
+
+    def GT_ArcZXP(self, z_end, x_end, r, direction) -> int:
+        """ZX arc by end point and radius (L3628-3636)."""
+        return self._arcp("zx", z_end, x_end, r, direction)
+
+    # feed parameters (L1393-1419, §4.3)
+    def _feed_value(self, value, hi):
+        """4 for a value <= 0 or overflow (synthesised vel/acc, L280)."""
+        return _real_in(value, 0, hi) and float(value) > 0
+
+    def GT_SetSynVel(self, vel) -> int:
+        """Path feed, pulse/ms, for the following lines and arcs; bufferable (L1407-1409, L5770-5778)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if not self._feed_value(vel, _VEL_MAX):
+            return 4
+        self._pth().syn_vel = float(vel)
+        return RTN_SUCCESS
+
+    def GT_SetSynAcc(self, acc) -> int:
+        """Path acceleration of immediate motion, pulse/ms^2; illegal in buffer mode (bit 8, L1411-1413, L335)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        st = self._pth()
+        if st.open:
+            return self._crd_fault(8)
+        if not self._feed_value(acc, _ACC_MAX):
+            return 4
+        st.syn_acc = float(acc)
+        return RTN_SUCCESS
+
+    def _setting(self, value, hi, field, zero_ok=False) -> int:
+        if self._card is None:
+            return RTN_COMM_ERROR
+        st = self._pth()
+        if self._card.ge_crd_exists() and self._path_moving(self._card.ge_path()):
+            return self._crd_fault(8)  # start/max velocity, stop acceleration: not while the path moves (L335)
+        if not _real_in(value, 0, hi) or (float(value) == 0 and not zero_ok):
+            return 4
+        setattr(st, field, float(value))
+        st.dirty = True
+        if field == "stp_acc" and self._card.ge_crd_exists():
+            self._card.ge_path().set_stop_dec(0, float(value))
+        return RTN_SUCCESS
+
+    def GT_SetStrtVel(self, vel) -> int:
+        """Start/stop velocity, pulse/ms (default 0.5 = 500 Hz, L1395-1399, L5748-5756); meant for the set-up."""
+        return self._setting(vel, _VEL_MAX, "strt_vel", zero_ok=True)
+
+    def GT_SetMaxVel(self, vel) -> int:
+        """Feed clamp, pulse/ms (default 256, L1401-1405, L5638-5644)."""
+        return self._setting(vel, _VEL_MAX, "max_vel")
+
+    def GT_SetStpAcc(self, acc) -> int:
+        """Deceleration of abnormal stops and GT_EStpMtn, pulse/ms^2 (L1415-1419, L5736-5744)."""
+        return self._setting(acc, _ACC_MAX, "stp_acc")
+
+    def _override(self, ratio, g0) -> int:
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if not _real_in(ratio, 0, 2) or float(ratio) == 0:
+            return RTN_PARAMETER_ERROR   # a multiplier, (0, 2] (L1952-1958, L5348; V105)
+        st = self._pth()
+        if g0:
+            st.override_g0 = float(ratio)
+        else:
+            st.override = float(ratio)
+        if self._card.ge_crd_exists():
+            path = self._card.ge_path()
+            (path.set_g0_override if g0 else path.set_override)(float(ratio))
+        return RTN_SUCCESS
+
+    def GT_Override(self, override) -> int:
+        """Feed multiplier of all path motion but G0 and Mv, on the running segment and all later ones; the
+        result is clamped to MaxVel (L1952-1958, L5342-5352)."""
+        return self._override(override, False)
+
+    def GT_OverrideG0(self, override) -> int:
+        """Multiplier of G0 lines and the Mv positioning (L5354-5362)."""
+        return self._override(override, True)
+
+    def GT_SetDccVel(self, vel) -> int:
+        """End velocity, pulse/ms, of the next buffered path segment (L5492-5500, L1679; V106). Buffer only."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        st = self._pth()
+        if not st.open or not st.mv:
+            return self._crd_fault(8)
+        if not _real_in(vel, 0, _VEL_MAX):
+            return 4
+        st.dcc_vel = float(vel)
+        return RTN_SUCCESS
+
+    def GT_MapCnt(self, axis, count) -> int:
+        """Work-coordinate offset of ``axis``, pulse: axis = coordinate + count (L1960-1971, L5179-5187); refused
+        (bit 6) while an axis moves, the buffer is open, or out of range."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if not _int_in(axis, 1, min(4, self.axes)):
+            return self._param(-1)
+        st = self._pth()
+        moving = any(self._card.moving(a) for a in range(len(self._card)))
+        if moving or st.open or not _real_in(count, _POS_MIN, _POS_MAX):
+            return self._crd_fault(6)
+        st.offsets[int(axis) - 1] = float(count)
+        st.dirty = True
+        return RTN_SUCCESS
+
+    # buffer management (L1496-1664, Tables 6-3/6-4)
+    def GT_StrtList(self) -> int:
+        """Opens and clears the buffer (buffer input mode, segment number 0); refused (bit 9) while buffered motion
+        has not stopped or the buffer is open (L1549, L5861-5865)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        st = self._pth()
+        if st.open:
+            return self._crd_fault(9)
+        if self._card.ge_crd_exists():
+            path = self._card.ge_path()
+            if path.busy or (st.started and path.running and not path.stopped):
+                return self._crd_fault(9)
+        try:
+            self._fresh()
+        except (CardCommandRefused, MotionCommandRefused):
+            return self._crd_fault(9)
+        st.open_list()
+        return RTN_SUCCESS
+
+    def _mv(self, point, vel, acc) -> int:
+        if self._card is None:
+            return RTN_COMM_ERROR
+        st = self._pth()
+        if not st.open or st.mv:
+            return self._crd_fault(8)   # Mv* only right after StrtList, once (L1551, L335)
+        if not self._pts_ok(*point):
+            return 3
+        if not self._feed_value(vel, _VEL_MAX) or not self._feed_value(acc, _ACC_MAX):
+            return 4
+        path = self._gp()
+        t = list(path.tail)
+        end = list(t)
+        for k, p in enumerate(point):
+            end[k] = float(p)
+        if end != t:
+            path.push_segment(_core.PathSegment.line(t, end), float(vel), float(acc), g0=True)
+            st.mv_pushed = 1
+            st.ends.append(end)
+        st.mv, st.mv_dim, st.mv_vel, st.mv_acc = True, len(point), float(vel), float(acc)
+        st.syn_vel = float(vel)   # the feed of the later segments until SetSynVel (L1555)
+        return RTN_SUCCESS
+
+    def GT_MvXY(self, x, y, vel, acc) -> int:
+        """Buffer start point (x, y) pulse, feed vel pulse/ms and acceleration acc pulse/ms^2 of the buffer
+        (acceleration fixed); StrtMtn first goes there by a line that ends at rest (L1551-1555, L5232)."""
+        return self._mv((x, y), vel, acc)
+
+    def GT_MvXYZ(self, x, y, z, vel, acc) -> int:
+        """3-D buffer start point (L5277)."""
+        return self._mv((x, y, z), vel, acc)
+
+    def GT_MvXYZA(self, x, y, z, a, vel, acc) -> int:
+        """4-D buffer start point (L5291)."""
+        return self._mv((x, y, z, a), vel, acc)
+
+    def GT_EndList(self) -> int:
+        """Closes the buffer (only while open, else bit 9) (L1559-1571, L4037)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        st = self._pth()
+        if not st.open:
+            return self._crd_fault(9)
+        st.open = False
+        return RTN_SUCCESS
+
+    def GT_AddList(self) -> int:
+        """Reopens a closed buffer; while open: bit 9 (L1559-1571, L3339)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        st = self._pth()
+        if st.open or not st.buffer or not st.mv:
+            return self._crd_fault(9)
+        st.open = True
+        return RTN_SUCCESS
+
+    def GT_StrtMtn(self) -> int:
+        """Runs the buffer: first the Mv line (ends at rest), then the segments; keeps executing while the host
+        streams more until EndList (L1640-1646, L5871-5875). Bit 9 while path motion runs."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        st = self._pth()
+        if not st.buffer or not st.mv:
+            return self._crd_fault(9)
+        path = self._gp()
+        if path.busy or st.started:
+            return self._crd_fault(9)   # StrtMtn while path motion runs, or to resume (RestoreMtn, L1664)
+
+        def start():
+            self._card.group_start(_GE_CRD_SLOT)
+            path.start()
+
+        rtn = self._run(start)
+        if rtn == RTN_SUCCESS:
+            st.started = True
+        return rtn
+
+    def _stp(self, abrupt) -> int:
+        if self._card is None:
+            return RTN_COMM_ERROR
+        st = self._pth()
+        if not self._card.ge_crd_exists():
+            return RTN_SUCCESS
+        path = self._card.ge_path()
+        try:
+            path.stop(abrupt)
+        except (CardCommandRefused, MotionCommandRefused):
+            return self._crd_fault(8)
+        if st.buffer:
+            st.open = False   # both stops close the buffer; the breakpoint is kept (L1648-1650)
+        return RTN_SUCCESS
+
+    def GT_StpMtn(self) -> int:
+        """Smooth path stop at the feed acceleration; closes the buffer, keeps the breakpoint (L1648-1654, L5852)."""
+        return self._stp(False)
+
+    def GT_EStpMtn(self) -> int:
+        """Path stop at StpAcc (SetStpAcc; 0: at once); closes the buffer, keeps the breakpoint (L1648, L4064)."""
+        return self._stp(True)
+
+    def GT_RestoreMtn(self) -> int:
+        """Resumes a stopped buffer: a line from the present point to the breakpoint ending at the start
+        velocity, then the rest (L1656-1664, L5412). Bit 9 unless stopped with unexecuted segments."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        st = self._pth()
+        if not st.started or not self._card.ge_crd_exists():
+            return self._crd_fault(9)
+        path = self._card.ge_path()
+        if path.busy or not path.stopped or not self._kept(path):
+            return self._crd_fault(9)
+
+        def start():
+            self._card.group_start(_GE_CRD_SLOT)
+            path.start()
+
+        return self._run(start)
+
+    def _buf_gate(self) -> int | None:
+        """-1 in immediate mode (L3754); bit 8 without Mv; None when the buffer takes it."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        st = self._pth()
+        if not st.open:
+            return RTN_COMM_ERROR
+        if not st.mv:
+            return self._crd_fault(8)
+        return None
+
+    def GT_BufIO(self, io_status) -> int:
+        """Buffered write of all 16 outputs EXO0..15 between the previous segment's end and the next one's start;
+        at most two between motion commands (L3750-3756). -1 in immediate mode."""
+        gate = self._buf_gate()
+        if gate is not None:
+            return gate
+        if not _int_in(io_status, 0, 0xFFFF):
+            return RTN_PARAMETER_ERROR
+        st = self._pth()
+        if st.io_count >= 2:
+            return self._crd_fault(8)
+        path = self._card.ge_path()
+        if path.fifo_space < 1:
+            return self._crd_fault(15)
+        path.buf_io(0, 0xFFFF, int(io_status))
+        st.io_count += 1
+        return RTN_SUCCESS
+
+    def GT_BufIOBit(self, io_bit, bit_status) -> int:
+        """Buffered write of one output, effective with the next path segment; of two in a row the one nearest
+        the path command wins (L3766-3776)."""
+        gate = self._buf_gate()
+        if gate is not None:
+            return gate
+        if not _int_in(io_bit, 0, 15) or not _int_in(bit_status, 0, 1):
+            return RTN_PARAMETER_ERROR
+        self._pth().pending_io = [(1 << int(io_bit), int(bit_status) << int(io_bit))]
+        return RTN_SUCCESS
+
+    def GT_Delay(self, delay_time) -> int:
+        """Buffered dwell between two segments, ms (0 < t < 8192; V107); one between motion commands (L3944-3950)."""
+        gate = self._buf_gate()
+        if gate is not None:
+            return gate
+        if not _int_in(delay_time, 1, 8191):
+            return RTN_PARAMETER_ERROR
+        st = self._pth()
+        if st.delay_count >= 1:
+            return self._crd_fault(8)
+        path = self._card.ge_path()
+        if path.fifo_space < 1:
+            return self._crd_fault(15)
+        path.buf_delay(float(delay_time))
+        st.delay_count += 1
+        return RTN_SUCCESS
+
+    # feedback (Table 6-15, L1973-2040)
+    def GT_GetCrdSts(self):
+        """(rtn, path status, 16 bits) (Table 4-5 L951-968): 0 no path motion (1 idle), 1 buffer closed,
+        4 segment completed, 7 immediate input mode, 9 an axis fault stopped the path, 13 buffer empty."""
+        if self._card is None:
+            return RTN_COMM_ERROR, 0
+        st = self._pth()
+        if not self._card.ge_crd_exists():
+            return RTN_SUCCESS, _core.ge_crd_status(buffer_closed=not st.open, immediate_mode=not st.buffer)
+        path = self._card.ge_path()
+        info = self._card.group_info(_GE_CRD_SLOT)
+        return RTN_SUCCESS, _core.ge_crd_status(
+            moving=self._path_moving(path), buffer_closed=not st.open, segment_complete=not path.busy,
+            immediate_mode=not st.buffer, fault_stopped=info["fault_stopped"],
+            buffer_empty=path.fifo_size == 0 and path.window_size == 0)
+
+    def _pnt(self, which):
+        if self._card is None:
+            return RTN_COMM_ERROR, 0
+        if not self._card.ge_crd_exists():
+            return RTN_SUCCESS, [float(self._card.profile_pos(a)) - self._pth().offsets[a]
+                                 for a in range(min(3, len(self._card)))]
+        path = self._card.ge_path()
+        p = which(path)
+        return RTN_SUCCESS, None if p is None else [float(v) for v in list(p)[:3]]
+
+    def GT_GetPrfPnt(self):
+        """(rtn, [X, Y, Z] profile point, pulse, work coordinates) (L4675-4699; three values, V108)."""
+        return self._pnt(lambda p: p.state.pos)
+
+    def GT_GetSegPnt(self):
+        """(rtn, [X, Y, Z] end point of the executing segment, pulse) (L4735-4743): the tail when idle."""
+        return self._pnt(lambda p: self._pth().seg_end(p))
+
+    def GT_GetBrkPnt(self):
+        """(rtn, [X, Y, Z] breakpoint of the last buffered stop, pulse, or None) (L4233-4241)."""
+        return self._pnt(lambda p: p.breakpoint)
+
+    def GT_GetMtnNm(self):
+        """(rtn, segment number): Mv = 0, path segments from 1; holds when the buffer runs dry, while stopped,
+        after the last segment; StrtList clears it; wraps 32767 -> 1 (L2005-2017, L4578-4586; V109)."""
+        if self._card is None:
+            return RTN_COMM_ERROR, 0
+        st = self._pth()
+        if not self._card.ge_crd_exists() or not st.buffer:
+            return RTN_SUCCESS, 0
+        path = self._card.ge_path()
+        n = path.state.segments_done - st.mv_pushed + (1 if path.busy and path.state.speed > 0 else 0)
+        n = max(0, min(n, st.pushed))
+        return RTN_SUCCESS, (n - 1) % 32767 + 1 if n > 0 else 0
+
+    def GT_GetPrfVel(self, *axis):
+        """PX ``GT_GetPrfVel(axis)``: (rtn, profile velocity of the axis, pulse/ms) (L4713). SX
+        ``GT_GetPrfVel()``: (rtn, path feed velocity, pulse/ms) (L4725-4733)."""
+        if self.variant == "PX":
+            if len(axis) != 1:
+                return RTN_PARAMETER_ERROR, 0
+            return self._read(axis[0], lambda a: self._card.profile_vel(a) / self._k)
+        if self._card is None:
+            return RTN_COMM_ERROR, 0
+        if axis:
+            return RTN_PARAMETER_ERROR, 0
+        return RTN_SUCCESS, self._card.ge_path().state.speed if self._card.ge_crd_exists() else 0.0
+
+    # look-ahead module A (L1666-1727, Table 6-6; API L3370-3394, L3790-3800, L4879-4887)
+    def GT_InitLookAhead(self, t, acc_max, acc, vel, n, con) -> int:
+        """Module A: corner time t s, acc_max and acc mm/s^2 (acc < acc_max), feed vel mm/s, n segments, con
+        pulse/mm (L4879-4887). The path starts at the present profile point (in mm)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        try:
+            p = _core.GeLookAheadParams(t_s=float(t), acc_max=float(acc_max), acc=float(acc), vel=float(vel),
+                                        n=float(n), con=float(con))
+            start = [float(self._card.profile_pos(a)) - self._pth().offsets[a] for a in range(min(3, len(self._card)))]
+            self._pth().la = _core.GeLookAhead(p, [v / float(con) for v in start])
+        except (ValueError, TypeError):
+            return RTN_PARAMETER_ERROR
+        return RTN_SUCCESS
+
+    def GT_AddLookData(self, code, plane_group, r, x, y, z, vel, cx, cy, i, n, flag) -> int:
+        """Pushes one segment (mm, mm/s) to module A: code 0 G00, 1 G01, 2 G02 CW, 3 G03 CCW; plane_group 17 XY,
+        18 ZX, 19 YZ; i the slot (not used: the module keeps its own order, V111), n the user number, flag: stop
+        at its end. 0 accepted, 1 the point equals the previous one (L3370-3394, Table 6-8 L1709-1724)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        la = self._pth().la
+        if la is None:
+            return self._crd_fault(8)
+        try:
+            return la.add_look_data(int(code), int(plane_group), float(r), float(x), float(y), float(z), float(vel),
+                                    float(cx), float(cy), int(n), bool(flag))
+        except (ValueError, TypeError):
+            return RTN_PARAMETER_ERROR
+
+    def GT_CalVel(self):
+        """(rtn, end velocity mm/s, user number) of the oldest segment not yet returned: rtn 0 more follow, 1 it was
+        the last (L3790-3800, L1725). Send the segment with GT_SetDccVel(vel * con / 1000)."""
+        if self._card is None:
+            return RTN_COMM_ERROR, 0.0, 0
+        la = self._pth().la
+        if la is None or la.pending == 0:
+            self._crd_fault(8)
+            return RTN_COMMAND_ERROR, 0.0, 0
+        return tuple(la.cal_vel())
+
+    # look-ahead module B, the Ex family (Tables 6-9..6-12 L1729-1812; L5147-5177): the card's look-ahead window
+    # (PathGenerator.init_lookahead, the same planner as module A in pulse and ms) in front of the buffer (V111)
+    def GT_InitLookAheadEx(self, T, amax, am, n, con) -> int:
+        """Module B: corner time T s, amax and am mm/s^2 (am < amax), n >= 200 look-ahead segments, con pulse/mm
+        (L1729-1785, L4889-4895; also GT_InitLookAheadExx, V110)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if not _int_in(n, 200, 32766):
+            return RTN_PARAMETER_ERROR
+        try:
+            p = _core.GeLookAheadParams(t_s=float(T), acc_max=float(amax), acc=float(am), vel=1.0, n=float(n),
+                                        con=float(con))
+        except (ValueError, TypeError):
+            return RTN_PARAMETER_ERROR
+        self._pth().ex = _GeLookAheadEx(p)
+        return RTN_SUCCESS
+
+    def GT_InitLookAheadExx(self, T, amax, am, n, con) -> int:
+        """The name ch12 and Example 6-4 use for GT_InitLookAheadEx (L1856, L4889; V110)."""
+        return vars(GeController)["GT_InitLookAheadEx"].__wrapped__(self, T, amax, am, n, con)
+
+    def _mv_ex(self, point_mm, vel) -> int:
+        if self._card is None:
+            return RTN_COMM_ERROR
+        st = self._pth()
+        ex = st.ex
+        if ex is None:
+            return self._crd_fault(8)
+        c = ex.params.con
+        if not all(_real_in(v, -1e12, 1e12) and _real_in(float(v) * c, _POS_MIN, _POS_MAX) for v in point_mm):
+            return 3
+        if not _real_in(vel, 0, 1e9) or float(vel) <= 0:
+            return 4
+        if not st.open or st.mv:
+            return self._crd_fault(8)
+        st.dim, st.dirty = 3, True   # the look-ahead plans X, Y, Z (L1679): a 3-D crd
+        try:
+            path = self._gp(rebuild=True)
+        except (CardCommandRefused, MotionCommandRefused):
+            return self._crd_fault(8)
+        p = ex.params
+        path.init_lookahead(_core.LookAheadParams(t_ms=p.t_s * 1000.0, acc_max=p.acc_max * c / 1e6, n=p.n))
+        rtn = self._mv([float(v) * c for v in point_mm], float(vel) * c / 1000.0, p.acc * c / 1e6)
+        if rtn == RTN_SUCCESS:
+            ex.active = True
+            st.mv_dim = len(point_mm)
+        return rtn
+
+    def GT_MvXYEx(self, x, y, vel) -> int:
+        """Module B start point (x, y) mm at vel mm/s; right after StrtList (L1787-1789, L5269; printed as
+        GT_MvXYZEx(x,y,vel) at L5271, V110)."""
+        return self._mv_ex((x, y), vel)
+
+    def GT_MvXYZEx(self, x, y, z, vel) -> int:
+        """Module B 3-D start point, mm, mm/s (L5305)."""
+        return self._mv_ex((x, y, z), vel)
+
+    def _ex_gate(self, msg, number):
+        """(path, ex) when an Ex command may be buffered now, else (None, rtn) after filling msg."""
+        st = self._pth()
+        ex = st.ex
+        if ex is None or not ex.active or not st.open or not self._card.ge_crd_exists():
+            msg.error, msg.mtnNum, msg.num = 8, int(number), 0
+            return None, self._crd_fault(8)
+        path = self._card.ge_path()
+        if path.window_size >= int(ex.params.n) and path.fifo_space < 1:
+            msg.error, msg.mtnNum, msg.num = 3, int(number), path.window_size
+            self._crd_fault(15)
+            return None, RTN_COMMAND_ERROR
+        return path, ex
+
+    def _ex_motion(self, msg, number, F, dcc, make, g0=False) -> int:
+        """One Ex motion command (mm, mm/s): into the card's look-ahead window; buffer full: rtn 1, msg.error 3,
+        nothing taken (re-send); the same point as before: rtn 1, msg.error 1 (L5147-5169)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        msg = msg if msg is not None else TLookAheadMsg()
+        if not _int_in(number, -2**31, 2**31 - 1) or not _int_in(dcc, 0, 1):
+            return RTN_PARAMETER_ERROR
+        if not (_real_in(F, 0, 1e9) and float(F) > 0):
+            return 4
+        path, ex = self._ex_gate(msg, number)
+        if path is None:
+            return ex
+        c = ex.params.con
+        tail = list(path.tail)
+        try:
+            seg = make([v / c for v in tail], c)
+        except ValueError as e:
+            msg.error, msg.mtnNum, msg.num = 8, int(number), 0
+            for code in (2, 3, 5):
+                if f"return code {code}" in str(e):
+                    return 1 if code == 3 and "zero" in str(e) else code
+            return RTN_PARAMETER_ERROR
+        if seg is None:
+            msg.error, msg.mtnNum, msg.num = 1, int(number), 0   # the point equals the previous one (L3374)
+            return RTN_COMMAND_ERROR
+        path.push_segment(seg, float(F) * c / 1000.0, ex.params.acc * c / 1e6, g0=g0, stop_at_end=bool(int(dcc)))
+        self._pth().pushed += 1
+        self._pth().ends.append(list(seg.end))
+        msg.error, msg.mtnNum, msg.num = 0, int(number), 0
+        return RTN_SUCCESS
+
+    def _ex_line(self, pts, F, dccFlag, CodeNum, pMsg, g0) -> int:
+        def make(tail_mm, c):
+            end = [v * c for v in tail_mm]
+            for k, v in enumerate(pts):
+                end[k] = float(v) * c
+            tail = [v * c for v in tail_mm]
+            if all(abs(a - b) < 0.5 for a, b in zip(end, tail)):
+                return None
+            return _core.PathSegment.line(tail, end)
+
+        return self._ex_motion(pMsg, CodeNum, F, dccFlag, make, g0)
+
+    def GT_LnXYEx(self, x, y, F, dccFlag, CodeNum, pMsg=None) -> int:
+        """Module B G01 line to (x, y) mm at F mm/s; dccFlag 1 stops at its end; CodeNum the user block number;
+        pMsg a TLookAheadMsg filled on error (L4972, Table 6-12 L1803-1812)."""
+        return self._ex_line((x, y), F, dccFlag, CodeNum, pMsg, False)
+
+    def GT_LnXYZEx(self, x, y, z, F, dccFlag, CodeNum, pMsg=None) -> int:
+        """Module B 3-D G01 line, mm, mm/s (L5067)."""
+        return self._ex_line((x, y, z), F, dccFlag, CodeNum, pMsg, False)
+
+    def GT_LnXYG0Ex(self, x, y, F, dccFlag, CodeNum, pMsg=None) -> int:
+        """Module B G00 rapid to (x, y) mm (starts and ends at rest) (L5103)."""
+        return self._ex_line((x, y), F, dccFlag, CodeNum, pMsg, True)
+
+    def GT_LnXYZG0Ex(self, x, y, z, F, dccFlag, CodeNum, pMsg=None) -> int:
+        """Module B 3-D G00 rapid, mm (L5139)."""
+        return self._ex_line((x, y, z), F, dccFlag, CodeNum, pMsg, True)
+
+    def _ex_arc(self, plane, c1, c2, angle, F, dccFlag, CodeNum, pMsg) -> int:
+        def make(tail_mm, c):
+            return _core.PathSegment.arc_center_angle([v * c for v in tail_mm], plane,
+                                                      (float(c1) * c, float(c2) * c), float(angle))
+
+        if not _real_in(angle, -360, 360):
+            return RTN_PARAMETER_ERROR if self._card is not None else RTN_COMM_ERROR
+        return self._ex_motion(pMsg, CodeNum, F, dccFlag, make)
+
+    def _ex_arcp(self, plane, e1, e2, r, direction, F, dccFlag, CodeNum, pMsg) -> int:
+        i, j = {"xy": (0, 1), "yz": (1, 2), "zx": (2, 0)}[plane]
+
+        def make(tail_mm, c):
+            tail = [v * c for v in tail_mm]
+            end = list(tail)
+            end[i], end[j] = float(e1) * c, float(e2) * c
+            return _core.PathSegment.arc_radius(tail, end, plane, float(r) * c, int(direction) == 1)
+
+        if not _int_in(direction, -1, 1) or int(direction) == 0:
+            return RTN_PARAMETER_ERROR if self._card is not None else RTN_COMM_ERROR
+        return self._ex_motion(pMsg, CodeNum, F, dccFlag, make)
+
+    def GT_ArcXYEx(self, x_center, y_center, angle, F, dccFlag, CodeNum, pMsg=None) -> int:
+        """Module B arc about the centre (mm) by angle degrees (> 0 CCW) (L3468)."""
+        return self._ex_arc("xy", x_center, y_center, angle, F, dccFlag, CodeNum, pMsg)
+
+    def GT_ArcYZEx(self, y_center, z_center, angle, F, dccFlag, CodeNum, pMsg=None) -> int:
+        """Module B YZ arc, centre + angle (L3545)."""
+        return self._ex_arc("yz", y_center, z_center, angle, F, dccFlag, CodeNum, pMsg)
+
+    def GT_ArcZXEx(self, z_center, x_center, angle, F, dccFlag, CodeNum, pMsg=None) -> int:
+        """Module B ZX arc, centre + angle (L3619; printed GT_ArcZYEx at L3621, V110)."""
+        return self._ex_arc("zx", z_center, x_center, angle, F, dccFlag, CodeNum, pMsg)
+
+    def GT_ArcXYPEx(self, x_end, y_end, r, direction, F, dccFlag, CodeNum, pMsg=None) -> int:
+        """Module B arc to the end point (mm), signed radius, direction 1 CCW / -1 CW (L3511)."""
+        return self._ex_arcp("xy", x_end, y_end, r, direction, F, dccFlag, CodeNum, pMsg)
+
+    def GT_ArcYZPEx(self, y_end, z_end, r, direction, F, dccFlag, CodeNum, pMsg=None) -> int:
+        """Module B YZ arc by end point and radius (L3583)."""
+        return self._ex_arcp("yz", y_end, z_end, r, direction, F, dccFlag, CodeNum, pMsg)
+
+    def GT_ArcZXPEx(self, z_end, x_end, r, direction, F, dccFlag, CodeNum, pMsg=None) -> int:
+        """Module B ZX arc by end point and radius (L3658; printed with (y_end, z_end) at L3660, V110)."""
+        return self._ex_arcp("zx", z_end, x_end, r, direction, F, dccFlag, CodeNum, pMsg)
+
+    def _ex_plain(self, push) -> int:
+        if self._card is None:
+            return RTN_COMM_ERROR
+        st = self._pth()
+        if not st.open:
+            return RTN_COMM_ERROR      # immediate mode (L3758-3762)
+        msg = TLookAheadMsg()
+        path, ex = self._ex_gate(msg, 0)
+        if path is None:
+            return ex
+        push(path)
+        return RTN_SUCCESS
+
+    def GT_BufIOEx(self, value) -> int:
+        """Module B buffered write of the 16 outputs, in order with the Ex motion commands (L3758-3762); -1 in
+        immediate mode."""
+        if self._card is not None and not _int_in(value, 0, 0xFFFF):
+            return RTN_PARAMETER_ERROR
+        return self._ex_plain(lambda path: path.buf_io(0, 0xFFFF, int(value)))
+
+    def GT_BufIOBitEx(self, io_bit, bit_status) -> int:
+        """Module B buffered write of one output (L3778)."""
+        if self._card is not None and (not _int_in(io_bit, 0, 15) or not _int_in(bit_status, 0, 1)):
+            return RTN_PARAMETER_ERROR
+        return self._ex_plain(lambda path: path.buf_io(0, 1 << int(io_bit), int(bit_status) << int(io_bit)))
+
+    def GT_DelayEx(self, time) -> int:
+        """Module B buffered dwell, ms, 0 < t < 8192 (Table 6-10 L1761; V107)."""
+        if self._card is not None and not _int_in(time, 1, 8191):
+            return RTN_PARAMETER_ERROR
+        return self._ex_plain(lambda path: path.buf_delay(float(time)))
+
+    def GT_M30(self, pMsg=None) -> int:
+        """Flushes module B: moves the look-ahead window into the card buffer as space allows. 9 while commands
+        remain (msg.error 3: the buffer is full; let the card run and call again), 0 when all are in; then
+        GT_EndList (L1793-1795, L5171-5177)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        msg = pMsg if pMsg is not None else TLookAheadMsg()
+        st = self._pth()
+        if st.ex is None or not st.ex.active or not st.open or not self._card.ge_crd_exists():
+            msg.error = 8
+            return self._crd_fault(8)
+        path = self._card.ge_path()
+        if path.flush():
+            msg.error, msg.num = 0, 0
+            return RTN_SUCCESS
+        msg.error, msg.num = 3, path.window_size
+        return 9
+
     # -- not simulated (documented in docs/card.md) ------------------------------------------------------------
     def GT_GetAdc(self, channel):
         """(1, 0): the analog inputs are not simulated (L4132-4142)."""
@@ -876,6 +1861,6 @@ def delay(ms: float):
     return _default.delay(ms)
 
 
-__all__ = ["GeController", "GE_FUNCTIONS", "RTN_COMMAND_ERROR", "RTN_COMM_ERROR", "RTN_PARAMETER_ERROR",
-           "RTN_REENTERED", "RTN_SUCCESS", "TAxis", "TWatchBuffer", "card", "controller", "delay", "run", "wait_until",
-           *GE_FUNCTIONS]
+__all__ = ["GeController", "GE_FUNCTIONS", "TLookAheadMsg", "RTN_COMMAND_ERROR", "RTN_COMM_ERROR",
+           "RTN_PARAMETER_ERROR", "RTN_REENTERED", "RTN_SUCCESS", "TAxis", "TWatchBuffer", "card", "controller", "delay",
+           "run", "wait_until", *GE_FUNCTIONS]
