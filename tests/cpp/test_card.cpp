@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "servobench/machine/card.hpp"
+#include "card_fixtures.hpp"
 #include "servobench/machine/gt_status.hpp"
 
 namespace mc = servobench::machine;
@@ -12,30 +13,10 @@ namespace sm = servobench::motion;
 
 namespace {
 
+using servobench::test::tuned_axis;
+using servobench::test::t_move;
+
 constexpr double kRadPerPulse = 2 * M_PI / 10000;
-
-mc::AxisConfig tuned_axis() {
-  mc::AxisConfig cfg;
-  servobench::control::GtServoLawParams law;
-  law.kp = 38;
-  law.ki = 60;
-  law.kd = 830;
-  law.kaff = 12870;
-  cfg.law = law;
-  servobench::plant::RigidPlantParams plant;
-  plant.inertia_kgm2 = 1e-4;
-  plant.viscous_nms = 1e-4;
-  cfg.plant = plant;
-  return cfg;
-}
-
-// Stages a T-curve move and updates the axis.
-void t_move(mc::Card& c, std::size_t i, double pos, double vel, double acc) {
-  c.stage_acc(i, acc);
-  c.stage_vel(i, vel);
-  c.stage_pos(i, pos);
-  c.update(1u << i);
-}
 
 std::uint32_t ev(mc::CardEvent e) { return mc::event_bit(e); }
 

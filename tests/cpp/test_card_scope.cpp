@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "servobench/machine/card.hpp"
+#include "card_fixtures.hpp"
 #include "servobench/machine/card_scope.hpp"
 #include "servobench/machine/gt_status.hpp"
 
@@ -13,27 +14,8 @@ namespace mc = servobench::machine;
 
 namespace {
 
-mc::AxisConfig tuned_axis() {
-  mc::AxisConfig cfg;
-  servobench::control::GtServoLawParams law;
-  law.kp = 38;
-  law.ki = 60;
-  law.kd = 830;
-  law.kaff = 12870;
-  cfg.law = law;
-  servobench::plant::RigidPlantParams plant;
-  plant.inertia_kgm2 = 1e-4;
-  plant.viscous_nms = 1e-4;
-  cfg.plant = plant;
-  return cfg;
-}
-
-void t_move(mc::Card& c, std::size_t i, double pos, double vel, double acc) {
-  c.stage_acc(i, acc);
-  c.stage_vel(i, vel);
-  c.stage_pos(i, pos);
-  c.update(1u << i);
-}
+using servobench::test::tuned_axis;
+using servobench::test::t_move;
 
 mc::SampleChannel ch(double axis, mc::SampleSignal s) {
   mc::SampleChannel c;
