@@ -1,5 +1,5 @@
 // Shared fixtures of the card tests: the tuned demo axis (GT law Kp 38, Ki 60, Kd 830, Kaff 12870 on a rigid
-// 1e-4 kg*m^2 plant, as servobench.demo_axis) and a staged T-curve move committed by Update.
+// 1e-4 kg*m^2 plant, as servobench.demo_axis; servo period in s) and a staged T-curve move committed by Update.
 #pragma once
 
 #include <cstddef>
@@ -8,7 +8,7 @@
 
 namespace servobench::test {
 
-inline machine::AxisConfig tuned_axis() {
+inline machine::AxisConfig tuned_axis(double period_s = 200e-6) {
   machine::AxisConfig cfg;
   control::GtServoLawParams law;
   law.kp = 38;
@@ -20,6 +20,7 @@ inline machine::AxisConfig tuned_axis() {
   plant.inertia_kgm2 = 1e-4;
   plant.viscous_nms = 1e-4;
   cfg.plant = plant;
+  cfg.servo_period_s = period_s;
   return cfg;
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "servobench/machine/card.hpp"
+#include "card_fixtures.hpp"
 #include "servobench/machine/card_group_ge.hpp"
 #include "servobench/machine/card_modes.hpp"
 
@@ -13,21 +14,7 @@ namespace sm = servobench::motion;
 
 namespace {
 
-mc::AxisConfig axis_cfg(double period_s) {
-  mc::AxisConfig cfg;
-  servobench::control::GtServoLawParams law;
-  law.kp = 38;
-  law.ki = 60;
-  law.kd = 830;
-  law.kaff = 12870;
-  cfg.law = law;
-  servobench::plant::RigidPlantParams plant;
-  plant.inertia_kgm2 = 1e-4;
-  plant.viscous_nms = 1e-4;
-  cfg.plant = plant;
-  cfg.servo_period_s = period_s;
-  return cfg;
-}
+mc::AxisConfig axis_cfg(double period_s) { return servobench::test::tuned_axis(period_s); }
 
 }  // namespace
 

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "servobench/machine/card.hpp"
+#include "card_fixtures.hpp"
 #include "servobench/machine/card_modes.hpp"
 #include "servobench/machine/crd_status.hpp"
 #include "servobench/machine/gt_status.hpp"
@@ -15,21 +16,7 @@ namespace sm = servobench::motion;
 
 namespace {
 
-mc::AxisConfig tuned_axis(double period_s = 200e-6) {
-  mc::AxisConfig cfg;
-  servobench::control::GtServoLawParams law;
-  law.kp = 38;
-  law.ki = 60;
-  law.kd = 830;
-  law.kaff = 12870;
-  cfg.law = law;
-  servobench::plant::RigidPlantParams plant;
-  plant.inertia_kgm2 = 1e-4;
-  plant.viscous_nms = 1e-4;
-  cfg.plant = plant;
-  cfg.servo_period_s = period_s;
-  return cfg;
-}
+mc::AxisConfig tuned_axis(double period_s = 200e-6) { return servobench::test::tuned_axis(period_s); }
 
 void t_move(mc::Card& c, std::size_t i, double pos, double vel, double acc) {
   c.stage_acc(i, acc);

@@ -3,7 +3,11 @@ ticks, and the module-level functions (the vendor's free functions) that call th
 
 from __future__ import annotations
 
+from .._core import CardCommandRefused, MotionCommandRefused
 from ..card import Card
+
+# The Googol return codes the GT and GUC-ECAT/iDEABOX libraries share (GT Table 2-1 L393-408, GUC Tab 2-1 L165-180).
+GOOGOL_SUCCESS, GOOGOL_COMMAND_ERROR, GOOGOL_PARAMETER_ERROR, GOOGOL_COMM_ERROR = 0, 1, 7, -1
 
 
 class DialectController:
@@ -24,6 +28,19 @@ class DialectController:
     def run_ms(self, ms: float):
         """Runs the card ``ms`` milliseconds (rounded to whole servo ticks)."""
         return self._card.run(int(round(ms * 1e-3 / self._card.servo_period_s)))
+
+    def _googol_do(self, fn, *args) -> int:
+        """Runs a Card command the Googol way: -1 without a card, 1 when the card refuses it (the cause is
+        recorded), 7 for a value out of range, else 0."""
+        if self._card is None:
+            return GOOGOL_COMM_ERROR
+        try:
+            fn(*args)
+        except (CardCommandRefused, MotionCommandRefused):
+            return GOOGOL_COMMAND_ERROR
+        except ValueError:
+            return GOOGOL_PARAMETER_ERROR
+        return GOOGOL_SUCCESS
 
     def wait_until(self, predicate, max_ticks: int = 10**7, chunk: int = 1) -> int:
         """Runs ``chunk`` ticks at a time until ``predicate()`` is true, at most ``max_ticks``; returns the ticks."""

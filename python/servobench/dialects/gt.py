@@ -59,15 +59,7 @@ class GtController(DialectController):
 
     # -- plumbing -------------------------------------------------------------------------------------------
     def _do(self, fn, *args) -> int:
-        if self._card is None:
-            return RTN_COMM_ERROR
-        try:
-            fn(*args)
-        except (CardCommandRefused, MotionCommandRefused):
-            return RTN_COMMAND_ERROR
-        except ValueError:
-            return RTN_PARAMETER_ERROR
-        return RTN_SUCCESS
+        return self._googol_do(fn, *args)
 
     def _param_error(self, fault: str) -> int:
         if self._card is None:

@@ -108,15 +108,7 @@ class GtsController(DialectController):
 
     # -- plumbing -------------------------------------------------------------------------------------------
     def _do(self, fn, *args) -> int:
-        if self._card is None:
-            return RTN_COMM_ERROR
-        try:
-            fn(*args)
-        except (CardCommandRefused, MotionCommandRefused):
-            return RTN_COMMAND_ERROR
-        except ValueError:
-            return RTN_PARAMETER_ERROR
-        return RTN_SUCCESS
+        return self._googol_do(fn, *args)
 
     def _get(self, fn, n_out=1):
         if self._card is None:
