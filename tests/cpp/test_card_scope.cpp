@@ -272,3 +272,40 @@ TEST(CardScope, ProbeAtATimeAndAtAPositionLatchesEveryArmedAxis) {
   EXPECT_DOUBLE_EQ(c.loop(0).capture().value(), b0[k - 1] + f * (b0[k] - b0[k - 1]));
   EXPECT_TRUE(c.events(0) & mc::event_bit(mc::CardEvent::Captured));
 }
+
+TEST(CardScope, ResetStopsTheSamplerAndTheCompareButKeepsTheHostsWatch) {
+  // GT_Reset / GT_HardRst (GT L4124-4142) return the card to its power-on state; the sampler and the compare are
+  // card registers, the event watch is the host's subscription (V126).
+  mc::Card c(4, tuned_axis());
+  c.axis_on(0);
+  mc::SamplerConfig cfg;
+  cfg.channels = {ch(0, mc::SampleSignal::error)};
+  cfg.depth = 100;
+  c.scope().start_sampler(cfg);
+  mc::PositionCompare& pc = c.scope().compare();
+  mc::CompareSource src;
+  src.axis = 0;
+  src.command = true;
+  pc.set_source(0, src, 4);
+  pc.set_linear(0, 1000, 4, 500);
+  pc.set_enabled_mask(0x1);
+  c.scope().set_watch(0, mc::event_bit(mc::CardEvent::MotionComplete), 0, 0);
+  c.scope().set_probe_position(0, 500);
+  c.run(10);
+  ASSERT_TRUE(c.scope().sampler().active());
+  ASSERT_TRUE(pc.active());
+  c.reset();
+  EXPECT_EQ(c.scope().sampler().state(), mc::SamplerState::Idle);
+  EXPECT_EQ(c.scope().sampler().filled(), 0u);
+  EXPECT_FALSE(c.scope().compare().active());
+  EXPECT_EQ(c.scope().compare().enabled_mask(), 0u);
+  EXPECT_EQ(c.scope().probe_axis(), -1);
+  EXPECT_TRUE(c.scope().watching());
+  // the kept watch still fires: a move after the reset ends with motion complete
+  c.axis_on(0);
+  c.clear_events(0, mc::kAllEvents);
+  t_move(c, 0, 1000, 5, 0.1);
+  c.run_until_event(100000);
+  ASSERT_EQ(c.scope().fired().size(), 1u);
+  EXPECT_EQ(c.scope().fired()[0].word, mc::WatchWord::Events);
+}

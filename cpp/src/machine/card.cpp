@@ -197,6 +197,7 @@ void Card::reset() {
     l.axis().set_law(s.active.law);
     apply_output(i);
   }
+  if (scope_) scope_->reset_registers();  // sampler, compare, probe position (V126)
 }
 
 // -- faults -------------------------------------------------------------------------------------------------

@@ -212,4 +212,13 @@ void CardScope::after_tick(long long tick) {
   }
 }
 
+void CardScope::reset_registers() {
+  sampler_ = Sampler{};
+  compare_.reset();
+  clear_probe_position();
+  clear_fired();
+  refresh_need();
+  resync();
+}
+
 }  // namespace servobench::machine

@@ -79,6 +79,11 @@ class CardScope {
   void after_tick(long long tick);
   // Re-reads the words the watch compares against (after the host changed the state between runs).
   void resync();
+  // The card's reset (Card::reset): the sampler stops and drops its data, the position compare returns to its
+  // power-on state (no points, outputs off, counters 0), the probe at a position and the fired list are cleared.
+  // The event watch and the timer stay: they are the host's subscriptions (Python callbacks, a dialect's
+  // interrupt masks, which the dialect's own reset clears), not card registers (V126).
+  void reset_registers();
 
  private:
   double value(std::size_t axis, SampleSignal s) const;
