@@ -201,6 +201,20 @@ def test_emg_input_stops_the_group_and_stop_move_on_any_axis_decelerates_it():
     assert np.abs(err).max() < FE_BOUND
 
 
+
+def test_interpolation_refused_under_emg_reads_stop_code_emg_like_a_single_axis_move():
+    # L3931-3936: with EMG active a motion command is ignored (ERR_NoError) and the stop code reads EMG, ASTP set;
+    # the same as APS_relative_move under EMG (test_card_aps.py::test_hard_limit_emergency_stop_and_alarm_codes).
+    c = controller(vm=20000, acc=2e5)
+    c.card.emergency_stop = True
+    c.run(1)
+    before = [c.APS_get_command(i)[1] for i in (0, 1)]
+    assert c.APS_line(2, [0, 1], 0, [20000, 20000], 0.0) == aps.ERR_NoError
+    c.run(50)
+    assert [c.APS_get_command(i)[1] for i in (0, 1)] == before
+    assert [c.APS_get_stop_code(i)[1] for i in (0, 1)] == [aps.STOP_EMG] * 2
+    assert all(bit(c.APS_motion_status(i), aps.MTS_ASTP) for i in (0, 1))
+
 def _moving_ptp(c):
     assert c.APS_relative_move(1, 50000, 20000) == 0
     c.run(100)

@@ -104,8 +104,10 @@ void adlink_group_move(Card& card, const AdlinkGroupMove& m) {
     if (card.moving(a) && !(g != nullptr && in(g->axes(), a)))
       refuse(card, static_cast<int>(a), CommandFault::ModeChangeInMotion,
              "axis " + std::to_string(a) + " moves: an interpolation starts only with its axes at rest");
-    if (card.emergency_stop())
+    if (card.emergency_stop()) {
+      for (std::size_t b : m.array) card.modes().note_refused_start(b, StopCause::EmergencyStop);
       refuse(card, static_cast<int>(a), CommandFault::EmergencyStopActive, "the e-stop is active (ADLINK L3931)");
+    }
     if (aps_motion_io_status(card, a) & (1u << static_cast<int>(ApsMio::ALM)))
       refuse(card, static_cast<int>(a), CommandFault::DriveAlarmActive, "the alarm input is active (ADLINK L3950)");
   }

@@ -242,6 +242,8 @@ void CardModes::pvt_start(std::uint32_t mask) {
     if (mask & (1u << i)) card_.st_[i].stop_cause = StopCause::None;
 }
 
+void CardModes::note_refused_start(std::size_t axis, StopCause cause) { card_.st_.at(axis).stop_cause = cause; }
+
 // -- FollowEx -----------------------------------------------------------------------------------------------------
 
 void CardModes::set_follow(std::size_t i, const motion::FollowExSetup& setup, const FollowMaster& master) {

@@ -54,6 +54,10 @@ class CardModes {
   CardModes(const CardModes&) = delete;
   CardModes& operator=(const CardModes&) = delete;
 
+  // A group start refused because of `cause` (the e-stop): the axes record it as their stop cause, as a refused
+  // single-axis Update does (ADLINK L3931-3936: the command is ignored, the stop code reads EMG).
+  void note_refused_start(std::size_t axis, StopCause cause);
+
   // -- electronic gear (GT L1029-1090, L4407-4437) ---------------------------------------------------------
   // GT_PrflG(master): axis `slave` follows the profile position of axis `master` with the active ratio (the
   // staged GT_SetRatio becomes active at the next Update). Refused while the slave moves in another mode (cmd
