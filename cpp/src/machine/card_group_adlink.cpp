@@ -70,8 +70,8 @@ AdlinkGroup* adlink_group(Card& card) {
 }
 
 const AdlinkGroup* adlink_group(const Card& card) {
-  // modes() is created on first use; creating it does not change how the card ticks (no mode is active).
-  return adlink_group(const_cast<Card&>(card));
+  const CardModes* modes = card.modes_if_any();  // no modes yet: no group
+  return modes == nullptr ? nullptr : dynamic_cast<const AdlinkGroup*>(modes->group(kAdlinkGroupSlot));
 }
 
 void adlink_group_move(Card& card, const AdlinkGroupMove& m) {
@@ -139,10 +139,11 @@ constexpr std::uint32_t mbit(ApsMsts b) { return 1u << static_cast<int>(b); }
 
 std::uint32_t aps_group_motion_status(const Card& card, std::size_t axis) {
   std::uint32_t w = aps_motion_status(card, axis);
-  if (const_cast<Card&>(card).modes().gear_halted(axis)) w &= ~mbit(ApsMsts::GER);  // released (L3321)
+  const CardModes* modes = card.modes_if_any();
+  if (modes != nullptr && modes->gear_halted(axis)) w &= ~mbit(ApsMsts::GER);  // released (L3321)
   const AdlinkGroup* g = adlink_group(card);
   if (g == nullptr || !in(g->axes(), axis)) return w;
-  const HostedGroup& h = const_cast<Card&>(card).modes().hosted(kAdlinkGroupSlot);
+  const HostedGroup& h = modes->hosted(kAdlinkGroupSlot);  // a group exists, so the modes do
   const bool moving = g->busy() && !g->waiting();
   w &= ~(mbit(ApsMsts::CSTP) | mbit(ApsMsts::MDN) | mbit(ApsMsts::WAIT) | mbit(ApsMsts::BLD));
   if (!moving) w |= mbit(ApsMsts::CSTP);
@@ -156,7 +157,7 @@ std::uint32_t aps_group_motion_status(const Card& card, std::size_t axis) {
 int aps_group_stop_code(const Card& card, std::size_t axis) {
   const AdlinkGroup* g = adlink_group(card);
   if (g != nullptr && in(g->axes(), axis)) {
-    const HostedGroup& h = const_cast<Card&>(card).modes().hosted(kAdlinkGroupSlot);
+    const HostedGroup& h = card.modes_if_any()->hosted(kAdlinkGroupSlot);  // a group exists, so the modes do
     if (h.fault_stopped) return aps_stop_code(h.fault_cause);
   }
   return aps_stop_code(card, axis);

@@ -115,6 +115,7 @@ class CardModes {
   void add_group(std::size_t slot, std::unique_ptr<CardGroup> g);
   void remove_group(std::size_t slot);
   CardGroup* group(std::size_t slot);
+  const CardGroup* group(std::size_t slot) const { return hosted(slot).group.get(); }
   std::shared_ptr<CardGroup> group_shared(std::size_t slot) { return this->slot(slot).group; }
   const HostedGroup& hosted(std::size_t slot) const;
   int group_of(std::size_t axis) const { return group_of_[axis]; }
