@@ -36,6 +36,8 @@ from .trajectory import Trajectory, trapezoid_move
 from .metrics import MoveMetrics, move_metrics
 from .examples import demo_axis
 from . import design, plot
+from . import axisfile
+from .axisfile import AxisFileError, load_axis, save_axis  # axis description files (TOML/JSON), issue 11.2
 from . import frequency
 from . import autotune
 from . import identify
@@ -125,6 +127,10 @@ __all__ = [
     "dialects",
     "events_named",
     "AdlinkBiquad",
+    "AxisFileError",
+    "axisfile",
+    "load_axis",
+    "save_axis",
     "AdlinkHome",
     "AdlinkJog",
     "AdlinkPtp",
