@@ -335,3 +335,16 @@ def test_identify_input_errors(tmp_path, capsys):
     assert code == 2 and "no measured column" in err
     code, _, err = run(capsys, "identify", "--log", tmp_path / "none.csv", "--guess", "inertia_kgm2=1", "--out", tmp_path)
     assert code == 2 and "no such file" in err
+
+
+def test_linearity_note_names_the_friction_that_the_analytic_loop_leaves_out():
+    # A measured margin far from the analytic one is explained, not silently printed: on the two-mass example the
+    # motor's Coulomb friction (0.03 N*m) raises the phase margin measured at 20 pulse from 60 to about 69 deg.
+    axis = load_axis(AXES / "aps_two_mass.toml")
+    note = cli._linearity_note(axis, {"phase_margin_deg": 69.0}, {"phase_margin_deg": 60.0}, 20.0)
+    assert "+9.0 deg" in note and "motor_coulomb_nm 0.03 N*m" in note and "--amplitude-pulse" in note
+    assert cli._linearity_note(axis, {"phase_margin_deg": 61.0}, {"phase_margin_deg": 60.0}, 20.0) == ""
+    assert cli._linearity_note(axis, None, {"phase_margin_deg": 60.0}, 20.0) == ""
+    linear = sb.Axis(plant=sb.RigidPlant(inertia_kgm2=1e-4, viscous_nms=1e-4))
+    assert "the plant is linear" in cli._linearity_note(linear, {"phase_margin_deg": 50.0},
+                                                        {"phase_margin_deg": 60.0}, 20.0)
