@@ -167,6 +167,30 @@ TEST(Margins, ThirdOrderLoopClosedForm) {
   EXPECT_DOUBLE_EQ(m.ms, ms);
 }
 
+TEST(Margins, APhaseStabilisedResonanceIsNotTheWorstCrossover) {
+  // A loop crossing 0 dB at 60 deg, then (a collocated resonance) rising above 0 dB again with L near +1: those two
+  // crossovers (PM -177.5 and +177.5 deg) are the farthest from -1. The phase margin is the crossover nearest to -1
+  // (python-control's choice); the delay margin is the smallest dead time that turns any crossover onto -1.
+  auto polar = [](double mag, double deg) { return std::polar(mag, deg * M_PI / 180.0); };
+  const std::vector<double> f = {1, 2, 3, 4, 5, 6, 7, 8};
+  const std::vector<Complex> l = {polar(10, -120), polar(0.1, -120), polar(0.5, -200), polar(0.5, -290),
+                                  polar(0.5, -355), polar(2.0, -360), polar(0.5, -365), polar(0.1, -370)};
+  const tuning::Margins m = tuning::margins(f, l);
+  EXPECT_NEAR(m.phase_margin_deg, 60.0, 1e-9);
+  EXPECT_NEAR(m.pm_freq_hz, std::sqrt(1.0 * 2.0), 1e-9);  // 20 dB -> -20 dB: the middle in log f
+  const double f2 = std::sqrt(5.0 * 6.0), f3 = std::sqrt(6.0 * 7.0);
+  const double dm = std::min({60.0 / (360 * std::sqrt(2.0)), (360.0 - 177.5) / (360 * f2), 177.5 / (360 * f3)});
+  EXPECT_NEAR(m.delay_margin_s, dm, 1e-12);
+  EXPECT_NEAR(m.delay_margin_s, 177.5 / (360 * f3), 1e-12);  // the resonance crossover sets it here
+  // the phase crossover at -180 deg between 2 and 3 Hz: |L| from 0.1 to 0.5
+  EXPECT_GT(m.gain_margin_db, 6.0);
+  EXPECT_LT(m.gain_margin_db, 20.0);
+  // only the resonance crossovers left: the nearest to -1 of the two
+  const std::vector<double> f_hi(f.begin() + 3, f.end());
+  const std::vector<Complex> l_hi(l.begin() + 3, l.end());
+  EXPECT_NEAR(std::fabs(tuning::margins(f_hi, l_hi).phase_margin_deg), 177.5, 1e-9);
+}
+
 TEST(Margins, RejectsBadData) {
   EXPECT_THROW(tuning::margins({1.0}, {Complex(1, 0)}), std::invalid_argument);
   EXPECT_THROW(tuning::margins({1.0, 2.0}, {Complex(1, 0)}), std::invalid_argument);

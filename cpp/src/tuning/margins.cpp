@@ -31,7 +31,8 @@ std::vector<double> unwrapped_phase_deg(const std::vector<std::complex<double>>&
   return p;
 }
 
-Margins margins(const std::vector<double>& f, const std::vector<std::complex<double>>& l,
+namespace {
+void check_data(const std::vector<double>& f, const std::vector<std::complex<double>>& l,
                 const std::vector<std::complex<double>>& t_in) {
   const std::size_t n = f.size();
   if (n < 2) throw std::invalid_argument("margins: freq_hz needs at least 2 points, got " + std::to_string(n));
@@ -49,10 +50,13 @@ Margins margins(const std::vector<double>& f, const std::vector<std::complex<dou
     if (!std::isfinite(l[k].real()) || !std::isfinite(l[k].imag()) || l[k] == 0.0)
       throw std::invalid_argument("margins: loop_gain[" + std::to_string(k) + "] is zero or not finite");
   }
-  Margins m;
-  const std::vector<double> ph = unwrapped_phase_deg(l);
-  // Gain crossovers: |L| through 0 dB.
-  for (std::size_t k = 0; k + 1 < n; ++k) {
+}
+
+// The crossovers with the loop's unwrapped phase (shared by gain_crossovers and margins).
+std::vector<GainCrossover> crossovers_of(const std::vector<double>& f, const std::vector<std::complex<double>>& l,
+                                         const std::vector<double>& ph) {
+  std::vector<GainCrossover> out;
+  for (std::size_t k = 0; k + 1 < f.size(); ++k) {
     const double g0 = db(l[k]), g1 = db(l[k + 1]);
     if ((g0 >= 0) == (g1 >= 0) && g1 != 0.0) continue;
     double t = 0;
@@ -61,12 +65,38 @@ Margins margins(const std::vector<double>& f, const std::vector<std::complex<dou
     double pm = std::fmod(phase + 180.0, 360.0);  // wrapped to (-180, 180]
     if (pm > 180.0) pm -= 360.0;
     if (pm <= -180.0) pm += 360.0;
-    if (pm < m.phase_margin_deg || std::isinf(m.phase_margin_deg)) {
-      m.phase_margin_deg = pm;
-      m.pm_freq_hz = fc;
-      m.delay_margin_s = pm > 0 ? pm / (360.0 * fc) : 0.0;
+    out.push_back(GainCrossover{fc, pm});
+  }
+  return out;
+}
+}  // namespace
+
+std::vector<GainCrossover> gain_crossovers(const std::vector<double>& freq_hz,
+                                           const std::vector<std::complex<double>>& loop_gain) {
+  check_data(freq_hz, loop_gain, {});
+  return crossovers_of(freq_hz, loop_gain, unwrapped_phase_deg(loop_gain));
+}
+
+Margins margins(const std::vector<double>& f, const std::vector<std::complex<double>>& l,
+                const std::vector<std::complex<double>>& t_in) {
+  check_data(f, l, t_in);
+  const std::size_t n = f.size();
+  Margins m;
+  const std::vector<double> ph = unwrapped_phase_deg(l);
+  // Gain crossovers: |L| through 0 dB. The phase margin is the crossover nearest to -1 (smallest |PM|, as
+  // python-control's stability_margins); a crossover where L is near +1 (a phase-stabilised resonance, PM near
+  // +-180) is the farthest from -1, not the worst. The delay margin is the smallest extra dead time that turns any
+  // crossover onto -1: min over crossovers of (PM mod 360) / (360 fc).
+  double delay = Margins::kNone;
+  for (const GainCrossover& c : crossovers_of(f, l, ph)) {
+    const double rotation = c.phase_margin_deg >= 0.0 ? c.phase_margin_deg : c.phase_margin_deg + 360.0;
+    delay = std::min(delay, rotation / (360.0 * c.freq_hz));
+    if (std::isinf(m.phase_margin_deg) || std::fabs(c.phase_margin_deg) < std::fabs(m.phase_margin_deg)) {
+      m.phase_margin_deg = c.phase_margin_deg;
+      m.pm_freq_hz = c.freq_hz;
     }
   }
+  if (!std::isinf(m.phase_margin_deg)) m.delay_margin_s = m.phase_margin_deg > 0.0 ? delay : 0.0;
   // Phase crossovers: the unwrapped phase through an odd multiple of 180 deg.
   for (std::size_t k = 0; k + 1 < n; ++k) {
     const double lo = std::min(ph[k], ph[k + 1]), hi = std::max(ph[k], ph[k + 1]);
