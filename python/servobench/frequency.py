@@ -108,8 +108,9 @@ def margins(freq_hz, loop_gain, closed_loop=None) -> Margins:
         Y/R for the bandwidth (complex); default L/(1 + L).
 
     Crossings are interpolated linearly in log frequency (gain in dB, phase unwrapped from the lowest frequency),
-    so the figures are as good as the grid is dense around them. Margins alone do not prove stability (a loop
-    with a resonance can cross 0 dB several times: the smallest phase margin is reported).
+    so the figures are as good as the grid is dense around them. A loop with a resonance can cross 0 dB several
+    times: the phase margin is that of the crossover nearest to -1 (the smallest ``|PM|``, python-control's rule)
+    and the delay margin the smallest over all crossovers. Margins alone do not prove stability.
     """
     d = _core.margins(np.asarray(freq_hz, dtype=float), np.asarray(loop_gain, dtype=complex),
                       None if closed_loop is None else np.asarray(closed_loop, dtype=complex))
@@ -252,13 +253,22 @@ class FrequencyResponse:
 
     def margins(self) -> Margins:
         """Margins of the loop: from the analytic loop gain, or from the measured Y/E (which is the loop gain only
-        when the feed-forward was off during the measurement, else ValueError)."""
+        when the feed-forward was off during the measurement, else ValueError). Measured points where the encoder
+        saw no motion (Y/E exactly 0, near Nyquist with a coarse encoder) carry no phase and are left out."""
         if self.loop_gain is not None:
             return margins(self.freq_hz, self.loop_gain, self.closed_loop)
         if self.feedforward:
             raise ValueError("this open loop Y/E was measured with the feed-forward on, so it is not the loop gain; "
                              "measure with feedforward=False to read margins")
-        return margins(self.freq_hz, self.open_loop, self.closed_loop)
+        ol = np.asarray(self.open_loop)
+        cl = None if self.closed_loop is None else np.asarray(self.closed_loop)
+        seen = np.isfinite(ol) & (ol != 0)
+        if cl is not None:
+            seen &= np.isfinite(cl)
+        if seen.sum() < 2:
+            raise ValueError(f"margins: only {int(seen.sum())} of {len(ol)} measured points have a response "
+                             "(the encoder saw no motion at the others); raise amplitude_pulse")
+        return margins(self.freq_hz[seen], ol[seen], None if cl is None else cl[seen])
 
     def resonances(self, which: str = "plant", *, min_prominence_db: float = 3.0) -> list[Peak]:
         """Resonances and anti-resonances of a response (default the plant); see :func:`resonances`."""

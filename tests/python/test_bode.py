@@ -375,3 +375,22 @@ def test_linear_model_for_python_control_matches_the_analytic_response(feedforwa
     m = fr.analytic_response(axis, np.geomspace(10, 4900, 20000)).margins()
     assert m.phase_margin_deg == pytest.approx(pm, abs=0.05)
     assert m.pm_freq_hz == pytest.approx(wgc / (2 * np.pi), rel=1e-3)
+
+
+def test_measured_margins_leave_out_points_the_encoder_did_not_see():
+    # A coarse encoder near Nyquist sees no motion: Y/E = 0 there carries no phase. margins() of the measurement
+    # leaves those points out instead of refusing the whole curve; with fewer than 2 seen points it says why.
+    import dataclasses
+
+    axis = linear_axis("gt", "rigid")
+    meas = fr.sine_sweep(axis, start_hz=10, end_hz=2000, amplitude_pulse=2, points=12, update_s=0.1)
+    assert meas.status == "completed", meas.message
+    full = meas.margins()
+    ol = np.array(meas.open_loop)
+    ol[-1] = 0.0
+    blind = dataclasses.replace(meas, open_loop=ol)
+    m = blind.margins()
+    assert m.phase_margin_deg == pytest.approx(full.phase_margin_deg, abs=1e-9)
+    assert m.pm_freq_hz == pytest.approx(full.pm_freq_hz, rel=1e-12)
+    with pytest.raises(ValueError, match="only 1 of 12 measured points"):
+        dataclasses.replace(meas, open_loop=np.where(np.arange(12) == 3, ol, 0.0)).margins()
