@@ -5,7 +5,7 @@ with a first-order current loop -> rigid plant with Coulomb friction (exact ZOH)
 The pure-Python loop implements the same tick (its ZOH from scipy.linalg.expm) and must reproduce the C++
 feedback exactly before its speed is reported. Writes bench/results/axis_ticks.md.
 
-Run: python bench/bench_axis.py [--ticks 1000000] [--python-ticks 200000]
+Run: python bench/bench_axis.py [--ticks 1000000] [--python-ticks 200000] [--quick] [--results-dir DIR]
 """
 
 from __future__ import annotations
@@ -20,6 +20,8 @@ import time
 import numpy as np
 
 import servobench as sb
+
+import benchlib
 
 GOAL_TICKS_PER_S = 10e6  # product goal for the full chain on one core
 
@@ -156,80 +158,124 @@ def best_of(fn, repeats: int) -> float:
     return best
 
 
-def main() -> int:
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--ticks", type=int, default=1_000_000)
-    ap.add_argument("--python-ticks", type=int, default=200_000)
-    ap.add_argument("--out", default=os.path.join(os.path.dirname(__file__), "results", "axis_ticks.md"))
-    args = ap.parse_args()
+FULL = dict(ticks=1_000_000, python_ticks=200_000)
+QUICK = dict(ticks=20_000, python_ticks=5_000)
 
-    cmd = long_move(args.ticks)
+
+def run(quick: bool = False, ticks: int | None = None, python_ticks: int | None = None) -> benchlib.Result:
+    """Measures every row (C++ chains, card, pure-Python tick in the same run) and returns the figures and table."""
+    size = dict(QUICK if quick else FULL)
+    size.update({k: v for k, v in dict(ticks=ticks, python_ticks=python_ticks).items() if v is not None})
+    n_ticks = size["ticks"]
+    rep5, rep3 = (1, 1) if quick else (5, 3)
+    cmd = long_move(n_ticks)
     rows = []
 
     def cpp_run(signals):
         axis = sb.demo_axis()
         axis.run(cmd, signals=signals)
 
-    t_all = best_of(lambda: cpp_run(None), 5)
-    t_min = best_of(lambda: cpp_run(["fb_pos"]), 5)
+    t_all = best_of(lambda: cpp_run(None), rep5)
+    t_min = best_of(lambda: cpp_run(["fb_pos"]), rep5)
     t_chain = {}
     for mode in ("torque", "velocity"):
-        slow = long_move(args.ticks)
+        slow = long_move(n_ticks)
         slow = sb.Trajectory(pos=slow.pos * 0.5, vel=slow.vel * 0.5, acc=slow.acc * 0.25)
-        t_chain[mode] = best_of(lambda: full_chain_axis(mode).run(slow, signals=None), 3)
+        t_chain[mode] = best_of(lambda: full_chain_axis(mode).run(slow, signals=None), rep3)
 
-    card_ticks = args.ticks // 4
-    t_card = min(card_run(card_ticks, False) for _ in range(3))
-    t_card_scope = min(card_run(card_ticks, True) for _ in range(3))
+    card_ticks = n_ticks // 4
+    t_card = min(card_run(card_ticks, False) for _ in range(rep3))
+    t_card_scope = min(card_run(card_ticks, True) for _ in range(rep3))
 
-    # Same work check: the pure-Python tick reproduces the C++ feedback exactly.
-    n_py = min(args.python_ticks, args.ticks)
-    ref_axis = sb.demo_axis()
-    cpp_fb = ref_axis.run(sb.Trajectory(cmd.pos[:n_py], cmd.vel[:n_py], cmd.acc[:n_py]), signals=["fb_pos"]).fb_pos
-    t0 = time.perf_counter()
-    py_fb = python_reference(sb.demo_axis(), cmd, n_py)
-    t_py = time.perf_counter() - t0
-    mismatch = int(np.count_nonzero(py_fb != cpp_fb))
-    if mismatch:
-        raise SystemExit(f"pure-Python reference differs from the C++ core at {mismatch} of {n_py} ticks")
+    # Same work check: the pure-Python tick reproduces the C++ feedback exactly. Its ZOH comes from SciPy's expm.
+    n_py = min(size["python_ticks"], n_ticks)
+    scipy_linalg = benchlib.import_peer("scipy.linalg", "scipy")
+    py_rate = None
+    if scipy_linalg is not None:
+        ref_axis = sb.demo_axis()
+        cpp_fb = ref_axis.run(sb.Trajectory(cmd.pos[:n_py], cmd.vel[:n_py], cmd.acc[:n_py]),
+                              signals=["fb_pos"]).fb_pos
+        t0 = time.perf_counter()
+        py_fb = python_reference(sb.demo_axis(), cmd, n_py)
+        t_py = time.perf_counter() - t0
+        mismatch = int(np.count_nonzero(py_fb != cpp_fb))
+        if mismatch:
+            raise SystemExit(f"pure-Python reference differs from the C++ core at {mismatch} of {n_py} ticks")
+        py_rate = n_py / t_py
 
-    py_rate = n_py / t_py
-    rows.append((f"servobench C++ core, rigid chain, all {len(sb.SIGNALS)} signals recorded", args.ticks, t_all,
-                 args.ticks / t_all))
-    rows.append(("servobench C++ core, rigid chain, feedback only recorded", args.ticks, t_min, args.ticks / t_min))
-    rows.append(("full chain, torque drive: two-mass + Stribeck both sides + cogging, all signals", args.ticks,
-                 t_chain["torque"], args.ticks / t_chain["torque"]))
-    rows.append(("full chain, velocity drive (PI at 20 kHz, 5 sub-steps/tick), all signals", args.ticks,
-                 t_chain["velocity"], args.ticks / t_chain["velocity"]))
+    rows.append((f"servobench C++ core, rigid chain, all {len(sb.SIGNALS)} signals recorded", n_ticks, t_all,
+                 n_ticks / t_all))
+    rows.append(("servobench C++ core, rigid chain, feedback only recorded", n_ticks, t_min, n_ticks / t_min))
+    rows.append(("full chain, torque drive: two-mass + Stribeck both sides + cogging, all signals", n_ticks,
+                 t_chain["torque"], n_ticks / t_chain["torque"]))
+    rows.append(("full chain, velocity drive (PI at 20 kHz, 5 sub-steps/tick), all signals", n_ticks,
+                 t_chain["velocity"], n_ticks / t_chain["velocity"]))
     rows.append(("virtual card: 4 demo axes jogging, card safety/status every tick, nothing recorded (axis ticks)",
                  4 * card_ticks, t_card, 4 * card_ticks / t_card))
     rows.append(("virtual card as above, the scope sampling 4 following errors every tick (axis ticks)",
                  4 * card_ticks, t_card_scope, 4 * card_ticks / t_card_scope))
-    rows.append(("rigid chain tick in pure Python (CPython)", n_py, t_py, py_rate))
+    if py_rate is not None:
+        rows.append(("rigid chain tick in pure Python (CPython)", n_py, t_py, py_rate))
 
     lines = [
         "# Axis servo ticks per second",
         "",
         f"Generated by `bench/bench_axis.py` on {datetime.date.today()} ({platform.processor() or platform.machine()}, "
         f"Python {platform.python_version()}, one core). Chain: GT law, two filter slots, 16-bit DAC, torque drive with "
-        "current loop, rigid plant with Coulomb friction, quantised encoder. The pure-Python loop reproduces the C++ "
-        f"feedback exactly on its {n_py} ticks (checked in the same run). Best of 5 (full chains: of 3) for the C++ "
+        "current loop, rigid plant with Coulomb friction, quantised encoder. "
+        + (f"The pure-Python loop reproduces the C++ feedback exactly on its {n_py} ticks (checked in the same run). "
+           if py_rate is not None else
+           "The pure-Python loop was not run: it takes its ZOH from SciPy, which is not installed. ")
+        + f"Best of {rep5} (full chains and card: of {rep3}) for the C++ "
         "runs. The full chains are compared with the pure-Python *rigid* chain, a lower bound of their ratio (a "
         "pure-Python two-mass chain with the implicit friction solve would be slower still). The full chains run two "
         "ADLINK integer biquads (1 kHz low-pass, notch at the resonance); the rigid chain runs the card's default "
-        "pass-through biquads. The card rows count axis ticks (4 per card tick).",
+        "pass-through biquads. The card rows count axis ticks (4 per card tick)."
+        + (" QUICK run (tiny sizes, for the tests): the figures say nothing about speed." if quick else ""),
         "",
         "| implementation | ticks | wall [s] | ticks/s | vs pure Python | vs goal 10 M ticks/s |",
         "|---|---:|---:|---:|---:|---:|",
     ]
     for name, n, wall, rate in rows:
-        lines.append(f"| {name} | {n:,} | {wall:.4f} | {rate / 1e6:.2f} M | {rate / py_rate:.0f}x | "
+        vs_py = f"{rate / py_rate:.0f}x" if py_rate is not None else benchlib.NOT_INSTALLED
+        lines.append(f"| {name} | {n:,} | {wall:.4f} | {rate / 1e6:.2f} M | {vs_py} | "
                      f"{rate / GOAL_TICKS_PER_S:.2f} |")
     text = "\n".join(lines) + "\n"
-    print(text)
-    os.makedirs(os.path.dirname(args.out), exist_ok=True)
-    with open(args.out, "w") as f:
-        f.write(text)
+
+    # Figures for the summary: every C++ row against the pure-Python rigid tick of the same run.
+    py = dict(peer="pure-Python rigid tick", peer_value=None if py_rate is None else py_rate / 1e6,
+              peer_status=benchlib.MEASURED if py_rate is not None else benchlib.NOT_INSTALLED)
+    goal = dict(goal=GOAL_TICKS_PER_S / 1e6, goal_source="issues 2, 3")
+    short = ["rigid chain, all signals recorded", "rigid chain, feedback only recorded",
+             "full chain, torque drive (two-mass, Stribeck, cogging, 2 biquads)",
+             "full chain, velocity drive (PI at 20 kHz)", "virtual card, 4 axes, nothing recorded",
+             "virtual card, 4 axes, scope on 4 channels"]
+    figures = []
+    for i, (label, (_name, _n, _wall, rate)) in enumerate(zip(short, rows)):
+        card = i >= 4
+        figures.append(benchlib.Figure(
+            "axis", label + (" (axis ticks)" if card else ""), "M ticks/s", rate / 1e6, True, **py,
+            **({} if card else goal),
+            note="no goal stated for the card, issue 10" if card else
+            ("peer is the rigid tick: ratio is a lower bound" if i >= 2 else "")))
+    return benchlib.Result("axis", "bench/bench_axis.py", "axis_ticks.md", text, figures, quick,
+                           peers={"SciPy": benchlib.version(scipy_linalg)})
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--ticks", type=int, default=None, help="default 1000000 (quick: 20000)")
+    ap.add_argument("--python-ticks", type=int, default=None, help="default 200000 (quick: 5000)")
+    ap.add_argument("--out", default=None, help="the .md file (default <results-dir>/axis_ticks.md)")
+    benchlib.add_common_args(ap)
+    args = ap.parse_args(argv)
+    res = run(args.quick, args.ticks, args.python_ticks)
+    print(res.markdown)
+    benchlib.write_result(res, args.results_dir)
+    if args.out:
+        os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
+        with open(args.out, "w") as f:
+            f.write(res.markdown)
     return 0
 
 

@@ -11,19 +11,17 @@
 3. A 1000-line broadband measurement (multisine) from one run.
 
 Peers come from PyPI: if `scipy` or `control` is missing it is installed into build/bench-deps (never into the
-shared site-packages, never vendored). Writes bench/results/bode.md.
+shared site-packages, never vendored; under run_all.py nothing is installed and a missing peer is reported as "not
+installed"). Writes bench/results/bode.md and bode.json.
 
-Run: python bench/bench_bode.py [--repeat 7]
+Run: python bench/bench_bode.py [--repeat 7] [--quick] [--results-dir DIR]
 """
 
 from __future__ import annotations
 
 import argparse
 import datetime
-import importlib
-import pathlib
 import platform
-import subprocess
 import sys
 import time
 
@@ -32,25 +30,10 @@ import numpy as np
 import servobench as sb
 from servobench import frequency as fr
 
+import benchlib
+
 GOAL_MS = 20.0  # the manual's example sweep, ms wall (issue 5 point 6)
 TS = 100e-6
-ROOT = pathlib.Path(__file__).resolve().parents[1]
-DEPS = ROOT / "build" / "bench-deps"
-
-
-def import_peer(name: str, pip_name: str):
-    """Imports a peer package, installing it into build/bench-deps if it is missing (benchmark set-up only)."""
-    try:
-        return importlib.import_module(name)
-    except ImportError:
-        sys.path.insert(0, str(DEPS))
-        try:
-            return importlib.import_module(name)
-        except ImportError:
-            subprocess.check_call([sys.executable, "-m", "pip", "install", "--quiet", "--target", str(DEPS),
-                                   pip_name])
-            importlib.invalidate_caches()
-            return importlib.import_module(name)
 
 
 def demo_axis_10k(two_mass: bool = False):
@@ -94,85 +77,133 @@ def scipy_sweep(signal, ss_closed, freqs, n_tick, amp):
     return np.array(out)
 
 
-def main() -> int:
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--repeat", type=int, default=7)
-    args = ap.parse_args()
-    signal = import_peer("scipy.signal", "scipy")
-    control = import_peer("control", "control")
+FULL = dict(repeat=7, lines=1000)
+QUICK = dict(repeat=1, lines=50)
+
+
+def run(quick: bool = False, repeat: int | None = None) -> benchlib.Result:
+    """Times the manual's sweep, the analytic response and a broadband run against the SciPy and python-control
+    peers in the same run; returns the figures and the table."""
+    size = dict(QUICK if quick else FULL)
+    if repeat is not None:
+        size["repeat"] = repeat
+    repeat = size["repeat"]
+    scipy_signal = benchlib.import_peer("scipy.signal", "scipy")
+    control = benchlib.import_peer("control", "control")
 
     rows = []
     # 1. The manual's example sweep.
     sweep_ms = {}
     for label, two_mass in (("rigid demo axis", False), ("two-mass axis", True)):
-        def run():
+        def sweep():
             axis = demo_axis_10k(two_mass)
             return fr.sine_sweep(axis)
-        t, meas = best_of(run, args.repeat)
+        t, meas = best_of(sweep, repeat)
         assert meas.status == "completed" and meas.signals["ticks"] == 100_000
         sweep_ms[label] = t * 1e3
         rows.append((f"stepped sine, manual example, {label}: servobench (nonlinear axis)", t * 1e3, None))
     axis = demo_axis_10k()
-    model = fr.linear_model(axis)
-    closed = control.ss(model["closed_loop"])
-    ss = (np.asarray(closed.A), np.asarray(closed.B), np.asarray(closed.C), np.asarray(closed.D))
     freqs = np.geomspace(10, 100, 100)
-    t_peer, peer = best_of(lambda: scipy_sweep(signal, ss, freqs, 1000, 300.0), max(2, args.repeat // 3))
     lin = sb.Axis(law=axis.law, plant=axis.plant.replace(coulomb_nm=0), drive=axis.drive.replace(
         current_limit_a=float("inf")), encoder=axis.encoder.replace(quantize=False), dac=sb.Dac(quantize=False),
         servo_period_s=TS)
     ours_lin = fr.sine_sweep(lin, amplitude_pulse=30)  # small enough to stay inside +-10 V
     exact = fr.analytic_response(lin, freqs).closed_loop
     agree = np.max(np.abs(ours_lin.closed_loop / exact - 1))
-    agree_peer = np.max(np.abs(peer / exact - 1))
-    rows.append(("stepped sine, same sweep on the linear model: SciPy dlsim + NumPy fits", t_peer * 1e3,
-                 t_peer * 1e3 / sweep_ms["rigid demo axis"]))
+    t_peer = agree_peer = None
+    if scipy_signal is not None and control is not None:
+        model = fr.linear_model(axis)
+        closed = control.ss(model["closed_loop"])
+        ss = (np.asarray(closed.A), np.asarray(closed.B), np.asarray(closed.C), np.asarray(closed.D))
+        t_peer, peer = best_of(lambda: scipy_sweep(scipy_signal, ss, freqs, 1000, 300.0),
+                              1 if quick else max(2, repeat // 3))
+        agree_peer = np.max(np.abs(peer / exact - 1))
+        rows.append(("stepped sine, same sweep on the linear model: SciPy dlsim + NumPy fits", t_peer * 1e3,
+                     t_peer * 1e3 / sweep_ms["rigid demo axis"]))
+    else:
+        rows.append(("stepped sine, same sweep on the linear model: SciPy dlsim + NumPy fits "
+                     f"(needs SciPy and python-control: {benchlib.NOT_INSTALLED})", None, None))
 
     # 2. Analytic response at 1000 points.
     f = np.geomspace(1, 4900, 1000)
-    t_ours, ana = best_of(lambda: fr.analytic_response(lin, f), args.repeat)
-    model_lin = fr.linear_model(lin)
-    t_ctrl, resp = best_of(lambda: control.frequency_response(model_lin["closed_loop"], 2 * np.pi * f),
-                           args.repeat)
-    ctrl_h = np.squeeze(resp.complex if hasattr(resp, "complex") else resp.fresp)
-    agree_ana = np.max(np.abs(ctrl_h / ana.closed_loop - 1))
+    t_ours, ana = best_of(lambda: fr.analytic_response(lin, f), repeat)
     rows.append(("analytic closed loop, 1000 points: servobench `analytic_response`", t_ours * 1e3, None))
-    rows.append(("analytic closed loop, 1000 points: python-control `frequency_response`", t_ctrl * 1e3,
-                 t_ctrl / t_ours))
+    t_ctrl = agree_ana = None
+    if control is not None:
+        model_lin = fr.linear_model(lin)
+        t_ctrl, resp = best_of(lambda: control.frequency_response(model_lin["closed_loop"], 2 * np.pi * f), repeat)
+        ctrl_h = np.squeeze(resp.complex if hasattr(resp, "complex") else resp.fresp)
+        agree_ana = np.max(np.abs(ctrl_h / ana.closed_loop - 1))
+        rows.append(("analytic closed loop, 1000 points: python-control `frequency_response`", t_ctrl * 1e3,
+                     t_ctrl / t_ours))
+    else:
+        rows.append((f"analytic closed loop, 1000 points: python-control ({benchlib.NOT_INSTALLED})", None, None))
 
     # 3. Broadband.
     t_bb, bb = best_of(lambda: fr.broadband_response(demo_axis_10k(), excitation="multisine", start_hz=10,
-                                                     amplitude_pulse=20, lines=1000), max(2, args.repeat // 3))
+                                                     amplitude_pulse=20, lines=size["lines"]),
+                     1 if quick else max(2, repeat // 3))
     rows.append((f"multisine, {len(bb)} lines 10..4000 Hz, one run ({bb.message.split(', ')[-1]})",
                  t_bb * 1e3, None))
 
     met = sweep_ms["rigid demo axis"] <= GOAL_MS
+    scipy_mod = benchlib.import_peer("scipy", "scipy")
+    peers_txt = (f"the SciPy peer simulates only the linear closed loop exported by `linear_model`. Largest relative "
+                 "deviation from the analytic closed loop, the transients of the 0.1 s points included: SciPy peer "
+                 f"{agree_peer:.1e}, servobench on the linearised axis {agree:.1e}." if t_peer is not None else
+                 f"the SciPy peer (linear closed loop only) was not run: SciPy or python-control "
+                 f"{benchlib.NOT_INSTALLED}. servobench on the linearised axis deviates {agree:.1e} from the analytic "
+                 "closed loop.")
     lines = [
         "# Frequency-response benchmark",
         "",
         f"Generated by `bench/bench_bode.py` on {datetime.date.today()} ({platform.machine()}, Python "
-        f"{platform.python_version()}, SciPy {importlib.import_module('scipy').__version__}, python-control "
-        f"{control.__version__}; one core, machine shared, best of {args.repeat}).",
+        f"{platform.python_version()}, SciPy {benchlib.version(scipy_mod)}, python-control "
+        f"{benchlib.version(control)}; one core, machine shared, best of {repeat}).",
         "",
         "The manual's example sweep (ADLINK L2023, L2035): 10-100 Hz, 100 points, 300 pulse, 0.1 s per point at "
         "10 kHz = 100 000 servo ticks. servobench runs the full nonlinear axis (GT law, 16-bit DAC, current loop, "
-        "Coulomb friction, quantised encoder); the SciPy peer simulates only the linear closed loop exported by "
-        "`linear_model`. Largest relative deviation from the analytic closed loop, the transients of the 0.1 s "
-        f"points included: SciPy peer {agree_peer:.1e}, servobench on the linearised axis {agree:.1e}. The two "
-        f"analytic responses agree to {agree_ana:.1e}.",
+        "Coulomb friction, quantised encoder); " + peers_txt
+        + (f" The two analytic responses agree to {agree_ana:.1e}." if agree_ana is not None else "")
+        + (" QUICK run (one repeat, 50 multisine lines, for the tests): the figures say nothing about speed."
+           if quick else ""),
         "",
         "| task | wall [ms] | peer time / servobench time |",
         "|---|---:|---:|",
     ]
     for name, ms, ratio in rows:
-        lines.append(f"| {name} | {ms:.2f} | {'' if ratio is None else f'{ratio:.1f}x'} |")
+        lines.append(f"| {name} | {'' if ms is None else f'{ms:.2f}'} | {'' if ratio is None else f'{ratio:.1f}x'} |")
     lines += ["", f"Goal: manual example sweep <= {GOAL_MS:g} ms: **{'met' if met else 'NOT met'}** "
               f"({sweep_ms['rigid demo axis']:.2f} ms rigid, {sweep_ms['two-mass axis']:.2f} ms two-mass)."]
     text = "\n".join(lines) + "\n"
-    print(text)
-    out = ROOT / "bench" / "results" / "bode.md"
-    out.parent.mkdir(parents=True, exist_ok=True)
-    out.write_text(text)
+
+    goal = dict(goal=GOAL_MS, goal_source="issue 5")
+    scipy_peer = scipy_signal if control is not None else None
+    figures = [
+        benchlib.Figure("bode", "manual example sweep (100 points, 100 000 ticks), rigid demo axis", "ms",
+                        sweep_ms["rigid demo axis"], False, **benchlib.peer_figure(
+                            "SciPy dlsim, linear model only", scipy_peer, lambda: t_peer * 1e3), **goal,
+                        note="the peer does less: no friction, quantisation or saturation"),
+        benchlib.Figure("bode", "manual example sweep, two-mass axis", "ms", sweep_ms["two-mass axis"], False,
+                        **goal, note="no peer run on the two-mass axis"),
+        benchlib.Figure("bode", "analytic closed-loop response, 1000 frequencies", "ms", t_ours * 1e3, False,
+                        **benchlib.peer_figure("python-control `frequency_response`", control,
+                                               lambda: t_ctrl * 1e3)),
+        benchlib.Figure("bode", f"multisine broadband measurement, {len(bb)} lines", "ms", t_bb * 1e3, False,
+                        note="no peer measures this"),
+    ]
+    return benchlib.Result("bode", "bench/bench_bode.py", "bode.md", text, figures, quick,
+                           peers={"SciPy": benchlib.version(scipy_mod), "python-control": benchlib.version(control)})
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--repeat", type=int, default=None, help="default 7 (quick: 1)")
+    benchlib.add_common_args(ap)
+    args = ap.parse_args(argv)
+    res = run(args.quick, args.repeat)
+    print(res.markdown)
+    benchlib.write_result(res, args.results_dir)
     return 0
 
 

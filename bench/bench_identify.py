@@ -17,24 +17,24 @@ and the same bounds for every solver), every parameter starting 20 % off. Three 
 A second table times the whole `fit_time` (continuation over segment lengths; for two-mass the spectral start) on
 the test plants of tests/python/test_identify.py, every guess 50 % off, one thread (deterministic). Goals (issue 7):
 Ceres >= 10x faster than SciPy on the same residual; <= 1 s wall for the 5 s experiment. Writes
-bench/results/identify.md.
+bench/results/identify.md and identify.json. SciPy, when missing, is installed into build/bench-deps (under
+run_all.py: reported as "not installed").
 
-Run: python bench/bench_identify.py [--repeat 3]
+Run: python bench/bench_identify.py [--repeat 3] [--quick] [--results-dir DIR]
 """
 
 from __future__ import annotations
 
 import argparse
 import datetime
-import pathlib
 import platform
-import subprocess
 import sys
 import time
 
 import numpy as np
 
-ROOT = pathlib.Path(__file__).resolve().parents[1]
+import benchlib
+
 GOAL_RATIO = 10.0
 TS = 200e-6
 TRUE = dict(inertia_kgm2=2e-4, viscous_nms=3e-4, coulomb_nm=0.03, static_nm=0.05, stribeck_speed_rad_s=2.0)
@@ -49,7 +49,7 @@ HALF_OFF = [1.5, 0.5, 1.5, 1.5, 0.5, 0.5]
 GOAL_S = 1.0
 
 
-def full_fits(repeat):
+def full_fits(repeat, duration_s=5.0):
     """(plant, wall s best of `repeat`, iterations, worst error %) of the whole fit_time on the test plants."""
     import servobench as sb
     from servobench import _core
@@ -58,38 +58,32 @@ def full_fits(repeat):
         return sb.Axis(law=_core.GtServoLaw(kp=kp, kd=kd),
                        drive=_core.TorqueDrive(amps_per_volt=0.8, kt=0.5, current_bw_hz=1500.0), plant=plant,
                        encoder=_core.Encoder(counts_per_rev=10000), servo_period_s=TS)
-    cases = [("rigid A", "rigid", TRUE, sb.run_experiment(axis(_core.RigidPlant(**TRUE), 38, 830), amplitude_v=0.1)),
+    cases = [("rigid A", "rigid", TRUE, sb.run_experiment(axis(_core.RigidPlant(**TRUE), 38, 830), amplitude_v=0.1,
+                                                            duration_s=duration_s)),
              ("rigid B", "rigid", RIGID_B,
-              sb.run_experiment(axis(_core.RigidPlant(**RIGID_B), 38, 830), amplitude_v=0.1)),
+              sb.run_experiment(axis(_core.RigidPlant(**RIGID_B), 38, 830), amplitude_v=0.1, duration_s=duration_s)),
              ("two-mass (resonance 338 Hz)", "two_mass", TWO_MASS,
               sb.run_experiment(axis(_core.TwoMassPlant(load_viscous_nms=0.0, **TWO_MASS), 20, 400),
-                                amplitude_v=0.3))]
+                                amplitude_v=0.3, duration_s=duration_s))]
     rows = []
     for name, model, true, log in cases:
         guess = {k: v * f for (k, v), f in zip(true.items(), HALF_OFF)}
         best, fit = float("inf"), None
         for _ in range(repeat):
             t0 = time.perf_counter()
-            fit = sb.fit_time(log, model, guess=guess)
+            fit = sb.fit_time(log, model, guess=guess, strict=duration_s >= 5.0)
             best = min(best, time.perf_counter() - t0)
         rows.append((name, best, fit.iterations, max(abs(fit[k] / v - 1) for k, v in true.items()) * 100))
     return rows
 
 
-def need_scipy():
-    try:
-        import scipy  # noqa: F401
-    except ImportError:
-        subprocess.check_call([sys.executable, "-m", "pip", "install", "-q", "scipy>=1.10"])
-
-
-def experiment():
+def experiment(duration_s=5.0):
     import servobench as sb
     from servobench import _core
     ax = sb.Axis(law=_core.GtServoLaw(kp=38, kd=830),
                  drive=_core.TorqueDrive(amps_per_volt=0.8, kt=0.5, current_bw_hz=1500.0),
                  plant=_core.RigidPlant(**TRUE), encoder=_core.Encoder(counts_per_rev=10000), servo_period_s=TS)
-    return sb.run_experiment(ax, amplitude_v=0.1, seed=0)
+    return sb.run_experiment(ax, amplitude_v=0.1, seed=0, duration_s=duration_s)
 
 
 class Problem:
@@ -230,96 +224,146 @@ class NumpyModel:
         return r[self.valid]
 
 
-def solve_scipy(fun, jac, prob, **kw):
+def solve_scipy(fun, jac, prob, max_nfev=400, **kw):
     from scipy.optimize import least_squares
     z0 = np.concatenate([prob.p0, prob.states0])
     t0 = time.perf_counter()
     res = least_squares(fun, z0, jac=jac, bounds=(prob.lower, prob.upper), method="trf", x_scale="jac",
-                        ftol=1e-10, xtol=1e-10, gtol=1e-12, max_nfev=400, **kw)
+                        ftol=1e-10, xtol=1e-10, gtol=1e-12, max_nfev=max_nfev, **kw)
     return time.perf_counter() - t0, res
 
 
-def main() -> int:
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--repeat", type=int, default=3)
-    args = ap.parse_args()
-    need_scipy()
-    import scipy
+def run(quick: bool = False, repeat: int | None = None) -> benchlib.Result:
+    """Solves the one-stage problem with Ceres and SciPy three ways, then times the whole fit_time on the test
+    plants; returns the figures and the tables. Quick: a 0.6 s experiment, SciPy capped at 1 evaluation, one
+    repeat (for the tests; nothing converges and the figures say nothing)."""
+    if repeat is None:
+        repeat = 1 if quick else 3
+    duration = 0.6 if quick else 5.0
+    max_nfev = 1 if quick else 400
+    scipy = benchlib.import_peer("scipy", "scipy")
+    if scipy is not None:
+        benchlib.import_peer("scipy.optimize", "scipy")
+        benchlib.import_peer("scipy.sparse", "scipy")
+        benchlib.import_peer("scipy.linalg", "scipy")
 
     import servobench as sb
-    log = experiment()
+    log = experiment(duration)
     prob = Problem(log)
-    model = NumpyModel(prob)
-    z0 = np.concatenate([prob.p0, prob.states0])
-    same = float(np.max(np.abs(model.residual(z0) - prob.residual_cpp(z0))))
-    assert same < 1e-6, f"the NumPy residual differs from servobench's by {same} counts"
 
     def err(values):
         return max(abs(values[k] / v - 1) for k, v in TRUE.items()) * 100
 
     best, fit = float("inf"), None
-    for _ in range(args.repeat):
+    for _ in range(repeat):
         t0 = time.perf_counter()
         fit = sb.fit_time(log, "rigid", guess=prob.guess, segment_samples=SEGMENT, initial_segment_samples=SEGMENT,
-                          hold_stribeck_first=False, num_threads=1)
+                          hold_stribeck_first=False, num_threads=1, strict=not quick)
         best = min(best, time.perf_counter() - t0)
-    t_np, r_np = solve_scipy(model.residual, "2-point", prob, jac_sparsity=prob.sparsity())
-    t_cp, r_cp, t_sp, r_sp = float("inf"), None, float("inf"), None
-    for _ in range(args.repeat):
-        t, r = solve_scipy(prob.residual_cpp, prob.jacobian_cpp, prob)
-        if t < t_cp:
-            t_cp, r_cp = t, r
-        t, r = solve_scipy(prob.residual_cpp, prob.jacobian_cpp_sparse, prob, tr_solver="lsmr")
-        if t < t_sp:
-            t_sp, r_sp = t, r
     cost = 0.5 * float(np.nansum((fit.residual / prob.scale) ** 2))
-    lines = [
+    head = [
         "# Identification benchmark: Ceres vs scipy.optimize.least_squares on the same residual",
         "",
         f"Generated by `bench/bench_identify.py` on {datetime.date.today()} ({platform.machine()}, Python "
-        f"{platform.python_version()}, SciPy {scipy.__version__}; machine shared, best of {args.repeat} for the "
-        "fast rows).",
+        f"{platform.python_version()}, SciPy {benchlib.version(scipy)}; machine shared, best of {repeat} for the "
+        "fast rows)." + (" QUICK run (0.6 s experiment, SciPy stopped after 1 evaluation, for the tests): the figures "
+                         "say nothing about speed or accuracy." if quick else ""),
         "",
-        f"Rigid plant, 5 s closed-loop experiment at 5 kHz ({len(log)} samples, 10000 counts/rev), {len(prob.starts)} "
-        f"shooting segments of about {SEGMENT} samples ({int(prob.counts.sum())} residuals, 5 parameters + "
-        f"{len(prob.states0)} segment states), every parameter starting 20 % off. The NumPy residual matches "
-        f"servobench's to {same:.1e} counts at the start.",
-        "",
+    ]
+    ceres_row = (f"| servobench `fit_time` (Ceres, one stage, 1 thread) | C++ plant code, autodiff | {best:.3f} | 1.0x | "
+                 f"{fit.iterations} iterations | {cost:.2f} | {err(fit.values()):.3f} % |")
+    table_head = [
         "| solver | residual and Jacobian | wall [s] | vs servobench | evaluations | final cost | worst parameter "
         "error |",
         "|---|---|---:|---:|---:|---:|---:|",
-        f"| servobench `fit_time` (Ceres, one stage, 1 thread) | C++ plant code, autodiff | {best:.3f} | 1.0x | "
-        f"{fit.iterations} iterations | {cost:.2f} | {err(fit.values()):.3f} % |",
-        f"| `scipy.optimize.least_squares` (trf, exact) | NumPy model, 2-point with block sparsity | {t_np:.2f} | "
-        f"{t_np / best:.1f}x | {r_np.nfev} residuals + {r_np.njev} Jacobians | {r_np.cost:.2f} | "
-        f"{err(prob.values(r_np.x[:5])):.3f} % |",
-        f"| `scipy.optimize.least_squares` (trf, exact) | servobench's C++ residual and exact Jacobian (dense) | "
-        f"{t_cp:.3f} | {t_cp / best:.1f}x | {r_cp.nfev} residuals + {r_cp.njev} Jacobians | {r_cp.cost:.2f} | "
-        f"{err(prob.values(r_cp.x[:5])):.3f} % |",
-        f"| `scipy.optimize.least_squares` (trf, lsmr) | servobench's C++ residual and exact Jacobian (sparse) | "
-        f"{t_sp:.3f} | {t_sp / best:.1f}x | {r_sp.nfev} residuals + {r_sp.njev} Jacobians | {r_sp.cost:.2f} | "
-        f"{err(prob.values(r_sp.x[:5])):.3f} % |",
-        "",
-        f"Goal (issue 7): >= {GOAL_RATIO:g}x faster than SciPy on the same residual: "
-        f"**{'met' if t_np / best >= GOAL_RATIO else 'NOT met'}** ({t_np / best:.1f}x against the NumPy residual "
-        f"a SciPy user writes; {min(t_cp, t_sp) / best:.1f}x when SciPy is handed servobench's own residual and "
-        "Jacobian, which isolates the solvers: SciPy's trf factorises the whole Jacobian, segment states included, "
-        "or iterates with LSMR; Ceres eliminates the segment states by the Schur complement).",
     ]
-    rows = full_fits(args.repeat)
+    if scipy is not None:
+        model = NumpyModel(prob)
+        z0 = np.concatenate([prob.p0, prob.states0])
+        same = float(np.max(np.abs(model.residual(z0) - prob.residual_cpp(z0))))
+        assert same < 1e-6, f"the NumPy residual differs from servobench's by {same} counts"
+        t_np, r_np = solve_scipy(model.residual, "2-point", prob, max_nfev, jac_sparsity=prob.sparsity())
+        t_cp, r_cp, t_sp, r_sp = float("inf"), None, float("inf"), None
+        for _ in range(repeat):
+            t, r = solve_scipy(prob.residual_cpp, prob.jacobian_cpp, prob, max_nfev)
+            if t < t_cp:
+                t_cp, r_cp = t, r
+            t, r = solve_scipy(prob.residual_cpp, prob.jacobian_cpp_sparse, prob, max_nfev, tr_solver="lsmr")
+            if t < t_sp:
+                t_sp, r_sp = t, r
+        lines = head + [
+            f"Rigid plant, {duration:g} s closed-loop experiment at 5 kHz ({len(log)} samples, 10000 counts/rev), "
+            f"{len(prob.starts)} shooting segments of about {SEGMENT} samples ({int(prob.counts.sum())} residuals, 5 "
+            f"parameters + {len(prob.states0)} segment states), every parameter starting 20 % off. The NumPy residual "
+            f"matches servobench's to {same:.1e} counts at the start.",
+            "",
+        ] + table_head + [
+            ceres_row,
+            f"| `scipy.optimize.least_squares` (trf, exact) | NumPy model, 2-point with block sparsity | {t_np:.2f} | "
+            f"{t_np / best:.1f}x | {r_np.nfev} residuals + {r_np.njev} Jacobians | {r_np.cost:.2f} | "
+            f"{err(prob.values(r_np.x[:5])):.3f} % |",
+            f"| `scipy.optimize.least_squares` (trf, exact) | servobench's C++ residual and exact Jacobian (dense) | "
+            f"{t_cp:.3f} | {t_cp / best:.1f}x | {r_cp.nfev} residuals + {r_cp.njev} Jacobians | {r_cp.cost:.2f} | "
+            f"{err(prob.values(r_cp.x[:5])):.3f} % |",
+            f"| `scipy.optimize.least_squares` (trf, lsmr) | servobench's C++ residual and exact Jacobian (sparse) | "
+            f"{t_sp:.3f} | {t_sp / best:.1f}x | {r_sp.nfev} residuals + {r_sp.njev} Jacobians | {r_sp.cost:.2f} | "
+            f"{err(prob.values(r_sp.x[:5])):.3f} % |",
+            "",
+            f"Goal (issue 7): >= {GOAL_RATIO:g}x faster than SciPy on the same residual: "
+            f"**{'met' if t_np / best >= GOAL_RATIO else 'NOT met'}** ({t_np / best:.1f}x against the NumPy residual "
+            f"a SciPy user writes; {min(t_cp, t_sp) / best:.1f}x when SciPy is handed servobench's own residual and "
+            "Jacobian, which isolates the solvers: SciPy's trf factorises the whole Jacobian, segment states "
+            "included, or iterates with LSMR; Ceres eliminates the segment states by the Schur complement).",
+        ]
+    else:
+        t_np = t_cp = t_sp = None
+        lines = head + [
+            f"Rigid plant, {duration:g} s closed-loop experiment at 5 kHz; SciPy is {benchlib.NOT_INSTALLED}, so "
+            "only servobench's solve is timed.",
+            "",
+        ] + table_head + [ceres_row, f"| `scipy.optimize.least_squares` | {benchlib.NOT_INSTALLED} | | | | | |", "",
+                          f"Goal (issue 7): >= {GOAL_RATIO:g}x faster than SciPy on the same residual: not measured "
+                          "(SciPy not installed)."]
+    rows = full_fits(repeat, duration)
     lines += [
         "",
-        "## The whole fit on the 5 s experiment (goal <= 1 s wall)",
+        f"## The whole fit on the {duration:g} s experiment (goal <= 1 s wall for 5 s)",
         "",
         f"`fit_time` as a user calls it (continuation over segment lengths; two-mass: start from the log's "
-        f"spectrum), every guess 50 % off, one thread, best of {args.repeat}:",
+        f"spectrum), every guess 50 % off, one thread, best of {repeat}:",
         "",
         "| plant | wall [s] | iterations | worst parameter error | goal |",
         "|---|---:|---:|---:|---|",
     ] + [f"| {n} | {t:.3f} | {it} | {e:.3f} % | {'met' if t <= GOAL_S else 'NOT met'} |" for n, t, it, e in rows]
     text = "\n".join(lines) + "\n"
-    print(text)
-    (ROOT / "bench" / "results" / "identify.md").write_text(text)
+
+    ratio_goal = dict(goal=GOAL_RATIO, goal_on="ratio", goal_source="issue 7")
+    label = f"one-stage rigid fit, {duration:g} s experiment, Ceres"
+    figures = [
+        benchlib.Figure("identify", label, "s", best, False, **benchlib.peer_figure(
+            "SciPy least_squares, NumPy residual (2-point, sparse)", scipy, lambda: t_np), **ratio_goal,
+            note="what a SciPy user writes"),
+        benchlib.Figure("identify", label, "s", best, False, **benchlib.peer_figure(
+            "SciPy least_squares on servobench's residual and Jacobian (dense)", scipy, lambda: t_cp),
+            **ratio_goal, note="the solvers alone"),
+        benchlib.Figure("identify", label, "s", best, False, **benchlib.peer_figure(
+            "SciPy least_squares on servobench's residual and Jacobian (LSMR)", scipy, lambda: t_sp),
+            **ratio_goal, note="the solvers alone"),
+    ] + [benchlib.Figure("identify", f"whole `fit_time`, {n}, {duration:g} s experiment", "s", t, False,
+                         goal=GOAL_S, goal_source="issue 7", note="no peer identifies these plants")
+         for n, t, _it, _e in rows]
+    return benchlib.Result("identify", "bench/bench_identify.py", "identify.md", text, figures, quick,
+                           peers={"SciPy": benchlib.version(scipy)})
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--repeat", type=int, default=None, help="default 3 (quick: 1)")
+    benchlib.add_common_args(ap)
+    args = ap.parse_args(argv)
+    res = run(args.quick, args.repeat)
+    print(res.markdown)
+    benchlib.write_result(res, args.results_dir)
     return 0
 
 

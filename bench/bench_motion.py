@@ -7,9 +7,10 @@ which is measured separately (the same loop without `calculate`) and subtracted 
 durations of both planners must agree (both are time-optimal) before any time is reported.
 
 If `ruckig` is not importable, it is installed with pip into a private directory (build/bench-deps), never
-into the shared site-packages, and never vendored. Writes bench/results/motion_planning.md.
+into the shared site-packages, and never vendored (under run_all.py nothing is installed and a missing Ruckig is
+reported as "not installed"). Writes bench/results/motion_planning.md and motion.json.
 
-Run: python bench/bench_motion.py [--moves 200000] [--ruckig-moves 20000]
+Run: python bench/bench_motion.py [--moves 200000] [--ruckig-moves 20000] [--quick] [--results-dir DIR]
 """
 
 from __future__ import annotations
@@ -17,10 +18,7 @@ from __future__ import annotations
 import argparse
 import datetime
 import os
-import importlib
-import pathlib
 import platform
-import subprocess
 import sys
 import time
 
@@ -28,26 +26,15 @@ import numpy as np
 
 import servobench as sb
 
+import benchlib
+
 GOAL_US = 0.3  # mean planning time per S-curve, us (issue 8)
-ROOT = pathlib.Path(__file__).resolve().parents[1]
-DEPS = ROOT / "build" / "bench-deps"
 
 
 def import_ruckig():
-    """Imports ruckig, installing it into build/bench-deps if it is missing (benchmark set-up only)."""
-    try:
-        import ruckig  # noqa: F401
-    except ImportError:
-        sys.path.insert(0, str(DEPS))
-        try:
-            import ruckig  # noqa: F401
-        except ImportError:
-            subprocess.check_call([sys.executable, "-m", "pip", "install", "--quiet", "--target", str(DEPS),
-                                   "ruckig"])
-            importlib.invalidate_caches()  # the path entry was cached before the install created the package
-            import ruckig  # noqa: F401
-    import ruckig
-    return ruckig
+    """Imports ruckig; when missing, installs it into build/bench-deps (benchmark set-up only) unless installs are
+    off (run_all.py), then returns None."""
+    return benchlib.import_peer("ruckig", "ruckig")
 
 
 def random_moves(n: int, seed: int = 8):
@@ -70,7 +57,7 @@ def time_servobench(moves, repeats: int = 5):
     return best, out
 
 
-def time_ruckig(ruckig, moves, n: int):
+def time_ruckig(ruckig, moves, n: int, repeats: int = 3):
     start, target, vel, acc, jerk = (m[:n] for m in moves)
     otg = ruckig.Ruckig(1)
     inp = ruckig.InputParameter(1)
@@ -94,54 +81,84 @@ def time_ruckig(ruckig, moves, n: int):
                 durations[i] = traj.duration
         return time.perf_counter() - t0
 
-    total = min(loop(True) for _ in range(3))
-    overhead = min(loop(False) for _ in range(3))
+    total = min(loop(True) for _ in range(repeats))
+    overhead = min(loop(False) for _ in range(repeats))
     return total, overhead, durations
 
 
-def main() -> None:
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--moves", type=int, default=200000)
-    ap.add_argument("--ruckig-moves", type=int, default=20000)
-    args = ap.parse_args()
+FULL = dict(moves=200_000, ruckig_moves=20_000)
+QUICK = dict(moves=2_000, ruckig_moves=500)
+
+
+def run(quick: bool = False, moves: int | None = None, ruckig_moves: int | None = None) -> benchlib.Result:
+    """Times servobench's batch planner and (when installed) Ruckig on the same moves; returns figures and table."""
+    size = dict(QUICK if quick else FULL)
+    size.update({k: v for k, v in dict(moves=moves, ruckig_moves=ruckig_moves).items() if v is not None})
+    n_moves = size["moves"]
     ruckig = import_ruckig()
-    moves = random_moves(args.moves)
-    t_sb, dur_sb = time_servobench(moves)
-    n_r = min(args.ruckig_moves, args.moves)
-    t_r, t_over, dur_r = time_ruckig(ruckig, moves, n_r)
-    rel = np.abs(dur_sb[:n_r] / dur_r - 1)
-    worst = float(rel.max())
-    if worst > 1e-6:
-        raise SystemExit(f"durations disagree with Ruckig: worst relative difference {worst:.3g}")
-    us_sb = t_sb / args.moves * 1e6
-    us_r = t_r / n_r * 1e6
-    us_r_net = (t_r - t_over) / n_r * 1e6
-    rows = [
-        ("servobench `plan_s_curve_batch` (C++, whole profile built)", args.moves, us_sb, 1.0),
-        ("Ruckig `calculate` via its Python binding", n_r, us_r, us_r / us_sb),
-        ("Ruckig, binding loop overhead subtracted (net)", n_r, us_r_net, us_r_net / us_sb),
-    ]
+    all_moves = random_moves(n_moves)
+    t_sb, dur_sb = time_servobench(all_moves, repeats=1 if quick else 5)
+    us_sb = t_sb / n_moves * 1e6
+    rows = [("servobench `plan_s_curve_batch` (C++, whole profile built)", n_moves, us_sb, 1.0)]
+    if ruckig is not None:
+        n_r = min(size["ruckig_moves"], n_moves)
+        t_r, t_over, dur_r = time_ruckig(ruckig, all_moves, n_r, repeats=1 if quick else 3)
+        rel = np.abs(dur_sb[:n_r] / dur_r - 1)
+        worst = float(rel.max())
+        if worst > 1e-6:
+            raise SystemExit(f"durations disagree with Ruckig: worst relative difference {worst:.3g}")
+        us_r = t_r / n_r * 1e6
+        us_r_net = (t_r - t_over) / n_r * 1e6
+        rows += [
+            ("Ruckig `calculate` via its Python binding", n_r, us_r, us_r / us_sb),
+            ("Ruckig, binding loop overhead subtracted (net)", n_r, us_r_net, us_r_net / us_sb),
+        ]
+        same = (f"Both planners give the same minimal durations: worst relative difference {worst:.2e} over {n_r} "
+                "moves.")
+    else:
+        same = "Ruckig is not installed: no peer in this run."
     lines = [
         "# 1-axis S-curve planning time",
         "",
         f"Generated by `bench/bench_motion.py` on {datetime.date.today()} ({platform.machine()}, Python "
-        f"{platform.python_version()}, ruckig {getattr(ruckig, '__version__', '?')}, one core; machine shared, "
+        f"{platform.python_version()}, ruckig {benchlib.version(ruckig)}, one core; machine shared, "
         "best of several runs). Random rest-to-rest moves (distance 1..1e6 pulse, vel 0.1..100 pulse/tick, "
-        "acc 1e-3..1 pulse/tick^2, jerk 1e-5..0.1 pulse/tick^3, log-uniform). Both planners give the same "
-        f"minimal durations: worst relative difference {worst:.2e} over {n_r} moves.",
+        "acc 1e-3..1 pulse/tick^2, jerk 1e-5..0.1 pulse/tick^3, log-uniform). " + same
+        + (" QUICK run (tiny sizes, for the tests): the figures say nothing about speed." if quick else ""),
         "",
         "| planner | moves | mean per plan [us] | time vs servobench |",
         "|---|---:|---:|---:|",
     ]
     lines += [f"| {name} | {n:,} | {us:.4f} | {ratio:.1f}x |" for name, n, us, ratio in rows]
+    if ruckig is None:
+        lines.append(f"| Ruckig | {benchlib.NOT_INSTALLED} | | |")
     lines += ["", f"Goal: <= {GOAL_US} us per plan: **{'met' if us_sb <= GOAL_US else 'NOT met'}** "
               f"({us_sb:.4f} us).", ""]
     text = "\n".join(lines)
-    out = ROOT / "bench" / "results" / "motion_planning.md"
-    out.write_text(text)
-    print(text)
+    goal = dict(goal=GOAL_US, goal_source="issue 8")
+    label = "S-curve rest-to-rest plan, mean time"
+    figures = [
+        benchlib.Figure("motion", label, "µs", us_sb, False, **benchlib.peer_figure(
+            "Ruckig `calculate` through its Python binding", ruckig, lambda: rows[1][2]), **goal),
+        benchlib.Figure("motion", label + " (Ruckig net of its binding loop)", "µs", us_sb, False,
+                        **benchlib.peer_figure("Ruckig net", ruckig, lambda: rows[2][2]), **goal),
+    ]
+    return benchlib.Result("motion", "bench/bench_motion.py", "motion_planning.md", text, figures, quick,
+                           peers={"Ruckig": benchlib.version(ruckig)})
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--moves", type=int, default=None, help="default 200000 (quick: 2000)")
+    ap.add_argument("--ruckig-moves", type=int, default=None, help="default 20000 (quick: 500)")
+    benchlib.add_common_args(ap)
+    args = ap.parse_args(argv)
+    res = run(args.quick, args.moves, args.ruckig_moves)
+    benchlib.write_result(res, args.results_dir)
+    print(res.markdown)
+    return 0
 
 
 if __name__ == "__main__":
     os.environ.setdefault("OMP_NUM_THREADS", "1")
-    main()
+    sys.exit(main())

@@ -7,9 +7,9 @@ the same look-ahead pass written (a) in pure Python, streaming with the same win
 NumPy, vectorised for an unlimited window (the backward and forward passes become a suffix and a prefix minimum
 of squared speeds, np.minimum.accumulate). servobench runs `plan_polyline_lookahead` (C++: tangents, corner caps,
 sliding-window minimum, forward pass) on the same polyline. Every peer's end speeds must agree with servobench's
-(relative 1e-9) before any time is reported. Writes bench/results/paths.md.
+(relative 1e-9) before any time is reported. Writes bench/results/paths.md and paths.json.
 
-Run: python bench/bench_paths.py [--segments 1000000] [--python-segments 100000]
+Run: python bench/bench_paths.py [--segments 1000000] [--python-segments 100000] [--quick] [--results-dir DIR]
 """
 
 from __future__ import annotations
@@ -17,7 +17,6 @@ from __future__ import annotations
 import argparse
 import datetime
 import math
-import pathlib
 import platform
 import time
 
@@ -25,8 +24,9 @@ import numpy as np
 
 import servobench as sb
 
+import benchlib
+
 GOAL = 1e6  # segments/s (issue 9)
-ROOT = pathlib.Path(__file__).resolve().parents[1]
 
 
 def polyline(n: int, seed: int = 9) -> np.ndarray:
@@ -114,60 +114,88 @@ def best_time(f, repeats=3):
     return best, out
 
 
-def main() -> None:
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--segments", type=int, default=1_000_000)
-    ap.add_argument("--python-segments", type=int, default=100_000)
-    args = ap.parse_args()
+FULL = dict(segments=1_000_000, python_segments=100_000)
+QUICK = dict(segments=20_000, python_segments=3_000)
+
+
+def run(quick: bool = False, segments: int | None = None, python_segments: int | None = None) -> benchlib.Result:
+    """Times servobench's look-ahead and its pure-Python and NumPy peers in the same run; figures and table."""
+    size = dict(QUICK if quick else FULL)
+    size.update({k: v for k, v in dict(segments=segments, python_segments=python_segments).items()
+                 if v is not None})
+    n_seg = size["segments"]
+    reps = 1 if quick else 3
     vel, acc, t_ms, acc_max = 100.0, 1.0, 5.0, 1.0
-    pts = polyline(args.segments)
+    pts = polyline(n_seg)
     p200 = sb.LookAheadParams(t_ms=t_ms, acc_max=acc_max, n=200)
     pall = sb.LookAheadParams(t_ms=t_ms, acc_max=acc_max, n=32766)
-    t_sb, v_sb = best_time(lambda: sb.plan_polyline_lookahead(pts, vel, acc, p200))
-    t_sb_big, _ = best_time(lambda: sb.plan_polyline_lookahead(pts, vel, acc, pall))
-    n_py = min(args.python_segments, args.segments)
+    t_sb, v_sb = best_time(lambda: sb.plan_polyline_lookahead(pts, vel, acc, p200), reps)
+    t_sb_big, _ = best_time(lambda: sb.plan_polyline_lookahead(pts, vel, acc, pall), reps)
+    n_py = min(size["python_segments"], n_seg)
     t_py, v_py = best_time(lambda: python_lookahead(pts[: n_py + 1], vel, acc, t_ms, acc_max, 200), repeats=1)
     v_sb_py = sb.plan_polyline_lookahead(pts[: n_py + 1], vel, acc, p200)
     err_py = float(np.max(np.abs(v_py - v_sb_py) / np.maximum(v_sb_py, 1e-9)))
     # NumPy (unlimited window) against servobench with a window longer than the path.
-    n_np = min(30000, args.segments)
+    n_np = min(30000, n_seg)
     sub = pts[: n_np + 1]
-    t_np, v_np = best_time(lambda: numpy_lookahead(sub, vel, acc, t_ms, acc_max))
-    t_sb_sub, v_sb_sub = best_time(lambda: sb.plan_polyline_lookahead(sub, vel, acc, pall))
+    t_np, v_np = best_time(lambda: numpy_lookahead(sub, vel, acc, t_ms, acc_max), reps)
+    t_sb_sub, v_sb_sub = best_time(lambda: sb.plan_polyline_lookahead(sub, vel, acc, pall), reps)
     err_np = float(np.max(np.abs(v_np - v_sb_sub) / np.maximum(v_sb_sub, 1e-9)))
     if err_py > 1e-9 or err_np > 1e-9:
         raise SystemExit(f"end speeds disagree: python {err_py:.3g}, numpy {err_np:.3g}")
     rate = lambda n, t: n / t  # noqa: E731
     rows = [
-        ("servobench `plan_polyline_lookahead` (C++), window 200", args.segments, rate(args.segments, t_sb), 1.0),
-        ("servobench, window 32766", args.segments, rate(args.segments, t_sb_big),
-         rate(args.segments, t_sb) / rate(args.segments, t_sb_big)),
-        ("pure Python, same algorithm, window 200", n_py, rate(n_py, t_py), rate(args.segments, t_sb) / rate(n_py, t_py)),
+        ("servobench `plan_polyline_lookahead` (C++), window 200", n_seg, rate(n_seg, t_sb), 1.0),
+        ("servobench, window 32766", n_seg, rate(n_seg, t_sb_big), rate(n_seg, t_sb) / rate(n_seg, t_sb_big)),
+        ("pure Python, same algorithm, window 200", n_py, rate(n_py, t_py), rate(n_seg, t_sb) / rate(n_py, t_py)),
         (f"servobench, window >= path ({n_np:,} segments)", n_np, rate(n_np, t_sb_sub),
-         rate(args.segments, t_sb) / rate(n_np, t_sb_sub)),
+         rate(n_seg, t_sb) / rate(n_np, t_sb_sub)),
         (f"NumPy vectorised, unlimited window ({n_np:,} segments)", n_np, rate(n_np, t_np),
-         rate(args.segments, t_sb) / rate(n_np, t_np)),
+         rate(n_seg, t_sb) / rate(n_np, t_np)),
     ]
     lines = [
         "# Look-ahead planning speed",
         "",
         f"Generated by `bench/bench_paths.py` on {datetime.date.today()} ({platform.machine()}, Python "
-        f"{platform.python_version()}, NumPy {np.__version__}, one core; machine shared, best of 3). A random 2-D "
+        f"{platform.python_version()}, NumPy {np.__version__}, one core; machine shared, best of {reps}). A random 2-D "
         "polyline (segments 5..500 pulse, turns up to +-60 deg), feed 100 pulse/ms, acceleration 1 pulse/ms^2, "
         "T = 5 ms, accMax = 1. No installed peer plans path look-ahead (Ruckig plans one trajectory to a target), "
         "so the peers are the same algorithm in pure Python and in NumPy; their end speeds agree with servobench's "
-        f"to {max(err_py, err_np):.1e} (relative) before timing.",
+        f"to {max(err_py, err_np):.1e} (relative) before timing."
+        + (" QUICK run (tiny sizes, for the tests): the figures say nothing about speed." if quick else ""),
         "",
         "| planner | segments | segments per second | time per segment vs servobench |",
         "|---|---:|---:|---:|",
     ]
     lines += [f"| {name} | {n:,} | {r / 1e6:.2f} M | {ratio:.1f}x |" for name, n, r, ratio in rows]
-    r0 = rate(args.segments, t_sb)
+    r0 = rate(n_seg, t_sb)
     lines += ["", f"Goal: >= 1 M segments/s: **{'met' if r0 >= GOAL else 'NOT met'}** ({r0 / 1e6:.2f} M segments/s).", ""]
     text = "\n".join(lines)
-    (ROOT / "bench" / "results" / "paths.md").write_text(text)
-    print(text)
+    goal = dict(goal=GOAL / 1e6, goal_source="issue 9")
+    py = dict(peer="pure Python, same algorithm, window 200", peer_value=rate(n_py, t_py) / 1e6,
+              peer_status=benchlib.MEASURED)
+    figures = [
+        benchlib.Figure("paths", "look-ahead planning, window 200", "M segments/s", r0 / 1e6, True, **py, **goal),
+        benchlib.Figure("paths", "look-ahead planning, window 32766", "M segments/s", rate(n_seg, t_sb_big) / 1e6,
+                        True, **py, **goal, note="the peer runs window 200"),
+        benchlib.Figure("paths", f"look-ahead planning, window >= path ({n_np:,} segments)", "M segments/s",
+                        rate(n_np, t_sb_sub) / 1e6, True, peer="NumPy vectorised, unlimited window",
+                        peer_value=rate(n_np, t_np) / 1e6, peer_status=benchlib.MEASURED, **goal),
+    ]
+    return benchlib.Result("paths", "bench/bench_paths.py", "paths.md", text, figures, quick)
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--segments", type=int, default=None, help="default 1000000 (quick: 20000)")
+    ap.add_argument("--python-segments", type=int, default=None, help="default 100000 (quick: 3000)")
+    benchlib.add_common_args(ap)
+    args = ap.parse_args(argv)
+    res = run(args.quick, args.segments, args.python_segments)
+    benchlib.write_result(res, args.results_dir)
+    print(res.markdown)
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    raise SystemExit(main())
