@@ -524,3 +524,24 @@ def test_faults_stop_pvt_and_followex_axes(gts):
     card.emergency_stop = True
     gts.run(2)
     assert not card.follow(3).moving and card.stop_cause(3) == "emergency_stop"
+
+
+def test_gt_syn_parameters_mv_errors_and_a_full_buffer_return_the_manuals_codes(gt):
+    # Table 2-1 (L401): SetSynVel/SetSynAcc zero, negative or too large -> 4. Table 2-2: an Mv* error sets command
+    # status bit 13 (L476), a path command refused because the buffer is full bit 15 (L477-478: not accepted,
+    # send it again); a command in the wrong state stays bit 12 (L1800).
+    gt_map_mm(gt)
+    assert [gt.GT_SetSynVel(0), gt.GT_SetSynVel(-1), gt.GT_SetSynAcc(0), gt.GT_SetSynAcc(1e9)] == [4] * 4
+    assert gt.GT_StrtList() == 0
+    assert gt.GT_MvXY(0, 0, 0, 1) == 7 and gt.GT_GetCmdSts() == (0, 1 << 13)       # bad Mv* parameters
+    assert gt.GT_MvXY(0, 0, 1, 0.01) == 0
+    assert gt.GT_MvXY(0, 0, 1, 0.01) == 1 and gt.GT_GetCmdSts() == (0, 1 << 13)    # a repeated Mv*
+    path = gt.card.gt_path()
+    filled = 0
+    while path.fifo_space > 0:
+        assert gt.GT_LnXY(filled % 2, 1) == 0
+        filled += 1
+    assert path.fifo_size == 4096 and filled in (4095, 4096)                       # the GT buffer of 4096
+    before = gt.card.snapshot()
+    assert gt.GT_LnXY(5, 5) == 1 and gt.GT_GetCmdSts() == (0, 1 << 15)             # full: re-send later
+    assert gt.card.snapshot() == before

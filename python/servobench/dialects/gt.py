@@ -27,6 +27,7 @@ from ._controller import DialectController, export_functions
 RTN_SUCCESS = 0
 RTN_COMMAND_ERROR = 1
 RTN_PARAMETER_ERROR = 7
+RTN_SYN_PARAM_ERROR = 4  # GT_SetSynVel/SetSynAcc: vector velocity/acceleration zero, negative or too large (L401)
 RTN_COMM_ERROR = -1
 
 _POS_MIN, _POS_MAX = -1073741824, 1073741823  # L854
@@ -136,7 +137,13 @@ class GtController(DialectController):
 
     def GT_GetCmdSts(self):
         """(rtn, command status register) (Table 2-2, L455-478)."""
-        return self._get(lambda: _core.gt_command_status(self._card._card))
+        def word():
+            st = getattr(self, "_crd_state", None)
+            if st is not None and self._card.last_fault == "crd_state_error":
+                return 1 << st["cmd_bit"]  # 12, 13 or 15: which coordinated command failed (V127)
+            return _core.gt_command_status(self._card._card)
+
+        return self._get(word)
 
     # -- 8.2 axis selection, enable, output ---------------------------------------------------------------
     def GT_Axis(self, num: int) -> int:
@@ -543,19 +550,32 @@ class GtController(DialectController):
     def _crd(self):
         if not hasattr(self, "_crd_state"):
             self._crd_state = dict(vel=0.0, acc=0.0, buffer=False, open=False, mv=False, started=False,
-                                   error=False, au_stp=True)
+                                   error=False, au_stp=True, cmd_bit=12)
         return self._crd_state
 
-    def _crd_refuse(self) -> int:
-        self._crd()["error"] = True
+    def _crd_refuse(self, bit: int = 12, rtn: int = RTN_COMMAND_ERROR) -> int:
+        """A refused coordinated command: the card records a crd-state fault and GT_GetCmdSts shows `bit` (12 a
+        command in the wrong state, 13 an Mv* error, 15 buffer full; Table 2-2 L455-478) while it is the last."""
+        st = self._crd()
+        st.update(error=True, cmd_bit=bit)
         self._card.record_fault(self._axis, "crd_state_error")
-        return RTN_COMMAND_ERROR
+        return rtn
 
-    def _crd_do(self, fn) -> int:
+    def _crd_do(self, fn, *, mv: bool = False) -> int:
         rtn = self._do(fn)
-        self._crd()["error"] = rtn != RTN_SUCCESS
-        if rtn == RTN_COMMAND_ERROR and self._card.last_fault in ("change_in_motion", "invalid_in_mode"):
-            self._card.record_fault(self._axis, "crd_state_error")  # a path command refused: bit 12 (L1800)
+        st = self._crd()
+        st["error"] = rtn != RTN_SUCCESS
+        if rtn == RTN_COMMAND_ERROR:
+            try:
+                path = self._card.gt_path()
+            except (CardCommandRefused, MotionCommandRefused):
+                path = None
+            if path is not None and path.fifo_space <= 0:
+                return self._crd_refuse(15)  # buffer full: not accepted, send it again (L477-478)
+            if mv:
+                return self._crd_refuse(13)
+            if self._card.last_fault in ("change_in_motion", "invalid_in_mode"):
+                return self._crd_refuse(12)  # a path command refused: bit 12 (L1800)
         return rtn
 
     def GT_MapAxis(self, axis_num, map_count) -> int:
@@ -579,7 +599,7 @@ class GtController(DialectController):
         if self._card is None:
             return RTN_COMM_ERROR
         if not _real_in(vel, 0, 16384) or float(vel) == 0:
-            return self._param_error("motion_param_overflow")
+            return RTN_SYN_PARAM_ERROR  # zero, negative or beyond bounds: return 4 (Table 2-1 L401)
         self._crd()["vel"] = float(vel)
         return RTN_SUCCESS
 
@@ -588,7 +608,7 @@ class GtController(DialectController):
         if self._card is None:
             return RTN_COMM_ERROR
         if not _real_in(acc, 0, 16384) or float(acc) == 0:
-            return self._param_error("motion_param_overflow")
+            return RTN_SYN_PARAM_ERROR  # zero, negative or beyond bounds: return 4 (Table 2-1 L401)
         self._crd()["acc"] = float(acc)
         return RTN_SUCCESS
 
@@ -684,9 +704,9 @@ class GtController(DialectController):
             return RTN_COMM_ERROR
         st = self._crd()
         if not st["open"] or st["mv"]:
-            return self._crd_refuse()  # Mv* must follow StrtList (L1843)
+            return self._crd_refuse(13)  # Mv* must follow StrtList once (L1843): an Mv* error, bit 13 (L476)
         if not _real_in(vel, 0, 16384) or not _real_in(acc, 0, 16384) or float(vel) == 0 or float(acc) == 0:
-            return self._param_error("motion_param_overflow")
+            return self._crd_refuse(13, RTN_PARAMETER_ERROR)  # bad Mv* parameters: 7 with bit 13
         path = self._card.gt_path()
         t = list(path.tail)
         end = [float(p) for p in point] + t[len(point):]
@@ -695,7 +715,7 @@ class GtController(DialectController):
             if end != t:
                 path.push_segment(PathSegment.line(t, end), float(vel), float(acc), stop_at_end=True)
 
-        rtn = self._crd_do(push)
+        rtn = self._crd_do(push, mv=True)
         if rtn == RTN_SUCCESS:
             st.update(mv=True, vel=float(vel), acc=float(acc))  # the Mv vel/acc become the defaults (L1845)
         return rtn
