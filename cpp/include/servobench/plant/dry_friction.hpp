@@ -48,6 +48,10 @@ T sliding_friction_nm(const DryFriction<T>& f, const T& speed_rad_s) {
     if (f.breakaway_nm == f.coulomb_nm) return f.coulomb_nm;
   const T r = abs(speed_rad_s) / f.stribeck_speed_rad_s;
   const T shape = f.stribeck_exponent == 2.0 ? T(r * r) : T(pow(r, f.stribeck_exponent));
+  // Far above the Stribeck speed exp(-shape) underflows (below 1e-307), and libm takes its slow underflow path;
+  // the peak's share is then below any double's resolution of Fc.
+  if constexpr (std::is_same<T, double>::value)
+    if (shape > 708.0) return f.coulomb_nm;
   return f.coulomb_nm + (f.breakaway_nm - f.coulomb_nm) * exp(-shape);
 }
 
