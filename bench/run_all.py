@@ -66,6 +66,10 @@ def git_describe() -> str:
 def run_bench(topic: str, script: str, results_dir: pathlib.Path, quick: bool, timeout: float) -> dict:
     """Runs one bench in a subprocess; returns {topic, ok, seconds, load_before, load_after, result | error}."""
     env = dict(os.environ, SERVOBENCH_BENCH_NO_INSTALL="1")
+    # One thread for NumPy/SciPy's BLAS in every bench (E12): idle OpenBLAS threads spin and take a core from the
+    # timed loop on a small machine, and both sides of every comparison are single-threaded code.
+    for var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+        env.setdefault(var, "1")
     cmd = [sys.executable, str(HERE / script), "--results-dir", str(results_dir)] + (["--quick"] if quick else [])
     json_path = results_dir / f"{topic}.json"
     started = datetime.datetime.now(datetime.timezone.utc).replace(microsecond=0)
