@@ -57,7 +57,7 @@ toc_object_entries = False
 nitpicky = False  # S7: references to NumPy/matplotlib types would each need an intersphinx round trip
 
 # -- autodoc (S6) ---------------------------------------------------------------------------------------------------
-autodoc_default_options = {"members": True, "undoc-members": False, "show-inheritance": False}
+autodoc_default_options = {"members": True}
 autodoc_member_order = "bysource"
 autodoc_typehints = "description"
 autodoc_docstring_signature = True  # pybind11 puts the signature on the docstring's first line
