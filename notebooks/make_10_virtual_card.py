@@ -168,7 +168,8 @@ cells = [
          "      'MIO', bits(a.APS_motion_io_status(0), {6: 'INP', 7: 'SVON'}))"),
 ]
 
-nb = nbf.v4.new_notebook(cells=cells, metadata={"kernelspec": {"name": "python3", "display_name": "Python 3"}})
+nb = nbf.v4.new_notebook(cells=cells, metadata={"kernelspec": {"name": "python3", "display_name": "Python 3",
+                                                               "language": "python"}})
 out = pathlib.Path(__file__).with_name("10_virtual_card.ipynb")
 nbf.write(nb, out)
 print("wrote", out)

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Installs servobench and runs every test: the C++ unit tests through ctest, then pytest (which also executes
-# the notebooks).
+# Installs servobench and runs every test: the C++ unit tests through ctest, then pytest (which also builds the
+# documentation site once, executing the notebooks).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install.sh

@@ -18,9 +18,9 @@ void bind_control(py::module_& m) {
       .field("kd", &GtServoLawParams::kd, "derivative gain on E_n - E_{n-1}, 0..32767")
       .field("kvff", &GtServoLawParams::kvff, "velocity feed-forward gain on V_target (pulse/tick), 0..32767")
       .field("kaff", &GtServoLawParams::kaff, "acceleration feed-forward gain on A_target (pulse/tick^2), 0..32767")
-      .field("ilmt", &GtServoLawParams::ilmt, "integral limit |SumE| <= ilmt (pulse*tick), 0..32767; 0 clears the sum")
+      .field("ilmt", &GtServoLawParams::ilmt, "integral limit ``|SumE| <= ilmt`` (pulse*tick), 0..32767; 0 clears the sum")
       .field("bias", &GtServoLawParams::bias, "motor bias B, counts, -32768..32767")
-      .field("mtr_lmt", &GtServoLawParams::mtr_lmt, "output limit |U| <= mtr_lmt, counts, 0..32767")
+      .field("mtr_lmt", &GtServoLawParams::mtr_lmt, "output limit ``|U| <= mtr_lmt``, counts, 0..32767")
       .field("fractional_gains", &GtServoLawParams::fractional_gains,
              "GE series: kp..kaff may be fractional doubles in 0..32767 (GE L5530-5620); default False (GT integers)")
       .finish()

@@ -69,9 +69,11 @@ constexpr const char* kResponseDoc =
 
 void bind_filters(py::module_& m) {
   ParamClass<FloatBiquadParams>(m, "FloatBiquad",
-      "A biquad in floating point, usual sign convention (scipy.signal, MATLAB):\n"
+      "A biquad in floating point, usual sign convention (scipy.signal, MATLAB)::\n"
+      "\n"
       "  y(k) = b0 x(k) + b1 x(k-1) + b2 x(k-2) - a1 y(k-1) - a2 y(k-2),\n"
       "  H(z) = (b0 + b1 z^-1 + b2 z^-2) / (1 + a1 z^-1 + a2 z^-2).\n"
+      "\n"
       "sample_time_s is the sample time it was designed for (s; 0 = not bound to a period). Keyword arguments only;\n"
       "the default is a pass-through. Designed by servobench.design.lowpass/notch/lead_lag/from_s; to_adlink()\n"
       "quantises it to the ADLINK card's integers.")
@@ -85,7 +87,7 @@ void bind_filters(py::module_& m) {
       .def("frequency_response", &response<FloatBiquadParams>, py::arg("freq_hz"),
            py::arg("sample_time_s") = py::none(), kResponseDoc)
       .def("to_adlink", &control::quantize_adlink,
-           "The ADLINK integer biquad (AdlinkBiquad): DIV = trunc(32767/max|coef|), the largest |coef| -> +-32767,\n"
+           "The ADLINK integer biquad (AdlinkBiquad): DIV = trunc(32767/max ``|coef|``), the largest ``|coef|`` -> +-32767,\n"
            "the others trunc(coef*DIV) (adlink.md §3.6; reproduces the manual's integers L1919, L1948). Raises\n"
            "ValueError if the integers cannot hold the design (coefficient > 32767, numerator truncated to 0,\n"
            "quantised poles on or outside the unit circle).")
@@ -99,9 +101,11 @@ void bind_filters(py::module_& m) {
            "Bode plot (magnitude dB, phase deg, over Hz); see servobench.plot.filter_response. Returns the Figure.");
 
   ParamClass<AdlinkBiquadParams>(m, "AdlinkBiquad",
-      "The ADLINK PCI-8254/8258 integer biquad (PRA_BIQUADn_A1, A2, B0, B1, B2, DIV; manual L1873-1911):\n"
+      "The ADLINK PCI-8254/8258 integer biquad (PRA_BIQUADn_A1, A2, B0, B1, B2, DIV; manual L1873-1911)::\n"
+      "\n"
       "  R(k) = (B0 X(k) + B1 X(k-1) + B2 X(k-2) + A1 R(k-1) + A2 R(k-2)) / DIV   (feedback ADDED),\n"
       "  H(z) = (B0 + B1 z^-1 + B2 z^-2) / (DIV - A1 z^-1 - A2 z^-2).\n"
+      "\n"
       "Every coefficient a whole number -32768..32767, DIV != 0; defaults B0 = DIV = 1, others 0 (pass-through).\n"
       "Evaluated in double precision, no truncation of R (the card's DSP is floating point, L322; decisions.md F1).\n"
       "sample_time_s: the sample time the integers were designed for (s; 0 = not bound; not a card parameter).")

@@ -82,7 +82,7 @@ void bind_motion(py::module_& m) {
       "ADLINK APS_ptp_all point-to-point move (ADLINK manual L2176-2244, L2712-2767) in pulse/s units (unit\n"
       "factor 1): starts at vs, ramps at acc to vm, cruises, ramps at dec to ve. sf = S-factor t1/(t1+t2):\n"
       "0 = T-curve, 1 = pure S. Short moves keep acc, dec and sf and lower the peak velocity (the jerk changes).")
-      .field("pos", &AdlinkPtpParams::pos, "target position, pulse, |pos| <= 2147483647")
+      .field("pos", &AdlinkPtpParams::pos, "target position, pulse, ``|pos| <= 2147483647``")
       .field("vs", &AdlinkPtpParams::vs, "PRA_VS start velocity, pulse/s, 0..vm")
       .field("vm", &AdlinkPtpParams::vm, "PRA_VM maximum velocity, pulse/s, 0 < vm <= 1e9")
       .field("ve", &AdlinkPtpParams::ve, "PRA_VE end velocity, pulse/s, 0..vm")

@@ -499,7 +499,7 @@ void bind_paths(py::module_& m) {
                                  double acc_max) {
         return corner_speed_limit(point(u_out, "u_out"), point(u_in, "u_in"), t_ms, acc_max);
       }, py::arg("u_out"), py::arg("u_in"), py::arg("t_ms"), py::arg("acc_max"),
-      "The look-ahead's corner cap acc_max * t_ms / |u_in - u_out| (unit/ms) for unit tangents.");
+      "The look-ahead's corner cap acc_max * t_ms / ``|u_in - u_out|`` (unit/ms) for unit tangents.");
 }
 
 }  // namespace servobench::bindings

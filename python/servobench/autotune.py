@@ -115,7 +115,7 @@ def relay_autotune(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 
     sampling_time_s
         relay sampling time, s (100..1000 us, default 500 us); rounded to whole servo ticks.
     deviation_limit_pulse
-        |position error| above this stops the tuning, servo off, pulse (0 = off, default 2000).
+        ``|position error|`` above this stops the tuning, servo off, pulse (0 = off, default 2000).
     max_spread
         accepted relative standard deviation of each gain (the manual's 10 %).
     phase_margin_deg, alpha
@@ -155,10 +155,10 @@ def predicted_limit_cycle(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: f
                           sampling_time_s: float = 500e-6) -> dict:
     """The limit cycle the describing function predicts for the relay experiment on this axis, computed from the
     analytic plant (the same lifted model as :func:`servobench.frequency.analytic_response`): the frequency wu where
-    angle P(j wu) = -180 deg + asin(eps / a) with a = (4 d / pi) |P(j wu)|. P is the plant from the relay's volts to
+    angle P(j wu) = -180 deg + asin(eps / a) with a = (4 d / pi) ``|P(j wu)|``. P is the plant from the relay's volts to
     the encoder with the one-tick delay, shifted by the sampled relay's mean switching delay (docs/decisions.md R4).
 
-    Returns {"freq_hz", "amplitude_pulse", "ultimate_gain_v_per_pulse" (= 1/|P|)}; ValueError if the plant's phase
+    Returns {"freq_hz", "amplitude_pulse", "ultimate_gain_v_per_pulse" (= 1/``|P|``)}; ValueError if the plant's phase
     never reaches the needed value (no limit cycle: e.g. an undamped double integrator with hysteresis).
     """
     from .frequency import analytic_response
@@ -214,7 +214,7 @@ class ModelTuneResult:
         :class:`servobench.frequency.Margins` of the analytic loop with the card law's integers and the filters
         (phase margin at the crossover, gain margin, Ms, bandwidth): what :meth:`apply` will give.
     max_pole_radius
-        the closed loop's largest pole magnitude |z| (< 1: stable).
+        the closed loop's largest pole magnitude ``|z|`` (< 1: stable).
     law, filters
         the card law (integers, feed-forward 0) and the two biquads (notch or pass-through; pass-through) that
         :meth:`apply` writes.

@@ -35,7 +35,7 @@ class AxisRun:
     signals: Mapping[str, np.ndarray]
     servo_period_s: float
     law: object = field(default=None, repr=False)
-    #: Why the run ended early: ``None`` (it ran every tick), ``"error_limit"`` (|error| exceeded
+    #: Why the run ended early: ``None`` (it ran every tick), ``"error_limit"`` (``|error|`` exceeded
     #: ``error_limit_pulse``) or ``"drive_alarm"``; the servo was then turned off at the last recorded tick.
     stopped: str | None = None
     #: The following error (pulse) at the tick that tripped the error limit.
@@ -202,7 +202,7 @@ class Axis:
             output). Like the law's output it reaches the drive one tick later.
         error_limit_pulse
             position-error protection (ADLINK ERR_POS_LEVEL, the Bode tool's deviation limit), pulse; 0 = off.
-            When |cmd_pos - fb_pos| exceeds it the servo is turned off at that tick and the run ends there:
+            When ``|cmd_pos - fb_pos|`` exceeds it the servo is turned off at that tick and the run ends there:
             :attr:`AxisRun.stopped` is ``"error_limit"`` and the arrays end at that tick.
         stop_on_alarm
             end the run, servo off, at the first tick with the drive alarm set (``stopped = "drive_alarm"``).

@@ -217,6 +217,7 @@ class Card:
             samples kept before the trigger sample (0..depth-1); the trigger counts once they are there.
         continuous
             after a full block start the next one at once (the GE watch); otherwise one block (one-shot).
+
         Read the result with :meth:`scope_data`; :meth:`capture_scope` starts, runs and reads in one call."""
         mask = _event_mask(events, "events") if trigger == "event" else 1
         chans = [(float(a), str(sig)) for a, sig in channels]

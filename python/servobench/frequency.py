@@ -53,19 +53,19 @@ class Margins:
 
     gain_margin_db, gm_freq_hz
         how far the loop gain may rise before instability, dB, and the phase crossover (angle L = -180 deg,
-        |L| < 1) where it is read, Hz. ``inf`` / NaN if the data has no such crossover.
+        ``|L|`` < 1) where it is read, Hz. ``inf`` / NaN if the data has no such crossover.
     lower_gain_margin_db, lower_gm_freq_hz
         how far the gain may fall (negative dB) for a conditionally stable loop (a PID on an integrating plant has
         one at low frequency); ``-inf`` / NaN if none.
     phase_margin_deg, pm_freq_hz
-        180 deg + angle L at the gain crossover |L| = 1, deg, and that crossover frequency, Hz.
+        180 deg + angle L at the gain crossover ``|L|`` = 1, deg, and that crossover frequency, Hz.
     delay_margin_s
         extra dead time the loop tolerates, phase margin / (360 deg * crossover), s.
     bandwidth_hz
-        closed-loop -3 dB bandwidth (first frequency where |Y/R| is 3 dB below its value at the lowest
+        closed-loop -3 dB bandwidth (first frequency where ``|Y/R|`` is 3 dB below its value at the lowest
         frequency), Hz; NaN if not reached in the data.
     ms, ms_freq_hz
-        peak sensitivity max |1/(1 + L)| and its frequency, Hz (1/Ms is the distance of L from -1; Ms < 2 is the
+        peak sensitivity max ``|1/(1 + L)|`` and its frequency, Hz (1/Ms is the distance of L from -1; Ms < 2 is the
         usual robustness goal).
     """
 
@@ -340,7 +340,7 @@ def sine_sweep(axis, *, start_hz: float = 10.0, end_hz: float = 100.0, amplitude
         time per frequency point, s; the first `settle_fraction` (0..0.9) of it is discarded, the rest analysed over
         whole periods (it must hold at least one period of the lowest frequency).
     deviation_limit_pulse
-        |E| above this turns the servo off and ends the sweep (status ``"deviation_exceeded"``), pulse; 0 = off. A
+        ``|E|`` above this turns the servo off and ends the sweep (status ``"deviation_exceeded"``), pulse; 0 = off. A
         drive alarm also ends it (``"drive_alarm"``).
     feedforward, filters
         feed-forward and biquads in the loop during the sweep (restored afterwards); see the module doc.

@@ -285,7 +285,7 @@ class LogSpectrum:
 
     freq_hz: bin centres, Hz; response: speed over torque, (rad/s)/(N*m), complex, the known current loop divided
     out; coherence: 0..1 per bin (1: the speed is linear in the torque there; low: noise, friction, quantisation).
-    apparent_inertia_kgm2 = 1 / (|response| * 2 pi f): flat at the total inertia for a rigid body; a two-mass
+    apparent_inertia_kgm2 = 1 / (``|response|`` * 2 pi f): flat at the total inertia for a rigid body; a two-mass
     motor-side log shows a peak at the anti-resonance and a dip at the resonance.
     """
 
@@ -369,7 +369,7 @@ def resonance_guess(log: IdentificationLog, *, min_coherence: float = 0.3,
     """Starting values of jm, jl and k for a two-mass fit from a motor-side log's spectrum (:func:`log_spectrum`).
 
     The apparent inertia of the undamped-to-lightly-damped two-mass model,
-    1 / (|V/T| w) with V/T = (jl s^2 + c s + k) / (s (jm jl s^2 + c (jm + jl) s + k (jm + jl))), is matched in
+    1 / (``|V/T|`` w) with V/T = (jl s^2 + c s + k) / (s (jm jl s^2 + c (jm + jl) s + k (jm + jl))), is matched in
     log magnitude (weighted by the coherence; bins below `min_coherence` and above 0.4 fs left out) over a grid of
     anti-resonance (the excited band), resonance/anti-resonance ratio (1.02..5) and anti-resonance damping
     (0.01..0.3), the total inertia in closed form. Magnitude only: the phase carries the sampling's delays. Raises

@@ -19,7 +19,7 @@ class MoveMetrics:
         time from the end of the command until the feedback enters, and stays inside, target +- band (s);
         NaN if it never settles within the record.
     peak_following_error_pulse
-        largest |cmd_pos - fb_pos| over the whole run (pulse).
+        largest ``|cmd_pos - fb_pos|`` over the whole run (pulse).
     final_error_pulse
         cmd_pos - fb_pos at the last tick (pulse).
     settle_band_pulse

@@ -769,7 +769,7 @@ class ApsController(DialectController):
 
     def APS_arc2_ca(self, Axis_ID_Array, Option, CenterArray, Angle, TransPara=0.0, Wait=None) -> int:
         """``APS_arc2_ca(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 Angle, F64 *TransPara, ASYNCALL
-        *Wait)`` (L2978; V113): a 2-D arc about the centre by Angle degrees (+ CCW, |Angle| > 360 = laps)."""
+        *Wait)`` (L2978; V113): a 2-D arc about the centre by Angle degrees (+ CCW, ``|Angle|`` > 360 = laps)."""
         return self._arc("arc2_ca", Axis_ID_Array, 2, Option, TransPara, Wait, center=CenterArray, angle_deg=Angle)
 
     def APS_arc2_ca_v(self, Axis_ID_Array, Option, CenterArray, Angle, TransPara, Vm, Wait=None) -> int:
