@@ -73,6 +73,11 @@ ARCS = {
     "sprial_ca": (lambda c, *t: getattr(c, "APS_sprial_ca" + t[0])([0, 1, 2], 0, [-R, 0, 0], [0, 0, 1], 360, 2000,
                                                                    R / 2, 0.0, *t[1:]),
                   (0, 1, 2), (-R / 2, 0, 2000), lambda p: np.all(np.diff(p[:, 2]) >= 0)),
+    "sprial_ce": (lambda c, *t: getattr(c, "APS_sprial_ce" + t[0])([0, 1, 2], 0, [-R, 0, 0], [0, 0, 1],
+                                                                   [-R, R / 2, 2000], 0, 0.0, *t[1:]),
+                  (0, 1, 2), (-R, R / 2, 2000),                         # radius R -> R/2 over a CCW quarter, rising
+                  lambda p: (np.all(np.diff(p[:, 2]) >= 0)
+                             and np.all(np.diff(np.hypot(p[:, 0] + R, p[:, 1])) <= 1.5))),
 }
 
 
