@@ -1256,12 +1256,13 @@ class _ApsScope:
         return self._do(self._card.compare_reset_count, int(_num(TrgCh)))
 
     def APS_get_trigger_linear_cmp(self, Board_ID, LCmpCh):
-        """``APS_get_trigger_linear_cmp(Board_ID, LCmpCh, &CmpVal)`` -> ``(rtn, next compare point)`` (the last
-        point once done)."""
+        """``APS_get_trigger_linear_cmp(Board_ID, LCmpCh, &CmpVal)`` -> ``(rtn, next compare point)`` (0 once every
+        point has been compared, decision V128)."""
         return self._next_cmp(Board_ID, LCmpCh, 0)
 
     def APS_get_trigger_table_cmp(self, Board_ID, TCmpCh):
-        """``APS_get_trigger_table_cmp(Board_ID, TCmpCh, &CmpVal)`` -> ``(rtn, next compare point)``."""
+        """``APS_get_trigger_table_cmp(Board_ID, TCmpCh, &CmpVal)`` -> ``(rtn, next compare point)`` (0 once every
+        point of the table has been compared, decision V128)."""
         return self._next_cmp(Board_ID, TCmpCh, 2)
 
     def _next_cmp(self, Board_ID, ch, base):

@@ -123,6 +123,9 @@ class GtController(DialectController):
         auto-update/auto-stop off, closed loop, limits on, drives off, events cleared."""
         self._lmt_sns = 0
         self._index = [0] * 4
+        # the coordinate system back to the HardRst state: SynVel/SynAcc 0 (item 1, L4126), CrdAuStp allowed
+        # (item 15, L4140), immediate mode (item 16, L4141); the card's reset drops the mapping (item 17, L4142)
+        self.__dict__.pop("_crd_state", None)
         if self._card is not None:
             self._intr_reset()  # all interrupts masked after reset (L2223, L4765-4779; issue 10.3)
         return self._do(lambda: self._card.reset())
