@@ -219,7 +219,7 @@ def schema_markdown() -> str:
                 default = "required" if k.required else (_fmt_default(k.default) or "-")
                 if k.name == "sample_time_s" and t.name == "filters":
                     default = "servo period"
-                doc = k.doc.replace("|", "\\|")  # a literal | inside a Markdown table cell
+                doc = k.doc.replace("``", "`").replace("|", "\\|")  # RST literals as Markdown code; a literal | escaped in a table cell
                 out.append(f"| `{base}.{k.name}` | {doc} | {default} |")
             out.append("")
     return "\n".join(out).rstrip() + "\n"
