@@ -145,8 +145,6 @@ def test_buf_lmts_and_buf_set_stop_io_change_the_fifo_at_their_place_guc_l609_64
     assert gts.GT_BufSetStopIo(1, 1, 0, G.MC_GPI, 16) == 0
 
 
-@pytest.mark.xfail(strict=True, reason="the card does not feed its limit/alarm/home inputs to the crd FIFOs' "
-                                       "BufSetStopIo mapping (decision C28/C29: the path layer waits for them)")
 def test_buf_set_stop_io_on_the_home_switch_stops_the_path_on_the_card():
     # GUC L625-645: a home input mapped by BufSetStopIo stops the crd when the axis's home switch becomes active.
     rad = 2 * math.pi / 10000
@@ -161,8 +159,6 @@ def test_buf_set_stop_io_on_the_home_switch_stops_the_path_on_the_card():
     assert g.card.profile_pos(0) < 9000
 
 
-@pytest.mark.xfail(strict=True, reason="the card's limit logic does not read the crd FIFO's BufLmtsOn/Off flags "
-                                       "(decision C28: the flags are kept by the path layer only)")
 def test_buf_lmts_off_lets_the_path_pass_the_limit_on_the_card():
     # GUC L609-624: after a BufLmtsOff of axis 1 has executed, its limit switch no longer stops the path.
     rad = 2 * math.pi / 10000
@@ -175,7 +171,7 @@ def test_buf_lmts_off_lets_the_path_pass_the_limit_on_the_card():
             g.GT_CrdStart(1, 0)] == [0] * 4
     g.run(tick_of_ms(1500))
     assert g.card.crd(1).fifo(0).state.limits_pos == 0xFFFE                # the flag is off
-    assert g.card.profile_pos(0) == 20000                                  # but the card stopped at 5000
+    assert g.card.profile_pos(0) == 20000                                  # the card lets the path pass (V129)
 
 
 # -- YZ / ZX arcs and the 4-D G0 line ---------------------------------------------------------------------------

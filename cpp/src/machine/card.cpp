@@ -910,9 +910,9 @@ void Card::safety_before(std::size_t i) {
   }
   s.alarm_prev = alarm;
   // Hard limits (GT L2196-2213): latch the event while triggered; stop motion toward the limit.
-  if (s.limits.enabled) {
-    if (pos_limit_input(i)) s.events |= event_bit(CardEvent::PosLimit);
-    if (neg_limit_input(i)) s.events |= event_bit(CardEvent::NegLimit);
+  if (s.limits.enabled) {  // [modes] a GUC crd's BufLmtsOff hides the limit from its place in the FIFO on (V129)
+    if (pos_limit_input(i) && (!modes_ || modes_->limit_enabled(i, true))) s.events |= event_bit(CardEvent::PosLimit);
+    if (neg_limit_input(i) && (!modes_ || modes_->limit_enabled(i, false))) s.events |= event_bit(CardEvent::NegLimit);
   }
   const double act = l.actual_pos();
   if (s.limits.soft_pos_enabled && act >= s.limits.soft_pos_pulse) s.events |= event_bit(CardEvent::SoftPosLimit);

@@ -59,4 +59,14 @@ void PathGroup::set_outside_positions(const std::vector<double>& profile_pos) {
   if (!gen_.busy()) set_outside(gen_, axes(), profile_pos);
 }
 
+void CrdPairGroup::set_input(int type, int index, bool active) {
+  for (int k = 0; k < 2; ++k) pair_.fifo(k).set_input(type, index, active);  // both FIFOs map stops (V129)
+}
+
+bool CrdPairGroup::limit_enabled(std::size_t axis, bool positive) const {
+  if (axis >= 16) return true;
+  const motion::PathState& st = pair_.state();  // the running FIFO's flags (BufLmtsOn/Off executed so far)
+  return ((positive ? st.limits_pos : st.limits_neg) >> axis) & 1u;
+}
+
 }  // namespace servobench::machine

@@ -244,6 +244,27 @@ void CardModes::pvt_start(std::uint32_t mask) {
 
 void CardModes::note_refused_start(std::size_t axis, StopCause cause) { card_.st_.at(axis).stop_cause = cause; }
 
+bool CardModes::limit_enabled(std::size_t axis, bool positive) const {
+  for (const HostedGroup& h : groups_)
+    if (h.group && !h.group->limit_enabled(axis, positive)) return false;
+  return true;
+}
+
+void CardModes::feed_inputs(CardGroup& g) const {
+  // The card's inputs as the path layer's BufSetStopIo reads them (GUC L625-645; V129): limits, alarm, home of
+  // card axes 1..8, logical (the card's sense applied).
+  const std::size_t n = std::min<std::size_t>(n_, 8);
+  for (std::size_t i = 0; i < n; ++i) {
+    const int index = static_cast<int>(i) + 1;
+    const CardAxisState& s = card_.state(i);
+    const Axis& a = card_.loop(i).axis();
+    g.set_input(static_cast<int>(motion::StopInput::LimitPositive), index, card_.pos_limit_input(i));
+    g.set_input(static_cast<int>(motion::StopInput::LimitNegative), index, card_.neg_limit_input(i));
+    g.set_input(static_cast<int>(motion::StopInput::Alarm), index, s.alarm_enabled && (a.alarm() || s.alarm_input));
+    g.set_input(static_cast<int>(motion::StopInput::Home), index, a.config().switches.home(a.load_angle_rad()));
+  }
+}
+
 // -- FollowEx -----------------------------------------------------------------------------------------------------
 
 void CardModes::set_follow(std::size_t i, const motion::FollowExSetup& setup, const FollowMaster& master) {
@@ -517,6 +538,7 @@ void CardModes::begin_tick(long long tick) {
     const std::vector<std::size_t>& axes = h.group->axes();
     if (j == 0) {  // a motion-cycle boundary: one interpolator cycle
       h.prev = h.cur;
+      feed_inputs(*h.group);
       h.group->step_cycle();
       h.group->positions(h.cur.data());
       h.feeding = h.group->busy() || h.cur != h.prev;

@@ -44,6 +44,12 @@ class CardGroup {
   // Before a start: the present profile positions of the card's axes outside the group (all axes, 0-based
   // index = card axis), so buffered moves of outside axes start where those axes stand.
   virtual void set_outside_positions(const std::vector<double>& /*profile_pos*/) {}
+  // The card's inputs before each motion cycle, logical (sense applied): type motion::StopInput (limit +/-,
+  // alarm, home), index = card axis + 1 (1..8). A group that maps inputs to stops (GUC BufSetStopIo) reads them.
+  virtual void set_input(int /*type*/, int /*index*/, bool /*active*/) {}
+  // Whether the group lets the card see a hard limit of card axis `axis` (0-based); a buffered BufLmtsOff
+  // (GUC L609-624) turns it off from its place in the FIFO on.
+  virtual bool limit_enabled(std::size_t /*axis*/, bool /*positive*/) const { return true; }
 
  protected:
   explicit CardGroup(std::vector<std::size_t> axes) : axes_(std::move(axes)) {}
@@ -69,6 +75,8 @@ class CrdPairGroup final : public CardGroup {
   void stop(bool abrupt) override { pair_.stop(abrupt); }
   void aux_positions(std::vector<std::pair<std::size_t, double>>& out) const override;
   void set_outside_positions(const std::vector<double>& profile_pos) override;
+  void set_input(int type, int index, bool active) override;
+  bool limit_enabled(std::size_t axis, bool positive) const override;
 
  private:
   motion::CrdFifoPair pair_;

@@ -57,6 +57,8 @@ class CardModes {
   // A group start refused because of `cause` (the e-stop): the axes record it as their stop cause, as a refused
   // single-axis Update does (ADLINK L3931-3936: the command is ignored, the stop code reads EMG).
   void note_refused_start(std::size_t axis, StopCause cause);
+  // Whether every hosted group lets the card see this hard limit of `axis` (GUC BufLmtsOn/Off, V129).
+  bool limit_enabled(std::size_t axis, bool positive) const;
 
   // -- electronic gear (GT L1029-1090, L4407-4437) ---------------------------------------------------------
   // GT_PrflG(master): axis `slave` follows the profile position of axis `master` with the active ratio (the
@@ -156,6 +158,7 @@ class CardModes {
   std::optional<bool> moving(std::size_t i) const;
 
  private:
+  void feed_inputs(CardGroup& g) const;
   enum class Kind : std::uint8_t { None, Gear, Pvt, Follow, Group };
   struct GearSlave {
     std::size_t master = 0;
