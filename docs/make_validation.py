@@ -18,6 +18,7 @@ import numpy as np
 
 import servobench as sb
 from servobench import frequency as fr
+from servobench.examples import program_guc_hexagon, resonant_axis, velocity_axis
 
 PAGE = pathlib.Path(__file__).with_name("validation.md")
 IMG = pathlib.Path(__file__).with_name("img")
@@ -100,25 +101,8 @@ def rows_bode(curves):
 
 
 # -- tuning: predicted vs measured ---------------------------------------------------------------------------------
-def velocity_axis(plant="rigid"):
-    """tests/python/test_autotune.py::velocity_axis."""
-    p = sb.RigidPlant(inertia_kgm2=1e-4, viscous_nms=1e-4) if plant == "rigid" else \
-        sb.TwoMassPlant(jm_kgm2=5e-5, jl_kgm2=5e-5, k_nm_per_rad=300, c_nms_per_rad=0.01)
-    return sb.Axis(law=sb.ApsServoLaw(), plant=p,
-                   drive=sb.VelocityDrive(speed_per_volt_rad_s=31.4, current_limit_a=float("inf"),
-                                          torque_limit_nm=1e9),
-                   encoder=sb.Encoder(counts_per_rev=10000, quantize=False), dac=sb.Dac(quantize=False),
-                   servo_period_s=TS)
 
 
-def resonant_axis():
-    """tests/python/test_autotune.py::resonant_axis (velocity drive, resonance 390 Hz)."""
-    return sb.Axis(law=sb.ApsServoLaw(),
-                   plant=sb.TwoMassPlant(jm_kgm2=5e-5, jl_kgm2=5e-5, k_nm_per_rad=150, c_nms_per_rad=0.002),
-                   drive=sb.VelocityDrive(speed_per_volt_rad_s=31.4, current_limit_a=float("inf"),
-                                          torque_limit_nm=1e9),
-                   encoder=sb.Encoder(counts_per_rev=10000, quantize=False), dac=sb.Dac(quantize=False),
-                   servo_period_s=TS)
 
 
 def rows_tuning():
@@ -270,20 +254,7 @@ def rows_vectors():
                      1e-9, "ms", "test_motion_vectors.cpp AdlinkT18_SFactorExtremes", "ADLINK L2211-2219",
                      digits=6))
     # GUC-ECAT hexagon with buffered I/O and delays
-    hexagon = [(200000, 0), (100000, 173205), (-100000, 173205), (-200000, 0), (-100000, -173205),
-               (100000, -173205), (200000, 0)]
-    path = sb.PathGenerator(sb.CoordSystem.identity(2), sb.PathSetup())
-    for i, pt in enumerate(hexagon, start=1):
-        path.line(pt, vel=100, acc=0.1)
-        if i == 2:
-            path.buf_io(0, 0xFFFF, 0x55)
-        elif i == 3:
-            path.buf_io(0, 0xFFFF, 0xAA)
-        elif i == 4:
-            path.buf_delay(400)
-        elif i == 5:
-            path.buf_io(0, 0xFFFF, 0x55)
-            path.buf_delay(100)
+    path = program_guc_hexagon(sb.PathGenerator(sb.CoordSystem.identity(2), sb.PathSetup()))
     path.start()
     r = sb.run_path(path)
     out.append(close("GUC hexagon (7 lines at 100 pulse/ms, BufIO, BufDelay 400 + 100): program end", 21500,

@@ -30,3 +30,68 @@ def demo_axis(*, law: str = "gt", coulomb_nm: float = 0.005) -> Axis:
     else:
         raise ValueError(f"law = {law!r} must be 'gt' or 'aps'")
     return Axis(law=servo_law, drive=drive, plant=plant, encoder=encoder, servo_period_s=200e-6)
+
+
+def _linear_io() -> dict:
+    """Encoder and DAC without quantisation: the loop is linear, so measured and analytic responses agree."""
+    return {"encoder": _core.Encoder(counts_per_rev=10000, quantize=False), "dac": _core.Dac(quantize=False)}
+
+
+def velocity_axis(plant: str = "rigid", *, servo_period_s: float = 100e-6) -> Axis:
+    """A linear velocity-mode axis for tuning experiments (the relay auto-tune needs a velocity drive).
+
+    ADLINK law with the manual's defaults; drive 31.4 rad/s per V (300 rpm/V), no current or torque limit;
+    plant "rigid" (J = 1e-4 kg*m^2, viscous 1e-4 N*m*s/rad) or "two_mass" (Jm = Jl = 5e-5 kg*m^2, shaft
+    300 N*m/rad, 0.01 N*m*s/rad: resonance 551 Hz); encoder 10000 counts/rev and DAC unquantised;
+    `servo_period_s` in s (ADLINK range 50..2000 us).
+    """
+    if plant == "rigid":
+        p = _core.RigidPlant(inertia_kgm2=1e-4, viscous_nms=1e-4)
+    elif plant == "two_mass":
+        p = _core.TwoMassPlant(jm_kgm2=5e-5, jl_kgm2=5e-5, k_nm_per_rad=300, c_nms_per_rad=0.01)
+    else:
+        raise ValueError(f"plant = {plant!r} must be 'rigid' or 'two_mass'")
+    drive = _core.VelocityDrive(speed_per_volt_rad_s=31.4, current_limit_a=float("inf"), torque_limit_nm=1e9)
+    return Axis(law=_core.ApsServoLaw(), plant=p, drive=drive, servo_period_s=servo_period_s, **_linear_io())
+
+
+def resonant_axis(drive: str = "velocity", *, law=None, servo_period_s: float = 100e-6) -> Axis:
+    """A linear two-mass axis whose resonance sits inside the loop's band, where it limits the crossover
+    without a notch: Jm = Jl = 5e-5 kg*m^2, shaft 150 N*m/rad with 0.002 N*m*s/rad (0.2 % damping): resonance
+    389.8 Hz, anti-resonance 275.6 Hz.
+
+    drive "velocity" (31.4 rad/s per V, no limits) or "torque" (the default TorqueDrive without a current limit);
+    `law` a GtServoLaw or ApsServoLaw (default ApsServoLaw()); encoder and DAC unquantised; `servo_period_s` in s.
+    """
+    if drive == "velocity":
+        d = _core.VelocityDrive(speed_per_volt_rad_s=31.4, current_limit_a=float("inf"), torque_limit_nm=1e9)
+    elif drive == "torque":
+        d = _core.TorqueDrive(current_limit_a=float("inf"))
+    else:
+        raise ValueError(f"drive = {drive!r} must be 'velocity' or 'torque'")
+    return Axis(law=law if law is not None else _core.ApsServoLaw(),
+                plant=_core.TwoMassPlant(jm_kgm2=5e-5, jl_kgm2=5e-5, k_nm_per_rad=150, c_nms_per_rad=0.002),
+                drive=d, servo_period_s=servo_period_s, **_linear_io())
+
+
+GUC_HEXAGON_PULSE = [(200000, 0), (100000, 173205), (-100000, 173205), (-200000, 0), (-100000, -173205),
+                     (100000, -173205), (200000, 0)]
+"""The GUC-ECAT manual's hexagon (L802-843, Fig 4-5; iDEABOX Ex 4-4 L1219-1370), pulse."""
+
+
+def program_guc_hexagon(path):
+    """Writes the GUC-ECAT manual's hexagon program (L802-843) into a PathGenerator `path` (pulse, ms): seven
+    lines at 100 pulse/ms and 0.1 pulse/ms^2, BufIO 0x55 after line 2, 0xAA after line 3, BufDelay 400 ms after
+    line 4, BufIO 0x55 and BufDelay 100 ms after line 5. Started, it ends at 21500 ms. Returns `path`."""
+    for i, p in enumerate(GUC_HEXAGON_PULSE, start=1):
+        path.line(p, vel=100, acc=0.1)
+        if i == 2:
+            path.buf_io(0, 0xFFFF, 0x55)
+        elif i == 3:
+            path.buf_io(0, 0xFFFF, 0xAA)
+        elif i == 4:
+            path.buf_delay(400)
+        elif i == 5:
+            path.buf_io(0, 0xFFFF, 0x55)
+            path.buf_delay(100)
+    return path

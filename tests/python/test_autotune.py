@@ -5,16 +5,9 @@ import pytest
 
 import servobench as sb
 from servobench import frequency as fr
+from servobench.examples import resonant_axis, velocity_axis
 
 
-def velocity_axis(plant="rigid", ts=100e-6):
-    p = sb.RigidPlant(inertia_kgm2=1e-4, viscous_nms=1e-4) if plant == "rigid" else \
-        sb.TwoMassPlant(jm_kgm2=5e-5, jl_kgm2=5e-5, k_nm_per_rad=300, c_nms_per_rad=0.01)
-    return sb.Axis(law=sb.ApsServoLaw(), plant=p,
-                   drive=sb.VelocityDrive(speed_per_volt_rad_s=31.4, current_limit_a=float("inf"),
-                                          torque_limit_nm=1e9),
-                   encoder=sb.Encoder(counts_per_rev=10000, quantize=False), dac=sb.Dac(quantize=False),
-                   servo_period_s=ts)
 
 
 def test_defaults_are_the_manuals_T10():
@@ -69,10 +62,10 @@ def test_card_laws_from_the_result():
 
 
 def test_stop_reasons_and_bad_input():
-    axis = velocity_axis(ts=250e-6)
+    axis = velocity_axis(servo_period_s=250e-6)
     res = sb.relay_autotune(axis, deviation_limit_pulse=100)
     assert res.status == "deviation_exceeded" and not axis.servo_on
-    res = sb.relay_autotune(velocity_axis(ts=250e-6), progress=lambda done, total: done < 3)
+    res = sb.relay_autotune(velocity_axis(servo_period_s=250e-6), progress=lambda done, total: done < 3)
     assert res.status == "user_stop" and len(res.cycles["kp"]) == 3
     for kw, name in ((dict(amplitude_v=0), "amplitude_v"), (dict(amplitude_v=10.5), "amplitude_v"),
                      (dict(hysteresis_pulse=0), "hysteresis_pulse"), (dict(data_length=0), "data_length"),
@@ -143,20 +136,11 @@ def test_classic_rules_from_the_same_experiment():
 # ---------------------------------------------------------------------------------------------------------------
 # Model-based design (issue 6: "crossover for the target margin, notch at the resonance")
 # ---------------------------------------------------------------------------------------------------------------
-def resonant_axis(drive="velocity", law=None, ts=100e-6):
-    # Two-mass with its resonance (389.8 Hz mechanical) well inside the loop's band: without a notch it limits the
-    # crossover.
-    d = sb.VelocityDrive(speed_per_volt_rad_s=31.4, current_limit_a=float("inf"), torque_limit_nm=1e9) \
-        if drive == "velocity" else sb.TorqueDrive(current_limit_a=float("inf"))
-    return sb.Axis(law=law or sb.ApsServoLaw(),
-                   plant=sb.TwoMassPlant(jm_kgm2=5e-5, jl_kgm2=5e-5, k_nm_per_rad=150, c_nms_per_rad=0.002), drive=d,
-                   encoder=sb.Encoder(counts_per_rev=10000, quantize=False), dac=sb.Dac(quantize=False),
-                   servo_period_s=ts)
 
 
 MODEL_AXES = {"rigid": lambda: velocity_axis("rigid"), "two_mass": resonant_axis,
               "two_mass_torque": lambda: resonant_axis("torque"),
-              "two_mass_gt": lambda: resonant_axis(law=sb.GtServoLaw(), ts=200e-6)}
+              "two_mass_gt": lambda: resonant_axis(law=sb.GtServoLaw(), servo_period_s=200e-6)}
 
 
 @pytest.mark.parametrize("name", list(MODEL_AXES))

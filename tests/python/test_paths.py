@@ -10,9 +10,7 @@ import numpy as np
 import pytest
 
 import servobench as sb
-
-HEX = [(200000, 0), (100000, 173205), (-100000, 173205), (-200000, 0), (-100000, -173205), (100000, -173205),
-       (200000, 0)]
+from servobench.examples import program_guc_hexagon
 
 
 def guc(**setup):
@@ -23,18 +21,7 @@ def test_guc_hexagon_with_buffered_io_ends_at_21500_ms():
     # GUC L802-843 (Fig 4-5; guc-ecat.md §6.2), iDEABOX Ex 4-4 L1219-1370: 7 lines of 3000 ms at v 100, a 0.1;
     # BufIO 0x55 after line 2 (6000 ms), 0xAA after line 3 (9000), BufDelay 400 after line 4 (12000-12400),
     # BufIO 0x55 + BufDelay 100 after line 5 (15400-15500): the program ends at 21500 ms.
-    g = guc()
-    for i, p in enumerate(HEX, start=1):
-        g.line(p, vel=100, acc=0.1)
-        if i == 2:
-            g.buf_io(0, 0xFFFF, 0x55)
-        elif i == 3:
-            g.buf_io(0, 0xFFFF, 0xAA)
-        elif i == 4:
-            g.buf_delay(400)
-        elif i == 5:
-            g.buf_io(0, 0xFFFF, 0x55)
-            g.buf_delay(100)
+    g = program_guc_hexagon(guc())
     g.start()
     r = sb.run_path(g)
     assert r.t_ms[-1] == pytest.approx(21500, abs=1)
