@@ -42,6 +42,9 @@ from . import frequency
 from . import autotune
 from . import identify
 from .identify import IdentificationLog, IdentifiedPlant, fit_frequency, fit_time, run_experiment
+from . import idim, validate as validation
+from .idim import IdimResult, idim_iv, idim_ls
+from .validate import CascadePD, RigidModel, ValidationResult, simulate_rigid, validate
 from .autotune import ModelTuneResult, RelayTuneResult, model_based_tune, relay_autotune
 from .frequency import FrequencyResponse, Margins, analytic_response, broadband_response, sine_sweep
 from . import motion
@@ -144,6 +147,16 @@ __all__ = [
     "fit_frequency",
     "fit_time",
     "run_experiment",
+    "idim",
+    "idim_ls",
+    "idim_iv",
+    "IdimResult",
+    "validation",
+    "validate",
+    "ValidationResult",
+    "RigidModel",
+    "CascadePD",
+    "simulate_rigid",
     "relay_autotune",
     "model_based_tune",
     "Margins",

@@ -15,7 +15,6 @@ pulses with the encoder's counts per revolution.
 
 from __future__ import annotations
 
-import csv
 import math
 from dataclasses import dataclass, field
 from typing import Iterable
@@ -23,6 +22,7 @@ from typing import Iterable
 import numpy as np
 
 from . import _core
+from .idlog import IdentificationLog
 
 __all__ = [
     "IdentificationLog", "IdentifiedPlant", "Estimate", "excitation", "run_experiment", "fit_time", "fit_frequency",
@@ -116,130 +116,6 @@ def torque_per_volt(drive) -> float:
 # ----------------------------------------------------------------------------------------------------------------
 # Logs
 # ----------------------------------------------------------------------------------------------------------------
-@dataclass(frozen=True)
-class IdentificationLog:
-    """One identification experiment, sample k at t = k Ts.
-
-    torque_nm
-        the torque command held over [t_k, t_k+1), N*m (the drive's input, before its current loop).
-    measured
-        position (rad) or speed (rad/s) at t_k, as `measured_is_speed` says; on the motor or the load.
-    sample_period_s
-        Ts, s. counts_per_rev: the encoder's resolution (one count is the residual unit of a fit).
-    current_bw_hz
-        the drive's current-loop bandwidth, Hz (known; ``inf`` for an ideal loop).
-    """
-
-    sample_period_s: float
-    torque_nm: np.ndarray
-    measured: np.ndarray
-    measured_is_speed: bool = False
-    measured_on_load: bool = False
-    counts_per_rev: float = 10000.0
-    current_bw_hz: float = math.inf
-    substeps: int = 1
-    extra: dict = field(default_factory=dict, repr=False)
-
-    def __post_init__(self):
-        for name in ("torque_nm", "measured"):
-            a = np.asarray(getattr(self, name), dtype=float)
-            if a.ndim != 1:
-                raise ValueError(f"IdentificationLog.{name} must be a 1-D array")
-            bad = np.flatnonzero(~np.isfinite(a))
-            if len(bad):
-                raise ValueError(f"IdentificationLog.{name}[{bad[0]}] = {a[bad[0]]} is not a finite number "
-                                 f"({len(bad)} such samples)")
-            object.__setattr__(self, name, a)
-        if len(self.torque_nm) != len(self.measured):
-            raise ValueError(f"IdentificationLog: torque_nm has {len(self.torque_nm)} samples but measured has "
-                             f"{len(self.measured)}; they must have the same length")
-        if not (self.sample_period_s > 0 and math.isfinite(self.sample_period_s)):
-            raise ValueError(f"IdentificationLog.sample_period_s = {self.sample_period_s} must be > 0")
-
-    @property
-    def time_s(self) -> np.ndarray:
-        return np.arange(len(self.measured)) * self.sample_period_s
-
-    @property
-    def count_rad(self) -> float:
-        """One encoder count, rad."""
-        return 2 * np.pi / self.counts_per_rev
-
-    def __len__(self) -> int:
-        return len(self.measured)
-
-    @classmethod
-    def from_arrays(cls, time_s, command, measured, *, command_unit: str = "N*m", torque_per_volt: float | None = None,
-                    measured_unit: str = "rad", counts_per_rev: float = 10000.0, current_bw_hz: float = math.inf,
-                    measured_on_load: bool = False) -> "IdentificationLog":
-        """A log from recorded arrays (e.g. a real machine's trace). time_s must be uniformly spaced and increasing.
-
-        command
-            the drive command held over each sample: torque (command_unit 'N*m') or the DAC voltage (command_unit
-            'V', converted with torque_per_volt, N*m/V = the drive's A/V times kt; see :func:`torque_per_volt`).
-        measured_unit
-            'rad', 'pulse' (position, converted with counts_per_rev), 'rad/s' or 'pulse/s' (speed).
-        """
-        if command_unit not in ("N*m", "V"):
-            raise ValueError(f"command_unit = {command_unit!r} must be 'N*m' (torque) or 'V' (DAC voltage)")
-        if command_unit == "V":
-            if torque_per_volt is None or not (math.isfinite(torque_per_volt) and torque_per_volt > 0):
-                raise ValueError(f"torque_per_volt = {torque_per_volt} must be > 0 (N*m/V) for a command in volts")
-            command = np.asarray(command, dtype=float) * torque_per_volt
-        torque_nm = command
-        t = np.asarray(time_s, dtype=float)
-        if t.ndim != 1 or len(t) < 3:
-            raise ValueError("time_s must be a 1-D array of at least 3 samples")
-        if not np.all(np.isfinite(t)):
-            raise ValueError(f"time_s[{np.flatnonzero(~np.isfinite(t))[0]}] is not a finite number")
-        dt = np.diff(t)
-        if np.any(dt <= 0):
-            i = int(np.flatnonzero(dt <= 0)[0])
-            raise ValueError(f"time_s is not increasing: time_s[{i + 1}] = {t[i + 1]} <= time_s[{i}] = {t[i]}")
-        ts = float(np.median(dt))
-        if np.max(np.abs(dt - ts)) > 1e-6 * ts + 1e-12:
-            raise ValueError(f"time_s is not uniformly sampled (steps {dt.min():.6g}..{dt.max():.6g} s); resample it "
-                             "to the servo period first")
-        units = {"rad": (1.0, False), "pulse": (2 * np.pi / counts_per_rev, False), "rad/s": (1.0, True),
-                 "pulse/s": (2 * np.pi / counts_per_rev, True)}
-        if measured_unit not in units:
-            raise ValueError(f"measured_unit = {measured_unit!r} is not one of {sorted(units)}")
-        scale, speed = units[measured_unit]
-        if len(np.asarray(measured)) != len(t) or len(np.asarray(torque_nm)) != len(t):
-            raise ValueError(f"time_s, command and measured must have the same length (got {len(t)}, "
-                             f"{len(np.asarray(torque_nm))}, {len(np.asarray(measured))})")
-        return cls(ts, np.asarray(torque_nm, float), np.asarray(measured, float) * scale, speed, measured_on_load,
-                   counts_per_rev, current_bw_hz)
-
-    @classmethod
-    def from_csv(cls, path: str, *, time="time_s", torque="torque_nm", measured="position_rad",
-                 measured_unit: str = "rad", **kwargs) -> "IdentificationLog":
-        """A log from a CSV file with a header row; the column names are arguments, the others those of
-        :meth:`from_arrays` (command_unit='V' with torque_per_volt for a DAC-voltage column)."""
-        with open(path, newline="") as f:
-            rows = list(csv.DictReader(f))
-        if not rows:
-            raise ValueError(f"{path}: no data rows")
-        for col in (time, torque, measured):
-            if col not in rows[0]:
-                raise ValueError(f"{path}: no column {col!r} (columns: {list(rows[0])})")
-        def column(c):
-            try:
-                return np.array([float(r[c]) for r in rows])
-            except ValueError as e:
-                raise ValueError(f"{path}: column {c!r} holds a value that is not a number ({e})") from None
-        return cls.from_arrays(column(time), column(torque), column(measured), measured_unit=measured_unit, **kwargs)
-
-    def to_csv(self, path: str) -> None:
-        """Writes time_s, torque_nm and position_rad (or speed_rad_s) columns."""
-        name = "speed_rad_s" if self.measured_is_speed else "position_rad"
-        with open(path, "w", newline="") as f:
-            w = csv.writer(f)
-            w.writerow(["time_s", "torque_nm", name])
-            for row in zip(self.time_s, self.torque_nm, self.measured):
-                w.writerow([repr(float(v)) for v in row])
-
-
 def run_experiment(axis, *, duration_s: float = 5.0, speed_rad_s: tuple[float, float] = (3.0, 30.0),
                    reversal_hz: float = 2.0, injection: str = "prbs", amplitude_v: float = 0.1, seed: int = 0,
                    **excitation_options) -> IdentificationLog:

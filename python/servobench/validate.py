@@ -1,0 +1,247 @@
+"""Validation of an identified rigid axis: simulate it on a record and compare.
+
+:func:`validate` simulates the model **open loop** from the record's measured effort (force N / torque N*m) and
+its initial state (position and speed from the first samples), and -- where the record's controller is known
+(:class:`CascadePD`, the EMPS benchmark's position-velocity law) -- **closed loop** from its reference. It reports
+RMS, NRMSE and R^2 of the position and draws measured vs simulated with the residual.
+
+The model (:class:`RigidModel`) is M a = F - offset - friction(v) with asymmetric viscous and Coulomb friction
+(Fv+, Fc+ for v > 0; Fv-, Fc- for v < 0) and an optional Stribeck peak; a stopped axis sticks while
+-Fc- <= F - offset <= Fc+. Integration: semi-implicit Euler with `substeps` sub-steps per sample, the effort held
+over each sample (zero-order hold); a speed that changes sign within a sub-step stops at zero. Units: linear m,
+m/s, N, kg; rotary rad, rad/s, N*m, kg*m^2.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+__all__ = ["RigidModel", "CascadePD", "simulate_rigid", "validate", "ValidationResult"]
+
+
+def _finite(owner, name, v, lo=-math.inf, lo_open=False):
+    v = float(v)
+    ok = math.isfinite(v) and (v > lo if lo_open else v >= lo)
+    if not ok:
+        raise ValueError(f"{owner}.{name} = {v} must be a finite number {'>' if lo_open else '>='} {lo:g}")
+    return v
+
+
+@dataclass(frozen=True)
+class RigidModel:
+    """A rigid axis: mass_kg (kg; kg*m^2 on a rotary axis), viscous friction per direction fv_pos / fv_neg
+    (N*s/m or N*m*s/rad), Coulomb friction per direction fc_pos / fc_neg (N or N*m, >= 0; fv_neg, fc_neg default to
+    the positive side's), a constant offset (N or N*m: M a = F - offset - friction) and an optional Stribeck peak
+    `static` (N or N*m, above the Coulomb level; 0 = none) decaying with stribeck_speed (m/s or rad/s)."""
+
+    mass_kg: float
+    fv_pos: float = 0.0
+    fc_pos: float = 0.0
+    fv_neg: float | None = None
+    fc_neg: float | None = None
+    offset: float = 0.0
+    static: float = 0.0
+    stribeck_speed: float = 1.0
+    linear: bool = True
+
+    def __post_init__(self):
+        _finite("RigidModel", "mass_kg", self.mass_kg, 0.0, lo_open=True)
+        for n in ("fv_pos", "fc_pos", "static"):
+            _finite("RigidModel", n, getattr(self, n), 0.0)
+        for n, twin in (("fv_neg", "fv_pos"), ("fc_neg", "fc_pos")):
+            if getattr(self, n) is None:
+                object.__setattr__(self, n, getattr(self, twin))
+            _finite("RigidModel", n, getattr(self, n), 0.0)
+        _finite("RigidModel", "offset", self.offset)
+        _finite("RigidModel", "stribeck_speed", self.stribeck_speed, 0.0, lo_open=True)
+
+    @classmethod
+    def from_result(cls, result) -> "RigidModel":
+        """From an :class:`~servobench.idim.IdimResult` (symmetric or asymmetric friction)."""
+        v = result.values()
+        if "Fv" in v:
+            return cls(v["M"], max(v["Fv"], 0.0), max(v["Fc"], 0.0), None, None, v.get("offset", 0.0),
+                       linear=result.linear)
+        return cls(v["M"], max(v["Fv+"], 0.0), max(v["Fc+"], 0.0), max(v["Fv-"], 0.0), max(v["Fc-"], 0.0),
+                   v.get("offset", 0.0), linear=result.linear)
+
+    @property
+    def units(self) -> dict:
+        if self.linear:
+            return {"mass": "kg", "viscous": "N*s/m", "effort": "N", "position": "m", "speed": "m/s"}
+        return {"mass": "kg*m^2", "viscous": "N*m*s/rad", "effort": "N*m", "position": "rad", "speed": "rad/s"}
+
+    def __str__(self) -> str:
+        u = self.units
+        return (f"RigidModel: M = {self.mass_kg:.6g} {u['mass']}, Fv+ = {self.fv_pos:.6g}, Fv- = {self.fv_neg:.6g} "
+                f"{u['viscous']}, Fc+ = {self.fc_pos:.6g}, Fc- = {self.fc_neg:.6g}, offset = {self.offset:.6g} "
+                f"{u['effort']}")
+
+
+@dataclass(frozen=True)
+class CascadePD:
+    """The EMPS benchmark's controller (its eq. 6-7): effort = gain * sat(kp*kv*(q_ref - q) - kv*v_m,
+    +-saturation_v), v_m = (q_k - q_{k-2}) / (2 Ts) (the two-tap FIR on the position, then a difference).
+    kp_per_s: 1/s; kv: V per m/s (or per rad/s); gain: N/V (or N*m/V); saturation_v: V."""
+
+    kp_per_s: float
+    kv: float
+    gain: float
+    saturation_v: float = 10.0
+
+    def __post_init__(self):
+        for n in ("kp_per_s", "kv", "gain", "saturation_v"):
+            _finite("CascadePD", n, getattr(self, n), 0.0, lo_open=True)
+
+    @classmethod
+    def from_log(cls, log) -> "CascadePD | None":
+        """From a log read with the EMPS variable names (its extra holds kp, kv and gtau), else None."""
+        e = log.extra
+        if all(k in e for k in ("kp", "kv", "gtau")):
+            return cls(e["kp"], e["kv"], e["gtau"])
+        return None
+
+
+def simulate_rigid(model: RigidModel, sample_period_s: float, *, effort=None, reference=None,
+                   controller: CascadePD | None = None, q0=0.0, v0=0.0, substeps: int = 10):
+    """Simulates `model` over the samples of `effort` (open loop, N or N*m held over each sample) or of `reference`
+    (m or rad) with `controller` (closed loop). q0, v0: the initial position and speed (any state). Returns
+    (position, speed, effort) per sample. Arrays of shape (n, R) simulate R records at once (q0, v0 scalars or
+    length R)."""
+    ts = _finite("simulate_rigid", "sample_period_s", sample_period_s, 0.0, lo_open=True)
+    if not (float(substeps) == int(substeps) and 1 <= int(substeps) <= 1000):
+        raise ValueError(f"simulate_rigid.substeps = {substeps} must be a whole number in 1..1000")
+    substeps = int(substeps)
+    closed = controller is not None
+    src = reference if closed else effort
+    if src is None:
+        raise ValueError("simulate_rigid: give effort (open loop) or reference and controller (closed loop)")
+    src = np.asarray(src, float)
+    if not np.all(np.isfinite(src)):
+        raise ValueError("simulate_rigid: the input holds non-finite samples")
+    m = model
+    h = ts / substeps
+    q = np.zeros_like(src[0]) + q0
+    v = np.zeros_like(src[0]) + v0
+    if not (np.all(np.isfinite(q)) and np.all(np.isfinite(v))):
+        raise ValueError("simulate_rigid: q0 and v0 must be finite")
+    Q, V, F = np.empty_like(src), np.empty_like(src), np.empty_like(src)
+    q1 = q2 = q
+    inv_m = 1.0 / m.mass_kg
+    strib = m.static > max(m.fc_pos, m.fc_neg)
+    for k in range(len(src)):
+        Q[k] = q
+        V[k] = v
+        if closed:
+            vm = (q - q2) / (2 * ts)
+            u = np.clip(controller.kp_per_s * controller.kv * (src[k] - q) - controller.kv * vm,
+                        -controller.saturation_v, controller.saturation_v)
+            f = controller.gain * u
+            q2, q1 = q1, q
+        else:
+            f = src[k]
+        F[k] = f
+        drive = f - m.offset
+        for _ in range(substeps):
+            if strib:
+                w = np.exp(-(v / m.stribeck_speed) ** 2)
+                fcp = m.fc_pos + (m.static - m.fc_pos) * w
+                fcn = m.fc_neg + (m.static - m.fc_neg) * w
+            else:
+                fcp, fcn = m.fc_pos, m.fc_neg
+            fr = np.where(v > 0, m.fv_pos * v + fcp, np.where(v < 0, m.fv_neg * v - fcn, 0.0))
+            v_new = v + h * (drive - fr) * inv_m
+            crossed = (v != 0) & (np.sign(v_new) != np.sign(v))
+            stuck = (v == 0) & (drive <= fcp) & (drive >= -fcn)
+            v_new = np.where(crossed | stuck, 0.0, v_new)
+            q = q + h * v_new
+            v = v_new
+    return Q, V, F
+
+
+@dataclass(frozen=True)
+class ValidationResult:
+    """Measured vs simulated position of one record: rms (m or rad), nrmse (rms over the measured position's
+    standard deviation), r2 (1 - SSE/SST) of the open-loop simulation; closed_loop: the same three for the
+    closed-loop simulation (None without a known controller); series: the arrays drawn."""
+
+    rms: float
+    nrmse: float
+    r2: float
+    closed_loop: dict | None
+    linear: bool
+    series: dict = field(repr=False)
+
+    def __str__(self) -> str:
+        u = "m" if self.linear else "rad"
+        s = f"open loop: RMS {self.rms:.4g} {u}, NRMSE {self.nrmse:.4g}, R^2 {self.r2:.6f}"
+        if self.closed_loop:
+            c = self.closed_loop
+            s += f"\nclosed loop: RMS {c['rms']:.4g} {u}, NRMSE {c['nrmse']:.4g}, R^2 {c['r2']:.6f}"
+        return s
+
+    def plot(self, *, ax=None, path: str | None = None):
+        """Measured vs simulated position (top) and the residual (bottom), units on every axis. `ax`: two axes.
+        Returns the data drawn (dict of arrays)."""
+        import matplotlib.pyplot as plt
+
+        if ax is None:
+            _fig, ax = plt.subplots(2, 1, sharex=True, figsize=(8, 5))
+        u = "m" if self.linear else "rad"
+        s = self.series
+        ax[0].plot(s["time_s"], s["measured"], lw=0.9, label="measured")
+        ax[0].plot(s["time_s"], s["open_loop"], "--", lw=0.9, label="simulated, open loop")
+        ax[1].plot(s["time_s"], s["measured"] - s["open_loop"], lw=0.7, label="open loop")
+        if "closed_loop" in s:
+            ax[0].plot(s["time_s"], s["closed_loop"], ":", lw=0.9, label="simulated, closed loop")
+            ax[1].plot(s["time_s"], s["measured"] - s["closed_loop"], lw=0.7, label="closed loop")
+        ax[0].set_ylabel(f"position, {u}")
+        ax[1].set_ylabel(f"measured - simulated, {u}")
+        ax[1].set_xlabel("time, s")
+        ax[0].legend(fontsize=8)
+        ax[1].legend(fontsize=8)
+        if path:
+            ax[0].figure.savefig(path, dpi=110)
+        return s
+
+
+def _scores(meas, sim) -> dict:
+    e = meas - sim
+    rms = float(np.sqrt(np.mean(e ** 2)))
+    sd = float(np.std(meas))
+    return {"rms": rms, "nrmse": rms / sd if sd > 0 else math.inf,
+            "r2": float(1 - np.sum(e ** 2) / np.sum((meas - meas.mean()) ** 2))}
+
+
+def validate(model, log, *, controller="auto", substeps: int = 10) -> ValidationResult:
+    """Simulates `model` (a :class:`RigidModel` or an IDIM result) on `log`: open loop from the measured effort
+    and the initial state (position = first sample, speed = central difference of the first samples), and closed
+    loop from the log's reference when the controller is known (`controller`: a :class:`CascadePD`, None, or
+    'auto' = :meth:`CascadePD.from_log`). Returns a :class:`ValidationResult` (RMS in m or rad, NRMSE, R^2)."""
+    from .idlog import IdentificationLog
+
+    if not isinstance(model, RigidModel):
+        model = RigidModel.from_result(model)
+    if not isinstance(log, IdentificationLog):
+        raise TypeError("log must be an IdentificationLog")
+    if log.measured_is_speed:
+        raise ValueError("validate: the log's measured signal is a speed; a position record is needed")
+    if len(log) < 10:
+        raise ValueError(f"validate: the record is too short ({len(log)} samples)")
+    ts = log.sample_period_s
+    q = log.measured
+    v0 = float((q[2] - q[0]) / (2 * ts))
+    Q, _, _ = simulate_rigid(model, ts, effort=log.torque_nm, q0=float(q[0]), v0=v0, substeps=substeps)
+    series = {"time_s": log.time_s, "measured": q, "open_loop": Q}
+    ctrl = CascadePD.from_log(log) if isinstance(controller, str) and controller == "auto" else controller
+    closed = None
+    if ctrl is not None and log.reference is not None:
+        Qc, _, _ = simulate_rigid(model, ts, reference=log.reference, controller=ctrl, q0=float(q[0]), v0=v0,
+                                  substeps=substeps)
+        series["closed_loop"] = Qc
+        closed = _scores(q, Qc)
+    s = _scores(q, Q)
+    return ValidationResult(s["rms"], s["nrmse"], s["r2"], closed, log.linear, series)
