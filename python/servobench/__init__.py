@@ -45,6 +45,7 @@ from .identify import IdentificationLog, IdentifiedPlant, fit_frequency, fit_tim
 from . import idim, validate as validation
 from .idim import IdimResult, idim_iv, idim_ls
 from .validate import CascadePD, RigidModel, ValidationResult, simulate_rigid, validate
+from .identify_rigid import RigidIdentification, identify_rigid
 from .autotune import ModelTuneResult, RelayTuneResult, model_based_tune, relay_autotune
 from .frequency import FrequencyResponse, Margins, analytic_response, broadband_response, sine_sweep
 from . import motion
@@ -157,6 +158,8 @@ __all__ = [
     "RigidModel",
     "CascadePD",
     "simulate_rigid",
+    "identify_rigid",
+    "RigidIdentification",
     "relay_autotune",
     "model_based_tune",
     "Margins",

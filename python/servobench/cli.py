@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import argparse
 import contextlib
-import csv
 import json
 import math
 import os
@@ -520,7 +519,8 @@ def cmd_tune(args) -> int:
 # ----------------------------------------------------------------------------------------------------------------
 # identify
 # ----------------------------------------------------------------------------------------------------------------
-#: Columns of an identification log CSV (a header row; a " [unit]" suffix on a name is ignored).
+#: Columns of an identification log CSV (a header row; a " [unit]" tag on a name gives its unit, see
+#: servobench.idlog: the same reader as IdentificationLog.from_csv).
 LOG_COLUMNS = {
     "time_s": "sample time, s, uniformly spaced (the servo period)",
     "torque_nm": "torque command held over the sample, N*m (or volts)",
@@ -531,33 +531,6 @@ LOG_COLUMNS = {
     "speed_pulse_s": "measured speed, pulse/s",
 }
 _MEASURED = {"position_pulse": "pulse", "position_rad": "rad", "speed_rad_s": "rad/s", "speed_pulse_s": "pulse/s"}
-
-
-def _read_log_csv(path):
-    """{column: array} of a log CSV; UsageError naming the file, line and column on bad input."""
-    try:
-        f = open(path, newline="", encoding="utf-8")
-    except FileNotFoundError:
-        raise UsageError(f"{path}: no such file") from None
-    except OSError as e:
-        raise UsageError(f"{path}: cannot read it ({e.strerror or e})") from None
-    with f:
-        rows = list(csv.reader(f))
-    if not rows:
-        raise UsageError(f"{path}: empty file; expected a header row ({', '.join(LOG_COLUMNS)})")
-    names = [h.split("[")[0].strip() for h in rows[0]]
-    cols = {n: [] for n in names}
-    for i, row in enumerate(rows[1:], start=2):
-        if not row:
-            continue
-        if len(row) != len(names):
-            raise UsageError(f"{path}: line {i}: {len(row)} values, the header has {len(names)}")
-        for n, v in zip(names, row):
-            try:
-                cols[n].append(float(v))
-            except ValueError:
-                raise UsageError(f"{path}: line {i}, column {n}: '{v}' is not a number") from None
-    return {n: np.array(v) for n, v in cols.items()}
 
 
 def _parse_guesses(items) -> dict:
@@ -617,7 +590,7 @@ def cmd_identify(args) -> int:
             raise UsageError(f"--guess/--fixed: '{k}' is not a parameter of the {model} model{_suggest(k, names)} "
                              f"(parameters: {', '.join(names)})")
     guess.update(given)
-    if not guess:
+    if not guess and model != "rigid":
         raise UsageError(f"identify: no starting values: give --guess name=value for each {model} parameter to "
                          f"estimate ({', '.join(names)}), or an axis file whose plant holds them")
     stem = _stem(args.log if args.log else args.axis)
@@ -636,40 +609,41 @@ def cmd_identify(args) -> int:
                 {"time_s": "s", "torque_nm": "N*m", "position_pulse": "pulse", "volts": "V"},
                 "the experiment's log (identify --log reads it back)")
     else:
-        cols = _read_log_csv(args.log)
-        if "time_s" not in cols:
-            raise UsageError(f"{args.log}: no column 'time_s' (columns: {', '.join(cols)})")
-        measured = [c for c in _MEASURED if c in cols]
-        if not measured:
-            raise UsageError(f"{args.log}: no measured column: one of {', '.join(_MEASURED)} (columns: "
-                             f"{', '.join(cols)})")
         cpr = args.counts_per_rev or (axis.encoder.counts_per_rev if axis is not None else 10000.0)
         bw = args.current_bw_hz if args.current_bw_hz is not None else (
             axis.drive.current_bw_hz if axis is not None and hasattr(axis.drive, "current_bw_hz") else math.inf)
-        kw = dict(counts_per_rev=cpr, current_bw_hz=bw,
+        gain = args.torque_per_volt
+        if gain is None and axis is not None and isinstance(axis.drive, _core.TorqueDrive):
+            gain = axis.drive.kt * axis.drive.amps_per_volt
+        units = {}
+        for item in args.unit or []:
+            if "=" not in item:
+                raise UsageError(f"--unit {item!r}: expected COLUMN=UNIT, e.g. qm=mm")
+            k, v = item.split("=", 1)
+            units[k.strip()] = v.strip()
+        kw = dict(units=units, command_gain=gain, counts_per_rev=cpr, current_bw_hz=bw, count_m=args.count_m,
                   measured_on_load=bool(axis is not None and axis.encoder.on_load))
-        if "torque_nm" in cols:
-            command, kw["command_unit"] = cols["torque_nm"], "N*m"
-        elif "volts" in cols:
-            tpv = args.torque_per_volt
-            if tpv is None and axis is not None and isinstance(axis.drive, _core.TorqueDrive):
-                tpv = axis.drive.kt * axis.drive.amps_per_volt
-            if tpv is None:
-                raise UsageError(f"{args.log}: the command column is 'volts': give --torque-per-volt (N*m/V) or a "
-                                 "torque-mode axis file")
-            command, kw["command_unit"], kw["torque_per_volt"] = cols["volts"], "V", tpv
-        else:
-            raise UsageError(f"{args.log}: no command column: 'torque_nm' (N*m) or 'volts' (V) (columns: "
-                             f"{', '.join(cols)})")
+        if args.time:
+            kw["time"] = args.time
+        for opt in ("command", "measured", "reference"):
+            if getattr(args, opt):
+                kw[opt] = getattr(args, opt)
+        if not os.path.exists(args.log):
+            raise UsageError(f"{args.log}: no such file")
         with _bad_input(args.log):
-            log = IdentificationLog.from_arrays(cols["time_s"], command, cols[measured[0]],
-                                                measured_unit=_MEASURED[measured[0]], **kw)
-        source = f"{args.log} ({len(log)} samples, measured {measured[0]})"
+            if args.log.lower().endswith(".mat"):
+                log = IdentificationLog.from_mat(args.log, **kw)
+            else:
+                log = IdentificationLog.from_csv(args.log, **kw)
+        cols = log.extra.get("columns", {})
+        source = (f"{args.log} ({len(log)} samples, " + ", ".join(f"{c} [{u}]" for c, u in cols.items()) +
+                  (f", time jitter {log.time_jitter_ppm:.3g} ppm" if log.time_jitter_ppm else "") + ")")
     if not args.quiet:
         print(f"identify: {model} model from {source}; starting values: "
-              + ", ".join(f"{k}={v:g}" for k, v in guess.items()))
+              + (", ".join(f"{k}={v:g}" for k, v in guess.items()) if guess else "the IDIM-LS answer"))
     try:
-        fit = fit_time(log, model, guess=guess, fixed=args.fixed or (), progress=_fit_progress(args))
+        fit = fit_time(log, model, guess=guess or None, fixed=args.fixed or (), progress=_fit_progress(args),
+                       dynamics_hz=args.dynamics_hz)
     except IdentificationError as e:
         raise WorkFailed(f"identification: {e}") from None
     except ValueError as e:
@@ -831,7 +805,8 @@ def build_parser() -> argparse.ArgumentParser:
                                    "(estimates with standard errors), <stem>_identify_fit.<format> (fit and residual), "
                                    "<stem>_identified.<toml|json> (the axis file with the identified plant) and, for "
                                    "the twin, <stem>_identify_log.csv.\n\nLog CSV columns (header row; a ' [unit]' "
-                                   "suffix is ignored):\n" + "\n".join(f"  {k:15s} {v}" for k, v in LOG_COLUMNS.items()))
+                                   "tag gives a column's unit -- mm, deg, mN*m, ... are converted, an unknown unit is "
+                                   "an error; a .mat file needs --unit for each column):\n" + "\n".join(f"  {k:15s} {v}" for k, v in LOG_COLUMNS.items()))
     i.add_argument("axis", metavar="AXIS", nargs="?", default=None,
                    help="axis file: the twin to run the experiment on; with --log: drive, encoder and starting values")
     i.add_argument("--log", metavar="LOG.csv", default=None, help="fit this log instead of running the experiment")
@@ -844,7 +819,20 @@ def build_parser() -> argparse.ArgumentParser:
     i.add_argument("--duration-s", type=float, default=5.0, help="experiment length, s")
     i.add_argument("--amplitude-v", type=float, default=0.1, help="PRBS injection amplitude at the DAC, V")
     i.add_argument("--seed", type=int, default=0, help="PRBS seed")
-    i.add_argument("--torque-per-volt", type=float, default=None, help="N*m per V, for a log with a 'volts' column")
+    i.add_argument("--torque-per-volt", "--command-gain", dest="torque_per_volt", type=float, default=None,
+                   help="drive gain, N*m/V (N/V on a linear axis), for a command column in volts")
+    i.add_argument("--time", default=None, help="the log's time column (default time_s; a .mat file: t)")
+    i.add_argument("--command", default=None, help="the log's command column (default: torque_nm, force_n or volts)")
+    i.add_argument("--measured", default=None, help="the log's measured column (default: position_pulse, "
+                                                    "position_rad, position_m, speed_rad_s, ...)")
+    i.add_argument("--reference", default=None, help="the log's position reference column (closed-loop records)")
+    i.add_argument("--unit", nargs="+", metavar="COLUMN=UNIT", action="extend",
+                   help="a column's unit when its header has no [unit] tag, e.g. qm=m vir=V")
+    i.add_argument("--dynamics-hz", type=float, default=None,
+                   help="the closed loop's dynamics frequency, Hz, for the IDIM start (default: from the log's "
+                        "reference)")
+    i.add_argument("--count-m", type=float, default=None, help="one encoder count, m (linear axes; default: "
+                                                               "detected from the position's steps)")
     i.add_argument("--counts-per-rev", type=float, default=None, help="encoder counts/rev for pulse columns "
                                                                         "(default: the axis file's, else 10000)")
     i.add_argument("--current-bw-hz", type=float, default=None,

@@ -15,6 +15,7 @@ pulses with the encoder's counts per revolution.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field
 from typing import Iterable
@@ -348,9 +349,14 @@ class IdentifiedPlant:
     freq_hz: np.ndarray | None = field(default=None, repr=False)
     response: np.ndarray | None = field(default=None, repr=False)
     predicted_response: np.ndarray | None = field(default=None, repr=False)
+    starts: list = field(default_factory=list, repr=False)
+    disagreement: list = field(default_factory=list)
+    segment_samples: int | None = None
+    linear: bool = False
+    start_guess: dict = field(default_factory=dict, repr=False)
 
     def __getitem__(self, name: str) -> float:
-        return self.parameters[name].value
+        return self.parameters[_LINEAR_ALIASES.get(name, (name,))[0]].value
 
     def values(self) -> dict:
         """name -> value (SI)."""
@@ -361,8 +367,19 @@ class IdentifiedPlant:
                 for k, e in self.parameters.items()}
 
     def __str__(self) -> str:
-        lines = [self.summary, ""] + [str(e) for e in self.parameters.values()]
-        return "\n".join(lines)
+        if self.linear:  # the axis's own units: m, N, kg
+            shown = []
+            for e in self.parameters.values():
+                alias = _LINEAR_NAMES.get(e.name)
+                shown.append(str(dataclasses.replace(e, name=alias[0], unit=alias[1])) if alias else str(e))
+        else:
+            shown = [str(e) for e in self.parameters.values()]
+        return "\n".join([self.summary, ""] + shown)
+
+    @property
+    def agrees(self) -> bool:
+        """True when every converged start landed within 2 combined standard errors of the others."""
+        return not self.disagreement
 
     def to_plant(self):
         """The identified plant as a :class:`RigidPlant` / :class:`TwoMassPlant` for an :class:`Axis` (and so for the
@@ -405,6 +422,12 @@ class IdentifiedPlant:
             fig.savefig(path, dpi=110)
         return fig
 
+
+# a linear axis's log fitted by the rotary model (kg*m^2 <-> kg, N*m <-> N, rad <-> m): names and units shown
+_LINEAR_NAMES = {"inertia_kgm2": ("mass_kg", "kg"), "viscous_nms": ("viscous_ns_per_m", "N*s/m"),
+                 "coulomb_nm": ("coulomb_n", "N"), "static_nm": ("static_n", "N"),
+                 "stribeck_speed_rad_s": ("stribeck_speed_m_s", "m/s"), "load_nm": ("offset_n", "N")}
+_LINEAR_ALIASES = {v[0]: (k,) for k, v in _LINEAR_NAMES.items()}
 
 _SCALE_PARAMETERS = ("inertia_kgm2", "jm_kgm2", "jl_kgm2", "k_nm_per_rad")
 
@@ -456,22 +479,29 @@ def _estimates(ps) -> dict:
                                 p["at_bound"]) for p in ps}
 
 
-def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict, fixed: Iterable[str] = (),
-             bounds: dict | None = None, segment_samples: int = 1000, initial_segment_samples: int = 250,
-             loss: str = "none", loss_scale_counts: float = 3.0, stribeck_exponent: float = 2.0,
-             max_iterations: int = 200, num_threads: int = 1, max_relative_std_error: float = 0.2,
-             direction_window: int = 6, rest_threshold_counts: float = 2.0, edge_samples: int = 3,
-             start: str = "auto", hold_stribeck_first: bool = True, strict: bool = True,
-             progress=None) -> IdentifiedPlant:
+def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None = None, fixed: Iterable[str] = (),
+             bounds: dict | None = None, segment_samples: int | str = "auto", initial_segment_samples: int = 250,
+             n_starts: int = 3, seed: int = 0, dynamics_hz: float | None = None, max_relative_std_error: float = 0.2,
+             strict: bool = True, progress=None, **options) -> IdentifiedPlant:
     """Fits a rigid or two-mass plant to a time log (Ceres; the GIL is released).
 
     guess
         name -> starting value (SI) of every parameter to estimate; parameters not named are held at 0 (no Stribeck
-        peak unless static_nm / motor_static_nm is guessed). fixed: names held at their guess. bounds: name ->
+        peak unless static_nm / motor_static_nm is guessed). None (rigid model, position log): the IDIM-LS answer
+        (:func:`servobench.idim_ls`: inertia or mass, viscous and Coulomb friction, offset as load_nm). fixed: names held at their guess. bounds: name ->
         (low, high); the default keeps inertias and the stiffness above 1/1000 of their guess, frictions >= 0, and
         the Stribeck speed within two decades of its guess.
     segment_samples, initial_segment_samples
         the multiple-shooting segment length of the final stage and of the first (doubled in between).
+        'auto' (default): from the data -- the correlation time of the IDIM residual, 50..1000 samples
+        (:func:`servobench.oefit.segment_length`); 1000 when the IDIM does not apply (two-mass model, speed log,
+        no reference and no dynamics_hz).
+    n_starts, seed
+        the fit runs from the start and n_starts - 1 seeded perturbations of it (each free parameter x 1/1.5..1.5);
+        the result is the converged start with the lowest residual, ``starts`` lists them all and
+        ``disagreement`` says when converged starts differ beyond 2 combined standard errors.
+    dynamics_hz
+        the closed loop's dynamics frequency for the IDIM (see :func:`servobench.idim_ls`); None: from the log.
     loss
         'none', 'huber', 'soft_l1' or 'cauchy', departing from least squares at loss_scale_counts encoder counts.
     direction_window, rest_threshold_counts, edge_samples
@@ -487,6 +517,9 @@ def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict, fixed
     hold_stribeck_first
         with the Stribeck peak free, solve a first stage with its level and speed held at their guesses (far from
         the truth, the peak otherwise tends to vanish, ws -> 0, and stay vanished).
+    Standard errors are Ceres' times sqrt(long-run variance / variance) of the residual (correlated residuals,
+    :func:`servobench.oefit.long_run_variance_ratio`); a parameter whose standard error exceeds
+    max_relative_std_error of its own value is not identifiable.
     strict
         raise :class:`IdentificationError` (a ValueError) naming the parameters the data cannot determine; with
         False they are reported in ``not_identifiable`` and their standard error is inf.
@@ -497,6 +530,89 @@ def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict, fixed
     progress
         None, or a callable(iteration, cost) -> bool (False stops the solve).
     """
+    from . import oefit
+    from .idim import idim_ls
+
+    model = _model(model)
+    if not isinstance(log, IdentificationLog):
+        raise TypeError("log must be an IdentificationLog (see IdentificationLog.from_arrays / run_experiment)")
+    n_starts = _whole("fit_time", "n_starts", n_starts, 1, 20)
+    notes = []
+    idim = None
+    idim_ok = model == "rigid" and not log.measured_is_speed and (log.reference is not None or dynamics_hz)
+    if idim_ok and (guess is None or segment_samples == "auto"):
+        try:
+            idim = idim_ls(log, dynamics_hz=dynamics_hz)
+        except ValueError as e:
+            if guess is None:
+                raise ValueError(f"fit_time: no guess and the IDIM start failed: {e}") from None
+            notes.append(f"IDIM not used ({e})")
+    if guess is None:
+        if idim is None:
+            raise ValueError("fit_time: give a guess (name -> starting value); the IDIM start needs a rigid model, a "
+                             "position log and the log's reference or dynamics_hz")
+        guess = oefit.start_from_idim(idim)
+        notes.append("Start: the IDIM-LS answer (" + ", ".join(f"{k} = {v:.6g}" for k, v in guess.items()) + ").")
+    if isinstance(segment_samples, str):
+        if segment_samples != "auto":
+            raise ValueError(f"fit_time.segment_samples = {segment_samples!r} must be 'auto' or a whole number")
+        if idim is not None:
+            segment_samples, how = oefit.segment_length(idim)
+            notes.append("Segments: " + how + ".")
+        else:
+            segment_samples = 1000
+            notes.append("Segments: 1000 samples (the IDIM does not apply to this log).")
+    segment_samples = _whole("fit_time", "segment_samples", segment_samples, 20, 10**8)
+    initial_segment_samples = min(_whole("fit_time", "initial_segment_samples", initial_segment_samples, 20, 10**8),
+                                  segment_samples)
+    free = set(guess) - set(fixed)
+    fits = []
+    for i, g in enumerate(oefit.perturbed_starts(guess, free, n_starts, seed)):
+        try:
+            fits.append(_fit_once(log, model, guess=g, fixed=fixed, bounds=bounds, segment_samples=segment_samples,
+                                  initial_segment_samples=initial_segment_samples,
+                                  max_relative_std_error=max_relative_std_error, strict=False, progress=progress,
+                                  **options))
+        except ValueError:
+            if i == 0:
+                raise
+    converged = [f for f in fits if f.converged]
+    best = min(converged or fits, key=lambda f: f.residual_rms)
+    ratio = oefit.long_run_variance_ratio(best.residual) if best.residual is not None else 1.0
+    k = math.sqrt(ratio)
+    params = {n: Estimate(e.name, e.value, e.std_error * k, e.unit, e.initial, e.fixed, e.at_bound)
+              for n, e in best.parameters.items()}
+    inflated = [dataclasses.replace(f, parameters={n: dataclasses.replace(e, std_error=e.std_error * k)
+                                                   for n, e in f.parameters.items()}) for f in fits]
+    disagree = oefit.disagreements(inflated)
+    not_id = [x for x in best.not_identifiable if "too weakly excited" not in x]
+    for n, e in params.items():
+        if not e.fixed and math.isfinite(e.std_error) and e.std_error > max_relative_std_error * abs(e.value) \
+                and not any(x.startswith(n + ":") for x in not_id):
+            not_id.append(f"{n}: relative standard error {100 * e.relative_std_error:.3g} % above "
+                          f"{100 * max_relative_std_error:.3g} % of its value: too weakly excited")
+    if strict and not_id:
+        raise IdentificationError("the log cannot determine: " + "; ".join(not_id) +
+                                  " -- excite the axis more (longer log, more speed range or reversals), or fix "
+                                  "these parameters (fixed=...)")
+    notes.append(f"Standard errors x {k:.3g} for correlated residuals (long-run / plain variance {ratio:.3g}).")
+    notes.append(f"Starts: {len(fits)}, converged {len(converged)}" +
+                 (("; DISAGREE beyond their error bars: " + "; ".join(disagree[:3])) if disagree else
+                  ", agreeing within their error bars") + ".")
+    return dataclasses.replace(best, parameters=params, not_identifiable=not_id,
+                               summary=best.summary + "\n" + "\n".join(notes), starts=inflated,
+                               disagreement=disagree, segment_samples=segment_samples, linear=log.linear,
+                               start_guess=dict(guess))
+
+
+def _fit_once(log: IdentificationLog, model: str = "rigid", *, guess: dict, fixed: Iterable[str] = (),
+             bounds: dict | None = None, segment_samples: int = 1000, initial_segment_samples: int = 250,
+             loss: str = "none", loss_scale_counts: float = 3.0, stribeck_exponent: float = 2.0,
+             max_iterations: int = 200, num_threads: int = 1, max_relative_std_error: float = 0.2,
+             direction_window: int = 6, rest_threshold_counts: float = 2.0, edge_samples: int = 3,
+             start: str = "auto", hold_stribeck_first: bool = True, strict: bool = True,
+             progress=None) -> IdentifiedPlant:
+    """One output-error fit from one start (see :func:`fit_time`)."""
     model = _model(model)
     if not isinstance(log, IdentificationLog):
         raise TypeError("log must be an IdentificationLog (see IdentificationLog.from_arrays / run_experiment)")

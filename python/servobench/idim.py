@@ -65,33 +65,53 @@ def observation_matrix(dq, ddq, friction: str = "symmetric", offset: bool = True
     return np.column_stack(cols)
 
 
+def _bartlett_lags(u: np.ndarray) -> float:
+    """Andrews' (1991) AR(1) plug-in bandwidth for the Bartlett kernel, alpha from AR(1) fits of each column of u
+    (before rounding): 1.1447 (alpha T)^(1/3)."""
+    num = den = 0.0
+    for col in u.T:
+        c = col - col.mean()
+        d = float(c[:-1] @ c[:-1])
+        rho = float(c[1:] @ c[:-1]) / d if d > 0 else 0.0
+        rho = min(max(rho, -0.97), 0.97)
+        s2 = float(np.mean((c[1:] - rho * c[:-1]) ** 2))
+        num += 4 * rho ** 2 * s2 ** 2 / ((1 - rho) ** 6 * (1 + rho) ** 2)
+        den += s2 ** 2 / (1 - rho) ** 4
+    alpha = num / den if den > 0 else 0.0
+    return 1.1447 * (alpha * len(u)) ** (1 / 3)
+
+
+def _bartlett(u: np.ndarray, lags: int) -> np.ndarray:
+    S = u.T @ u
+    for j in range(1, lags + 1):
+        G = u[j:].T @ u[:-j]
+        S += (1 - j / (lags + 1)) * (G + G.T)
+    return S
+
+
 def hac_covariance(X: np.ndarray, e: np.ndarray, *, lags: int | None = None, Z: np.ndarray | None = None):
     """(covariance p x p, Bartlett lags used) of a linear estimate theta = (Z'X)^-1 Z'y with residual e (Z = X for
-    least squares): the Newey-West sandwich A S A' with A = (Z'X)^-1 and S = G_0 + sum_j w_j (G_j + G_j'),
-    G_j = sum_t g_t g_{t-j}', g_t = z_t e_t, w_j = 1 - j/(L+1). L (lags) defaults to Andrews' (1991) AR(1) plug-in
-    bandwidth for the Bartlett kernel, 1.1447 (alpha T)^(1/3), alpha from AR(1) fits of each score column."""
+    least squares): the sandwich A S A' with A = (Z'X)^-1 and S the long-run covariance of the scores g_t = z_t e_t,
+    estimated by Newey-West (Bartlett kernel) with Andrews & Monahan's (1992) VAR(1) prewhitening -- g_t = B g_{t-1}
+    + u_t, S = (I - B)^-1 S_u (I - B)^-T -- and the small-sample factor n / (n - p). lags (for u) defaults to
+    Andrews' (1991) AR(1) plug-in bandwidth."""
     Z = X if Z is None else Z
     g = Z * e[:, None]
-    n = len(e)
+    n, p = g.shape
+    B = np.linalg.lstsq(g[:-1], g[1:], rcond=None)[0].T
+    ev = np.abs(np.linalg.eigvals(B))
+    if ev.max() > 0.97:  # keep the recolouring stable (Andrews & Monahan's eigenvalue cap)
+        U, sv, Vt = np.linalg.svd(B)
+        B = U @ np.diag(np.minimum(sv, 0.97)) @ Vt
+    u = g[1:] - g[:-1] @ B.T
     if lags is None:
-        num = den = 0.0
-        for col in g.T:
-            c = col - col.mean()
-            d = float(c[:-1] @ c[:-1])
-            rho = float(c[1:] @ c[:-1]) / d if d > 0 else 0.0
-            rho = min(max(rho, -0.97), 0.97)
-            s2 = float(np.mean((c[1:] - rho * c[:-1]) ** 2))
-            num += 4 * rho ** 2 * s2 ** 2 / ((1 - rho) ** 6 * (1 + rho) ** 2)
-            den += s2 ** 2 / (1 - rho) ** 4
-        alpha = num / den if den > 0 else 0.0
-        lags = int(min(max(math.ceil(1.1447 * (alpha * n) ** (1 / 3)), 1), n // 4))
+        lags = int(min(max(math.ceil(_bartlett_lags(u)), 1), n // 4))
     lags = int(lags)
-    if not (0 <= lags < n):
-        raise ValueError(f"hac_lags = {lags} must be a whole number in 0..{n - 1}")
-    S = g.T @ g
-    for j in range(1, lags + 1):
-        G = g[j:].T @ g[:-j]
-        S += (1 - j / (lags + 1)) * (G + G.T)
+    if not (0 <= lags < n - 1):
+        raise ValueError(f"hac_lags = {lags} must be a whole number in 0..{n - 2}")
+    Su = _bartlett(u, lags)
+    D = np.linalg.inv(np.eye(p) - B)
+    S = D @ Su @ D.T * (n / (n - 1)) * (n / (n - p))
     A = np.linalg.inv(Z.T @ X)
     return A @ S @ A.T, lags
 
@@ -247,7 +267,8 @@ def _check_rel(owner, v):
         raise ValueError(f"{owner}.max_relative_std_error = {v} must be in (0, 10]")
 
 
-def _prepare(log, dynamics_hz, cutoff_hz, decimation, edge_samples, friction, offset, min_samples=50):
+def _prepare(log, dynamics_hz, cutoff_hz, decimation, edge_samples, friction, offset, alignment="sample",
+             min_samples=50):
     from .idlog import IdentificationLog
 
     if not isinstance(log, IdentificationLog):
@@ -256,6 +277,9 @@ def _prepare(log, dynamics_hz, cutoff_hz, decimation, edge_samples, friction, of
         raise ValueError("idim: the log's measured signal is a speed; the IDIM needs a measured position")
     if friction not in FRICTION_MODELS:
         raise ValueError(f"friction = {friction!r} is not one of {FRICTION_MODELS}")
+    if offset and friction == "asymmetric":
+        raise ValueError("offset = True with friction = 'asymmetric': a constant effort is indistinguishable from "
+                         "shifted Coulomb levels (Fc+ + offset, Fc- - offset) while the axis moves; leave offset=None")
     ts = log.sample_period_s
     nyq = 0.5 / ts
     if dynamics_hz is None:
@@ -285,9 +309,23 @@ def _prepare(log, dynamics_hz, cutoff_hz, decimation, edge_samples, friction, of
         raise ValueError("idim: the record has no motion reversal (the speed keeps one sign): Coulomb friction "
                          "and the offset cannot be told apart; record motion in both directions")
     phi = observation_matrix(v, ddq[edge:], friction, offset)
-    y = log.torque_nm[edge:]
+    if alignment == "zoh":  # the effort held over [t_k-1, t_k+1) on average: what the central difference at t_k sees
+        tau = np.concatenate([[log.torque_nm[0]], 0.5 * (log.torque_nm[1:] + log.torque_nm[:-1])])
+    elif alignment == "sample":
+        tau = log.torque_nm
+    else:
+        raise ValueError(f"effort_alignment = {alignment!r} must be 'sample' or 'zoh'")
+    y = tau[edge:]
     Xd = _decimate(phi, nd)
     yd = _decimate(y, nd)
+    names = [n for n, _u in _names(friction, offset, log.linear)]
+    cn = Xd / np.linalg.norm(Xd, axis=0)
+    sv = np.linalg.svd(cn, compute_uv=False)
+    if not (sv[-1] > 1e-8 * sv[0]):
+        _u, _s, vt = np.linalg.svd(cn)
+        worst = [names[i] for i in np.argsort(-np.abs(vt[-1]))[:2]]
+        raise ValueError(f"idim: the observation matrix is rank-deficient: {worst[0]} and {worst[1]} cannot be told "
+                         "apart on this record (excite the axis more, or drop one of them)")
     td = _decimate(log.time_s[edge:], nd)
     return Xd, yd, td, nd, fc, dynamics_hz
 
@@ -321,29 +359,33 @@ def _result(method, friction, offset, log, X, y, theta, td, nd, fc, fdyn, Z, max
 
 
 def _asymmetry_check(X_asym, y, theta_asym, Z=None):
-    """HAC Wald test of Fv+ = Fv- and Fc+ = Fc- on an asymmetric fit: (statistic, p-value, differences)."""
+    """HAC Wald test of Fv+ = Fv- on an asymmetric fit (without offset, it nests the symmetric model with offset:
+    Fc = (Fc+ + Fc-)/2, offset = (Fc+ - Fc-)/2): (statistic, p-value, Fv+ - Fv-)."""
     from scipy import stats
 
     e = y - X_asym @ theta_asym
     cov, _ = hac_covariance(X_asym, e, Z=Z)
-    R = np.zeros((2, X_asym.shape[1]))
-    R[0, 1], R[0, 3] = 1, -1
-    R[1, 2], R[1, 4] = 1, -1
-    d = R @ theta_asym
-    W = float(d @ np.linalg.solve(R @ cov @ R.T, d))
-    return W, float(stats.chi2.sf(W, 2)), d
+    r = np.zeros(X_asym.shape[1])
+    r[1], r[3] = 1, -1
+    d = float(r @ theta_asym)
+    W = d * d / float(r @ cov @ r)
+    return W, float(stats.chi2.sf(W, 1)), d
 
 
-def idim_ls(log, *, friction: str = "symmetric", offset: bool = True, dynamics_hz: float | None = None,
+def idim_ls(log, *, friction: str = "symmetric", offset: bool | None = None, dynamics_hz: float | None = None,
             cutoff_hz: float | None = None, decimation: int | None = None, edge_samples: int = 49,
-            max_relative_std_error: float = 0.1, hac_lags: int | None = None) -> IdimResult:
+            max_relative_std_error: float = 0.1, hac_lags: int | None = None,
+            effort_alignment: str = "sample") -> IdimResult:
     """IDIM-LS: the inverse dynamic model fitted by least squares with the benchmark's data filtering.
 
     log
         an :class:`IdentificationLog` with a measured position (m or rad) and the effort (N or N*m), with motion
         in both directions.
     friction
-        'symmetric' (M, Fv, Fc) or 'asymmetric' (M, Fv+, Fc+, Fv-, Fc-); offset: a constant effort term (N or N*m).
+        'symmetric' (M, Fv, Fc) or 'asymmetric' (M, Fv+, Fc+, Fv-, Fc-).
+    offset
+        a constant effort term (N or N*m); None (default): with symmetric friction only -- with asymmetric friction
+        a constant is Fc+ and Fc- shifted (Fc+ + offset, Fc- - offset) and cannot be told apart from them.
     dynamics_hz
         the closed loop's dynamics frequency f_dyn, Hz (the position loop's bandwidth, e.g. the 20 Hz the EMPS
         description states); None: estimated from the log's reference -> position response
@@ -355,6 +397,11 @@ def idim_ls(log, *, friction: str = "symmetric", offset: bool = True, dynamics_h
         a parameter whose HAC standard error exceeds this fraction of its own value is reported not identified.
     hac_lags
         the Newey-West bandwidth in decimated samples; None: Andrews' plug-in rule.
+    effort_alignment
+        'sample' (default, the benchmark's procedure): the effort sample k is paired with the derivatives at t_k;
+        'zoh': with the mean of samples k-1 and k -- for an effort held over [t_k, t_k+1) (a zero-order hold, as
+        servobench's logs), the central second difference at t_k sees exactly that mean, and pairing it with sample
+        k alone biases M by about Fv Ts / 2.
 
     With symmetric friction the result also tests friction asymmetry (HAC Wald test on the asymmetric fit) and
     warns when the data reject symmetry at the 1 % level (``result.misfit``: a mis-specified friction model).
@@ -362,27 +409,29 @@ def idim_ls(log, *, friction: str = "symmetric", offset: bool = True, dynamics_h
     from scipy import linalg
 
     _check_rel("idim_ls", max_relative_std_error)
-    X, y, td, nd, fc, fdyn = _prepare(log, dynamics_hz, cutoff_hz, decimation, edge_samples, friction, offset)
+    offset = (friction == "symmetric") if offset is None else bool(offset)
+    X, y, td, nd, fc, fdyn = _prepare(log, dynamics_hz, cutoff_hz, decimation, edge_samples, friction, offset,
+                                      effort_alignment)
     theta = linalg.lstsq(X, y)[0]
     extra, res_warn = {}, []
-    if friction == "symmetric":
-        Xa, ya, *_ = _prepare(log, fdyn, fc, nd, edge_samples, "asymmetric", True)
+    if friction == "symmetric" and offset:
+        Xa, ya, *_ = _prepare(log, fdyn, fc, nd, edge_samples, "asymmetric", False, effort_alignment)
         ta = linalg.lstsq(Xa, ya)[0]
         W, p, d = _asymmetry_check(Xa, ya, ta)
-        extra.update(asymmetry_wald=W, asymmetry_p_value=p, asymmetry_differences=d.tolist())
+        extra.update(asymmetry_wald=W, asymmetry_p_value=p, asymmetry_fv_difference=d)
         if p < 0.01:
-            res_warn.append(f"friction is asymmetric (HAC Wald test p = {p:.2g}: Fv+ - Fv- = {d[0]:.4g}, "
-                            f"Fc+ - Fc- = {d[1]:.4g}): the symmetric model is mis-specified, use "
-                            "friction='asymmetric'")
+            res_warn.append(f"friction is asymmetric (HAC Wald test of Fv+ = Fv-: p = {p:.2g}, Fv+ - Fv- = {d:.4g}): "
+                            "the symmetric model is mis-specified, use friction='asymmetric'")
     r = _result("IDIM-LS", friction, offset, log, X, y, theta, td, nd, fc, fdyn, None, max_relative_std_error,
                 hac_lags, extra)
     r.warnings.extend(res_warn)
     return r
 
 
-def idim_iv(log, *, friction: str = "symmetric", offset: bool = True, dynamics_hz: float | None = None,
+def idim_iv(log, *, friction: str = "symmetric", offset: bool | None = None, dynamics_hz: float | None = None,
             cutoff_hz: float | None = None, decimation: int | None = None, edge_samples: int = 49,
-            max_relative_std_error: float = 0.1, hac_lags: int | None = None) -> IdimResult:
+            max_relative_std_error: float = 0.1, hac_lags: int | None = None,
+            effort_alignment: str = "sample") -> IdimResult:
     """IDIM-IV: the model and filtering of :func:`idim_ls`, estimated with instrumental variables
     theta = (Z'X)^-1 Z'y, the instruments Z being the observation matrix built from the closed loop's position
     reference (filtered and differentiated the same way). The reference is free of the measurement noise and of the
@@ -398,9 +447,11 @@ def idim_iv(log, *, friction: str = "symmetric", offset: bool = True, dynamics_h
         raise ValueError("idim_iv: the log has no reference signal (the instruments are built from it); read the "
                          "record with its reference column")
     _check_rel("idim_iv", max_relative_std_error)
-    X, y, td, nd, fc, fdyn = _prepare(log, dynamics_hz, cutoff_hz, decimation, edge_samples, friction, offset)
+    offset = (friction == "symmetric") if offset is None else bool(offset)
+    X, y, td, nd, fc, fdyn = _prepare(log, dynamics_hz, cutoff_hz, decimation, edge_samples, friction, offset,
+                                      effort_alignment)
     ref_log = log._replace(measured=log.reference, reference=None)
-    Z, *_ = _prepare(ref_log, fdyn, fc, nd, edge_samples, friction, offset)
+    Z, *_ = _prepare(ref_log, fdyn, fc, nd, edge_samples, friction, offset, effort_alignment)
     ZX = Z.T @ X
     if not np.isfinite(np.linalg.cond(ZX)) or np.linalg.cond(ZX) > 1e12:
         raise ValueError("idim_iv: the reference-based instruments are (nearly) uncorrelated with the regressors")

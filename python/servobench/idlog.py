@@ -159,6 +159,20 @@ def finite_column(name: str, values) -> np.ndarray:
     return a
 
 
+def detect_count(position) -> float | None:
+    """The encoder's count (m or rad) of a quantised position record: its smallest non-zero step, when at least
+    99 % of the steps are whole multiples of it (within 1 %); None otherwise."""
+    d = np.abs(np.diff(np.asarray(position, float)))
+    d = d[d > 0]
+    if len(d) < 10:
+        return None
+    q = float(np.min(d))
+    k = d / q
+    if np.mean(np.abs(k - np.round(k)) < 0.01) >= 0.99:
+        return q
+    return None
+
+
 def read_csv(path: str) -> dict:
     """{column name without tag: (values, header unit or None)} of a CSV file with a header row, read by pandas;
     ValueError naming the file (and the column) on bad input."""
@@ -172,6 +186,13 @@ def read_csv(path: str) -> dict:
         raise ValueError(f"{path}: empty file (expected a header row and data)") from None
     except (pd.errors.ParserError, UnicodeDecodeError) as e:
         raise ValueError(f"{path}: not a readable CSV ({e})") from None
+    for col in df.columns:
+        if df[col].dtype == object:  # a cell that is not a number: name its line (the header is line 1)
+            num = pd.to_numeric(df[col], errors="coerce")
+            bad = np.flatnonzero(num.isna().to_numpy() & df[col].notna().to_numpy())
+            if len(bad):
+                raise ValueError(f"{path}: line {bad[0] + 2}, column {parse_header(col)[0]}: "
+                                 f"'{df[col].iloc[bad[0]]}' is not a number")
     return read_dataframe(df, source=path)
 
 
@@ -379,8 +400,13 @@ class IdentificationLog:
             raise ValueError(f"time_s, command and measured must have the same length (got {n}, {len(c)}, "
                              f"{len(m)})")
         r = None if reference is None else finite_column("reference", reference) * mf
+        extra = dict(extra or {})
+        if linear and count_m is None and UNITS[mu][0] == "position":
+            count_m = detect_count(m * mf)
+            if count_m is not None:
+                extra["count_m_detected"] = count_m
         return cls(ts, c * cf, m * mf, UNITS[mu][0] == "speed", measured_on_load, counts_per_rev, current_bw_hz,
-                   1, dict(extra or {}), r, linear, count_m, lead_m_per_rev, jitter)
+                   1, extra, r, linear, count_m, lead_m_per_rev, jitter)
 
     @classmethod
     def from_dataframe(cls, df, *, time: str = "time_s", command: str = "torque_nm", measured: str = "position_rad",
@@ -410,9 +436,16 @@ class IdentificationLog:
         speed_m_s; `reference` to 'reference' when present. The older spelling (torque=, measured_unit=,
         command_unit=, torque_per_volt=) still works: it sets the units of the named columns."""
         cols = read_csv(path)
-        command = command or torque or next((c for c in ("torque_nm", "force_n", "volts") if c in cols), "torque_nm")
-        measured = measured or next((c for c in ("position_pulse", "position_rad", "position_m", "speed_rad_s",
-                                                 "speed_pulse_s", "speed_m_s") if c in cols), "position_rad")
+        commands = ("torque_nm", "force_n", "volts")
+        measures = ("position_pulse", "position_rad", "position_m", "speed_rad_s", "speed_pulse_s", "speed_m_s")
+        command = command or torque or next((c for c in commands if c in cols), None)
+        measured = measured or next((c for c in measures if c in cols), None)
+        if command is None:
+            raise ValueError(f"{path}: no command column: one of {', '.join(commands)}, or name it (command=...) "
+                             f"(columns: {', '.join(cols)})")
+        if measured is None:
+            raise ValueError(f"{path}: no measured column: one of {', '.join(measures)}, or name it (measured=...) "
+                             f"(columns: {', '.join(cols)})")
         if reference is None and "reference" in cols:
             reference = "reference"
         units = dict(units or {})

@@ -106,9 +106,12 @@ class CascadePD:
 
 
 def simulate_rigid(model: RigidModel, sample_period_s: float, *, effort=None, reference=None,
-                   controller: CascadePD | None = None, q0=0.0, v0=0.0, substeps: int = 10):
+                   controller: CascadePD | None = None, q0=0.0, v0=0.0, substeps: int = 10, disturbance=None,
+                   position_quantum: float | None = None):
     """Simulates `model` over the samples of `effort` (open loop, N or N*m held over each sample) or of `reference`
-    (m or rad) with `controller` (closed loop). q0, v0: the initial position and speed (any state). Returns
+    (m or rad) with `controller` (closed loop). q0, v0: the initial position and speed (any state). disturbance:
+    an effort per sample (N or N*m) added to the drive's on the mass but not to the returned effort (an unmeasured
+    load); position_quantum: the encoder count (m or rad) the controller sees the position through. Returns
     (position, speed, effort) per sample. Arrays of shape (n, R) simulate R records at once (q0, v0 scalars or
     length R)."""
     ts = _finite("simulate_rigid", "sample_period_s", sample_period_s, 0.0, lo_open=True)
@@ -128,6 +131,13 @@ def simulate_rigid(model: RigidModel, sample_period_s: float, *, effort=None, re
     v = np.zeros_like(src[0]) + v0
     if not (np.all(np.isfinite(q)) and np.all(np.isfinite(v))):
         raise ValueError("simulate_rigid: q0 and v0 must be finite")
+    dist = np.zeros_like(src) if disturbance is None else np.broadcast_to(np.asarray(disturbance, float), src.shape)
+    if not np.all(np.isfinite(dist)):
+        raise ValueError("simulate_rigid: the disturbance holds non-finite samples")
+    quant = None if position_quantum is None else _finite("simulate_rigid", "position_quantum", position_quantum,
+                                                          0.0, lo_open=True)
+    if src.ndim == 1 and disturbance is None and quant is None:
+        return _simulate_scalar(m, ts, src, closed, controller, float(q), float(v), substeps)
     Q, V, F = np.empty_like(src), np.empty_like(src), np.empty_like(src)
     q1 = q2 = q
     inv_m = 1.0 / m.mass_kg
@@ -136,15 +146,16 @@ def simulate_rigid(model: RigidModel, sample_period_s: float, *, effort=None, re
         Q[k] = q
         V[k] = v
         if closed:
-            vm = (q - q2) / (2 * ts)
-            u = np.clip(controller.kp_per_s * controller.kv * (src[k] - q) - controller.kv * vm,
+            qm = q if quant is None else np.round(q / quant) * quant
+            vm = (qm - q2) / (2 * ts)
+            u = np.clip(controller.kp_per_s * controller.kv * (src[k] - qm) - controller.kv * vm,
                         -controller.saturation_v, controller.saturation_v)
             f = controller.gain * u
-            q2, q1 = q1, q
+            q2, q1 = q1, qm
         else:
             f = src[k]
         F[k] = f
-        drive = f - m.offset
+        drive = f - m.offset + dist[k]
         for _ in range(substeps):
             if strib:
                 w = np.exp(-(v / m.stribeck_speed) ** 2)
@@ -158,6 +169,52 @@ def simulate_rigid(model: RigidModel, sample_period_s: float, *, effort=None, re
             stuck = (v == 0) & (drive <= fcp) & (drive >= -fcn)
             v_new = np.where(crossed | stuck, 0.0, v_new)
             q = q + h * v_new
+            v = v_new
+    return Q, V, F
+
+
+def _simulate_scalar(m, ts, src, closed, ctrl, q, v, substeps):
+    """simulate_rigid for one record, in Python floats (the same steps as the array version, ~20x faster)."""
+    h = ts / substeps
+    n = len(src)
+    Q, V, F = np.empty(n), np.empty(n), np.empty(n)
+    q1 = q2 = q
+    inv_m = 1.0 / m.mass_kg
+    strib = m.static > max(m.fc_pos, m.fc_neg)
+    fvp, fvn, off = m.fv_pos, m.fv_neg, m.offset
+    if closed:
+        kpkv, kv, gain, sat = ctrl.kp_per_s * ctrl.kv, ctrl.kv, ctrl.gain, ctrl.saturation_v
+    srcl = src.tolist()
+    for k in range(n):
+        Q[k] = q
+        V[k] = v
+        if closed:
+            u = kpkv * (srcl[k] - q) - kv * (q - q2) / (2 * ts)
+            f = gain * (sat if u > sat else -sat if u < -sat else u)
+            q2, q1 = q1, q
+        else:
+            f = srcl[k]
+        F[k] = f
+        drive = f - off
+        for _ in range(substeps):
+            fcp, fcn = m.fc_pos, m.fc_neg
+            if strib:
+                w = math.exp(-(v / m.stribeck_speed) ** 2)
+                fcp += (m.static - fcp) * w
+                fcn += (m.static - fcn) * w
+            if v > 0:
+                v_new = v + h * (drive - fvp * v - fcp) * inv_m
+                if v_new < 0:
+                    v_new = 0.0
+            elif v < 0:
+                v_new = v + h * (drive - fvn * v + fcn) * inv_m
+                if v_new > 0:
+                    v_new = 0.0
+            elif -fcn <= drive <= fcp:
+                v_new = 0.0
+            else:
+                v_new = h * drive * inv_m
+            q += h * v_new
             v = v_new
     return Q, V, F
 

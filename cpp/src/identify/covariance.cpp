@@ -98,7 +98,8 @@ CovarianceResult reduced_covariance(const ceres::CRSMatrix& jacobian, const std:
     const double var = out.covariance(static_cast<Eigen::Index>(pi), static_cast<Eigen::Index>(pi));
     out.std_error[pi] = bad[static_cast<std::size_t>(i)] ? std::numeric_limits<double>::infinity()
                                                         : std::sqrt(std::max(var, 0.0));
-    const double size = std::max(std::fabs(values[pi]), std::fabs(initial[pi]));
+    const double size = std::fabs(values[pi]);  // its own value, not the guess (issue 19.5)
+    (void)initial;
     if (!bad[static_cast<std::size_t>(i)] && size > 0 && out.std_error[pi] > max_relative_error * size) {
       char buf[200];
       std::snprintf(buf, sizeof buf, ": relative standard error %.3g %% above %.3g %%: too weakly excited",
