@@ -623,11 +623,9 @@ def cmd_identify(args) -> int:
             units[k.strip()] = v.strip()
         kw = dict(units=units, command_gain=gain, counts_per_rev=cpr, current_bw_hz=bw, count_m=args.count_m,
                   measured_on_load=bool(axis is not None and axis.encoder.on_load))
-        if args.time:
-            kw["time"] = args.time
-        for opt in ("command", "measured", "reference"):
-            if getattr(args, opt):
-                kw[opt] = getattr(args, opt)
+        for opt in ("time", "command", "measured", "reference"):
+            if getattr(args, opt + "_column"):
+                kw[opt] = getattr(args, opt + "_column")
         if not os.path.exists(args.log):
             raise UsageError(f"{args.log}: no such file")
         with _bad_input(args.log):
@@ -821,11 +819,11 @@ def build_parser() -> argparse.ArgumentParser:
     i.add_argument("--seed", type=int, default=0, help="PRBS seed")
     i.add_argument("--torque-per-volt", "--command-gain", dest="torque_per_volt", type=float, default=None,
                    help="drive gain, N*m/V (N/V on a linear axis), for a command column in volts")
-    i.add_argument("--time", default=None, help="the log's time column (default time_s; a .mat file: t)")
-    i.add_argument("--command", default=None, help="the log's command column (default: torque_nm, force_n or volts)")
-    i.add_argument("--measured", default=None, help="the log's measured column (default: position_pulse, "
+    i.add_argument("--time", dest="time_column", default=None, help="the log's time column (default time_s; a .mat file: t)")
+    i.add_argument("--command", dest="command_column", default=None, help="the log's command column (default: torque_nm, force_n or volts)")
+    i.add_argument("--measured", dest="measured_column", default=None, help="the log's measured column (default: position_pulse, "
                                                     "position_rad, position_m, speed_rad_s, ...)")
-    i.add_argument("--reference", default=None, help="the log's position reference column (closed-loop records)")
+    i.add_argument("--reference", dest="reference_column", default=None, help="the log's position reference column (closed-loop records)")
     i.add_argument("--unit", nargs="+", metavar="COLUMN=UNIT", action="extend",
                    help="a column's unit when its header has no [unit] tag, e.g. qm=m vir=V")
     i.add_argument("--dynamics-hz", type=float, default=None,

@@ -292,16 +292,16 @@ def _prepare(log, dynamics_hz, cutoff_hz, decimation, edge_samples, friction, of
     if not (math.isfinite(fc) and 0 < fc < nyq):
         raise ValueError(f"cutoff_hz = {cutoff_hz} must be in (0, {nyq:g}) Hz")
     nd = max(1, round(0.8 * nyq / (2 * dynamics_hz))) if decimation is None else decimation
-    if not (float(nd) == int(nd) and 1 <= int(nd) <= max(1, len(log) // 100)):
-        raise ValueError(f"decimation = {decimation} must be a whole number in 1..{max(1, len(log) // 100)}")
+    if decimation is not None and not (float(nd) == int(nd) and 1 <= int(nd) <= 1000):
+        raise ValueError(f"decimation = {decimation} must be a whole number in 1..1000")
     nd = int(nd)
-    if not (float(edge_samples) == int(edge_samples) and 0 <= int(edge_samples) < len(log) // 4):
-        raise ValueError(f"edge_samples = {edge_samples} must be a whole number in 0..{max(0, len(log) // 4 - 1)}")
+    if not (float(edge_samples) == int(edge_samples) and 0 <= int(edge_samples) <= 10**6):
+        raise ValueError(f"edge_samples = {edge_samples} must be a whole number in 0..1000000")
     edge = int(edge_samples)
     need = max(min_samples * nd, 4 * edge + 10, 200)
     if len(log) < need:
         raise ValueError(f"idim: the record is too short ({len(log)} samples); it needs at least {need} for "
-                         f"decimation by {nd}")
+                         f"decimation by {nd} and {edge} edge samples")
     _, dq, ddq = filtered_derivatives(log.measured, ts, fc)
     v = dq[edge:]
     thr = 1e-3 * float(np.max(np.abs(v)))

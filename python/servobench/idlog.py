@@ -129,8 +129,8 @@ def check_time(t, name: str = "time") -> tuple[float, float]:
     nonmono = np.flatnonzero(dt <= 0)
     if len(nonmono):
         i = int(nonmono[0]) + 1
-        raise ValueError(f"{name} is not increasing at sample {i}: {name}[{i}] = {t[i]!r} <= {name}[{i - 1}] = "
-                         f"{t[i - 1]!r}")
+        raise ValueError(f"{name} is not increasing at sample {i}: {name}[{i}] = {float(t[i])!r} <= {name}[{i - 1}] = "
+                         f"{float(t[i - 1])!r}")
     ts = float(np.median(dt))
     gaps = np.flatnonzero(dt > 1.5 * ts)
     if len(gaps):
@@ -500,6 +500,11 @@ class IdentificationLog:
             cq = UNITS.get(_norm(u[command]), ("?",))[0]
             if cq != "command":
                 unit_factor(command, u[command], "command", None)
+            ck = UNITS[_norm(u[command])][1]
+            mk = UNITS[_norm(u[measured])][1]
+            if ck and mk and ck != mk:
+                raise ValueError(f"column {measured!r}: unit {u[measured]!r} is a {mk} unit, but the axis is {ck} "
+                                 f"(column {command!r} is in {u[command]})")
             tf, _ = unit_factor(time, u[time], "time", None)
             t = finite_column(time, cols[time][0]) * tf
             vals = {c: finite_column(c, cols[c][0]) for c in wanted if c != time}
