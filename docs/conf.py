@@ -29,6 +29,8 @@ if any((_src / "servobench").glob("_core*.so")) or any((_src / "servobench").glo
 # Plots must come out of the kernels as images: a non-interactive backend inherited from the caller (pytest sets
 # MPLBACKEND=Agg) would swallow them.
 os.environ.pop("MPLBACKEND", None)
+# The EMPS benchmark's record for the identification notebook (servobench.examples.emps_path).
+os.environ.setdefault("SERVOBENCH_EMPS_MAT", str(ROOT / "tests" / "data" / "emps" / "DATA_EMPS.mat"))
 
 import servobench  # noqa: E402  (after the path set-up above)
 

@@ -42,9 +42,9 @@ from . import frequency
 from . import autotune
 from . import identify
 from .identify import IdentificationLog, IdentifiedPlant, fit_frequency, fit_time, run_experiment
-from . import idim, validate as validation
+from . import idim, idlog, oefit, validation
 from .idim import IdimResult, idim_iv, idim_ls
-from .validate import CascadePD, RigidModel, ValidationResult, simulate_rigid, validate
+from .validation import CascadePD, RigidModel, ValidationResult, simulate_rigid, validate
 from .identify_rigid import RigidIdentification, identify_rigid
 from .autotune import ModelTuneResult, RelayTuneResult, model_based_tune, relay_autotune
 from .frequency import FrequencyResponse, Margins, analytic_response, broadband_response, sine_sweep
@@ -153,6 +153,8 @@ __all__ = [
     "idim_iv",
     "IdimResult",
     "validation",
+    "idlog",
+    "oefit",
     "validate",
     "ValidationResult",
     "RigidModel",

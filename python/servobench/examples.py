@@ -95,3 +95,39 @@ def program_guc_hexagon(path):
             path.buf_io(0, 0xFFFF, 0x55)
             path.buf_delay(100)
     return path
+
+
+#: Environment variable naming the EMPS benchmark's DATA_EMPS.mat (set by the test and documentation builds).
+EMPS_ENV = "SERVOBENCH_EMPS_MAT"
+
+
+def emps_path() -> str:
+    """The path of the EMPS benchmark's estimation record DATA_EMPS.mat (tests/data/emps/ in the repository, README
+    there): $SERVOBENCH_EMPS_MAT, else tests/data/emps/DATA_EMPS.mat in the current directory or a parent of it or of
+    this package. FileNotFoundError naming where it looked otherwise."""
+    import os
+    from pathlib import Path
+
+    env = os.environ.get(EMPS_ENV)
+    if env:
+        if not Path(env).is_file():
+            raise FileNotFoundError(f"${EMPS_ENV} = {env}: no such file")
+        return env
+    tried = []
+    for start in (Path.cwd(), Path(__file__).resolve().parent):
+        for d in (start, *start.parents):
+            p = d / "tests" / "data" / "emps" / "DATA_EMPS.mat"
+            if p.is_file():
+                return str(p)
+        tried.append(str(start))
+    raise FileNotFoundError(f"DATA_EMPS.mat not found (set ${EMPS_ENV}, or run from the repository; searched above "
+                            f"{', '.join(tried)})")
+
+
+def emps_log():
+    """The EMPS estimation record as an :class:`IdentificationLog` (linear axis: m, N; 1 kHz; reference kept; the
+    record's kp, kv and gtau in ``extra``)."""
+    from .idlog import IdentificationLog
+
+    return IdentificationLog.from_mat(emps_path(), units={"t": "s", "qm": "m", "qg": "m", "vir": "V"},
+                                      command_gain="gtau")

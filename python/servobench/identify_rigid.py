@@ -27,7 +27,7 @@ __all__ = ["identify_rigid", "RigidIdentification"]
 class RigidIdentification:
     """The outcome of :func:`identify_rigid`.
 
-    model: the :class:`~servobench.validate.RigidModel` to use (asymmetric friction when the data reject symmetry);
+    model: the :class:`~servobench.validation.RigidModel` to use (asymmetric friction when the data reject symmetry);
     idim: symmetric IDIM-LS (M, Fv, Fc, offset); idim_asymmetric: IDIM-LS with Fv+, Fc+, Fv-, Fc-; idim_iv: IDIM-IV
     or None; output_error: the :func:`servobench.fit_time` cross-check or None; notes: what was chosen and why,
     disagreements between the estimators."""
@@ -71,7 +71,7 @@ def identify_rigid(log, *, dynamics_hz: float | None = None, output_error: bool 
     output_error: run the :func:`fit_time` cross-check (a few seconds per 10^4 samples and start)."""
     from .idim import idim_iv, idim_ls
     from .identify import fit_time
-    from .validate import RigidModel
+    from .validation import RigidModel
 
     ls = idim_ls(log, dynamics_hz=dynamics_hz, max_relative_std_error=max_relative_std_error)
     asym = idim_ls(log, friction="asymmetric", dynamics_hz=ls.dynamics_hz,

@@ -11,6 +11,9 @@ import pytest
 
 matplotlib.use("Agg")
 os.environ.setdefault("MPLBACKEND", "Agg")
+# the EMPS record for the guides and notebooks that run in temporary folders (servobench.examples.emps_path)
+os.environ.setdefault("SERVOBENCH_EMPS_MAT", str(pathlib.Path(__file__).resolve().parents[1] / "data" / "emps" /
+                                                 "DATA_EMPS.mat"))
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 

@@ -16,7 +16,8 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 NOTEBOOKS = sorted((ROOT / "notebooks").glob("*.ipynb"))
 
 PAGES = [
-    "index", "getting-started", "concepts", "filters", "motion", "paths", "bode", "autotune", "identify", "card",
+    "index", "getting-started", "concepts", "filters", "motion", "paths", "bode", "autotune", "identify",
+    "identify-emps", "card",
     "howto-tune", "howto-bode", "howto-identify", "howto-port", "tour/index", "api/index", "cli", "decisions",
     "coverage", "validation", "benchmarks",
 ]

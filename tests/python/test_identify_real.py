@@ -80,6 +80,15 @@ def test_idim_iv_and_the_one_call_entry_point(emps):
     assert "mass_kg" in str(oe) and " kg " in str(oe)           # printed in the axis's own units
 
 
+def test_fit_time_as_a_user_calls_it(emps):
+    # no guess, no segment length: starts from the IDIM answer, segments from the data, three starts
+    fit = sb.fit_time(emps)
+    assert fit.converged and fit.agrees and len(fit.starts) == 3
+    for name, k in (("mass_kg", "M"), ("viscous_ns_per_m", "Fv"), ("coulomb_n", "Fc")):
+        assert fit[name] == pytest.approx(PUBLISHED[k], rel=0.02), name   # measured: -0.55 %, -1.35 %, +1.89 %
+    assert 50 <= fit.segment_samples <= 1000
+
+
 def test_validation_open_and_closed_loop_and_the_60_40_split(emps):
     est, val = emps.split(0.6)
     assert len(est) + len(val) == len(emps)
