@@ -628,11 +628,14 @@ def cmd_identify(args) -> int:
                 kw[opt] = getattr(args, opt + "_column")
         if not os.path.exists(args.log):
             raise UsageError(f"{args.log}: no such file")
-        with _bad_input(args.log):
+        try:
             if args.log.lower().endswith(".mat"):
                 log = IdentificationLog.from_mat(args.log, **kw)
             else:
                 log = IdentificationLog.from_csv(args.log, **kw)
+        except (ValueError, TypeError) as e:  # the reader's messages name the file, the line and the column
+            msg = str(e)
+            raise UsageError(msg if msg.startswith(str(args.log)) else f"{args.log}: {msg}") from None
         cols = log.extra.get("columns", {})
         source = (f"{args.log} ({len(log)} samples, " + ", ".join(f"{c} [{u}]" for c, u in cols.items()) +
                   (f", time jitter {log.time_jitter_ppm:.3g} ppm" if log.time_jitter_ppm else "") + ")")

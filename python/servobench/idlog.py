@@ -187,7 +187,7 @@ def read_csv(path: str) -> dict:
     except (pd.errors.ParserError, UnicodeDecodeError) as e:
         raise ValueError(f"{path}: not a readable CSV ({e})") from None
     for col in df.columns:
-        if df[col].dtype == object:  # a cell that is not a number: name its line (the header is line 1)
+        if not pd.api.types.is_numeric_dtype(df[col]):  # a cell that is not a number: name its line (header: 1)
             num = pd.to_numeric(df[col], errors="coerce")
             bad = np.flatnonzero(num.isna().to_numpy() & df[col].notna().to_numpy())
             if len(bad):
