@@ -130,6 +130,8 @@ void bind_machine(py::module_& m) {
            py::arg("switches"), py::arg("servo_period_s") = py::none(), py::arg("substeps") = 1.0,
            py::arg("filters") = py::none())
       .def("reset", &Axis::reset, py::arg("angle_rad") = 0.0)
+      .def("reset_state", &Axis::reset_state, py::arg("angle_rad"), py::arg("speed_rad_s"), py::arg("load_angle_rad"),
+           py::arg("load_speed_rad_s"))
       .def("set_law", [](Axis& a, const py::object& law) { a.set_law(law_from(law)); }, py::arg("law"))
       .def_property_readonly("law", [](const Axis& a) -> py::object {
         return std::visit([](const auto& p) { return py::cast(p); }, a.config().law);

@@ -160,9 +160,25 @@ class Axis:
                 f"substeps={self.substeps}, filters={self.filters!r})")
 
     # -- control ----------------------------------------------------------------------------------
-    def reset(self, angle_rad: float = 0.0) -> None:
-        """Power-on state at `angle_rad` (rad): law memories cleared, at rest, output 0 V, tick 0."""
-        self._axis.reset(float(angle_rad))
+    def reset(self, angle_rad: float = 0.0, *, speed_rad_s: float = 0.0, load_angle_rad: float | None = None,
+              load_speed_rad_s: float | None = None) -> None:
+        """Power-on state (law memories cleared, output 0 V, tick 0) with the mechanics where you put them: motor
+        angle `angle_rad` (rad) and speed `speed_rad_s` (rad/s); on a two-mass plant the load's angle and speed
+        (default: the motor's). A body at rest starts held by its static friction. A rigid plant has one body: a
+        load state different from the motor's is a ValueError."""
+        a, w = float(angle_rad), float(speed_rad_s)
+        la = a if load_angle_rad is None else float(load_angle_rad)
+        lw = w if load_speed_rad_s is None else float(load_speed_rad_s)
+        for name, v in (("angle_rad", a), ("speed_rad_s", w), ("load_angle_rad", la), ("load_speed_rad_s", lw)):
+            if not np.isfinite(v):
+                raise ValueError(f"Axis.reset.{name} = {v} is not a finite number")
+        if not isinstance(self.plant, _core.TwoMassPlant) and (la != a or lw != w):
+            raise ValueError(f"Axis.reset: load_angle_rad = {la}, load_speed_rad_s = {lw} differ from the motor's, but "
+                             "a rigid plant has one body (leave them out)")
+        if w == 0.0 and load_speed_rad_s is None and load_angle_rad is None and np.isfinite(a):
+            self._axis.reset(a)  # the power-on reset, unchanged
+        else:
+            self._axis.reset_state(a, w, la, lw)
 
     def set_law(self, law) -> None:
         """Replaces the servo-law parameters from the next tick on (the card's Update)."""

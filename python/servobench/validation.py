@@ -68,6 +68,26 @@ class RigidModel:
         return cls(v["M"], max(v["Fv+"], 0.0), max(v["Fc+"], 0.0), max(v["Fv-"], 0.0), max(v["Fc-"], 0.0),
                    v.get("offset", 0.0), linear=result.linear)
 
+    def to_plant(self, lead_m_per_rev: float | None = None):
+        """The model as a :class:`RigidPlant` for an :class:`Axis` (simulation, tuning): mean and half-difference of
+        each friction pair (viscous_nms / viscous_asym_nms, coulomb_nm / coulomb_asym_nm), the offset as load_nm.
+        A linear model maps to the motor side through the screw lead (m per motor revolution): J = M (lead/2 pi)^2,
+        torque = force lead / (2 pi); without a lead it maps 1:1 (1 m -> 1 rad, 1 N -> 1 N*m, 1 kg -> 1 kg*m^2)."""
+        from . import _core
+
+        k = 1.0
+        if lead_m_per_rev is not None:
+            lead = _finite("to_plant", "lead_m_per_rev", lead_m_per_rev, 0.0, lo_open=True)
+            if not self.linear:
+                raise ValueError("to_plant: lead_m_per_rev applies to a linear model only")
+            k = 2 * math.pi / lead
+        fv, dv = (self.fv_pos + self.fv_neg) / 2, (self.fv_pos - self.fv_neg) / 2
+        fc, dc = (self.fc_pos + self.fc_neg) / 2, (self.fc_pos - self.fc_neg) / 2
+        static = self.static / k if self.static > max(self.fc_pos, self.fc_neg) else 0.0
+        return _core.RigidPlant(inertia_kgm2=self.mass_kg / k ** 2, viscous_nms=fv / k ** 2,
+                                viscous_asym_nms=dv / k ** 2, coulomb_nm=fc / k, coulomb_asym_nm=dc / k,
+                                static_nm=static, stribeck_speed_rad_s=self.stribeck_speed * k, load_nm=self.offset / k)
+
     @property
     def units(self) -> dict:
         if self.linear:

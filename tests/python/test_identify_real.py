@@ -211,3 +211,45 @@ def test_cli_reads_the_same_formats(tmp_path, capsys):
                      str(tmp_path / "o"), "-q"])
     assert code == 2 and "column 'pos': unknown unit 'parsec'" in capsys.readouterr().err
     assert not (tmp_path / "o").exists() or not any((tmp_path / "o").iterdir())   # nothing written half-way
+
+
+def test_the_plant_simulates_asymmetric_friction_and_an_offset():
+    # point 3: an identified machine can be simulated: RigidPlant has Fv+/-, Fc+/- (mean and half-difference)
+    p = sb.RigidPlant(inertia_kgm2=2.0, viscous_nms=5.0, viscous_asym_nms=-1.0, coulomb_nm=1.0, coulomb_asym_nm=0.2)
+    np.testing.assert_allclose(p.friction_torque([-2, -0.1, 0.1, 2]), [-12.8, -1.4, 1.6, 9.2], rtol=1e-12)
+    with pytest.raises(ValueError, match=r"RigidPlant.coulomb_asym_nm = 2 is outside the allowed range -1..1"):
+        sb.RigidPlant(inertia_kgm2=2.0, viscous_nms=5.0, coulomb_nm=1.0, coulomb_asym_nm=2.0)
+    with pytest.raises(ValueError, match=r"TwoMassPlant.load_viscous_asym_nms = nan is not a finite number"):
+        sb.TwoMassPlant(load_viscous_asym_nms=float("nan"))
+    model = sb.RigidModel(2.0, 4.0, 1.2, 6.0, 0.8, offset=0.3)
+    plant = model.to_plant()
+    assert plant.viscous_nms == 5.0 and plant.viscous_asym_nms == -1.0 and plant.load_nm == 0.3
+    axis = sb.Axis(law=sb.GtServoLaw(kp=0, kd=0), plant=plant, encoder=sb.Encoder(counts_per_rev=100000),
+                   drive=sb.TorqueDrive(amps_per_volt=1.0, kt=1.0, current_limit_a=100), servo_period_s=1e-3)
+    for volts in (5.0, -5.0):  # steady speed (F - offset -/+ Fc+/-) / Fv+/-, in the simulator and in validate's model
+        axis.reset()
+        run = axis.run(np.zeros(4000), injection_v=np.full(4000, volts), signals=["speed_rad_s"])
+        _, v, _ = sb.simulate_rigid(model, 1e-3, effort=np.full(4000, volts), substeps=20)
+        expected = (volts - 0.3 - 1.2) / 4.0 if volts > 0 else (volts - 0.3 + 0.8) / 6.0
+        assert run.speed_rad_s[-1] == pytest.approx(expected, rel=1e-3)
+        assert v[-1] == pytest.approx(expected, rel=1e-3)
+    lead = 0.01
+    rot = model.to_plant(lead_m_per_rev=lead)
+    assert rot.inertia_kgm2 == pytest.approx(2.0 * (lead / (2 * np.pi)) ** 2)
+
+
+def test_axis_reset_from_any_state():
+    axis = sb.Axis(law=sb.GtServoLaw(kp=0, kd=0), plant=sb.RigidPlant(inertia_kgm2=1e-3, viscous_nms=1e-3),
+                   drive=sb.TorqueDrive(amps_per_volt=1.0, kt=1.0), servo_period_s=1e-3)
+    axis.reset(0.5, speed_rad_s=-1.0)
+    run = axis.run(np.zeros(10), signals=["angle_rad", "speed_rad_s"])
+    assert run.angle_rad[0] == 0.5 and run.speed_rad_s[0] == -1.0           # the state it was put in
+    assert run.angle_rad[1] == pytest.approx(0.5 - 1e-3, rel=1e-3) and -1.0 < run.speed_rad_s[1] < -0.99
+    with pytest.raises(ValueError, match="a rigid plant has one body"):
+        axis.reset(0.0, load_angle_rad=1.0)
+    with pytest.raises(ValueError, match="Axis.reset.speed_rad_s = nan"):
+        axis.reset(0.0, speed_rad_s=float("nan"))
+    two = sb.Axis(law=sb.GtServoLaw(kp=0, kd=0), plant=sb.TwoMassPlant(), drive=sb.TorqueDrive(), servo_period_s=1e-3)
+    two.reset(0.1, speed_rad_s=2.0, load_angle_rad=0.12, load_speed_rad_s=1.5)
+    r = two.run(np.zeros(3), signals=["angle_rad", "load_angle_rad", "speed_rad_s", "load_speed_rad_s"])
+    assert (r.angle_rad[0], r.speed_rad_s[0], r.load_angle_rad[0], r.load_speed_rad_s[0]) == (0.1, 2.0, 0.12, 1.5)

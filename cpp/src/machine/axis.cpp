@@ -85,6 +85,17 @@ void Axis::reset(double angle_rad) {
   tick_ = 0;
 }
 
+void Axis::reset_state(double motor_angle_rad, double motor_speed_rad_s, double load_angle_rad,
+                       double load_speed_rad_s) {
+  check_range("Axis.reset", "angle_rad", motor_angle_rad, -1e12, 1e12);
+  check_range("Axis.reset", "speed_rad_s", motor_speed_rad_s, -1e12, 1e12);
+  check_range("Axis.reset", "load_angle_rad", load_angle_rad, -1e12, 1e12);
+  check_range("Axis.reset", "load_speed_rad_s", load_speed_rad_s, -1e12, 1e12);
+  reset(motor_angle_rad);
+  power_.set_state(motor_angle_rad, motor_speed_rad_s, load_angle_rad, load_speed_rad_s);
+  prev_encoder_angle_ = encoder_angle();
+}
+
 void Axis::set_law(const LawParams& law) {
   if (law.index() != law_.index()) {
     // A different card's law: validate its period range too, then start it from power-on.

@@ -91,6 +91,9 @@ class Axis {
 
   // Power-on state at the given motor angle: law memories cleared, at rest, output 0 V, tick counter 0.
   void reset(double angle_rad = 0.0);
+  // The same from any state (issue 19): motor angle and speed, load angle and speed (rad, rad/s; a rigid plant's
+  // load values must equal the motor's). Values must be finite (std::invalid_argument naming them).
+  void reset_state(double motor_angle_rad, double motor_speed_rad_s, double load_angle_rad, double load_speed_rad_s);
   // Replaces the servo-law parameters at the next tick (the card's Update); the law keeps its memories.
   void set_law(const LawParams& law);
   // Replaces both biquads' coefficients at the next tick; their histories are kept (validated first).

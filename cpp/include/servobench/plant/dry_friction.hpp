@@ -27,14 +27,33 @@ struct BodyIndex {
 };
 
 // A body's dry friction in scalar type T: Coulomb (sliding) level, breakaway level (>= Coulomb; equal: no
-// Stribeck peak), Stribeck speed (> 0) and exponent.
+// Stribeck peak), Stribeck speed (> 0) and exponent; and its asymmetry (issue 19): the levels are Fc + a, Fs + a
+// for positive speeds and Fc - a, Fs - a for negative ones (a = coulomb_asym_nm, |a| <= Fc), and the viscous
+// friction, integrated linearly at its mean b, is b + bv for positive speeds and b - bv for negative ones
+// (bv = viscous_asym_nms): the difference enters here as the extra sliding level bv |w|. Both 0: symmetric.
 template <class T>
 struct DryFriction {
   T coulomb_nm;
   T breakaway_nm;
   T stribeck_speed_rad_s;
   double stribeck_exponent = 2.0;
+  double coulomb_asym_nm = 0.0;
+  double viscous_asym_nms = 0.0;
+  bool asymmetric() const { return coulomb_asym_nm != 0.0 || viscous_asym_nms != 0.0; }
+  bool active() const { return breakaway_nm > 0.0 || viscous_asym_nms != 0.0; }
 };
+
+// The sliding level in the direction dir (+1 / -1) at speed w (N*m): the symmetric level plus, for an asymmetric
+// body, dir * (a + bv |w|) -- friction -dir * level then gives Fc+/- and the viscous difference.
+template <class T>
+T directional_sliding_nm(const DryFriction<T>& f, const T& speed_rad_s, double dir);
+
+// The breakaway level resisting motion in the direction dir (+1 / -1), N*m: Fs + dir * a.
+template <class T>
+T directional_breakaway_nm(const DryFriction<T>& f, double dir) {
+  if (f.coulomb_asym_nm == 0.0) return f.breakaway_nm;
+  return f.breakaway_nm + dir * f.coulomb_asym_nm;
+}
 
 // Sliding friction level at speed w (N*m, >= 0): Fc + (Fs - Fc) exp(-(|w|/ws)^delta).
 template <class T>
@@ -53,6 +72,13 @@ T sliding_friction_nm(const DryFriction<T>& f, const T& speed_rad_s) {
   if constexpr (std::is_same<T, double>::value)
     if (shape > 708.0) return f.coulomb_nm;
   return f.coulomb_nm + (f.breakaway_nm - f.coulomb_nm) * exp(-shape);
+}
+
+template <class T>
+T directional_sliding_nm(const DryFriction<T>& f, const T& speed_rad_s, double dir) {
+  using std::abs;
+  if (!f.asymmetric()) return sliding_friction_nm(f, speed_rad_s);
+  return sliding_friction_nm(f, speed_rad_s) + dir * (f.coulomb_asym_nm + f.viscous_asym_nms * abs(speed_rad_s));
 }
 
 // Chooses the held dry-friction torque f[b] of every body b for the sub-step from x0 whose friction-free end state
@@ -74,7 +100,7 @@ void solve_dry_friction(std::size_t nb, const BodyIndex* idx, const DryFriction<
       if (locked & (1u << b)) continue;
       const BodyIndex& s = idx[b];
       stick[b] = false;
-      if (!(fr[b].breakaway_nm > 0.0)) {
+      if (!fr[b].active()) {
         f[b] = T(0.0);
         continue;
       }
@@ -92,16 +118,18 @@ void solve_dry_friction(std::size_t nb, const BodyIndex* idx, const DryFriction<
       T fb;
       bool st = false;
       const double dir = v0 > 0.0 ? 1.0 : -1.0;
-      const T f_slip = -dir * sliding_friction_nm(fr[b], v0);
+      const T f_slip = -dir * directional_sliding_nm(fr[b], v0, dir);
       if (v0 != 0.0 && (v_free + g * f_slip) * dir > 0.0) {
         fb = f_slip;  // keeps sliding the same way
       } else {
         const T f_stick = -v_free / g;  // holds the body at rest at the sub-step's end
-        if (f_stick <= fr[b].breakaway_nm && f_stick >= -fr[b].breakaway_nm) {
+        const T fs_pos = directional_breakaway_nm(fr[b], 1.0);   // resists positive motion
+        const T fs_neg = directional_breakaway_nm(fr[b], -1.0);  // resists negative motion
+        if (f_stick <= fs_neg && f_stick >= -fs_pos) {
           fb = f_stick;
           st = true;
         } else {
-          fb = v_free > 0.0 ? T(-fr[b].breakaway_nm) : T(fr[b].breakaway_nm);  // breaks away, or passes zero
+          fb = v_free > 0.0 ? T(-fs_pos) : fs_neg;  // breaks away, or passes zero
         }
       }
       // Sliding friction may only oppose the net displacement over the sub-step: f * (d + gth f) <= 0. (A hold
@@ -150,7 +178,7 @@ void advance_with_dry_friction(std::size_t nb, const BodyIndex* idx, const DryFr
   add_input<2>(x_free, gamma0, u2);
   add_input<3>(x_free, gamma0, u3);
   bool any_dry = false;
-  for (std::size_t b = 0; b < nb; ++b) any_dry = any_dry || fr[b].breakaway_nm > 0.0;
+  for (std::size_t b = 0; b < nb; ++b) any_dry = any_dry || fr[b].active();
   if (!any_dry) {
     x.swap(x_free);
     return;

@@ -6,6 +6,10 @@
 // Fc = coulomb_nm, Fs = static_nm (breakaway level, >= Fc; 0 means "equal to Fc", no Stribeck peak),
 // ws = stribeck_speed_rad_s, delta = stribeck_exponent, b = viscous_nms. The viscous part is linear and goes into
 // the exact linear integration; the rest is solved implicitly over each sub-step by the machine layer.
+//
+// Asymmetric friction (issue 19; e.g. a fatigued ball screw): a = coulomb_asym_nm, bv = viscous_asym_nms give
+//   w > 0:  Fc+ = Fc + a, Fs+ = Fs + a, b+ = b + bv;   w < 0:  Fc- = Fc - a, Fs- = Fs - a, b- = b - bv,
+// i.e. Fc = (Fc+ + Fc-)/2, a = (Fc+ - Fc-)/2, b = (b+ + b-)/2, bv = (b+ - b-)/2; |a| <= Fc, |bv| <= b. 0: symmetric.
 #pragma once
 
 #include <cmath>
@@ -20,6 +24,8 @@ struct FrictionParams {
   double static_nm = 0.0;             // Fs, N*m, 0 (= Fc) or >= Fc
   double stribeck_speed_rad_s = 0.01; // ws, rad/s, > 0
   double stribeck_exponent = 2.0;     // delta, 0.5..4
+  double coulomb_asym_nm = 0.0;       // a = (Fc+ - Fc-)/2, N*m, |a| <= coulomb_nm
+  double viscous_asym_nms = 0.0;      // bv = (b+ - b-)/2, N*m*s/rad, |bv| <= viscous_nms
   // owner: the parameter object's name for messages; prefix: field prefix ("" or "motor_"/"load_").
   void validate(const char* owner, const char* prefix) const;
 
@@ -29,13 +35,15 @@ struct FrictionParams {
   double sliding_nm(double speed_rad_s) const { return sliding_friction_nm(dry(), speed_rad_s); }
   // The dry part in the form the sub-step integrator uses (plant/dry_friction.hpp).
   DryFriction<double> dry() const {
-    return DryFriction<double>{coulomb_nm, breakaway_nm(), stribeck_speed_rad_s, stribeck_exponent};
+    return DryFriction<double>{coulomb_nm, breakaway_nm(), stribeck_speed_rad_s, stribeck_exponent, coulomb_asym_nm,
+                               viscous_asym_nms};
   }
   // The steady friction torque opposing motion at a given speed (N*m, sign of the speed), viscous included;
   // at zero speed it returns 0 (static friction is whatever holds the body). For friction curves.
   double steady_torque_nm(double speed_rad_s) const {
     if (speed_rad_s == 0.0) return 0.0;
-    return (speed_rad_s > 0 ? 1.0 : -1.0) * sliding_nm(speed_rad_s) + viscous_nms * speed_rad_s;
+    const double dir = speed_rad_s > 0 ? 1.0 : -1.0;
+    return dir * directional_sliding_nm(dry(), speed_rad_s, dir) + viscous_nms * speed_rad_s;
   }
 };
 

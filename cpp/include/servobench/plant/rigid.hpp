@@ -18,13 +18,16 @@ struct RigidPlantParams {
   double static_nm = 0.0;             // breakaway (static) friction, N*m; 0 = equal to coulomb_nm
   double stribeck_speed_rad_s = 0.01; // Stribeck speed, rad/s, > 0
   double stribeck_exponent = 2.0;     // Stribeck shape exponent, 0.5..4
+  double coulomb_asym_nm = 0.0;       // Coulomb asymmetry (Fc+ - Fc-)/2, N*m, |.| <= coulomb_nm (friction.hpp)
+  double viscous_asym_nms = 0.0;      // viscous asymmetry (b+ - b-)/2, N*m*s/rad, |.| <= viscous_nms
   double load_nm = 0.0;               // constant load torque (e.g. gravity on a vertical screw axis), N*m
   double unbalance_nm = 0.0;          // gravity torque of an unbalanced arm: -unbalance*sin(theta), N*m
   double cogging_nm = 0.0;            // cogging ripple amplitude, N*m, >= 0
   double cogging_periods = 0.0;       // cogging periods per revolution, whole number 0..1000
   void validate() const;
   FrictionParams friction() const {
-    return FrictionParams{viscous_nms, coulomb_nm, static_nm, stribeck_speed_rad_s, stribeck_exponent};
+    return FrictionParams{viscous_nms, coulomb_nm, static_nm, stribeck_speed_rad_s, stribeck_exponent,
+                          coulomb_asym_nm, viscous_asym_nms};
   }
 };
 

@@ -27,16 +27,22 @@ struct TwoMassPlantParams {
   double load_static_nm = 0.0;         // load-side breakaway friction, N*m (0 = coulomb)
   double load_stribeck_speed_rad_s = 0.01;
   double load_stribeck_exponent = 2.0;
+  double motor_coulomb_asym_nm = 0.0;  // motor-side Coulomb asymmetry (Fc+ - Fc-)/2, N*m (friction.hpp)
+  double motor_viscous_asym_nms = 0.0; // motor-side viscous asymmetry (b+ - b-)/2, N*m*s/rad
+  double load_coulomb_asym_nm = 0.0;   // load-side Coulomb asymmetry, N*m
+  double load_viscous_asym_nms = 0.0;  // load-side viscous asymmetry, N*m*s/rad
   double load_nm = 0.0;                // constant load torque on the load side, N*m
   double unbalance_nm = 0.0;           // gravity torque -unbalance*sin(load angle), N*m
   double cogging_nm = 0.0;             // motor cogging amplitude, N*m
   double cogging_periods = 0.0;        // cogging periods per motor revolution
   void validate() const;
   FrictionParams motor_friction() const {
-    return {motor_viscous_nms, motor_coulomb_nm, motor_static_nm, motor_stribeck_speed_rad_s, motor_stribeck_exponent};
+    return {motor_viscous_nms, motor_coulomb_nm,           motor_static_nm,       motor_stribeck_speed_rad_s,
+            motor_stribeck_exponent, motor_coulomb_asym_nm, motor_viscous_asym_nms};
   }
   FrictionParams load_friction() const {
-    return {load_viscous_nms, load_coulomb_nm, load_static_nm, load_stribeck_speed_rad_s, load_stribeck_exponent};
+    return {load_viscous_nms,       load_coulomb_nm,      load_static_nm,       load_stribeck_speed_rad_s,
+            load_stribeck_exponent, load_coulomb_asym_nm, load_viscous_asym_nms};
   }
   // Undamped anti-resonance sqrt(k/Jl) and resonance sqrt(k(Jm+Jl)/(Jm Jl)) frequencies, Hz.
   double antiresonance_hz() const;
