@@ -657,12 +657,66 @@ def _fit_once(log: IdentificationLog, model: str = "rigid", *, guess: dict, fixe
                            stribeck_exponent, log.time_s, log.measured, r["predicted"], r["residual"])
 
 
+_BODE_UNITS = {"hz": ("freq", 1.0), "rad/s": ("freq", 1 / (2 * math.pi)), "db": ("gain", "db"),
+               "abs": ("gain", "abs"), "deg": ("phase", math.pi / 180), "rad": ("phase", 1.0)}
+
+
+def frequency_input(response):
+    """(freq_hz, complex response, coherence or None) of a measured response given as a servobench
+    :class:`FrequencyResponse` (its plant Y/U), a python-control ``FRD`` (frequencies in rad/s), the path of a Bode
+    CSV (a header row with unit tags: frequency ``[Hz]`` or ``[rad/s]``, gain ``[dB]`` or ``[abs]``, phase ``[deg]``
+    or ``[rad]``; pandas), or a (freq_hz, complex) pair. ValueError naming what is wrong."""
+    if hasattr(response, "freq_hz"):
+        coh = getattr(response, "coherence", None)
+        return (np.asarray(response.freq_hz, float), np.asarray(response.response("plant")),
+                None if coh is None else np.asarray(coh, float))
+    if hasattr(response, "omega") and (hasattr(response, "frdata") or hasattr(response, "fresp")):
+        data = np.asarray(response.frdata if hasattr(response, "frdata") else response.fresp)
+        if data.ndim == 3:
+            if data.shape[:2] != (1, 1):
+                raise ValueError(f"fit_frequency: the FRD has {data.shape[0]} outputs x {data.shape[1]} inputs; "
+                                 "give a single-input single-output response")
+            data = data[0, 0]
+        return np.asarray(response.omega, float) / (2 * math.pi), np.asarray(data, complex).ravel(), None
+    if isinstance(response, (str, bytes)) or hasattr(response, "__fspath__"):
+        from .idlog import finite_column, read_csv
+
+        cols = read_csv(str(response) if not isinstance(response, bytes) else response.decode())
+        roles = {}
+        for name, (values, unit) in cols.items():
+            if unit is None:
+                continue
+            u = unit.strip().lower()
+            if u not in _BODE_UNITS:
+                raise ValueError(f"{response}: column {name!r}: unit {unit!r} is not a Bode unit "
+                                 f"({', '.join(['Hz', 'rad/s', 'dB', 'abs', 'deg', 'rad'])})")
+            role, conv = _BODE_UNITS[u]
+            if role in roles:
+                raise ValueError(f"{response}: two {role} columns ({roles[role][0]!r} and {name!r})")
+            roles[role] = (name, conv, finite_column(name, values))
+        missing = [r for r in ("freq", "gain", "phase") if r not in roles]
+        if missing:
+            raise ValueError(f"{response}: no {' / '.join(missing)} column with a unit tag (e.g. 'f [Hz]', "
+                             "'gain [dB]', 'phase [deg]')")
+        f = roles["freq"][2] * roles["freq"][1]
+        gain = roles["gain"][2]
+        mag = 10 ** (gain / 20) if roles["gain"][1] == "db" else gain
+        return f, mag * np.exp(1j * roles["phase"][2] * roles["phase"][1]), None
+    try:
+        f, g = (np.asarray(a) for a in response)
+    except (TypeError, ValueError):
+        raise TypeError("fit_frequency: response must be a FrequencyResponse, a control.FRD, a Bode CSV path or a "
+                        "(freq_hz, complex) pair") from None
+    return np.asarray(f, float), np.asarray(g, complex), None
+
+
 def fit_frequency(response, axis, model: str = "rigid", *, guess: dict, fixed: Iterable[str] = (),
                   bounds: dict | None = None, fit_delay: bool = False, delay_s: float = 0.0, weight=None,
                   max_iterations: int = 200, max_relative_std_error: float = 0.2, strict: bool = True,
                   progress=None) -> IdentifiedPlant:
     """Fits the mechanics of `axis` to a measured plant response Y/U (U in DAC counts, Y in pulse: the ``plant`` of a
-    :func:`servobench.frequency.sine_sweep` or :func:`broadband_response`, or (freq_hz, complex) arrays).
+    :func:`servobench.frequency.sine_sweep` or :func:`broadband_response`, a python-control ``FRD`` (rad/s), a Bode
+    CSV (Hz or rad/s, dB, deg; see :func:`frequency_input`) or (freq_hz, complex) arrays).
 
     The model is the axis's own analytic plant response with its mechanics replaced (friction is invisible to a
     linear response: only inertias, stiffness, damping and viscous friction are fitted), optionally times an extra
@@ -670,13 +724,9 @@ def fit_frequency(response, axis, model: str = "rigid", *, guess: dict, fixed: I
     log-ratio (nepers and radians), weighted by `weight` (default: the measurement's coherence if it has one).
     """
     model = _model(model)
-    if hasattr(response, "freq_hz"):
-        f = np.asarray(response.freq_hz, float)
-        g = np.asarray(response.response("plant"))
-        if weight is None and getattr(response, "coherence", None) is not None:
-            weight = np.asarray(response.coherence, float)
-    else:
-        f, g = (np.asarray(a) for a in response)
+    f, g, coh = frequency_input(response)
+    if weight is None and coh is not None:
+        weight = coh
     names, initial, hold, lower, upper = _setup(model, guess, fixed, bounds)
     w = np.ones(len(f)) if weight is None else np.asarray(weight, float)
     core_axis = getattr(axis, "_axis", axis)

@@ -207,6 +207,34 @@ TEST(Friction, StictionHoldsFor1e7TicksAndBreaksAway) {
   EXPECT_EQ(pt.motor_angle_rad(), at);
 }
 
+TEST(Friction, AsymmetricLevelsPerDirection) {
+  // issue 19: Fc+/- = Fc +/- a, b+/- = b +/- bv; steady speeds (tau - Fc+/-) / b+/- in each direction, and an
+  // effort between the two breakaway levels holds the body in one direction only.
+  plant::RigidPlantParams p;
+  p.inertia_kgm2 = 1e-3;
+  p.viscous_nms = 5e-3;
+  p.viscous_asym_nms = -1e-3;  // b+ = 4e-3, b- = 6e-3
+  p.coulomb_nm = 0.02;
+  p.coulomb_asym_nm = 0.005;   // Fc+ = 0.025, Fc- = 0.015
+  for (double tau : {0.05, -0.05}) {
+    machine::PowerTrain pt(ideal_drive(), plant::rigid_mechanics(p), 1e-3, 4);
+    pt.set_input(tau);
+    for (int k = 0; k < 5000; ++k) pt.advance_tick();
+    const double expected = tau > 0 ? (tau - 0.025) / 4e-3 : (tau + 0.015) / 6e-3;
+    EXPECT_NEAR(pt.motor_speed_rad_s(), expected, 1e-6 * std::fabs(expected));
+  }
+  machine::PowerTrain hold(ideal_drive(), plant::rigid_mechanics(p), 1e-3, 4);
+  hold.set_input(0.02);  // below Fs+ = 0.025: held
+  for (int k = 0; k < 1000; ++k) hold.advance_tick();
+  EXPECT_EQ(hold.motor_speed_rad_s(), 0.0);
+  hold.set_input(-0.02);  // beyond Fs- = 0.015: moves
+  for (int k = 0; k < 1000; ++k) hold.advance_tick();
+  EXPECT_LT(hold.motor_speed_rad_s(), 0.0);
+  plant::RigidPlantParams bad = p;
+  bad.coulomb_asym_nm = 0.03;  // |a| > Fc
+  EXPECT_THROW(bad.validate(), std::invalid_argument);
+}
+
 TEST(Friction, PassivePlantNeverGainsEnergy) {
   plant::TwoMassPlantParams p;
   p.motor_coulomb_nm = 0.01;
