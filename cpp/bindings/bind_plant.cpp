@@ -74,9 +74,9 @@ void bind_plant(py::module_& m) {
       .field("stribeck_speed_rad_s", &RigidPlantParams::stribeck_speed_rad_s, "Stribeck speed, rad/s, > 0")
       .field("stribeck_exponent", &RigidPlantParams::stribeck_exponent, "Stribeck shape exponent, 0.5..4")
       .field("coulomb_asym_nm", &RigidPlantParams::coulomb_asym_nm,
-             "Coulomb asymmetry (Fc+ - Fc-)/2, N*m, |.| <= coulomb_nm (Fc+/- = coulomb_nm +/- this)")
+             "Coulomb asymmetry (Fc+ - Fc-)/2, N*m, magnitude <= coulomb_nm (Fc+/- = coulomb_nm +/- this)")
       .field("viscous_asym_nms", &RigidPlantParams::viscous_asym_nms,
-             "viscous asymmetry (b+ - b-)/2, N*m*s/rad, |.| <= viscous_nms (b+/- = viscous_nms +/- this)")
+             "viscous asymmetry (b+ - b-)/2, N*m*s/rad, magnitude <= viscous_nms (b+/- = viscous_nms +/- this)")
       .field("load_nm", &RigidPlantParams::load_nm, "constant load torque, N*m (positive opposes positive motion)")
       .field("unbalance_nm", &RigidPlantParams::unbalance_nm, "gravity torque amplitude of an unbalanced arm, N*m")
       .field("cogging_nm", &RigidPlantParams::cogging_nm, "cogging ripple amplitude, N*m, >= 0")
@@ -111,13 +111,13 @@ void bind_plant(py::module_& m) {
       .field("load_stribeck_speed_rad_s", &TwoMassPlantParams::load_stribeck_speed_rad_s, "rad/s, > 0")
       .field("load_stribeck_exponent", &TwoMassPlantParams::load_stribeck_exponent, "0.5..4")
       .field("motor_coulomb_asym_nm", &TwoMassPlantParams::motor_coulomb_asym_nm,
-             "motor-side Coulomb asymmetry (Fc+ - Fc-)/2, N*m, |.| <= motor_coulomb_nm")
+             "motor-side Coulomb asymmetry (Fc+ - Fc-)/2, N*m, magnitude <= motor_coulomb_nm")
       .field("motor_viscous_asym_nms", &TwoMassPlantParams::motor_viscous_asym_nms,
-             "motor-side viscous asymmetry (b+ - b-)/2, N*m*s/rad, |.| <= motor_viscous_nms")
+             "motor-side viscous asymmetry (b+ - b-)/2, N*m*s/rad, magnitude <= motor_viscous_nms")
       .field("load_coulomb_asym_nm", &TwoMassPlantParams::load_coulomb_asym_nm,
-             "load-side Coulomb asymmetry (Fc+ - Fc-)/2, N*m, |.| <= load_coulomb_nm")
+             "load-side Coulomb asymmetry (Fc+ - Fc-)/2, N*m, magnitude <= load_coulomb_nm")
       .field("load_viscous_asym_nms", &TwoMassPlantParams::load_viscous_asym_nms,
-             "load-side viscous asymmetry (b+ - b-)/2, N*m*s/rad, |.| <= load_viscous_nms")
+             "load-side viscous asymmetry (b+ - b-)/2, N*m*s/rad, magnitude <= load_viscous_nms")
       .field("load_nm", &TwoMassPlantParams::load_nm, "constant load torque on the load side, N*m")
       .field("unbalance_nm", &TwoMassPlantParams::unbalance_nm, "gravity torque amplitude on the load side, N*m")
       .field("cogging_nm", &TwoMassPlantParams::cogging_nm, "motor cogging amplitude, N*m, >= 0")

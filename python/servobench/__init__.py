@@ -45,7 +45,7 @@ from .identify import IdentificationLog, IdentifiedPlant, fit_frequency, fit_tim
 from . import idim, idlog, oefit, validation
 from .idim import IdimResult, idim_iv, idim_ls
 from .validation import CascadePD, RigidModel, ValidationResult, simulate_rigid, validate
-from .identify_rigid import RigidIdentification, identify_rigid
+from .identify_workflow import RigidIdentification, identify_rigid
 from .autotune import ModelTuneResult, RelayTuneResult, model_based_tune, relay_autotune
 from .frequency import FrequencyResponse, Margins, analytic_response, broadband_response, sine_sweep
 from . import motion

@@ -517,9 +517,10 @@ def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None
     hold_stribeck_first
         with the Stribeck peak free, solve a first stage with its level and speed held at their guesses (far from
         the truth, the peak otherwise tends to vanish, ws -> 0, and stay vanished).
-    Standard errors are Ceres' times sqrt(long-run variance / variance) of the residual (correlated residuals,
-    :func:`servobench.oefit.long_run_variance_ratio`); a parameter whose standard error exceeds
-    max_relative_std_error of its own value is not identifiable.
+    max_relative_std_error
+        standard errors are Ceres' times sqrt(long-run variance / variance) of the residual (correlated residuals,
+        :func:`servobench.oefit.long_run_variance_ratio`); a parameter whose standard error exceeds this fraction
+        of its own value is not identifiable.
     strict
         raise :class:`IdentificationError` (a ValueError) naming the parameters the data cannot determine; with
         False they are reported in ``not_identifiable`` and their standard error is inf.

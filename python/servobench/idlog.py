@@ -449,6 +449,8 @@ class IdentificationLog:
         if reference is None and "reference" in cols:
             reference = "reference"
         units = dict(units or {})
+        if torque is not None or measured_unit is not None or command_unit is not None:
+            units.setdefault(time, "s")  # the older spelling's time column was in seconds by definition
         if measured_unit is not None:
             units.setdefault(measured, measured_unit)
         if command_unit is not None:
