@@ -31,7 +31,9 @@ __all__ = [
     "FrequencyResponse",
     "Margins",
     "Peak",
+    "analytic_margins",
     "analytic_response",
+    "closed_loop_poles",
     "broadband_response",
     "linear_model",
     "chirp",
@@ -49,24 +51,37 @@ _RESPONSES = ("plant", "open_loop", "closed_loop")
 # ----------------------------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class Margins:
-    """Stability margins and loop figures of merit (from :func:`margins`).
+    """Stability first, then the margins and loop figures of merit (from :func:`margins`,
+    :func:`analytic_margins` or :meth:`FrequencyResponse.margins`). ``str(m)`` starts with "UNSTABLE" for an
+    unstable loop.
 
+    stable, stability
+        the verdict and how it was reached: ``stability`` = {"decided", "stable", "method" ("closed-loop poles" for
+        the linear model, "Nyquist" for data), "reason" (one sentence with the figures), "max_pole_radius" (largest
+        closed-loop ``|z|``, poles only), "unstable_poles" (closed-loop poles outside the unit circle; -1 undecided),
+        "open_loop_unstable_poles", "integrators"}. ``stable`` is False when unstable *or* undecided. The margins of
+        a loop that is not stable are meaningless (python-control reports them all the same).
     gain_margin_db, gm_freq_hz
-        how far the loop gain may rise before instability, dB, and the phase crossover (angle L = -180 deg,
-        ``|L|`` < 1) where it is read, Hz. ``inf`` / NaN if the data has no such crossover.
+        how far the loop gain may rise before a phase crossover reaches -1, dB (the smallest ``-20 log10|L|`` > 0
+        over the phase crossovers, angle L = -180 deg), and where, Hz. ``inf`` / NaN if there is none.
     lower_gain_margin_db, lower_gm_freq_hz
         how far the gain may fall (negative dB) for a conditionally stable loop (a PID on an integrating plant has
-        one at low frequency); ``-inf`` / NaN if none.
+        one at low frequency): the phase crossover with ``|L|`` > 1 closest to 0 dB; ``-inf`` / NaN if none.
     phase_margin_deg, pm_freq_hz
-        180 deg + angle L at the gain crossover ``|L|`` = 1, deg, and that crossover frequency, Hz.
+        180 deg + angle L at the gain crossover ``|L|`` = 1 nearest to -1, deg, and that crossover frequency, Hz.
+    gain_crossovers, phase_crossovers
+        every crossing (MATLAB's allmargin): {"freq_hz", "phase_margin_deg"} and {"freq_hz", "gain_margin_db",
+        "kind"} arrays, by frequency; kind "upper" (``|L|`` < 1: the gain may rise) or "lower" (it may fall).
     delay_margin_s
-        extra dead time the loop tolerates, phase margin / (360 deg * crossover), s.
+        extra dead time the loop tolerates, phase margin / (360 deg * crossover), s (the smallest over crossovers).
     bandwidth_hz
         closed-loop -3 dB bandwidth (first frequency where ``|Y/R|`` is 3 dB below its value at the lowest
         frequency), Hz; NaN if not reached in the data.
     ms, ms_freq_hz
         peak sensitivity max ``|1/(1 + L)|`` and its frequency, Hz (1/Ms is the distance of L from -1; Ms < 2 is the
         usual robustness goal).
+    source, note
+        what the figures were read from ("analytic model", "measured (stepped sine)", ...) and what was left out.
     """
 
     gain_margin_db: float
@@ -79,25 +94,72 @@ class Margins:
     bandwidth_hz: float
     ms: float
     ms_freq_hz: float
+    stable: bool = False
+    stability: dict = field(default_factory=dict)
+    gain_crossovers: dict = field(default_factory=dict)
+    phase_crossovers: dict = field(default_factory=dict)
+    source: str = ""
+    note: str = ""
+
+    @property
+    def verdict(self) -> str:
+        """"stable", "UNSTABLE" or "UNDECIDED"."""
+        if self.stable:
+            return "stable"
+        return "UNSTABLE" if self.stability.get("decided", True) else "UNDECIDED"
 
     def __str__(self) -> str:
         def hz(x):
             return "-" if not np.isfinite(x) else f"{x:.4g} Hz"
 
-        lines = [
+        src = f" ({self.source})" if self.source else ""
+        reason = self.stability.get("reason", "")
+        lines = []
+        if self.verdict == "UNSTABLE":
+            lines.append(f"UNSTABLE{src}: {reason}")
+            lines.append("the margins below are meaningless for an unstable loop")
+        elif self.verdict == "UNDECIDED":
+            lines.append(f"stability UNDECIDED{src}: {reason}")
+            lines.append("the margins below are not backed by a stability verdict")
+        else:
+            lines.append(f"stable{src}: {reason}")
+        lines += [
             f"phase margin {self.phase_margin_deg:.3g} deg at {hz(self.pm_freq_hz)} "
             f"(delay margin {self.delay_margin_s * 1e3:.3g} ms)",
             f"gain margin {self.gain_margin_db:.3g} dB at {hz(self.gm_freq_hz)}",
         ]
         if np.isfinite(self.lower_gain_margin_db):
             lines.append(f"lower gain margin {self.lower_gain_margin_db:.3g} dB at {hz(self.lower_gm_freq_hz)}")
+        gc, pc = self.gain_crossovers, self.phase_crossovers
+        if len(gc.get("freq_hz", ())) > 1:
+            lines.append("gain crossovers: " + ", ".join(
+                f"{f:.4g} Hz (PM {p:.3g} deg)" for f, p in zip(gc["freq_hz"], gc["phase_margin_deg"])))
+        if len(pc.get("freq_hz", ())) > 1:
+            lines.append("phase crossovers: " + ", ".join(
+                f"{f:.4g} Hz ({k} {g:.3g} dB)" for f, g, k in zip(pc["freq_hz"], pc["gain_margin_db"], pc["kind"])))
         lines.append(f"closed-loop bandwidth (-3 dB) {hz(self.bandwidth_hz)}")
         lines.append(f"peak sensitivity Ms {self.ms:.3g} at {hz(self.ms_freq_hz)}")
+        if self.note:
+            lines.append(f"note: {self.note}")
         return "\n".join(lines)
 
 
-def margins(freq_hz, loop_gain, closed_loop=None) -> Margins:
-    """Gain, phase and delay margins, closed-loop bandwidth and peak sensitivity from frequency-response data.
+def _margins_from(d: dict, source: str = "", note: str = "") -> Margins:
+    """A :class:`Margins` from the core's dict (adds the crossing kinds)."""
+    d = dict(d)
+    pc = dict(d.get("phase_crossovers", {}))
+    if "gain_margin_db" in pc:
+        pc["kind"] = ["lower" if g < 0 else "upper" for g in np.asarray(pc["gain_margin_db"])]
+    d["phase_crossovers"] = pc
+    st = dict(d.get("stability", {}))
+    keep = {k: v for k, v in d.items() if k not in ("stability", "stable", "source", "note")}
+    return Margins(**keep, stable=bool(st.get("stable", False)), stability=st, source=source, note=note)
+
+
+def margins(freq_hz, loop_gain, closed_loop=None, *, open_loop_unstable_poles: int = 0,
+            integrators: int | None = None, source: str = "") -> Margins:
+    """Stability, gain, phase and delay margins (every crossing), closed-loop bandwidth and peak sensitivity from
+    frequency-response data.
 
     freq_hz
         increasing frequencies, Hz.
@@ -106,15 +168,41 @@ def margins(freq_hz, loop_gain, closed_loop=None) -> Margins:
         the feed-forward off.
     closed_loop
         Y/R for the bandwidth (complex); default L/(1 + L).
+    open_loop_unstable_poles, integrators
+        the Nyquist criterion's P (open-loop poles outside the unit circle, 0 for the card loops) and the number of
+        open-loop poles at z = 1 (None: inferred from the slope of the two lowest points, round(-slope / 20
+        dB/decade)). The verdict is "undecided" when the data do not start where ``|L|`` >= 2 or do not end where
+        ``|L|`` < 1.
 
-    Crossings are interpolated linearly in log frequency (gain in dB, phase unwrapped from the lowest frequency),
-    so the figures are as good as the grid is dense around them. A loop with a resonance can cross 0 dB several
-    times: the phase margin is that of the crossover nearest to -1 (the smallest ``|PM|``, python-control's rule)
-    and the delay margin the smallest over all crossovers. Margins alone do not prove stability.
+    Crossings are interpolated linearly in log frequency (gain in dB, phase unwrapped between neighbours), so the
+    figures are as good as the grid is dense around them. The phase margin is that of the crossover nearest to -1
+    (the smallest ``|PM|``, python-control's rule) and the delay margin the smallest over all crossovers. For the
+    linear model use :func:`analytic_margins` (closed-loop poles, exact crossings).
     """
+    if isinstance(open_loop_unstable_poles, bool) or int(open_loop_unstable_poles) != open_loop_unstable_poles \
+            or open_loop_unstable_poles < 0:
+        raise ValueError(f"open_loop_unstable_poles = {open_loop_unstable_poles!r} must be an integer >= 0")
+    if integrators is not None and (int(integrators) != integrators or not 0 <= integrators <= 10):
+        raise ValueError(f"integrators = {integrators!r} must be None or an integer in 0..10")
     d = _core.margins(np.asarray(freq_hz, dtype=float), np.asarray(loop_gain, dtype=complex),
-                      None if closed_loop is None else np.asarray(closed_loop, dtype=complex))
-    return Margins(**d)
+                      None if closed_loop is None else np.asarray(closed_loop, dtype=complex),
+                      int(open_loop_unstable_poles), -1 if integrators is None else int(integrators))
+    return _margins_from(d, source)
+
+
+def analytic_margins(axis, freq_hz=None, *, filters: bool = True) -> Margins:
+    """Margins of the axis's linear loop: stability from the closed-loop poles (the linear model), every crossing
+    found on `freq_hz` (Hz, increasing, below Nyquist; None: 4000 log-spaced points from 1e-5/Ts to Nyquist, plus
+    the Nyquist frequency itself) and refined on the exact loop gain to 1e-10 in log frequency; Ms by golden-section
+    search. What python-control's ``stability_margins(..., returnall=True)`` gives on :func:`linear_model`."""
+    f = None if freq_hz is None else np.asarray(freq_hz, dtype=float)
+    return _margins_from(_core.analytic_margins(_core_axis(axis), f, bool(filters)), "analytic model")
+
+
+def closed_loop_poles(axis, *, filters: bool = True) -> dict:
+    """The axis's linear loop's poles (complex z): {"closed_loop", "open_loop", "max_radius", "integrators"
+    (open-loop poles at z = 1), "open_loop_unstable"}."""
+    return dict(_core.loop_poles(_core_axis(axis), bool(filters)))
 
 
 @dataclass(frozen=True)
@@ -202,7 +290,15 @@ class FrequencyResponse:
     status, message
         how the measurement ended (``"completed"``, ``"deviation_exceeded"``, ``"drive_alarm"``, ``"stopped"``).
     signals
-        stepped sine: the fundamentals of R, E, U, Y per point (complex; pulse, pulse, counts, pulse).
+        stepped sine: the fundamentals of R, E, U, Y per point (complex; pulse, pulse, counts, pulse), and per point
+        ``amplitude_pulse`` (the excitation used), ``dac_saturated_ticks``, ``current_saturated_ticks``,
+        ``torque_saturated_ticks``, ``tries``; broadband: the run's saturated ticks.
+    flags
+        measured: per point "" (good) or why the point fails the judge (saturation, coherence, distortion,
+        quantisation; thresholds in :func:`sine_sweep`); flagged points are drawn hollow and left out of margins.
+    integrators, open_loop_unstable_poles
+        measured: the loop's open-loop poles at z = 1 and outside the unit circle, from the axis's structure, for
+        the Nyquist criterion on the data.
     servo_period_s
         the servo period, s.
     """
@@ -222,6 +318,18 @@ class FrequencyResponse:
     status: str = "completed"
     message: str = ""
     signals: dict = field(default_factory=dict, repr=False)
+    flags: list | None = None
+    integrators: int | None = None
+    open_loop_unstable_poles: int = 0
+    model_margins: Margins | None = field(default=None, repr=False)
+
+    @property
+    def usable(self) -> np.ndarray:
+        """Per point: True where the point passed the judge (no flag) and its response is finite and non-zero."""
+        ok = np.isfinite(self.open_loop) & (self.open_loop != 0) & np.isfinite(self.closed_loop)
+        if self.flags is not None:
+            ok &= np.array([not f for f in self.flags], dtype=bool)
+        return ok
 
     def __len__(self) -> int:
         return len(self.freq_hz)
@@ -252,23 +360,40 @@ class FrequencyResponse:
         return ph - 360.0 * np.ceil((ph[0] - 90.0) / 360.0) if ph.size else ph
 
     def margins(self) -> Margins:
-        """Margins of the loop: from the analytic loop gain, or from the measured Y/E (which is the loop gain only
-        when the feed-forward was off during the measurement, else ValueError). Measured points where the encoder
-        saw no motion (Y/E exactly 0, near Nyquist with a coarse encoder) carry no phase and are left out."""
+        """Stability and margins of the loop. Analytic data: the closed-loop poles of the linear model and crossings
+        refined on the exact loop gain (:func:`analytic_margins` over these frequencies). Measured: the Nyquist
+        criterion and the crossings of Y/E (the loop gain only when the feed-forward was off, else ValueError) over
+        the points that passed the judge (:attr:`usable`); the others are left out and named in ``note``.
+        ValueError when fewer than 2 points remain: such a sweep cannot give a margin."""
+        if self.model_margins is not None:
+            return self.model_margins
         if self.loop_gain is not None:
-            return margins(self.freq_hz, self.loop_gain, self.closed_loop)
+            return margins(self.freq_hz, self.loop_gain, self.closed_loop, source=self.method)
         if self.feedforward:
             raise ValueError("this open loop Y/E was measured with the feed-forward on, so it is not the loop gain; "
                              "measure with feedforward=False to read margins")
-        ol = np.asarray(self.open_loop)
-        cl = None if self.closed_loop is None else np.asarray(self.closed_loop)
-        seen = np.isfinite(ol) & (ol != 0)
-        if cl is not None:
-            seen &= np.isfinite(cl)
-        if seen.sum() < 2:
-            raise ValueError(f"margins: only {int(seen.sum())} of {len(ol)} measured points have a response "
-                             "(the encoder saw no motion at the others); raise amplitude_pulse")
-        return margins(self.freq_hz[seen], ol[seen], None if cl is None else cl[seen])
+        ol, cl = np.asarray(self.open_loop), np.asarray(self.closed_loop)
+        ok = self.usable
+        note = ""
+        if not ok.all():
+            reasons = {}
+            for i in np.nonzero(~ok)[0]:
+                why = (self.flags[i] if self.flags is not None and self.flags[i] else "no response (encoder saw no "
+                       "motion)")
+                for r in why.split("; "):
+                    key = r.split(" ")[0] if r[:1] != "|" else r.split(" ")[0] + " floor"
+                    reasons[key] = reasons.get(key, 0) + 1
+            note = (f"{int((~ok).sum())} of {len(ok)} points left out: " +
+                    ", ".join(f"{k} ({n})" for k, n in reasons.items()))
+        if ok.sum() < 2:
+            raise ValueError(f"no margin from this {self.method} measurement: only {int(ok.sum())} of {len(ok)} points "
+                             f"passed the checks ({note or 'none measured'}); lower the amplitude if they saturate, "
+                             "raise it if they sit at the quantisation floor")
+        m = margins(self.freq_hz[ok], ol[ok], cl[ok], open_loop_unstable_poles=self.open_loop_unstable_poles,
+                    integrators=self.integrators, source=f"measured ({self.method})")
+        import dataclasses
+
+        return dataclasses.replace(m, note=note)
 
     def resonances(self, which: str = "plant", *, min_prominence_db: float = 3.0) -> list[Peak]:
         """Resonances and anti-resonances of a response (default the plant); see :func:`resonances`."""
@@ -319,10 +444,12 @@ def _core_axis(axis):
 # ----------------------------------------------------------------------------------------------------------------
 # Measurements
 # ----------------------------------------------------------------------------------------------------------------
-def sine_sweep(axis, *, start_hz: float = 10.0, end_hz: float = 100.0, amplitude_pulse: float = 300.0,
+def sine_sweep(axis, *, start_hz: float = 10.0, end_hz: float = 100.0, amplitude_pulse: float | None = None,
                points: int = 100, update_s: float = 0.1, deviation_limit_pulse: float = 0.0,
                feedforward: bool = False, filters: bool = True, settle_fraction: float = 0.25,
-               progress=None) -> FrequencyResponse:
+               progress=None, min_coherence: float = 0.99, max_distortion: float = 0.05,
+               min_response_pulse: float = 4.0, min_dac_counts: float = 30.0, dac_fraction: float = 0.3,
+               max_amplitude_pulse: float | None = None) -> FrequencyResponse:
     """The ADLINK Bode tool's stepped-sine measurement on a simulated axis (L1978-2045). Defaults are the manual's
     example (L2023, L2035): 10-100 Hz, 100 points, 300 pulse, 0.1 s per point.
 
@@ -333,7 +460,16 @@ def sine_sweep(axis, *, start_hz: float = 10.0, end_hz: float = 100.0, amplitude
         first and last frequency, Hz (> 0, below the Nyquist frequency 1/(2 Ts); the manual keeps the end <= 500 Hz
         for real drives, L2015).
     amplitude_pulse
-        sine amplitude added to the command, pulse (> 0).
+        sine amplitude added to the command, pulse (> 0; the manual's example is 300), used at every point and
+        checked; None (default): chosen per point, the largest the linear model predicts keeps the DAC within
+        `dac_fraction` of full scale and the drive's current command within `dac_fraction` of its limit, at most
+        `max_amplitude_pulse` (pulse; None: one encoder revolution), halved and the point run again while it still
+        saturates. The amplitudes used are in ``signals["amplitude_pulse"]``.
+    min_coherence, max_distortion, min_response_pulse, min_dac_counts
+        the judge of each point: coherence of Y (0..1), harmonic distortion of Y (ratio), the quantisation floors
+        ``|Y|`` >= min_response_pulse (pulse) and ``|U|`` >= min_dac_counts (DAC counts). A point failing one, or
+        with any tick of DAC saturation, clamped current command or torque at the drive's limit, is flagged
+        (``flags``), drawn hollow and left out of margins.
     points
         data length: number of log-spaced frequencies (2..100000).
     update_s
@@ -350,11 +486,19 @@ def sine_sweep(axis, *, start_hz: float = 10.0, end_hz: float = 100.0, amplitude
 
     Releases the GIL while it runs; deterministic (no randomness unless the encoder has noise, seeded).
     """
+    if amplitude_pulse is not None and not float(amplitude_pulse) > 0:
+        raise ValueError(f"sine_sweep.amplitude_pulse = {amplitude_pulse} must be > 0 pulse (or None: automatic)")
+    if max_amplitude_pulse is not None and not float(max_amplitude_pulse) > 0:
+        raise ValueError(f"sine_sweep.max_amplitude_pulse = {max_amplitude_pulse} must be > 0 pulse (or None)")
     d = _core.sine_sweep(_core_axis(axis), start_hz=float(start_hz), end_hz=float(end_hz),
-                         amplitude_pulse=float(amplitude_pulse), points=float(points), update_s=float(update_s),
+                         amplitude_pulse=0.0 if amplitude_pulse is None else float(amplitude_pulse),
+                         points=float(points), update_s=float(update_s),
                          deviation_limit_pulse=float(deviation_limit_pulse), settle_fraction=float(settle_fraction),
                          feedforward=bool(feedforward), filters=bool(filters),
-                         progress=_progress_callback(progress, "Bode sweep"))
+                         progress=_progress_callback(progress, "Bode sweep"), min_coherence=float(min_coherence),
+                         max_distortion=float(max_distortion), min_response_pulse=float(min_response_pulse),
+                         min_dac_counts=float(min_dac_counts), dac_fraction=float(dac_fraction),
+                         max_amplitude_pulse=0.0 if max_amplitude_pulse is None else float(max_amplitude_pulse))
     r, e, u, y = d["r"], d["e"], d["u"], d["y"]
     with np.errstate(divide="ignore", invalid="ignore"):
         return FrequencyResponse(
@@ -363,7 +507,13 @@ def sine_sweep(axis, *, start_hz: float = 10.0, end_hz: float = 100.0, amplitude
             coherence=d["coherence"], distortion=d["distortion"], status=d["status"], message=d["message"],
             signals={"r": r, "e": e, "u": u, "y": y, "periods": d["periods"], "window": d["window"],
                      "ticks": d["ticks"], "stop_time_s": d["stop_time_s"],
-                     "stop_error_pulse": d["stop_error_pulse"]})
+                     "stop_error_pulse": d["stop_error_pulse"], "amplitude_pulse": d["amplitude_pulse"],
+                     "torque_amplitude_nm": d["torque_amplitude_nm"],
+                     "dac_saturated_ticks": d["dac_saturated_ticks"],
+                     "current_saturated_ticks": d["current_saturated_ticks"],
+                     "torque_saturated_ticks": d["torque_saturated_ticks"], "tries": d["tries"]},
+            flags=list(d["flag"]), integrators=int(d["integrators"]),
+            open_loop_unstable_poles=int(d["open_loop_unstable_poles"]))
 
 
 def analytic_response(axis, freq_hz, *, feedforward: bool = False, filters: bool = True) -> FrequencyResponse:
@@ -376,10 +526,13 @@ def analytic_response(axis, freq_hz, *, feedforward: bool = False, filters: bool
     """
     f = np.atleast_1d(np.asarray(freq_hz, dtype=float))
     d = _core.loop_response(_core_axis(axis), f, bool(feedforward), bool(filters))
+    mm = None
+    if f.size >= 2 and np.all(np.diff(f) > 0):
+        mm = analytic_margins(axis, f, filters=filters)
     return FrequencyResponse(freq_hz=d["freq_hz"], plant=d["plant"], open_loop=d["open_loop"],
                              closed_loop=d["closed_loop"], method="analytic", servo_period_s=axis.servo_period_s,
                              feedforward=bool(feedforward), filters=bool(filters), loop_gain=d["loop_gain"],
-                             sensitivity=d["sensitivity"],
+                             sensitivity=d["sensitivity"], model_margins=mm,
                              signals={"controller": d["controller"], "feedforward": d["feedforward"],
                                       "filters": d["filters"]})
 
@@ -609,8 +762,12 @@ def linear_model(axis, *, feedforward: bool = False, filters: bool = True) -> di
         vpc = (-1.0 if law.v_inverse else 1.0) * 10.0 / 32767.0
     if not feedforward:
         kvff = kaff = 0.0
-    # C(z) = kp + ki z/(z-1) + kd (z-1)/z = [(kp+ki+kd) z^2 - (kp+2kd) z + kd] / (z^2 - z)
-    c = control.tf([kp + ki + kd, -(kp + 2 * kd), kd], [1, -1, 0], ts)
+    # C(z) = kp + ki z/(z-1) + kd (z-1)/z = [(kp+ki+kd) z^2 - (kp+2kd) z + kd] / (z^2 - z); without an acting
+    # integral term no pole at z = 1 (it would cancel a zero there and leave an unobservable pole on the circle)
+    if ki != 0:
+        c = control.tf([kp + ki + kd, -(kp + 2 * kd), kd], [1, -1, 0], ts)
+    else:
+        c = control.tf([kp + kd, -kd], [1, 0], ts)
     # Cff(z) = kvff (1 - z^-1) + kaff (1 - z^-1)^2 = [(kvff+kaff) z^2 - (kvff+2kaff) z + kaff] / z^2
     cff = control.tf([kvff + kaff, -(kvff + 2 * kaff), kaff], [1, 0, 0], ts)
     f = control.tf([1], [1], ts)
