@@ -163,7 +163,7 @@ void bind_tuning(py::module_& m) {
       py::arg("points"), py::arg("update_s"), py::arg("deviation_limit_pulse"), py::arg("settle_fraction"),
       py::arg("feedforward"), py::arg("filters"), py::arg("progress") = py::none(), py::arg("min_coherence") = 0.99,
       py::arg("max_distortion") = 0.05, py::arg("min_response_pulse") = 4.0, py::arg("min_dac_counts") = 30.0,
-      py::arg("dac_fraction") = 0.3, py::arg("max_amplitude_pulse") = 0.0,
+      py::arg("dac_fraction") = 0.5, py::arg("max_amplitude_pulse") = 0.0,
       "Stepped-sine sweep on the axis (ADLINK Bode tool). Releases the GIL.");
 
   m.def(

@@ -21,6 +21,16 @@ _FRICTION_FIELDS = ("coulomb_nm", "static_nm", "motor_coulomb_nm", "motor_static
                     "load_static_nm")
 
 
+def _kind(reason: str) -> str:
+    """The family of a point's flag: "encoder quantisation", "coherence", "DAC saturated", "friction", ..."""
+    if "(" in reason and reason.startswith("|"):
+        return reason[reason.index("(") + 1:reason.rindex(")")]
+    for key in ("friction", "coherence", "distortion", "DAC saturated", "current command", "torque", "no response"):
+        if reason.startswith(key):
+            return key
+    return reason.split(" ")[0]
+
+
 def friction_level_nm(plant) -> float:
     """The largest dry-friction level of the plant, N*m: max(coulomb, static) on the motor side plus that of the load
     side (0 for a friction-free plant)."""
@@ -98,7 +108,7 @@ def model_agreement(axis, measured, which: str = "open_loop", *, tolerance_db: f
     else:
         summary = f"{which.replace('_', ' ')}: the linear model applies at none of the {f.size} points"
     if ranges:
-        kinds = sorted({r.split(":")[0].split(" ")[0] for w in why for r in w.split("; ") if r})
+        kinds = sorted({_kind(r) for w in why for r in w.split("; ") if r})
         summary += ("; it does not apply at " + ", ".join(f"{lo:.4g}-{hi:.4g} Hz" if hi > lo else f"{lo:.4g} Hz"
                                                          for lo, hi in ranges) + f" ({', '.join(kinds)})")
     return {"freq_hz": f, "gain_error_db": gain_err, "phase_error_deg": phase_err, "model_applies": applies,

@@ -125,8 +125,10 @@ class Margins:
             lines.append(f"stable{src}: {reason}")
         lines += [
             f"phase margin {self.phase_margin_deg:.3g} deg at {hz(self.pm_freq_hz)} "
-            f"(delay margin {self.delay_margin_s * 1e3:.3g} ms)",
-            f"gain margin {self.gain_margin_db:.3g} dB at {hz(self.gm_freq_hz)}",
+            f"(delay margin {self.delay_margin_s * 1e3:.3g} ms)" if np.isfinite(self.phase_margin_deg)
+            else "phase margin: none found (|L| does not cross 1 in the data)",
+            f"gain margin {self.gain_margin_db:.3g} dB at {hz(self.gm_freq_hz)}" if np.isfinite(self.gain_margin_db)
+            else "gain margin: none found (no phase crossover with |L| < 1 in the data)",
         ]
         if np.isfinite(self.lower_gain_margin_db):
             lines.append(f"lower gain margin {self.lower_gain_margin_db:.3g} dB at {hz(self.lower_gm_freq_hz)}")
@@ -381,13 +383,14 @@ class FrequencyResponse:
                 why = (self.flags[i] if self.flags is not None and self.flags[i] else "no response (encoder saw no "
                        "motion)")
                 for r in why.split("; "):
-                    key = r.split(" ")[0] if r[:1] != "|" else r.split(" ")[0] + " floor"
+                    key = r.split(" (")[0] if r.startswith("no response") else \
+                        (r.split(" ")[0] if r[:1] != "|" else r.split(" ")[0] + " floor")
                     reasons[key] = reasons.get(key, 0) + 1
             note = (f"{int((~ok).sum())} of {len(ok)} points left out: " +
                     ", ".join(f"{k} ({n})" for k, n in reasons.items()))
         if ok.sum() < 2:
-            raise ValueError(f"no margin from this {self.method} measurement: only {int(ok.sum())} of {len(ok)} points "
-                             f"passed the checks ({note or 'none measured'}); lower the amplitude if they saturate, "
+            raise ValueError(f"no margin from this {self.method} measurement: only {int(ok.sum())} of {len(ok)} "
+                             f"measured points passed the checks ({note or 'none measured'}); lower the amplitude if they saturate, "
                              "raise it if they sit at the quantisation floor")
         m = margins(self.freq_hz[ok], ol[ok], cl[ok], open_loop_unstable_poles=self.open_loop_unstable_poles,
                     integrators=self.integrators, source=f"measured ({self.method})")
@@ -448,7 +451,7 @@ def sine_sweep(axis, *, start_hz: float = 10.0, end_hz: float = 100.0, amplitude
                points: int = 100, update_s: float = 0.1, deviation_limit_pulse: float = 0.0,
                feedforward: bool = False, filters: bool = True, settle_fraction: float = 0.25,
                progress=None, min_coherence: float = 0.99, max_distortion: float = 0.05,
-               min_response_pulse: float = 4.0, min_dac_counts: float = 30.0, dac_fraction: float = 0.3,
+               min_response_pulse: float = 4.0, min_dac_counts: float = 30.0, dac_fraction: float = 0.5,
                max_amplitude_pulse: float | None = None) -> FrequencyResponse:
     """The ADLINK Bode tool's stepped-sine measurement on a simulated axis (L1978-2045). Defaults are the manual's
     example (L2023, L2035): 10-100 Hz, 100 points, 300 pulse, 0.1 s per point.

@@ -200,12 +200,27 @@ SineSweepResult sine_sweep(machine::Axis& axis, const SineSweepOptions& options,
   SineSweepResult res;
   const double base = axis.last_command_pulse();
   double phase = 0.0;  // of the command sine, continuous across points
+  double prev_amp = 0.0;  // amplitude at the end of the previous point (0: the sweep starts from rest)
   bool ended = false;
   for (std::size_t i = 0; i < freqs.size() && !ended; ++i) {
     const double f = freqs[i];
     const double w = 2.0 * M_PI * f * ts;  // rad per tick
     double amp = options.amplitude_pulse > 0 ? options.amplitude_pulse : auto_amp[i];
     int tries = 0, dac_sat = 0, cur_sat = 0, trq_sat = 0;
+    // Analysis window (known before the run): the last whole periods after the settling share.
+    const double per = 1.0 / (f * ts);  // samples per period
+    // The settling share is cut short where it would leave less than one whole period (decisions B4).
+    const double usable = std::max(static_cast<double>(n_tick - settle), std::min(per, static_cast<double>(n_tick)));
+    const int m_max = static_cast<int>(std::floor(usable / per + 1e-9));
+    const int m = best_periods(per, std::max(m_max, 1));
+    const int len = std::min(static_cast<int>(n_tick), std::max(3, static_cast<int>(std::lround(m * per))));
+    const std::size_t start = n_tick - static_cast<std::size_t>(len);
+    // Over the first quarter of the settling share the amplitude moves from the previous point's to this one's on
+    // a raised cosine: no step of command velocity between points (decisions M6).
+    // The first point is preceded by a lead-in of the same length whose amplitude rises from 0 on a raised cosine
+    // (discarded): the loop is in its periodic steady state when the first window starts, even where the window
+    // is the whole point (decisions M6).
+    bool lead_in = (i == 0);
     for (;;) {
       ++tries;
       const double phase0 = phase;
@@ -213,7 +228,12 @@ SineSweepResult sine_sweep(machine::Axis& axis, const SineSweepOptions& options,
         // sin(phase0 + w k) = sin(phase0) cos(w k) + cos(phase0) sin(w k)
         unit_phasors(w, static_cast<int>(n_tick), y.data(), e.data());  // scratch, overwritten by the run
         const double s0 = std::sin(phase0), c0 = std::cos(phase0);
-        for (std::size_t k = 0; k < n_tick; ++k) cmd[k] = base + amp * (s0 * y[k] + c0 * e[k]);
+        const std::size_t ramp = lead_in ? n_tick : start / 4;  // the rest of the settling lets the transient die out
+        for (std::size_t k = 0; k < n_tick; ++k) {
+          const double blend = k < ramp ? 0.5 - 0.5 * std::cos(M_PI * static_cast<double>(k) / ramp) : 1.0;
+          const double a = prev_amp + (amp - prev_amp) * blend;
+          cmd[k] = base + a * (s0 * y[k] + c0 * e[k]);
+        }
       }
       phase = std::fmod(phase0 + w * static_cast<double>(n_tick), 2.0 * M_PI);
       machine::CommandInput in;
@@ -236,8 +256,14 @@ SineSweepResult sine_sweep(machine::Axis& axis, const SineSweepOptions& options,
         ended = true;
         break;
       }
+      if (lead_in) {
+        lead_in = false;
+        prev_amp = amp;
+        --tries;
+        continue;
+      }
       dac_sat = cur_sat = trq_sat = 0;
-      for (std::size_t k = 0; k < n_tick; ++k) {
+      for (std::size_t k = start; k < n_tick; ++k) {  // over the analysed window
         if (std::fabs(volts[k]) >= lim.dac_v * (1 - 1e-9) || std::fabs(law_u[k]) >= 32767.0 ||
             std::fabs(u[k]) >= 32767.0)
           ++dac_sat;
@@ -246,17 +272,11 @@ SineSweepResult sine_sweep(machine::Axis& axis, const SineSweepOptions& options,
         if (std::fabs(torque[k]) >= lim.max_torque_nm * (1 - 1e-9)) ++trq_sat;
       }
       if (options.amplitude_pulse > 0 || (dac_sat + cur_sat + trq_sat) == 0 || tries >= 7) break;
+      prev_amp = amp;
       amp *= 0.5;
     }
     if (ended) break;
-    // Analysis window: the last whole periods after the settling share.
-    const double per = 1.0 / (f * ts);  // samples per period
-    // The settling share is cut short where it would leave less than one whole period (decisions B4).
-    const double usable = std::max(static_cast<double>(n_tick - settle), std::min(per, static_cast<double>(n_tick)));
-    const int m_max = static_cast<int>(std::floor(usable / per + 1e-9));
-    const int m = best_periods(per, std::max(m_max, 1));
-    const int len = std::min(static_cast<int>(n_tick), std::max(3, static_cast<int>(std::lround(m * per))));
-    const std::size_t start = n_tick - static_cast<std::size_t>(len);
+    prev_amp = amp;
     const SineFit fit(w, len);
     for (int k = 0; k < len; ++k) cmd[static_cast<std::size_t>(k)] = cmd[start + static_cast<std::size_t>(k)] - base;
     double resid = 0.0;
@@ -289,10 +309,10 @@ SineSweepResult sine_sweep(machine::Axis& axis, const SineSweepOptions& options,
       append(flag, "coherence " + format_value(res.coherence.back()) + " < " + format_value(options.min_coherence));
     if (res.distortion.back() > options.max_distortion)
       append(flag, "distortion " + format_value(res.distortion.back()) + " > " + format_value(options.max_distortion));
-    if (std::abs(res.y.back()) < options.min_response_pulse)
+    if (saved.encoder.quantize && std::abs(res.y.back()) < options.min_response_pulse)
       append(flag, "|Y| " + format_value(std::abs(res.y.back())) + " pulse < " +
                        format_value(options.min_response_pulse) + " (encoder quantisation)");
-    if (std::abs(res.u.back()) < options.min_dac_counts)
+    if (saved.dac.quantize && std::abs(res.u.back()) < options.min_dac_counts)
       append(flag, "|U| " + format_value(std::abs(res.u.back())) + " counts < " +
                        format_value(options.min_dac_counts) + " (DAC quantisation)");
     res.flag.push_back(flag);

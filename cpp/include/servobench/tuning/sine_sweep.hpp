@@ -18,16 +18,18 @@
 // Every point is judged (issue 20): the ticks at which the output stage saturated (DAC at full scale or the law's
 // output at +-32767 counts), the drive's current command was clamped (torque drive: amps_per_volt * V beyond
 // min(current limit, torque limit / kt)) and the motor torque was at the velocity drive's limit are counted over
-// the whole point; a point with any saturated tick, a coherence below min_coherence, a harmonic distortion above
-// max_distortion, or a response below the quantisation floor (|Y| < min_response_pulse pulse or |U| <
-// min_dac_counts counts) is flagged with the reason, and left out of margins.
+// the analysed window; a point with any saturated tick, a coherence below min_coherence, a harmonic distortion above
+// max_distortion, or a response below the quantisation floor (|Y| < min_response_pulse pulse with a quantising
+// encoder, |U| < min_dac_counts counts with a quantising DAC) is flagged with the reason, and left out of margins.
 //
 // Amplitude: amplitude_pulse > 0 is used at every point (and checked as above). amplitude_pulse = 0 (the default
 // of the Python API and the CLI) picks one per point like a careful engineer with the card's Bode tool: the
 // largest that the linear model (tuning/loop_response) predicts keeps the DAC within dac_fraction of full scale
 // and the drive's current command within dac_fraction of its limit, capped at max_amplitude_pulse (travel); when
 // a point still saturates it is run again at half the amplitude (up to 6 times). The amplitudes used are
-// reported per point.
+// reported per point. Over the first quarter of the settling share the amplitude moves from the previous point's
+// to the new one on a raised cosine, so the command's velocity never steps; the first point is preceded by a
+// lead-in of the same length (amplitude rising from 0, discarded) so that its window sees the steady state.
 #pragma once
 
 #include <complex>
@@ -57,7 +59,7 @@ struct SineSweepOptions {
   double min_response_pulse = 4.0;   // |Y| fundamental floor, pulse (encoder quantisation), >= 0
   double min_dac_counts = 30.0;      // |U| fundamental floor, DAC counts (1 count = 0.3 mV), >= 0
   // Automatic amplitude (amplitude_pulse = 0).
-  double dac_fraction = 0.3;         // predicted peak |U| / full scale and |i_cmd| / limit, (0, 1]
+  double dac_fraction = 0.5;         // predicted peak |U| / full scale and |i_cmd| / limit, (0, 1]
   double max_amplitude_pulse = 0;    // travel cap, pulse; 0: one encoder revolution (counts_per_rev)
   // Throws std::invalid_argument naming the field and its range; the update time must hold at least one whole
   // period of the lowest frequency.
