@@ -113,7 +113,8 @@ def relay_autotune(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 
     data_length
         gain sets (limit cycles) to compute, default 200.
     sampling_time_s
-        relay sampling time, s (100..1000 us, default 500 us); rounded to whole servo ticks.
+        relay sampling time, s (100..1000 us, default 500 us); exact: the relay decides at the first servo tick at or
+        after each multiple of it (250 us on a 100 us axis: after 2, 3, 2, 3 ... ticks), at most every tick.
     deviation_limit_pulse
         ``|position error|`` above this stops the tuning, servo off, pulse (0 = off, default 2000).
     max_spread
@@ -151,24 +152,48 @@ def relay_autotune(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 
                            error_pulse=d["error_pulse"], output_v=d["output_v"])
 
 
-def predicted_limit_cycle(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 50.0,
-                          sampling_time_s: float = 500e-6) -> dict:
-    """The limit cycle the describing function predicts for the relay experiment on this axis, computed from the
-    analytic plant (the same lifted model as :func:`servobench.frequency.analytic_response`): the frequency wu where
-    angle P(j wu) = -180 deg + asin(eps / a) with a = (4 d / pi) ``|P(j wu)|``. P is the plant from the relay's volts to
-    the encoder with the one-tick delay, shifted by the sampled relay's mean switching delay (docs/decisions.md R4).
+def _relay_decides(n_ticks: int, servo_period_s: float, sampling_time_s: float) -> np.ndarray:
+    """Per tick: True where the relay decides (the first tick at or after each multiple of its sampling time, as
+    the experiment does; no rounding to whole ticks)."""
+    k = np.arange(n_ticks)
+    s = np.floor(k * (servo_period_s / sampling_time_s) + 1e-9)
+    out = np.ones(n_ticks, dtype=bool)
+    out[1:] = s[1:] != s[:-1]
+    return out
 
-    Returns {"freq_hz", "amplitude_pulse", "ultimate_gain_v_per_pulse" (= 1/``|P|``)}; ValueError if the plant's phase
-    never reaches the needed value (no limit cycle: e.g. an undamped double integrator with hysteresis).
+
+def predicted_limit_cycle(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 50.0,
+                          sampling_time_s: float = 500e-6, cycles: int = 60) -> dict:
+    """The limit cycle the relay experiment of :func:`relay_autotune` settles into on this axis's linear model:
+    the sampled relay with hysteresis (deciding at the first tick at or after each multiple of `sampling_time_s`,
+    exactly as the experiment; no rounding), its one-tick output delay and the plant lifted exactly to the servo rate
+    (the model of :func:`servobench.frequency.analytic_response`) are run together from rest for `cycles` limit
+    cycles; the last half are measured the way the experiment measures them (rising switch to rising switch,
+    single-bin DFT of the error).
+
+    Returns {"freq_hz" (1 / mean period), "period_ticks" and "half_period_ticks" (exact means, not whole ticks),
+    "amplitude_pulse" (fundamental of the error), "ultimate_gain_v_per_pulse" (4 d / (pi a), what the experiment
+    reports), "describing_function": the classic describing-function prediction from the same plant, a relay delayed
+    by half its sampling time beyond the servo tick (decisions R4): {"freq_hz", "amplitude_pulse",
+    "ultimate_gain_v_per_pulse" = 1/``|P|``}}. ValueError if no steady cycle appears (e.g. an undamped double
+    integrator with hysteresis: the oscillation grows) or the describing function predicts none.
     """
+    from . import _core
     from .frequency import analytic_response
 
     ts = axis.servo_period_s
-    tr = max(1, round(sampling_time_s / ts)) * ts
     d, eps = float(amplitude_v), float(hysteresis_pulse)
+    if not (0 < d <= 10):
+        raise ValueError(f"amplitude_v = {amplitude_v} must be in (0, 10] V")
+    if not eps > 0:
+        raise ValueError(f"hysteresis_pulse = {hysteresis_pulse} must be > 0 pulse")
+    if not (100e-6 <= sampling_time_s <= 1000e-6):
+        raise ValueError(f"sampling_time_s = {sampling_time_s} must be in 100e-6..1000e-6 s (ADLINK L1847)")
+    tr = max(float(sampling_time_s), ts)
     law = axis.law
     sign = -1.0 if isinstance(law, _core.ApsServoLaw) and law.v_inverse else 1.0
 
+    # The describing function (kept for reference).
     def point(f):
         f = np.atleast_1d(np.asarray(f, dtype=float))
         p = analytic_response(axis, f).plant * (32767.0 / 10.0) * sign  # pulse per volt
@@ -195,9 +220,53 @@ def predicted_limit_cycle(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: f
         mid = np.sqrt(lo * hi)
         (lo, hi) = (mid, hi) if mismatch(mid)[0] > 0 else (lo, mid)
     fu = np.sqrt(lo * hi)
-    p = point(fu)[0]
-    return {"freq_hz": float(fu), "amplitude_pulse": float(4 * d / np.pi * abs(p)),
-            "ultimate_gain_v_per_pulse": float(1 / abs(p))}
+    p_u = point(fu)[0]
+    df = {"freq_hz": float(fu), "amplitude_pulse": float(4 * d / np.pi * abs(p_u)),
+          "ultimate_gain_v_per_pulse": float(1 / abs(p_u))}
+
+    # The sampled relay on the lifted linear model, tick by tick.
+    a_m, b_m, c_motor, c_load = (np.asarray(x, dtype=float) for x in _core.tick_model(getattr(axis, "_axis", axis)))
+    b_v = b_m[:, 0] if b_m.ndim == 2 else b_m
+    c = (c_load if axis.encoder.on_load else c_motor).reshape(-1) * axis.encoder.counts_per_rev / (2 * np.pi)
+    period_guess = max(4, int(round(1.0 / (df["freq_hz"] * ts))))
+    n_max = int(min(2_000_000, (cycles + 10) * period_guess * 3))
+    decide = _relay_decides(n_max, ts, tr)
+    x = np.zeros(a_m.shape[0])
+    u, v_applied = d, 0.0
+    e_hist = np.empty(n_max)
+    rising = []
+    for k in range(n_max):
+        e = -(c @ x)
+        e_hist[k] = e
+        if decide[k]:
+            if e > eps:
+                if u < 0:
+                    rising.append(k)
+                u = d
+            elif e < -eps:
+                u = -d
+        x = a_m @ x + b_v * v_applied
+        v_applied = sign * u  # reaches the drive one tick later
+        if len(rising) > cycles:
+            break
+    if len(rising) <= cycles or not np.all(np.isfinite(e_hist[:k + 1])):
+        raise ValueError(f"no steady limit cycle on the linear model within {n_max} ticks "
+                         f"({len(rising)} of {cycles} cycles): the relay's oscillation does not settle")
+    r = np.asarray(rising[len(rising) // 2:])
+    amps = []
+    for t0, t1 in zip(r[:-1], r[1:]):
+        n = t1 - t0
+        seg = e_hist[t0:t1]
+        amps.append(2 * abs(np.sum(seg * np.exp(-2j * np.pi * np.arange(n) / n))) / n)
+    a_mean = float(np.mean(amps))
+    growth = abs(amps[-1] / amps[0] - 1) if amps[0] > 0 else np.inf
+    if growth > 0.02:
+        raise ValueError(f"no steady limit cycle on the linear model: the cycle's amplitude still changes by "
+                         f"{100 * growth:.1f} % over the measured cycles (it grows: no limit cycle for this relay)")
+    period = float(np.mean(np.diff(r)))
+    return {"freq_hz": 1.0 / (period * ts), "period_ticks": period, "half_period_ticks": period / 2,
+            "amplitude_pulse": a_mean, "ultimate_gain_v_per_pulse": 4 * d / (np.pi * a_mean),
+            "describing_function": df}
 
 
 @dataclass(frozen=True)

@@ -191,8 +191,14 @@ Margins analytic_margins(const machine::AxisConfig& config, const std::vector<do
     f2.push_back(f[i]);
     l2.push_back(v);
   }
+  const Stability verdict = pole_stability(loop_poles(config, options));
+  if (f2.size() < 2) {  // no loop gain at all (every gain 0): stability only
+    Margins m;
+    m.stability = verdict;
+    return m;
+  }
   MarginsOptions o;
-  o.stability = pole_stability(loop_poles(config, options));
+  o.stability = verdict;
   o.loop_gain_at = at;
   if (f2.back() > 0.45 / ts) o.nyquist_hz = nyq;
   return margins(f2, l2, {}, o);
