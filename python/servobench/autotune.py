@@ -39,6 +39,9 @@ class RelayTuneResult:
         gain_pulse_per_v and phase_deg (the describing-function point), kp, ki, kd.
     error_pulse, output_v
         the experiment's record per servo tick.
+    phase_margin_deg, min_gain_margin_db
+        the design target (deg; None for a classic rule's gains) and the gain-margin floor (dB) that :meth:`apply`
+        checks the tuned loop against.
     """
 
     status: str
@@ -59,6 +62,8 @@ class RelayTuneResult:
     cycles: dict = field(repr=False)
     error_pulse: np.ndarray = field(repr=False)
     output_v: np.ndarray = field(repr=False)
+    phase_margin_deg: float | None = None
+    min_gain_margin_db: float = 6.0
 
     def gt_law(self, base=None):
         """The result as GT servo-filter gains (Kp, Ki with its /256, Kd; feed-forward 0), integers in 0..32767
@@ -81,15 +86,31 @@ class RelayTuneResult:
         ku = self.ultimate_gain_v_per_pulse * 32767.0 / 10.0  # counts per pulse
         g = _core.classic_rule(name, ku, 1.0 / self.ultimate_freq_hz, self.servo_period_s)
         return dataclasses.replace(self, kp=g["kp"], ki=g["ki"], kd=g["kd"], kc=g["kc"], ti_s=g["ti_s"],
-                                   td_s=g["td_s"], message=f"{name} rule from the same experiment")
+                                   td_s=g["td_s"], message=f"{name} rule from the same experiment",
+                                   phase_margin_deg=None)
 
-    def apply(self, axis) -> None:
-        """The manual's "Set final" (L1820): writes the gains to the axis's law, switches feed-forward and filters
-        off, and turns the servo on."""
+    def apply(self, axis, *, force: bool = False, verify: bool = True, pm_tolerance_deg: float = 5.0,
+              min_gain_margin_db: float | None = None):
+        """The manual's "Set final" (L1820), checked first: writes the gains to the axis's law, switches
+        feed-forward and filters off, and turns the servo on, but only when the tuned loop passes
+        :func:`servobench.tune_check.check_design` (closed-loop poles, phase margin within ``pm_tolerance_deg`` deg
+        of the design target, gain margin >= ``min_gain_margin_db`` dB (default: this result's floor, 6 dB), on the
+        model and by a verification sweep when `verify`). Raises :class:`servobench.tune_check.TuningRefused` with
+        the report otherwise; ``force=True`` applies anyway. Returns the :class:`~servobench.tune_check.TuneCheck`."""
+        from .tune_check import TuningRefused, check_design
+
+        if self.status != "completed":
+            raise ValueError(f"relay tuning did not complete ({self.status}: {self.message}): nothing to apply")
         law = self.gt_law(axis.law) if isinstance(axis.law, _core.GtServoLaw) else self.aps_law(axis.law)
+        floor = self.min_gain_margin_db if min_gain_margin_db is None else float(min_gain_margin_db)
+        check = check_design(axis, law, (None, None), target_phase_margin_deg=self.phase_margin_deg,
+                             pm_tolerance_deg=pm_tolerance_deg, min_gain_margin_db=floor, verify=verify)
+        if not check.accepted and not force:
+            raise TuningRefused(check)
         axis.set_law(law)
         axis.set_filters((None, None))
         axis.set_servo_on(True)
+        return check
 
 
 def _law(res, kind, base):
@@ -103,7 +124,7 @@ def _law(res, kind, base):
 def relay_autotune(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 50.0, data_length: int = 200,
                    sampling_time_s: float = 500e-6, deviation_limit_pulse: float = 2000.0, max_spread: float = 0.10,
                    phase_margin_deg: float = 60.0, alpha: float = 4.0, settle_cycles: int = 3,
-                   max_cycle_s: float = 10.0, progress=None) -> RelayTuneResult:
+                   max_cycle_s: float = 10.0, progress=None, min_gain_margin_db: float = 6.0) -> RelayTuneResult:
     """Relay auto-tuning on a simulated axis, with the ADLINK card's parameters and defaults (L1842-1847).
 
     amplitude_v
@@ -125,6 +146,8 @@ def relay_autotune(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 
         first limit cycles discarded; max_cycle_s: give up when no cycle completes within this time, s.
     progress
         None, True (text bar on stderr) or callable(done, total) -> bool (False: the user's Stop).
+    min_gain_margin_db
+        the gain-margin floor (dB, 0..60, default 6) :meth:`RelayTuneResult.apply` checks the tuned loop against.
 
     The servo law is replaced by the relay during the experiment and the servo is left off at the end (apply the
     result with :meth:`RelayTuneResult.apply`). A relay with hysteresis needs a plant whose phase lies above -180
@@ -134,6 +157,8 @@ def relay_autotune(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 
     """
     from .frequency import _progress_callback
 
+    if not (0 <= float(min_gain_margin_db) <= 60):
+        raise ValueError(f"relay_autotune.min_gain_margin_db = {min_gain_margin_db} is outside the allowed range 0..60 dB")
     d = _core.relay_autotune(getattr(axis, "_axis", axis), amplitude_v=float(amplitude_v),
                              hysteresis_pulse=float(hysteresis_pulse), data_length=float(data_length),
                              sampling_time_s=float(sampling_time_s), deviation_limit_pulse=float(deviation_limit_pulse),
@@ -149,7 +174,8 @@ def relay_autotune(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 
                            ultimate_freq_hz=d["ultimate_freq_hz"],
                            ultimate_gain_v_per_pulse=d["ultimate_gain_v_per_pulse"],
                            sampling_time_s=d["sampling_time_s"], servo_period_s=axis.servo_period_s, cycles=cycles,
-                           error_pulse=d["error_pulse"], output_v=d["output_v"])
+                           error_pulse=d["error_pulse"], output_v=d["output_v"],
+                           phase_margin_deg=float(phase_margin_deg), min_gain_margin_db=float(min_gain_margin_db))
 
 
 def _relay_decides(n_ticks: int, servo_period_s: float, sampling_time_s: float) -> np.ndarray:
@@ -303,6 +329,8 @@ class ModelTuneResult:
         gain_margin_db, ms, max_pole_radius, pid_lead_deg, feasible, and the list reason.
     summary
         the self-explaining report.
+    phase_margin_deg, min_gain_margin_db
+        the design's target (deg) and gain-margin floor (dB), which :meth:`apply` checks the loop against.
     """
 
     kp: float
@@ -325,6 +353,8 @@ class ModelTuneResult:
     servo_period_s: float
     scan: dict = field(repr=False)
     summary: str = field(repr=False)
+    phase_margin_deg: float = 60.0
+    min_gain_margin_db: float = 10.0
 
     def __str__(self) -> str:
         return self.summary
@@ -337,13 +367,25 @@ class ModelTuneResult:
         """The gains as ADLINK gains: integers 0..65535 with per-term shifts (PID_SHIFT -5; feed-forward 0)."""
         return _law(self, "aps", base)
 
-    def apply(self, axis) -> None:
+    def apply(self, axis, *, force: bool = False, verify: bool = True, pm_tolerance_deg: float = 5.0):
         """Writes the gains to the axis's law (its own kind: GT or ADLINK, feed-forward 0), the notch to biquad 0
-        and pass-through to biquad 1, and turns the servo on."""
+        and pass-through to biquad 1, and turns the servo on, but only when the loop passes
+        :func:`servobench.tune_check.check_design` (closed-loop poles, the phase margin within ``pm_tolerance_deg``
+        deg of the target and no crossover nearer to -1, gain margin >= the design's ``min_gain_margin_db``, on the model and
+        by a verification sweep when `verify`). Raises :class:`servobench.tune_check.TuningRefused` with the report
+        otherwise; ``force=True`` applies anyway. Returns the :class:`~servobench.tune_check.TuneCheck`."""
+        from .tune_check import TuningRefused, check_design
+
         law = self.gt_law(axis.law) if isinstance(axis.law, _core.GtServoLaw) else self.aps_law(axis.law)
+        check = check_design(axis, law, self.filters, target_phase_margin_deg=self.phase_margin_deg,
+                             pm_tolerance_deg=pm_tolerance_deg, min_gain_margin_db=self.min_gain_margin_db,
+                             verify=verify)
+        if not check.accepted and not force:
+            raise TuningRefused(check)
         axis.set_law(law)
         axis.set_filters(self.filters)
         axis.set_servo_on(True)
+        return check
 
 
 def model_based_tune(axis, *, phase_margin_deg: float = 60.0, alpha: float = 4.0, notch: bool = True,
@@ -386,7 +428,7 @@ def model_based_tune(axis, *, phase_margin_deg: float = 60.0, alpha: float = 4.0
     or when no crossover meets the bounds (the message names the bounds to relax and the nearest miss).
     Releases the GIL; about 0.1-0.5 s.
     """
-    from .frequency import Margins
+    from .frequency import _margins_from
 
     if resonance_hz is not None and float(resonance_hz) == 0.0:
         raise ValueError("model_based_tune.resonance_hz = 0 is outside the allowed range 0 < f < Nyquist; "
@@ -402,11 +444,12 @@ def model_based_tune(axis, *, phase_margin_deg: float = 60.0, alpha: float = 4.0
                          candidates=float(candidates), points=float(points), law="axis" if law is None else str(law))
     p = d["pid"]
     return ModelTuneResult(kp=p["kp"], ki=p["ki"], kd=p["kd"], kc=p["kc"], ti_s=p["ti_s"], td_s=p["td_s"],
-                           crossover_hz=d["crossover_hz"], margins=Margins(**d["margins"]),
+                           crossover_hz=d["crossover_hz"], margins=_margins_from(d["margins"], "analytic model"),
                            max_pole_radius=d["max_pole_radius"], law=d["law"], filters=tuple(d["filters"]),
                            resonances=list(d["resonances"]), resonance_hz=d["resonance_hz"],
                            resonance_prominence_db=d["resonance_prominence_db"], notch=dict(d["notch"]),
                            crossover_without_notch_hz=d["crossover_without_notch_hz"], limited_by=d["limited_by"],
                            servo_period_s=axis.servo_period_s,
                            scan={k: (list(v) if k == "reason" else np.asarray(v)) for k, v in d["scan"].items()},
-                           summary=d["summary"])
+                           summary=d["summary"], phase_margin_deg=float(phase_margin_deg),
+                           min_gain_margin_db=float(min_gain_margin_db))

@@ -114,24 +114,7 @@ def _margins_dict(m) -> dict:
     return dataclasses.asdict(m)
 
 
-def _measured_margins(meas):
-    """Margins of a measured open loop from the points where the response was seen (at high frequency the
-    encoder may not see the axis move at all: |Y| = 0 there); (dict or None, note)."""
-    from .frequency import margins
-
-    ol, cl = np.asarray(meas.open_loop), np.asarray(meas.closed_loop)
-    ok = np.isfinite(ol) & (ol != 0) & np.isfinite(cl)
-    note = "" if ok.all() else (f"{int((~ok).sum())} of {len(ol)} points left out: the encoder saw no motion "
-                                "there (response 0)")
-    if ok.sum() < 2:
-        return None, note or "fewer than 2 points"
-    try:
-        return _margins_dict(margins(meas.freq_hz[ok], ol[ok], cl[ok])), note
-    except ValueError as e:
-        return None, str(e)
-
-
-def _linearity_note(axis, measured: dict | None, analytic: dict | None, amplitude_pulse: float,
+def _linearity_note(axis, measured: dict | None, analytic: dict | None, amplitude_pulse,
                     tolerance_deg: float = 3.0) -> str:
     """Why a measured phase margin differs from the analytic one by more than ``tolerance_deg``: the analytic loop
     linearises the plant (friction, cogging, unbalance and load torques are left out), so a small sweep amplitude
@@ -145,7 +128,8 @@ def _linearity_note(axis, measured: dict | None, analytic: dict | None, amplitud
     fields = ("coulomb_nm", "static_nm", "motor_coulomb_nm", "motor_static_nm", "load_coulomb_nm",
               "load_static_nm", "cogging_nm", "unbalance_nm", "load_nm")
     nonlinear = [f"{f} {getattr(axis.plant, f):g} N*m" for f in fields if getattr(axis.plant, f, 0.0)]
-    why = (f"the plant has {', '.join(nonlinear)}, which the analytic loop leaves out; at {amplitude_pulse:g} pulse "
+    amp = "the automatic amplitude" if amplitude_pulse is None else f"{amplitude_pulse:g} pulse"
+    why = (f"the plant has {', '.join(nonlinear)}, which the analytic loop leaves out; at {amp} "
            f"of sine amplitude they are a large share of the torque (a larger --amplitude-pulse measures closer to "
            f"the linear loop)") if nonlinear else \
         "the plant is linear: look at the sweep's coherence and the DAC/encoder quantisation at this amplitude"
@@ -427,6 +411,7 @@ def cmd_tune(args) -> int:
     from . import frequency as fr
     from .autotune import model_based_tune, relay_autotune
     from .axisfile import save_axis
+    from .frequency import Margins
     from .plot import _pyplot, bode
 
     axis, data = _load(args.axis)
@@ -479,10 +464,27 @@ def cmd_tune(args) -> int:
         specs = None
     before, _ = _load(args.axis)
     after, _ = _load(args.axis)
+    from .tune_check import TuningRefused
+
     try:
-        res.apply(after)
+        check = res.apply(after, force=args.force)
+    except TuningRefused as e:
+        report["check"] = {"accepted": False, "failures": e.check.failures,
+                           "model_margins": _margins_dict(e.check.model),
+                           "measured_margins": None if e.check.measured is None else _margins_dict(e.check.measured),
+                           "measured_note": e.check.measured_note}
+        print(str(e.check))
+        out.json("tune", report, "tuning report (refused)")
+        raise WorkFailed("REFUSED: the tuned loop fails its check (" + "; ".join(e.check.failures) +
+                         "); --force applies it anyway") from None
     except ValueError as e:
         raise WorkFailed(f"the gains do not fit the card's law: {e}") from None
+    report["check"] = {"accepted": check.accepted, "forced": bool(args.force and not check.accepted),
+                       "failures": check.failures, "model_margins": _margins_dict(check.model),
+                       "measured_margins": None if check.measured is None else _margins_dict(check.measured),
+                       "measured_note": check.measured_note}
+    if not args.quiet:
+        print(str(check))
     report["before"] = {"law": before.law.to_dict()}
     report["after"] = {"law": after.law.to_dict(),
                        "filters": [None if f is None else {"type": type(f).__name__, **f.to_dict()}
@@ -504,20 +506,30 @@ def cmd_tune(args) -> int:
     ana_after = fr.analytic_response(after, dense)
     report["before"]["analytic_margins"] = _margins_dict(ana_before.margins())
     report["after"]["analytic_margins"] = _margins_dict(ana_after.margins())
-    curves = {"before (analytic)": ana_before, "after (analytic)": ana_after}
+    curves = {"before, model (analytic)": ana_before, "after, model (analytic)": ana_after}
+    mm = None
     if not args.no_sweep:
         swept, _ = _load(args.axis)
-        res.apply(swept)
+        res.apply(swept, force=True, verify=False)
         meas = fr.sine_sweep(swept, start_hz=args.start_hz, end_hz=f_hi, amplitude_pulse=args.amplitude_pulse,
                              points=args.points, update_s=0.1, progress=_progress(args))
         report["after"]["sweep"] = {"status": meas.status, "message": meas.message, "points": len(meas),
-                                    "band_hz": [args.start_hz, f_hi], "amplitude_pulse": args.amplitude_pulse}
-        mm, note = _measured_margins(meas)
+                                    "band_hz": [args.start_hz, f_hi],
+                                    "amplitude_pulse": "auto" if args.amplitude_pulse is None else args.amplitude_pulse,
+                                    "amplitude_pulse_used": np.asarray(meas.signals["amplitude_pulse"])}
+        try:
+            mmo = meas.margins()
+            mm, note = _margins_dict(mmo), mmo.note
+        except ValueError as e:
+            mm, note = None, str(e)
         report["after"]["measured_margins"], report["after"]["measured_margins_note"] = mm, note
+        from .agreement import model_agreement
+
+        report["after"]["model_agreement"] = model_agreement(swept, meas)["summary"] if len(meas) else ""
         lin = _linearity_note(swept, mm, report["after"]["analytic_margins"], args.amplitude_pulse)
         report["after"]["linearity_note"] = lin
         if len(meas) >= 2:
-            curves["after (measured, stepped sine)"] = meas
+            curves["after, measured (stepped sine)"] = meas
         if not args.quiet and mm is not None:
             from .frequency import Margins
 
@@ -555,7 +567,9 @@ def cmd_tune(args) -> int:
     fig.suptitle(f"servobench tune ({args.method}): {stem}, {args.step_pulse:g} pulse step before and after", fontsize=10)
     out.figure("tune_step", fig, "step response before and after")
     with np.errstate(divide="ignore", invalid="ignore"):  # a measured point the encoder did not see: gain 0
-        fig = bode(dense, curves, which="open_loop", margins=ana_after.margins(),
+        fig = bode(dense, curves, which="open_loop",
+                   margins={"after, model (analytic)": ana_after.margins(),
+                            **({"after, measured (stepped sine)": Margins(**mm)} if mm else {})},
                    title=f"servobench tune ({args.method}): {stem}, open loop before and after")
     out.figure("tune_bode", fig, "Bode plot of the open loop before and after (margins of the tuned loop)")
     return EXIT_OK
@@ -865,7 +879,11 @@ def build_parser() -> argparse.ArgumentParser:
     v.add_argument("--start-hz", type=float, default=10.0, help="verification sweep and Bode plot from, Hz")
     v.add_argument("--end-hz", type=float, default=1000.0, help="... to, Hz (capped at 0.9 Nyquist)")
     v.add_argument("--points", type=int, default=40, help="verification sweep points")
-    v.add_argument("--amplitude-pulse", type=float, default=20.0, help="verification sweep amplitude, pulse")
+    v.add_argument("--amplitude-pulse", type=float, default=None,
+                   help="verification sweep amplitude, pulse (default: chosen per point, out of saturation)")
+    v.add_argument("--force", action="store_true",
+                   help="write the tuned axis even when the tuned loop fails its check (stability, PM within 5 deg of "
+                        "the target, gain-margin floor; model and verification sweep)")
     v.add_argument("--no-sweep", action="store_true", help="skip the measured sweep of the tuned loop")
     t.set_defaults(func=cmd_tune)
 
