@@ -629,7 +629,8 @@ def _measure_with(axis, feedforward: bool, filters: bool):
 def broadband_response(axis, *, excitation: str = "multisine", start_hz: float = 10.0, end_hz: float | None = None,
                        amplitude_pulse: float = 10.0, lines: int | None = 1000, period_ticks: int | None = None,
                        periods: int = 4, duration_s: float | None = None, rest_s: float = 0.5,
-                       feedforward: bool = False, filters: bool = True) -> FrequencyResponse:
+                       feedforward: bool = False, filters: bool = True,
+                       min_coherence: float = 0.99) -> FrequencyResponse:
     """A whole frequency response from one closed-loop run with a broadband command R (the fast alternative to
     the stepped sine). The H1 estimates use R as the reference: Y/R = S_RY/S_RR, Y/E = S_RY/S_RE,
     Y/U = S_RY/S_RU (the indirect closed-loop method: unbiased by anything that enters the loop after R).
@@ -649,6 +650,10 @@ def broadband_response(axis, *, excitation: str = "multisine", start_hz: float =
         peak amplitude of R, pulse.
     feedforward, filters
         as for :func:`sine_sweep`.
+    min_coherence
+        lines whose coherence is below this (0..1; with periods > 1) are flagged; when any tick of the run saturated
+        (DAC, current command or torque limit; counts in ``signals``) every line is flagged. Flagged lines are left
+        out of margins (``flags``).
 
     The axis continues from its present state around its last command position. Returns a
     :class:`FrequencyResponse` with ``coherence`` (magnitude-squared, R to Y).
@@ -675,7 +680,7 @@ def broadband_response(axis, *, excitation: str = "multisine", start_hz: float =
                 period_ticks = n_min
             x, bins = multisine(start_hz=start_hz, end_hz=end_hz, period_ticks=period_ticks, servo_period_s=ts,
                                 amplitude=amplitude_pulse, lines=lines, periods=int(periods) + 1)
-            run = axis.run(base + x, signals=("fb_pos", "error", "biquad1"))
+            run = axis.run(base + x, signals=("fb_pos", "error", "biquad1", "u", "volts", "torque_nm"))
             n = int(period_ticks)
             seg = slice(n, None)  # drop the settling period
 
@@ -711,7 +716,7 @@ def broadband_response(axis, *, excitation: str = "multisine", start_hz: float =
             n = len(record)
             axis.run(np.full(n_rest, base), signals=())  # settle whatever ran before, at the base position
             x = np.tile(record, int(periods))
-            run = axis.run(base + x, signals=("fb_pos", "error", "biquad1"))
+            run = axis.run(base + x, signals=("fb_pos", "error", "biquad1", "u", "volts", "torque_nm"))
             freq_all = np.fft.rfftfreq(n, ts)
             in_band = np.nonzero((freq_all >= start_hz) & (freq_all <= end_hz))[0]
             if lines is not None and lines < len(in_band):
@@ -733,10 +738,42 @@ def broadband_response(axis, *, excitation: str = "multisine", start_hz: float =
             coh = np.abs(s_ry) ** 2 / (s_rr * s_yy) if periods > 1 else np.ones(len(freq))
         else:
             raise ValueError(f"excitation = {excitation!r} must be 'multisine' or 'chirp'")
+    sat = _saturated_ticks(axis, run)
+    coh = np.clip(coh, 0.0, 1.0)
+    flags = []
+    run_flag = "; ".join(f"{k.replace('_', ' ')} {v} ticks" for k, v in sat.items() if v)
+    for c in coh:
+        why = [run_flag] if run_flag else []
+        if periods > 1 and c < min_coherence:
+            why.append(f"coherence {c:.4g} < {min_coherence:g}")
+        flags.append("; ".join(why))
+    n_bad = sum(1 for f_ in flags if f_)
+    integ = _core.loop_poles(_core_axis(axis), bool(filters))
     return FrequencyResponse(freq_hz=freq, plant=s_ry / s_ru, open_loop=s_ry / s_re, closed_loop=s_ry / s_rr,
                              method=excitation, servo_period_s=ts, feedforward=bool(feedforward),
-                             filters=bool(filters), coherence=np.clip(coh, 0.0, 1.0), status="completed",
-                             message=f"{excitation}: {len(freq)} lines, {len(x)} ticks")
+                             filters=bool(filters), coherence=coh, status="completed",
+                             message=f"{excitation}: {len(freq)} lines, {len(x)} ticks" +
+                             (f"; {n_bad} lines flagged" + (f" (the run saturated: {run_flag})" if run_flag else "")
+                              if n_bad else "; every line passed the checks"),
+                             signals={k: np.array([v]) for k, v in sat.items()}, flags=flags,
+                             integrators=int(integ["integrators"]),
+                             open_loop_unstable_poles=int(integ["open_loop_unstable"]))
+
+
+def _saturated_ticks(axis, run) -> dict:
+    """Ticks of a run at which the output stage or the drive saturated: DAC at full scale or the law's output at
+    +-32767 counts, the torque drive's current command clamped, the torque at the velocity drive's limit."""
+    volts, u, u1, torque = (np.abs(np.asarray(getattr(run, k))) for k in ("volts", "u", "biquad1", "torque_nm"))
+    dac = int(np.sum((volts >= axis.dac.full_scale_v * (1 - 1e-9)) | (u >= 32767) | (u1 >= 32767)))
+    cur = trq = 0
+    drv = axis.drive
+    if isinstance(drv, _core.TorqueDrive):
+        limit = min(drv.current_limit_a, drv.torque_limit_nm / drv.kt)
+        cur = int(np.sum(drv.amps_per_volt * volts >= limit * (1 - 1e-9)))
+    elif isinstance(drv, _core.VelocityDrive):
+        limit = min(drv.torque_limit_nm, drv.current_limit_a * drv.kt)
+        trq = int(np.sum(torque >= limit * (1 - 1e-9)))
+    return {"dac_saturated_ticks": dac, "current_saturated_ticks": cur, "torque_saturated_ticks": trq}
 
 
 # ----------------------------------------------------------------------------------------------------------------
