@@ -28,8 +28,9 @@
 // and the drive's current command within dac_fraction of its limit, capped at max_amplitude_pulse (travel); when
 // a point still saturates it is run again at half the amplitude (up to 6 times). The amplitudes used are
 // reported per point. Over the first quarter of the settling share the amplitude moves from the previous point's
-// to the new one on a raised cosine, so the command's velocity never steps; the first point is preceded by a
-// lead-in of the same length (amplitude rising from 0, discarded) so that its window sees the steady state.
+// to the new one on a raised cosine, so the command's velocity never steps; with the automatic amplitude the first
+// point is preceded by a lead-in of the same length (amplitude rising from 0, discarded) so that its window sees the
+// steady state (a given amplitude keeps the manual's timing, points x update_s).
 #pragma once
 
 #include <complex>
