@@ -413,7 +413,7 @@ class FrequencyResponse:
 
     def plot(self, which=("plant", "open_loop", "closed_loop"), *, path: str | None = None, title: str | None = None):
         """Bode plot of the chosen responses (see :func:`servobench.plot.bode`); margins are annotated when the open
-        loop is drawn. Returns the Figure."""
+        loop is drawn. Returns the :class:`servobench.plot.Plot`."""
         from . import plot
 
         return plot.bode(self, which=which, path=path, title=title)
