@@ -97,7 +97,7 @@ def run(quick: bool = False, repeat: int | None = None) -> benchlib.Result:
     for label, two_mass in (("rigid demo axis", False), ("two-mass axis", True)):
         def sweep():
             axis = demo_axis_10k(two_mass)
-            return fr.sine_sweep(axis)
+            return fr.sine_sweep(axis, amplitude_pulse=300)  # the manual's example (the default is automatic)
         t, meas = best_of(sweep, repeat)
         assert meas.status == "completed" and meas.signals["ticks"] == 100_000
         sweep_ms[label] = t * 1e3

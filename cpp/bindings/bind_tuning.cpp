@@ -17,6 +17,7 @@
 #include "servobench/tuning/model_tune.hpp"
 #include "servobench/tuning/relay_autotune.hpp"
 #include "servobench/tuning/sine_sweep.hpp"
+#include "servobench/tuning/stability.hpp"
 
 namespace servobench::bindings {
 
@@ -36,6 +37,24 @@ py::dict margins_dict(const tuning::Margins& mg) {
   d["bandwidth_hz"] = mg.bandwidth_hz;
   d["ms"] = mg.ms;
   d["ms_freq_hz"] = mg.ms_freq_hz;
+  const tuning::Stability& st = mg.stability;
+  d["stability"] = py::dict(py::arg("decided") = st.decided, py::arg("stable") = st.stable,
+                            py::arg("method") = st.method, py::arg("reason") = st.reason,
+                            py::arg("max_pole_radius") = st.max_pole_radius,
+                            py::arg("unstable_poles") = st.unstable_poles,
+                            py::arg("open_loop_unstable_poles") = st.open_loop_unstable_poles,
+                            py::arg("integrators") = st.integrators);
+  std::vector<double> gf, gp, pf, pg;
+  for (const auto& c : mg.gain_crossovers) {
+    gf.push_back(c.freq_hz);
+    gp.push_back(c.phase_margin_deg);
+  }
+  for (const auto& c : mg.phase_crossovers) {
+    pf.push_back(c.freq_hz);
+    pg.push_back(c.gain_margin_db);
+  }
+  d["gain_crossovers"] = py::dict(py::arg("freq_hz") = to_array(gf), py::arg("phase_margin_deg") = to_array(gp));
+  d["phase_crossovers"] = py::dict(py::arg("freq_hz") = to_array(pf), py::arg("gain_margin_db") = to_array(pg));
   return d;
 }
 
@@ -87,7 +106,8 @@ void bind_tuning(py::module_& m) {
       "sine_sweep",
       [](machine::Axis& axis, double start_hz, double end_hz, double amplitude_pulse, double points, double update_s,
          double deviation_limit_pulse, double settle_fraction, bool feedforward, bool filters,
-         const py::object& progress) {
+         const py::object& progress, double min_coherence, double max_distortion, double min_response_pulse,
+         double min_dac_counts, double dac_fraction, double max_amplitude_pulse) {
         tuning::SineSweepOptions o;
         o.start_hz = start_hz;
         o.end_hz = end_hz;
@@ -99,6 +119,12 @@ void bind_tuning(py::module_& m) {
         o.settle_fraction = settle_fraction;
         o.loop.feedforward = feedforward;
         o.loop.filters = filters;
+        o.min_coherence = min_coherence;
+        o.max_distortion = max_distortion;
+        o.min_response_pulse = min_response_pulse;
+        o.min_dac_counts = min_dac_counts;
+        o.dac_fraction = dac_fraction;
+        o.max_amplitude_pulse = max_amplitude_pulse;
         o.validate(axis.servo_period_s());
         const tuning::SweepProgress cb = progress_callback(progress);
         tuning::SineSweepResult r;
@@ -121,23 +147,68 @@ void bind_tuning(py::module_& m) {
         d["ticks"] = r.ticks;
         d["stop_time_s"] = r.stop_time_s;
         d["stop_error_pulse"] = r.stop_error_pulse;
+        d["amplitude_pulse"] = to_array(r.amplitude_pulse);
+        d["torque_amplitude_nm"] = to_array(r.torque_amplitude_nm);
+        d["dac_saturated_ticks"] = to_array(r.dac_saturated_ticks);
+        d["current_saturated_ticks"] = to_array(r.current_saturated_ticks);
+        d["torque_saturated_ticks"] = to_array(r.torque_saturated_ticks);
+        d["tries"] = to_array(r.tries);
+        d["flag"] = r.flag;
+        const tuning::LoopPoles poles = tuning::loop_poles(axis.config(), o.loop);
+        d["integrators"] = poles.integrators;
+        d["open_loop_unstable_poles"] = poles.open_loop_unstable;
         return d;
       },
       py::arg("axis"), py::kw_only(), py::arg("start_hz"), py::arg("end_hz"), py::arg("amplitude_pulse"),
       py::arg("points"), py::arg("update_s"), py::arg("deviation_limit_pulse"), py::arg("settle_fraction"),
-      py::arg("feedforward"), py::arg("filters"), py::arg("progress") = py::none(),
+      py::arg("feedforward"), py::arg("filters"), py::arg("progress") = py::none(), py::arg("min_coherence") = 0.99,
+      py::arg("max_distortion") = 0.05, py::arg("min_response_pulse") = 4.0, py::arg("min_dac_counts") = 30.0,
+      py::arg("dac_fraction") = 0.5, py::arg("max_amplitude_pulse") = 0.0,
       "Stepped-sine sweep on the axis (ADLINK Bode tool). Releases the GIL.");
 
   m.def(
+      "analytic_margins",
+      [](const machine::Axis& axis, const py::object& freq, bool filters) {
+        std::vector<double> f;
+        if (!freq.is_none()) f = real_vector(freq, "freq_hz");
+        tuning::LoopOptions o;
+        o.filters = filters;
+        tuning::Margins mg;
+        {
+          py::gil_scoped_release release;
+          mg = tuning::analytic_margins(axis.config(), f, o);
+        }
+        return margins_dict(mg);
+      },
+      py::arg("axis"), py::arg("freq_hz") = py::none(), py::arg("filters") = true,
+      "Margins of the axis's analytic loop: stability from the closed-loop poles, crossings refined on the exact L.");
+  m.def(
+      "loop_poles",
+      [](const machine::Axis& axis, bool filters) {
+        tuning::LoopOptions o;
+        o.filters = filters;
+        const tuning::LoopPoles p = tuning::loop_poles(axis.config(), o);
+        return py::dict(py::arg("closed_loop") = to_array(p.closed_loop), py::arg("open_loop") = to_array(p.open_loop),
+                        py::arg("max_radius") = p.max_radius, py::arg("integrators") = p.integrators,
+                        py::arg("open_loop_unstable") = p.open_loop_unstable);
+      },
+      py::arg("axis"), py::arg("filters") = true, "Closed- and open-loop poles of the axis's linear loop (z).");
+
+  m.def(
       "margins",
-      [](const py::object& freq, const py::object& loop_gain, const py::object& closed_loop) {
+      [](const py::object& freq, const py::object& loop_gain, const py::object& closed_loop, int open_loop_unstable_poles,
+         int integrators) {
         const auto f = real_vector(freq, "freq_hz");
         const auto l = complex_vector(loop_gain, "loop_gain");
         std::vector<std::complex<double>> t;
         if (!closed_loop.is_none()) t = complex_vector(closed_loop, "closed_loop");
-        return margins_dict(tuning::margins(f, l, t));
+        tuning::MarginsOptions o;
+        o.open_loop_unstable_poles = open_loop_unstable_poles;
+        o.integrators = integrators;
+        return margins_dict(tuning::margins(f, l, t, o));
       },
       py::arg("freq_hz"), py::arg("loop_gain"), py::arg("closed_loop") = py::none(),
+      py::arg("open_loop_unstable_poles") = 0, py::arg("integrators") = -1,
       "Gain/phase/delay margins, closed-loop bandwidth and peak sensitivity from frequency-response data.");
 
   m.def(

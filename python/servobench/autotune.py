@@ -39,6 +39,9 @@ class RelayTuneResult:
         gain_pulse_per_v and phase_deg (the describing-function point), kp, ki, kd.
     error_pulse, output_v
         the experiment's record per servo tick.
+    phase_margin_deg, min_gain_margin_db
+        the design target (deg; None for a classic rule's gains) and the gain-margin floor (dB) that :meth:`apply`
+        checks the tuned loop against.
     """
 
     status: str
@@ -59,6 +62,8 @@ class RelayTuneResult:
     cycles: dict = field(repr=False)
     error_pulse: np.ndarray = field(repr=False)
     output_v: np.ndarray = field(repr=False)
+    phase_margin_deg: float | None = None
+    min_gain_margin_db: float = 6.0
 
     def gt_law(self, base=None):
         """The result as GT servo-filter gains (Kp, Ki with its /256, Kd; feed-forward 0), integers in 0..32767
@@ -81,15 +86,31 @@ class RelayTuneResult:
         ku = self.ultimate_gain_v_per_pulse * 32767.0 / 10.0  # counts per pulse
         g = _core.classic_rule(name, ku, 1.0 / self.ultimate_freq_hz, self.servo_period_s)
         return dataclasses.replace(self, kp=g["kp"], ki=g["ki"], kd=g["kd"], kc=g["kc"], ti_s=g["ti_s"],
-                                   td_s=g["td_s"], message=f"{name} rule from the same experiment")
+                                   td_s=g["td_s"], message=f"{name} rule from the same experiment",
+                                   phase_margin_deg=None)
 
-    def apply(self, axis) -> None:
-        """The manual's "Set final" (L1820): writes the gains to the axis's law, switches feed-forward and filters
-        off, and turns the servo on."""
+    def apply(self, axis, *, force: bool = False, verify: bool = True, pm_tolerance_deg: float = 5.0,
+              min_gain_margin_db: float | None = None):
+        """The manual's "Set final" (L1820), checked first: writes the gains to the axis's law, switches
+        feed-forward and filters off, and turns the servo on, but only when the tuned loop passes
+        :func:`servobench.tune_check.check_design` (closed-loop poles, phase margin within ``pm_tolerance_deg`` deg
+        of the design target, gain margin >= ``min_gain_margin_db`` dB (default: this result's floor, 6 dB), on the
+        model and by a verification sweep when `verify`). Raises :class:`servobench.tune_check.TuningRefused` with
+        the report otherwise; ``force=True`` applies anyway. Returns the :class:`~servobench.tune_check.TuneCheck`."""
+        from .tune_check import TuningRefused, check_design
+
+        if self.status != "completed":
+            raise ValueError(f"relay tuning did not complete ({self.status}: {self.message}): nothing to apply")
         law = self.gt_law(axis.law) if isinstance(axis.law, _core.GtServoLaw) else self.aps_law(axis.law)
+        floor = self.min_gain_margin_db if min_gain_margin_db is None else float(min_gain_margin_db)
+        check = check_design(axis, law, (None, None), target_phase_margin_deg=self.phase_margin_deg,
+                             pm_tolerance_deg=pm_tolerance_deg, min_gain_margin_db=floor, verify=verify)
+        if not check.accepted and not force:
+            raise TuningRefused(check)
         axis.set_law(law)
         axis.set_filters((None, None))
         axis.set_servo_on(True)
+        return check
 
 
 def _law(res, kind, base):
@@ -103,7 +124,7 @@ def _law(res, kind, base):
 def relay_autotune(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 50.0, data_length: int = 200,
                    sampling_time_s: float = 500e-6, deviation_limit_pulse: float = 2000.0, max_spread: float = 0.10,
                    phase_margin_deg: float = 60.0, alpha: float = 4.0, settle_cycles: int = 3,
-                   max_cycle_s: float = 10.0, progress=None) -> RelayTuneResult:
+                   max_cycle_s: float = 10.0, progress=None, min_gain_margin_db: float = 6.0) -> RelayTuneResult:
     """Relay auto-tuning on a simulated axis, with the ADLINK card's parameters and defaults (L1842-1847).
 
     amplitude_v
@@ -113,7 +134,8 @@ def relay_autotune(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 
     data_length
         gain sets (limit cycles) to compute, default 200.
     sampling_time_s
-        relay sampling time, s (100..1000 us, default 500 us); rounded to whole servo ticks.
+        relay sampling time, s (100..1000 us, default 500 us); exact: the relay decides at the first servo tick at or
+        after each multiple of it (250 us on a 100 us axis: after 2, 3, 2, 3 ... ticks), at most every tick.
     deviation_limit_pulse
         ``|position error|`` above this stops the tuning, servo off, pulse (0 = off, default 2000).
     max_spread
@@ -124,6 +146,8 @@ def relay_autotune(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 
         first limit cycles discarded; max_cycle_s: give up when no cycle completes within this time, s.
     progress
         None, True (text bar on stderr) or callable(done, total) -> bool (False: the user's Stop).
+    min_gain_margin_db
+        the gain-margin floor (dB, 0..60, default 6) :meth:`RelayTuneResult.apply` checks the tuned loop against.
 
     The servo law is replaced by the relay during the experiment and the servo is left off at the end (apply the
     result with :meth:`RelayTuneResult.apply`). A relay with hysteresis needs a plant whose phase lies above -180
@@ -133,6 +157,8 @@ def relay_autotune(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 
     """
     from .frequency import _progress_callback
 
+    if not (0 <= float(min_gain_margin_db) <= 60):
+        raise ValueError(f"relay_autotune.min_gain_margin_db = {min_gain_margin_db} is outside the allowed range 0..60 dB")
     d = _core.relay_autotune(getattr(axis, "_axis", axis), amplitude_v=float(amplitude_v),
                              hysteresis_pulse=float(hysteresis_pulse), data_length=float(data_length),
                              sampling_time_s=float(sampling_time_s), deviation_limit_pulse=float(deviation_limit_pulse),
@@ -148,27 +174,52 @@ def relay_autotune(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 
                            ultimate_freq_hz=d["ultimate_freq_hz"],
                            ultimate_gain_v_per_pulse=d["ultimate_gain_v_per_pulse"],
                            sampling_time_s=d["sampling_time_s"], servo_period_s=axis.servo_period_s, cycles=cycles,
-                           error_pulse=d["error_pulse"], output_v=d["output_v"])
+                           error_pulse=d["error_pulse"], output_v=d["output_v"],
+                           phase_margin_deg=float(phase_margin_deg), min_gain_margin_db=float(min_gain_margin_db))
+
+
+def _relay_decides(n_ticks: int, servo_period_s: float, sampling_time_s: float) -> np.ndarray:
+    """Per tick: True where the relay decides (the first tick at or after each multiple of its sampling time, as
+    the experiment does; no rounding to whole ticks)."""
+    k = np.arange(n_ticks)
+    s = np.floor(k * (servo_period_s / sampling_time_s) + 1e-9)
+    out = np.ones(n_ticks, dtype=bool)
+    out[1:] = s[1:] != s[:-1]
+    return out
 
 
 def predicted_limit_cycle(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 50.0,
-                          sampling_time_s: float = 500e-6) -> dict:
-    """The limit cycle the describing function predicts for the relay experiment on this axis, computed from the
-    analytic plant (the same lifted model as :func:`servobench.frequency.analytic_response`): the frequency wu where
-    angle P(j wu) = -180 deg + asin(eps / a) with a = (4 d / pi) ``|P(j wu)|``. P is the plant from the relay's volts to
-    the encoder with the one-tick delay, shifted by the sampled relay's mean switching delay (docs/decisions.md R4).
+                          sampling_time_s: float = 500e-6, cycles: int = 60) -> dict:
+    """The limit cycle the relay experiment of :func:`relay_autotune` settles into on this axis's linear model:
+    the sampled relay with hysteresis (deciding at the first tick at or after each multiple of `sampling_time_s`,
+    exactly as the experiment; no rounding), its one-tick output delay and the plant lifted exactly to the servo rate
+    (the model of :func:`servobench.frequency.analytic_response`) are run together from rest for `cycles` limit
+    cycles; the last half are measured the way the experiment measures them (rising switch to rising switch,
+    single-bin DFT of the error).
 
-    Returns {"freq_hz", "amplitude_pulse", "ultimate_gain_v_per_pulse" (= 1/``|P|``)}; ValueError if the plant's phase
-    never reaches the needed value (no limit cycle: e.g. an undamped double integrator with hysteresis).
+    Returns {"freq_hz" (1 / mean period), "period_ticks" and "half_period_ticks" (exact means, not whole ticks),
+    "amplitude_pulse" (fundamental of the error), "ultimate_gain_v_per_pulse" (4 d / (pi a), what the experiment
+    reports), "describing_function": the classic describing-function prediction from the same plant, a relay delayed
+    by half its sampling time beyond the servo tick (decisions R4): {"freq_hz", "amplitude_pulse",
+    "ultimate_gain_v_per_pulse" = 1/``|P|``}}. ValueError if no steady cycle appears (e.g. an undamped double
+    integrator with hysteresis: the oscillation grows) or the describing function predicts none.
     """
+    from . import _core
     from .frequency import analytic_response
 
     ts = axis.servo_period_s
-    tr = max(1, round(sampling_time_s / ts)) * ts
     d, eps = float(amplitude_v), float(hysteresis_pulse)
+    if not (0 < d <= 10):
+        raise ValueError(f"amplitude_v = {amplitude_v} must be in (0, 10] V")
+    if not eps > 0:
+        raise ValueError(f"hysteresis_pulse = {hysteresis_pulse} must be > 0 pulse")
+    if not (100e-6 <= sampling_time_s <= 1000e-6):
+        raise ValueError(f"sampling_time_s = {sampling_time_s} must be in 100e-6..1000e-6 s (ADLINK L1847)")
+    tr = max(float(sampling_time_s), ts)
     law = axis.law
     sign = -1.0 if isinstance(law, _core.ApsServoLaw) and law.v_inverse else 1.0
 
+    # The describing function (kept for reference).
     def point(f):
         f = np.atleast_1d(np.asarray(f, dtype=float))
         p = analytic_response(axis, f).plant * (32767.0 / 10.0) * sign  # pulse per volt
@@ -195,9 +246,53 @@ def predicted_limit_cycle(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: f
         mid = np.sqrt(lo * hi)
         (lo, hi) = (mid, hi) if mismatch(mid)[0] > 0 else (lo, mid)
     fu = np.sqrt(lo * hi)
-    p = point(fu)[0]
-    return {"freq_hz": float(fu), "amplitude_pulse": float(4 * d / np.pi * abs(p)),
-            "ultimate_gain_v_per_pulse": float(1 / abs(p))}
+    p_u = point(fu)[0]
+    df = {"freq_hz": float(fu), "amplitude_pulse": float(4 * d / np.pi * abs(p_u)),
+          "ultimate_gain_v_per_pulse": float(1 / abs(p_u))}
+
+    # The sampled relay on the lifted linear model, tick by tick.
+    a_m, b_m, c_motor, c_load = (np.asarray(x, dtype=float) for x in _core.tick_model(getattr(axis, "_axis", axis)))
+    b_v = b_m[:, 0] if b_m.ndim == 2 else b_m
+    c = (c_load if axis.encoder.on_load else c_motor).reshape(-1) * axis.encoder.counts_per_rev / (2 * np.pi)
+    period_guess = max(4, int(round(1.0 / (df["freq_hz"] * ts))))
+    n_max = int(min(2_000_000, (cycles + 10) * period_guess * 3))
+    decide = _relay_decides(n_max, ts, tr)
+    x = np.zeros(a_m.shape[0])
+    u, v_applied = d, 0.0
+    e_hist = np.empty(n_max)
+    rising = []
+    for k in range(n_max):
+        e = -(c @ x)
+        e_hist[k] = e
+        if decide[k]:
+            if e > eps:
+                if u < 0:
+                    rising.append(k)
+                u = d
+            elif e < -eps:
+                u = -d
+        x = a_m @ x + b_v * v_applied
+        v_applied = sign * u  # reaches the drive one tick later
+        if len(rising) > cycles:
+            break
+    if len(rising) <= cycles or not np.all(np.isfinite(e_hist[:k + 1])):
+        raise ValueError(f"no steady limit cycle on the linear model within {n_max} ticks "
+                         f"({len(rising)} of {cycles} cycles): the relay's oscillation does not settle")
+    r = np.asarray(rising[len(rising) // 2:])
+    amps = []
+    for t0, t1 in zip(r[:-1], r[1:]):
+        n = t1 - t0
+        seg = e_hist[t0:t1]
+        amps.append(2 * abs(np.sum(seg * np.exp(-2j * np.pi * np.arange(n) / n))) / n)
+    a_mean = float(np.mean(amps))
+    growth = abs(amps[-1] / amps[0] - 1) if amps[0] > 0 else np.inf
+    if growth > 0.02:
+        raise ValueError(f"no steady limit cycle on the linear model: the cycle's amplitude still changes by "
+                         f"{100 * growth:.1f} % over the measured cycles (it grows: no limit cycle for this relay)")
+    period = float(np.mean(np.diff(r)))
+    return {"freq_hz": 1.0 / (period * ts), "period_ticks": period, "half_period_ticks": period / 2,
+            "amplitude_pulse": a_mean, "ultimate_gain_v_per_pulse": 4 * d / (np.pi * a_mean),
+            "describing_function": df}
 
 
 @dataclass(frozen=True)
@@ -234,6 +329,8 @@ class ModelTuneResult:
         gain_margin_db, ms, max_pole_radius, pid_lead_deg, feasible, and the list reason.
     summary
         the self-explaining report.
+    phase_margin_deg, min_gain_margin_db
+        the design's target (deg) and gain-margin floor (dB), which :meth:`apply` checks the loop against.
     """
 
     kp: float
@@ -256,6 +353,8 @@ class ModelTuneResult:
     servo_period_s: float
     scan: dict = field(repr=False)
     summary: str = field(repr=False)
+    phase_margin_deg: float = 60.0
+    min_gain_margin_db: float = 10.0
 
     def __str__(self) -> str:
         return self.summary
@@ -268,13 +367,25 @@ class ModelTuneResult:
         """The gains as ADLINK gains: integers 0..65535 with per-term shifts (PID_SHIFT -5; feed-forward 0)."""
         return _law(self, "aps", base)
 
-    def apply(self, axis) -> None:
+    def apply(self, axis, *, force: bool = False, verify: bool = True, pm_tolerance_deg: float = 5.0):
         """Writes the gains to the axis's law (its own kind: GT or ADLINK, feed-forward 0), the notch to biquad 0
-        and pass-through to biquad 1, and turns the servo on."""
+        and pass-through to biquad 1, and turns the servo on, but only when the loop passes
+        :func:`servobench.tune_check.check_design` (closed-loop poles, the phase margin within ``pm_tolerance_deg``
+        deg of the target and no crossover nearer to -1, gain margin >= the design's ``min_gain_margin_db``, on the model and
+        by a verification sweep when `verify`). Raises :class:`servobench.tune_check.TuningRefused` with the report
+        otherwise; ``force=True`` applies anyway. Returns the :class:`~servobench.tune_check.TuneCheck`."""
+        from .tune_check import TuningRefused, check_design
+
         law = self.gt_law(axis.law) if isinstance(axis.law, _core.GtServoLaw) else self.aps_law(axis.law)
+        check = check_design(axis, law, self.filters, target_phase_margin_deg=self.phase_margin_deg,
+                             pm_tolerance_deg=pm_tolerance_deg, min_gain_margin_db=self.min_gain_margin_db,
+                             verify=verify)
+        if not check.accepted and not force:
+            raise TuningRefused(check)
         axis.set_law(law)
         axis.set_filters(self.filters)
         axis.set_servo_on(True)
+        return check
 
 
 def model_based_tune(axis, *, phase_margin_deg: float = 60.0, alpha: float = 4.0, notch: bool = True,
@@ -317,7 +428,7 @@ def model_based_tune(axis, *, phase_margin_deg: float = 60.0, alpha: float = 4.0
     or when no crossover meets the bounds (the message names the bounds to relax and the nearest miss).
     Releases the GIL; about 0.1-0.5 s.
     """
-    from .frequency import Margins
+    from .frequency import _margins_from
 
     if resonance_hz is not None and float(resonance_hz) == 0.0:
         raise ValueError("model_based_tune.resonance_hz = 0 is outside the allowed range 0 < f < Nyquist; "
@@ -333,11 +444,12 @@ def model_based_tune(axis, *, phase_margin_deg: float = 60.0, alpha: float = 4.0
                          candidates=float(candidates), points=float(points), law="axis" if law is None else str(law))
     p = d["pid"]
     return ModelTuneResult(kp=p["kp"], ki=p["ki"], kd=p["kd"], kc=p["kc"], ti_s=p["ti_s"], td_s=p["td_s"],
-                           crossover_hz=d["crossover_hz"], margins=Margins(**d["margins"]),
+                           crossover_hz=d["crossover_hz"], margins=_margins_from(d["margins"], "analytic model"),
                            max_pole_radius=d["max_pole_radius"], law=d["law"], filters=tuple(d["filters"]),
                            resonances=list(d["resonances"]), resonance_hz=d["resonance_hz"],
                            resonance_prominence_db=d["resonance_prominence_db"], notch=dict(d["notch"]),
                            crossover_without_notch_hz=d["crossover_without_notch_hz"], limited_by=d["limited_by"],
                            servo_period_s=axis.servo_period_s,
                            scan={k: (list(v) if k == "reason" else np.asarray(v)) for k, v in d["scan"].items()},
-                           summary=d["summary"])
+                           summary=d["summary"], phase_margin_deg=float(phase_margin_deg),
+                           min_gain_margin_db=float(min_gain_margin_db))

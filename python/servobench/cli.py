@@ -71,6 +71,9 @@ class Output:
         return p
 
     def figure(self, what: str, fig, doc: str) -> str:
+        from .plot import Plot
+
+        fig = fig.figure if isinstance(fig, Plot) else fig
         p = self.path(what, self.fmt)
         fig.savefig(p, dpi=110)
         import matplotlib.pyplot as plt
@@ -110,24 +113,7 @@ def _margins_dict(m) -> dict:
     return dataclasses.asdict(m)
 
 
-def _measured_margins(meas):
-    """Margins of a measured open loop from the points where the response was seen (at high frequency the
-    encoder may not see the axis move at all: |Y| = 0 there); (dict or None, note)."""
-    from .frequency import margins
-
-    ol, cl = np.asarray(meas.open_loop), np.asarray(meas.closed_loop)
-    ok = np.isfinite(ol) & (ol != 0) & np.isfinite(cl)
-    note = "" if ok.all() else (f"{int((~ok).sum())} of {len(ol)} points left out: the encoder saw no motion "
-                                "there (response 0)")
-    if ok.sum() < 2:
-        return None, note or "fewer than 2 points"
-    try:
-        return _margins_dict(margins(meas.freq_hz[ok], ol[ok], cl[ok])), note
-    except ValueError as e:
-        return None, str(e)
-
-
-def _linearity_note(axis, measured: dict | None, analytic: dict | None, amplitude_pulse: float,
+def _linearity_note(axis, measured: dict | None, analytic: dict | None, amplitude_pulse,
                     tolerance_deg: float = 3.0) -> str:
     """Why a measured phase margin differs from the analytic one by more than ``tolerance_deg``: the analytic loop
     linearises the plant (friction, cogging, unbalance and load torques are left out), so a small sweep amplitude
@@ -141,7 +127,8 @@ def _linearity_note(axis, measured: dict | None, analytic: dict | None, amplitud
     fields = ("coulomb_nm", "static_nm", "motor_coulomb_nm", "motor_static_nm", "load_coulomb_nm",
               "load_static_nm", "cogging_nm", "unbalance_nm", "load_nm")
     nonlinear = [f"{f} {getattr(axis.plant, f):g} N*m" for f in fields if getattr(axis.plant, f, 0.0)]
-    why = (f"the plant has {', '.join(nonlinear)}, which the analytic loop leaves out; at {amplitude_pulse:g} pulse "
+    amp = "the automatic amplitude" if amplitude_pulse is None else f"{amplitude_pulse:g} pulse"
+    why = (f"the plant has {', '.join(nonlinear)}, which the analytic loop leaves out; at {amp} "
            f"of sine amplitude they are a large share of the torque (a larger --amplitude-pulse measures closer to "
            f"the linear loop)") if nonlinear else \
         "the plant is linear: look at the sweep's coherence and the DAC/encoder quantisation at this amplitude"
@@ -297,20 +284,33 @@ def _response_columns(fr) -> tuple[dict, dict]:
     return cols, units
 
 
+def _stability_lines(report: dict) -> list[str]:
+    """The verdicts to print first: "UNSTABLE ..." lines for the model and the measurement (empty when stable)."""
+    out = []
+    for key, name in (("analytic_margins", "model"), ("margins", "measured")):
+        m = report.get(key)
+        if isinstance(m, dict) and not m.get("stable", True) and m.get("stability", {}).get("decided", True):
+            out.append(f"UNSTABLE ({name}): {m['stability'].get('reason', '')}")
+    return out
+
+
 def cmd_bode(args) -> int:
     from . import frequency as fr
+    from .agreement import model_agreement
     from .plot import bode
 
     axis, _ = _load(args.axis)
     _need_voltage_output(axis, args.axis, "bode")
     kind = _KIND[args.kind]
     nyquist = 0.5 / axis.servo_period_s
-    with _bad_input("--start-hz/--end-hz/--points"):
+    with _bad_input("--start-hz/--end-hz/--points/--amplitude-pulse"):
         if not (0 < args.start_hz < args.end_hz < nyquist):
             raise ValueError(f"the band must satisfy 0 < start ({args.start_hz:g} Hz) < end ({args.end_hz:g} Hz) < "
                              f"Nyquist ({nyquist:g} Hz at Ts = {axis.servo_period_s * 1e6:g} us)")
         if not 2 <= args.points <= 100000:
             raise ValueError(f"--points = {args.points} is outside the allowed range 2..100000")
+        if args.amplitude_pulse is not None and not args.amplitude_pulse > 0:
+            raise ValueError(f"--amplitude-pulse = {args.amplitude_pulse:g} must be > 0 pulse (omit it: automatic)")
     out = Output(args, _stem(args.axis))
     dense = np.geomspace(args.start_hz, args.end_hz, 400)
     with _bad_input("analytic model"):
@@ -319,50 +319,78 @@ def cmd_bode(args) -> int:
               "band_hz": [args.start_hz, args.end_hz], "feedforward": args.feedforward,
               "analytic_margins": _margins_dict(ana.margins())}
     failed = None
+    amps = np.zeros(0)
     if args.analytic:
         data = fr.analytic_response(axis, np.geomspace(args.start_hz, args.end_hz, args.points),
                                     feedforward=args.feedforward)
         report.update(method="analytic", points=args.points, margins=_margins_dict(data.margins()))
-        plotted = {"analytic": ana}
+        plotted = {"analytic model": ana}
     else:
         with _bad_input("--amplitude-pulse/--update-s/--deviation-limit-pulse"):
             data = fr.sine_sweep(axis, start_hz=args.start_hz, end_hz=args.end_hz, amplitude_pulse=args.amplitude_pulse,
                                  points=args.points, update_s=args.update_s,
                                  deviation_limit_pulse=args.deviation_limit_pulse, feedforward=args.feedforward,
                                  progress=_progress(args))
+        amps = np.asarray(data.signals.get("amplitude_pulse", []), dtype=float)
         report.update(method=data.method, status=data.status, message=data.message, points=len(data),
-                      amplitude_pulse=args.amplitude_pulse, update_s=args.update_s)
+                      amplitude_pulse="auto" if args.amplitude_pulse is None else args.amplitude_pulse,
+                      amplitude_pulse_used=amps, update_s=args.update_s,
+                      points_flagged=[{"freq_hz": float(f), "reason": r}
+                                      for f, r in zip(data.freq_hz, data.flags or []) if r],
+                      saturated_ticks={k: np.asarray(data.signals[k]) for k in
+                                       ("dac_saturated_ticks", "current_saturated_ticks", "torque_saturated_ticks")})
         if len(data) >= 2 and not args.feedforward:
-            report["margins"], report["margins_note"] = _measured_margins(data)
-            if report["margins"] is None:
-                del report["margins"]
-            else:
-                report["linearity_note"] = _linearity_note(axis, report["margins"], report["analytic_margins"],
-                                                           args.amplitude_pulse)
+            try:
+                mm = data.margins()
+                report["margins"], report["margins_note"] = _margins_dict(mm), mm.note
+            except ValueError as e:
+                report["margins_note"] = f"no measured margin: {e}"
         if len(data):
-            at = fr.analytic_response(axis, data.freq_hz, feedforward=args.feedforward)
+            agr = model_agreement(axis, data, kind)
+            report["model_agreement"] = {k: agr[k] for k in ("max_gain_error_db", "max_phase_error_deg", "agrees",
+                                                             "not_applicable_hz", "summary")}
+            report["model_agreement"]["why_not"] = [{"freq_hz": float(f), "reason": w}
+                                                    for f, w in zip(agr["freq_hz"], agr["why_not"]) if w]
             with np.errstate(divide="ignore", invalid="ignore"):
-                err = np.abs(20 * np.log10(np.abs(data.response(kind) / at.response(kind))))
+                err = np.abs(agr["gain_error_db"])
             report["max_gain_error_vs_analytic_db"] = float(np.nanmax(err)) if np.any(np.isfinite(err)) else None
         if data.status != "completed":
             failed = f"the sweep ended early: {data.status} ({data.message})"
         plotted = {"measured (stepped sine)": data, "analytic model": ana}
     report["units"] = {"freq_hz": "Hz", "plant": "pulse per DAC count", "open_loop": "pulse/pulse (Y/E)",
-                       "closed_loop": "pulse/pulse (Y/R)", "margins": "dB, deg, Hz, s"}
-    if not args.quiet and "margins" in report:
+                       "closed_loop": "pulse/pulse (Y/R)", "margins": "dB, deg, Hz, s",
+                       "amplitude_pulse_used": "pulse"}
+    unstable = _stability_lines(report)
+    report["unstable"] = bool(unstable)
+    for line in unstable:
+        print(line)
+    if not args.quiet:
         from .frequency import Margins
 
-        print(f"{args.axis}: margins ({report['method']}):\n  " + str(Margins(**report["margins"])).replace("\n", "\n  "))
-        if report.get("linearity_note"):
-            print("  note: " + report["linearity_note"])
+        if "margins" in report:
+            print(f"{args.axis}: margins ({report['method']}):\n  " +
+                  str(Margins(**report["margins"])).replace("\n", "\n  "))
+        elif report.get("margins_note"):
+            print(f"{args.axis}: {report['margins_note']}")
+        print(f"{args.axis}: margins (analytic model):\n  " + str(ana.margins()).replace("\n", "\n  "))
+        if len(amps):
+            print(f"  excitation amplitude {'chosen per point' if args.amplitude_pulse is None else 'given'}: "
+                  f"{amps.min():.4g}..{amps.max():.4g} pulse")
+        if report.get("model_agreement"):
+            print("  " + report["model_agreement"]["summary"])
     cols, units = _response_columns(data)
+    if len(amps):
+        cols["amplitude_pulse"], units["amplitude_pulse"] = amps, "pulse"
+        cols["usable"], units["usable"] = data.usable.astype(float), "1 = passed the checks"
     if len(data):
         out.csv("bode", cols, units, f"{report['method']} response: gain and phase of plant, open and closed loop")
     out.json("bode", report, "margins, band, status")
     with np.errstate(divide="ignore", invalid="ignore"):  # a measured point the encoder did not see: gain 0
-        fig = bode(dense, plotted, which=kind, title=f"servobench bode: {_stem(args.axis)}, "
-                   f"{kind.replace('_', ' ')}", margins=ana.margins() if kind == "open_loop" else False)
-    out.figure("bode", fig, f"Bode plot of the {kind.replace('_', ' ')}")
+        res = bode(dense, plotted, which=kind, title=f"servobench bode: {_stem(args.axis)}, "
+                   f"{kind.replace('_', ' ')}", margins=True if kind == "open_loop" else False)
+    out.figure("bode", res, f"Bode plot of the {kind.replace('_', ' ')}")
+    if unstable:
+        raise WorkFailed(unstable[0])
     if failed:
         raise WorkFailed(failed)
     return EXIT_OK
@@ -382,6 +410,7 @@ def cmd_tune(args) -> int:
     from . import frequency as fr
     from .autotune import model_based_tune, relay_autotune
     from .axisfile import save_axis
+    from .frequency import Margins
     from .plot import _pyplot, bode
 
     axis, data = _load(args.axis)
@@ -434,10 +463,27 @@ def cmd_tune(args) -> int:
         specs = None
     before, _ = _load(args.axis)
     after, _ = _load(args.axis)
+    from .tune_check import TuningRefused
+
     try:
-        res.apply(after)
+        check = res.apply(after, force=args.force)
+    except TuningRefused as e:
+        report["check"] = {"accepted": False, "failures": e.check.failures,
+                           "model_margins": _margins_dict(e.check.model),
+                           "measured_margins": None if e.check.measured is None else _margins_dict(e.check.measured),
+                           "measured_note": e.check.measured_note}
+        print(str(e.check))
+        out.json("tune", report, "tuning report (refused)")
+        raise WorkFailed("REFUSED: the tuned loop fails its check (" + "; ".join(e.check.failures) +
+                         "); --force applies it anyway") from None
     except ValueError as e:
         raise WorkFailed(f"the gains do not fit the card's law: {e}") from None
+    report["check"] = {"accepted": check.accepted, "forced": bool(args.force and not check.accepted),
+                       "failures": check.failures, "model_margins": _margins_dict(check.model),
+                       "measured_margins": None if check.measured is None else _margins_dict(check.measured),
+                       "measured_note": check.measured_note}
+    if not args.quiet:
+        print(str(check))
     report["before"] = {"law": before.law.to_dict()}
     report["after"] = {"law": after.law.to_dict(),
                        "filters": [None if f is None else {"type": type(f).__name__, **f.to_dict()}
@@ -459,20 +505,30 @@ def cmd_tune(args) -> int:
     ana_after = fr.analytic_response(after, dense)
     report["before"]["analytic_margins"] = _margins_dict(ana_before.margins())
     report["after"]["analytic_margins"] = _margins_dict(ana_after.margins())
-    curves = {"before (analytic)": ana_before, "after (analytic)": ana_after}
+    curves = {"before, model (analytic)": ana_before, "after, model (analytic)": ana_after}
+    mm = None
     if not args.no_sweep:
         swept, _ = _load(args.axis)
-        res.apply(swept)
+        res.apply(swept, force=True, verify=False)
         meas = fr.sine_sweep(swept, start_hz=args.start_hz, end_hz=f_hi, amplitude_pulse=args.amplitude_pulse,
                              points=args.points, update_s=0.1, progress=_progress(args))
         report["after"]["sweep"] = {"status": meas.status, "message": meas.message, "points": len(meas),
-                                    "band_hz": [args.start_hz, f_hi], "amplitude_pulse": args.amplitude_pulse}
-        mm, note = _measured_margins(meas)
+                                    "band_hz": [args.start_hz, f_hi],
+                                    "amplitude_pulse": "auto" if args.amplitude_pulse is None else args.amplitude_pulse,
+                                    "amplitude_pulse_used": np.asarray(meas.signals["amplitude_pulse"])}
+        try:
+            mmo = meas.margins()
+            mm, note = _margins_dict(mmo), mmo.note
+        except ValueError as e:
+            mm, note = None, str(e)
         report["after"]["measured_margins"], report["after"]["measured_margins_note"] = mm, note
+        from .agreement import model_agreement
+
+        report["after"]["model_agreement"] = model_agreement(swept, meas)["summary"] if len(meas) else ""
         lin = _linearity_note(swept, mm, report["after"]["analytic_margins"], args.amplitude_pulse)
         report["after"]["linearity_note"] = lin
         if len(meas) >= 2:
-            curves["after (measured, stepped sine)"] = meas
+            curves["after, measured (stepped sine)"] = meas
         if not args.quiet and mm is not None:
             from .frequency import Margins
 
@@ -510,7 +566,9 @@ def cmd_tune(args) -> int:
     fig.suptitle(f"servobench tune ({args.method}): {stem}, {args.step_pulse:g} pulse step before and after", fontsize=10)
     out.figure("tune_step", fig, "step response before and after")
     with np.errstate(divide="ignore", invalid="ignore"):  # a measured point the encoder did not see: gain 0
-        fig = bode(dense, curves, which="open_loop", margins=ana_after.margins(),
+        fig = bode(dense, curves, which="open_loop",
+                   margins={"after, model (analytic)": ana_after.margins(),
+                            **({"after, measured (stepped sine)": Margins(**mm)} if mm else {})},
                    title=f"servobench tune ({args.method}): {stem}, open loop before and after")
     out.figure("tune_bode", fig, "Bode plot of the open loop before and after (margins of the tuned loop)")
     return EXIT_OK
@@ -757,7 +815,9 @@ def build_parser() -> argparse.ArgumentParser:
     b.add_argument("--start-hz", type=float, default=10.0, help="first frequency, Hz")
     b.add_argument("--end-hz", type=float, default=100.0, help="last frequency, Hz (< Nyquist = 1/(2 Ts))")
     b.add_argument("--points", type=int, default=100, help="log-spaced frequencies, 2..100000")
-    b.add_argument("--amplitude-pulse", type=float, default=300.0, help="sine amplitude added to the command, pulse")
+    b.add_argument("--amplitude-pulse", type=float, default=None,
+                   help="sine amplitude added to the command, pulse (the manual's example: 300); default: chosen per "
+                        "point to keep the DAC and the drive out of saturation and above quantisation")
     b.add_argument("--update-s", type=float, default=0.1, help="time per frequency point, s")
     b.add_argument("--deviation-limit-pulse", type=float, default=0.0,
                    help="|error| above this ends the sweep, servo off, pulse (0 = off)")
@@ -794,7 +854,11 @@ def build_parser() -> argparse.ArgumentParser:
     v.add_argument("--start-hz", type=float, default=10.0, help="verification sweep and Bode plot from, Hz")
     v.add_argument("--end-hz", type=float, default=1000.0, help="... to, Hz (capped at 0.9 Nyquist)")
     v.add_argument("--points", type=int, default=40, help="verification sweep points")
-    v.add_argument("--amplitude-pulse", type=float, default=20.0, help="verification sweep amplitude, pulse")
+    v.add_argument("--amplitude-pulse", type=float, default=None,
+                   help="verification sweep amplitude, pulse (default: chosen per point, out of saturation)")
+    v.add_argument("--force", action="store_true",
+                   help="write the tuned axis even when the tuned loop fails its check (stability, PM within 5 deg of "
+                        "the target, gain-margin floor; model and verification sweep)")
     v.add_argument("--no-sweep", action="store_true", help="skip the measured sweep of the tuned loop")
     t.set_defaults(func=cmd_tune)
 

@@ -64,8 +64,9 @@ def run_demo(*, law: str = "gt", out_dir: str = "out", show: bool = False) -> di
     tune.apply(tuned)
     tuned_meas = fr.sine_sweep(tuned, start_hz=10, end_hz=1000, amplitude_pulse=20, points=40, update_s=0.1)
     tuned_path = os.path.join(out_dir, f"demo_bode_tuned_{law}.png")
-    bode([meas, tuned_meas], which="open_loop", title=f"servobench demo: open loop before and after the "
-         f"model-based tuning, {law_name}", path=tuned_path)
+    bode([meas, tuned_meas], which="open_loop", labels=["before, measured (stepped sine)",
+                                                        "after, measured (stepped sine)"],
+         title=f"servobench demo: open loop before and after the model-based tuning, {law_name}", path=tuned_path)
     return {"metrics": metrics, "plot": path, "ticks": len(run), "wall_s": wall, "axis": axis,
             "bode": meas, "bode_plot": bode_path, "margins": ana.margins(), "sweep_wall_s": sweep_wall,
             "bode_error_db": err_db, "identified": fit, "identify_wall_s": ident_wall, "tune": tune,

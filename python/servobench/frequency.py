@@ -26,12 +26,15 @@ from typing import Callable
 import numpy as np
 
 from . import _core
+from .margins import Margins, _margins_from, analytic_margins, closed_loop_poles, margins
 
 __all__ = [
     "FrequencyResponse",
     "Margins",
     "Peak",
+    "analytic_margins",
     "analytic_response",
+    "closed_loop_poles",
     "broadband_response",
     "linear_model",
     "chirp",
@@ -47,76 +50,6 @@ _RESPONSES = ("plant", "open_loop", "closed_loop")
 # ----------------------------------------------------------------------------------------------------------------
 # Figures of merit
 # ----------------------------------------------------------------------------------------------------------------
-@dataclass(frozen=True)
-class Margins:
-    """Stability margins and loop figures of merit (from :func:`margins`).
-
-    gain_margin_db, gm_freq_hz
-        how far the loop gain may rise before instability, dB, and the phase crossover (angle L = -180 deg,
-        ``|L|`` < 1) where it is read, Hz. ``inf`` / NaN if the data has no such crossover.
-    lower_gain_margin_db, lower_gm_freq_hz
-        how far the gain may fall (negative dB) for a conditionally stable loop (a PID on an integrating plant has
-        one at low frequency); ``-inf`` / NaN if none.
-    phase_margin_deg, pm_freq_hz
-        180 deg + angle L at the gain crossover ``|L|`` = 1, deg, and that crossover frequency, Hz.
-    delay_margin_s
-        extra dead time the loop tolerates, phase margin / (360 deg * crossover), s.
-    bandwidth_hz
-        closed-loop -3 dB bandwidth (first frequency where ``|Y/R|`` is 3 dB below its value at the lowest
-        frequency), Hz; NaN if not reached in the data.
-    ms, ms_freq_hz
-        peak sensitivity max ``|1/(1 + L)|`` and its frequency, Hz (1/Ms is the distance of L from -1; Ms < 2 is the
-        usual robustness goal).
-    """
-
-    gain_margin_db: float
-    gm_freq_hz: float
-    lower_gain_margin_db: float
-    lower_gm_freq_hz: float
-    phase_margin_deg: float
-    pm_freq_hz: float
-    delay_margin_s: float
-    bandwidth_hz: float
-    ms: float
-    ms_freq_hz: float
-
-    def __str__(self) -> str:
-        def hz(x):
-            return "-" if not np.isfinite(x) else f"{x:.4g} Hz"
-
-        lines = [
-            f"phase margin {self.phase_margin_deg:.3g} deg at {hz(self.pm_freq_hz)} "
-            f"(delay margin {self.delay_margin_s * 1e3:.3g} ms)",
-            f"gain margin {self.gain_margin_db:.3g} dB at {hz(self.gm_freq_hz)}",
-        ]
-        if np.isfinite(self.lower_gain_margin_db):
-            lines.append(f"lower gain margin {self.lower_gain_margin_db:.3g} dB at {hz(self.lower_gm_freq_hz)}")
-        lines.append(f"closed-loop bandwidth (-3 dB) {hz(self.bandwidth_hz)}")
-        lines.append(f"peak sensitivity Ms {self.ms:.3g} at {hz(self.ms_freq_hz)}")
-        return "\n".join(lines)
-
-
-def margins(freq_hz, loop_gain, closed_loop=None) -> Margins:
-    """Gain, phase and delay margins, closed-loop bandwidth and peak sensitivity from frequency-response data.
-
-    freq_hz
-        increasing frequencies, Hz.
-    loop_gain
-        the loop gain L (complex, pulse/pulse): the analytic ``loop_gain`` or a measured open loop Y/E taken with
-        the feed-forward off.
-    closed_loop
-        Y/R for the bandwidth (complex); default L/(1 + L).
-
-    Crossings are interpolated linearly in log frequency (gain in dB, phase unwrapped from the lowest frequency),
-    so the figures are as good as the grid is dense around them. A loop with a resonance can cross 0 dB several
-    times: the phase margin is that of the crossover nearest to -1 (the smallest ``|PM|``, python-control's rule)
-    and the delay margin the smallest over all crossovers. Margins alone do not prove stability.
-    """
-    d = _core.margins(np.asarray(freq_hz, dtype=float), np.asarray(loop_gain, dtype=complex),
-                      None if closed_loop is None else np.asarray(closed_loop, dtype=complex))
-    return Margins(**d)
-
-
 @dataclass(frozen=True)
 class Peak:
     """A resonance (``kind = "resonance"``, a peak) or anti-resonance (``"antiresonance"``, a dip) of a response:
@@ -202,7 +135,15 @@ class FrequencyResponse:
     status, message
         how the measurement ended (``"completed"``, ``"deviation_exceeded"``, ``"drive_alarm"``, ``"stopped"``).
     signals
-        stepped sine: the fundamentals of R, E, U, Y per point (complex; pulse, pulse, counts, pulse).
+        stepped sine: the fundamentals of R, E, U, Y per point (complex; pulse, pulse, counts, pulse), and per point
+        ``amplitude_pulse`` (the excitation used), ``dac_saturated_ticks``, ``current_saturated_ticks``,
+        ``torque_saturated_ticks``, ``tries``; broadband: the run's saturated ticks.
+    flags
+        measured: per point "" (good) or why the point fails the judge (saturation, coherence, distortion,
+        quantisation; thresholds in :func:`sine_sweep`); flagged points are drawn hollow and left out of margins.
+    integrators, open_loop_unstable_poles
+        measured: the loop's open-loop poles at z = 1 and outside the unit circle, from the axis's structure, for
+        the Nyquist criterion on the data.
     servo_period_s
         the servo period, s.
     """
@@ -222,6 +163,18 @@ class FrequencyResponse:
     status: str = "completed"
     message: str = ""
     signals: dict = field(default_factory=dict, repr=False)
+    flags: list | None = None
+    integrators: int | None = None
+    open_loop_unstable_poles: int = 0
+    model_margins: Margins | None = field(default=None, repr=False)
+
+    @property
+    def usable(self) -> np.ndarray:
+        """Per point: True where the point passed the judge (no flag) and its response is finite and non-zero."""
+        ok = np.isfinite(self.open_loop) & (self.open_loop != 0) & np.isfinite(self.closed_loop)
+        if self.flags is not None:
+            ok &= np.array([not f for f in self.flags], dtype=bool)
+        return ok
 
     def __len__(self) -> int:
         return len(self.freq_hz)
@@ -252,23 +205,41 @@ class FrequencyResponse:
         return ph - 360.0 * np.ceil((ph[0] - 90.0) / 360.0) if ph.size else ph
 
     def margins(self) -> Margins:
-        """Margins of the loop: from the analytic loop gain, or from the measured Y/E (which is the loop gain only
-        when the feed-forward was off during the measurement, else ValueError). Measured points where the encoder
-        saw no motion (Y/E exactly 0, near Nyquist with a coarse encoder) carry no phase and are left out."""
+        """Stability and margins of the loop. Analytic data: the closed-loop poles of the linear model and crossings
+        refined on the exact loop gain (:func:`analytic_margins` over these frequencies). Measured: the Nyquist
+        criterion and the crossings of Y/E (the loop gain only when the feed-forward was off, else ValueError) over
+        the points that passed the judge (:attr:`usable`); the others are left out and named in ``note``.
+        ValueError when fewer than 2 points remain: such a sweep cannot give a margin."""
+        if self.model_margins is not None:
+            return self.model_margins
         if self.loop_gain is not None:
-            return margins(self.freq_hz, self.loop_gain, self.closed_loop)
+            return margins(self.freq_hz, self.loop_gain, self.closed_loop, source=self.method)
         if self.feedforward:
             raise ValueError("this open loop Y/E was measured with the feed-forward on, so it is not the loop gain; "
                              "measure with feedforward=False to read margins")
-        ol = np.asarray(self.open_loop)
-        cl = None if self.closed_loop is None else np.asarray(self.closed_loop)
-        seen = np.isfinite(ol) & (ol != 0)
-        if cl is not None:
-            seen &= np.isfinite(cl)
-        if seen.sum() < 2:
-            raise ValueError(f"margins: only {int(seen.sum())} of {len(ol)} measured points have a response "
-                             "(the encoder saw no motion at the others); raise amplitude_pulse")
-        return margins(self.freq_hz[seen], ol[seen], None if cl is None else cl[seen])
+        ol, cl = np.asarray(self.open_loop), np.asarray(self.closed_loop)
+        ok = self.usable
+        note = ""
+        if not ok.all():
+            reasons = {}
+            for i in np.nonzero(~ok)[0]:
+                why = (self.flags[i] if self.flags is not None and self.flags[i] else "no response (encoder saw no "
+                       "motion)")
+                for r in why.split("; "):
+                    key = r.split(" (")[0] if r.startswith("no response") else \
+                        (r.split(" ")[0] if r[:1] != "|" else r.split(" ")[0] + " floor")
+                    reasons[key] = reasons.get(key, 0) + 1
+            note = (f"{int((~ok).sum())} of {len(ok)} points left out: " +
+                    ", ".join(f"{k} ({n})" for k, n in reasons.items()))
+        if ok.sum() < 2:
+            raise ValueError(f"no margin from this {self.method} measurement: only {int(ok.sum())} of {len(ok)} "
+                             f"measured points passed the checks ({note or 'none measured'}); lower the amplitude if they saturate, "
+                             "raise it if they sit at the quantisation floor")
+        m = margins(self.freq_hz[ok], ol[ok], cl[ok], open_loop_unstable_poles=self.open_loop_unstable_poles,
+                    integrators=self.integrators, source=f"measured ({self.method})")
+        import dataclasses
+
+        return dataclasses.replace(m, note=note)
 
     def resonances(self, which: str = "plant", *, min_prominence_db: float = 3.0) -> list[Peak]:
         """Resonances and anti-resonances of a response (default the plant); see :func:`resonances`."""
@@ -285,7 +256,7 @@ class FrequencyResponse:
 
     def plot(self, which=("plant", "open_loop", "closed_loop"), *, path: str | None = None, title: str | None = None):
         """Bode plot of the chosen responses (see :func:`servobench.plot.bode`); margins are annotated when the open
-        loop is drawn. Returns the Figure."""
+        loop is drawn. Returns the :class:`servobench.plot.Plot`."""
         from . import plot
 
         return plot.bode(self, which=which, path=path, title=title)
@@ -319,10 +290,12 @@ def _core_axis(axis):
 # ----------------------------------------------------------------------------------------------------------------
 # Measurements
 # ----------------------------------------------------------------------------------------------------------------
-def sine_sweep(axis, *, start_hz: float = 10.0, end_hz: float = 100.0, amplitude_pulse: float = 300.0,
+def sine_sweep(axis, *, start_hz: float = 10.0, end_hz: float = 100.0, amplitude_pulse: float | None = None,
                points: int = 100, update_s: float = 0.1, deviation_limit_pulse: float = 0.0,
                feedforward: bool = False, filters: bool = True, settle_fraction: float = 0.25,
-               progress=None) -> FrequencyResponse:
+               progress=None, min_coherence: float = 0.99, max_distortion: float = 0.05,
+               min_response_pulse: float = 4.0, min_dac_counts: float = 30.0, dac_fraction: float = 0.5,
+               max_amplitude_pulse: float | None = None) -> FrequencyResponse:
     """The ADLINK Bode tool's stepped-sine measurement on a simulated axis (L1978-2045). Defaults are the manual's
     example (L2023, L2035): 10-100 Hz, 100 points, 300 pulse, 0.1 s per point.
 
@@ -333,7 +306,16 @@ def sine_sweep(axis, *, start_hz: float = 10.0, end_hz: float = 100.0, amplitude
         first and last frequency, Hz (> 0, below the Nyquist frequency 1/(2 Ts); the manual keeps the end <= 500 Hz
         for real drives, L2015).
     amplitude_pulse
-        sine amplitude added to the command, pulse (> 0).
+        sine amplitude added to the command, pulse (> 0; the manual's example is 300), used at every point and
+        checked; None (default): chosen per point, the largest the linear model predicts keeps the DAC within
+        `dac_fraction` of full scale and the drive's current command within `dac_fraction` of its limit, at most
+        `max_amplitude_pulse` (pulse; None: one encoder revolution), halved and the point run again while it still
+        saturates. The amplitudes used are in ``signals["amplitude_pulse"]``.
+    min_coherence, max_distortion, min_response_pulse, min_dac_counts
+        the judge of each point: coherence of Y (0..1), harmonic distortion of Y (ratio), the quantisation floors
+        ``|Y|`` >= min_response_pulse (pulse) and ``|U|`` >= min_dac_counts (DAC counts). A point failing one, or
+        with any tick of DAC saturation, clamped current command or torque at the drive's limit, is flagged
+        (``flags``), drawn hollow and left out of margins.
     points
         data length: number of log-spaced frequencies (2..100000).
     update_s
@@ -350,11 +332,19 @@ def sine_sweep(axis, *, start_hz: float = 10.0, end_hz: float = 100.0, amplitude
 
     Releases the GIL while it runs; deterministic (no randomness unless the encoder has noise, seeded).
     """
+    if amplitude_pulse is not None and not float(amplitude_pulse) > 0:
+        raise ValueError(f"sine_sweep.amplitude_pulse = {amplitude_pulse} must be > 0 pulse (or None: automatic)")
+    if max_amplitude_pulse is not None and not float(max_amplitude_pulse) > 0:
+        raise ValueError(f"sine_sweep.max_amplitude_pulse = {max_amplitude_pulse} must be > 0 pulse (or None)")
     d = _core.sine_sweep(_core_axis(axis), start_hz=float(start_hz), end_hz=float(end_hz),
-                         amplitude_pulse=float(amplitude_pulse), points=float(points), update_s=float(update_s),
+                         amplitude_pulse=0.0 if amplitude_pulse is None else float(amplitude_pulse),
+                         points=float(points), update_s=float(update_s),
                          deviation_limit_pulse=float(deviation_limit_pulse), settle_fraction=float(settle_fraction),
                          feedforward=bool(feedforward), filters=bool(filters),
-                         progress=_progress_callback(progress, "Bode sweep"))
+                         progress=_progress_callback(progress, "Bode sweep"), min_coherence=float(min_coherence),
+                         max_distortion=float(max_distortion), min_response_pulse=float(min_response_pulse),
+                         min_dac_counts=float(min_dac_counts), dac_fraction=float(dac_fraction),
+                         max_amplitude_pulse=0.0 if max_amplitude_pulse is None else float(max_amplitude_pulse))
     r, e, u, y = d["r"], d["e"], d["u"], d["y"]
     with np.errstate(divide="ignore", invalid="ignore"):
         return FrequencyResponse(
@@ -363,7 +353,13 @@ def sine_sweep(axis, *, start_hz: float = 10.0, end_hz: float = 100.0, amplitude
             coherence=d["coherence"], distortion=d["distortion"], status=d["status"], message=d["message"],
             signals={"r": r, "e": e, "u": u, "y": y, "periods": d["periods"], "window": d["window"],
                      "ticks": d["ticks"], "stop_time_s": d["stop_time_s"],
-                     "stop_error_pulse": d["stop_error_pulse"]})
+                     "stop_error_pulse": d["stop_error_pulse"], "amplitude_pulse": d["amplitude_pulse"],
+                     "torque_amplitude_nm": d["torque_amplitude_nm"],
+                     "dac_saturated_ticks": d["dac_saturated_ticks"],
+                     "current_saturated_ticks": d["current_saturated_ticks"],
+                     "torque_saturated_ticks": d["torque_saturated_ticks"], "tries": d["tries"]},
+            flags=list(d["flag"]), integrators=int(d["integrators"]),
+            open_loop_unstable_poles=int(d["open_loop_unstable_poles"]))
 
 
 def analytic_response(axis, freq_hz, *, feedforward: bool = False, filters: bool = True) -> FrequencyResponse:
@@ -376,10 +372,13 @@ def analytic_response(axis, freq_hz, *, feedforward: bool = False, filters: bool
     """
     f = np.atleast_1d(np.asarray(freq_hz, dtype=float))
     d = _core.loop_response(_core_axis(axis), f, bool(feedforward), bool(filters))
+    mm = None
+    if f.size >= 2 and np.all(np.diff(f) > 0):
+        mm = analytic_margins(axis, f, filters=filters)
     return FrequencyResponse(freq_hz=d["freq_hz"], plant=d["plant"], open_loop=d["open_loop"],
                              closed_loop=d["closed_loop"], method="analytic", servo_period_s=axis.servo_period_s,
                              feedforward=bool(feedforward), filters=bool(filters), loop_gain=d["loop_gain"],
-                             sensitivity=d["sensitivity"],
+                             sensitivity=d["sensitivity"], model_margins=mm,
                              signals={"controller": d["controller"], "feedforward": d["feedforward"],
                                       "filters": d["filters"]})
 
@@ -473,7 +472,8 @@ def _measure_with(axis, feedforward: bool, filters: bool):
 def broadband_response(axis, *, excitation: str = "multisine", start_hz: float = 10.0, end_hz: float | None = None,
                        amplitude_pulse: float = 10.0, lines: int | None = 1000, period_ticks: int | None = None,
                        periods: int = 4, duration_s: float | None = None, rest_s: float = 0.5,
-                       feedforward: bool = False, filters: bool = True) -> FrequencyResponse:
+                       feedforward: bool = False, filters: bool = True,
+                       min_coherence: float = 0.99) -> FrequencyResponse:
     """A whole frequency response from one closed-loop run with a broadband command R (the fast alternative to
     the stepped sine). The H1 estimates use R as the reference: Y/R = S_RY/S_RR, Y/E = S_RY/S_RE,
     Y/U = S_RY/S_RU (the indirect closed-loop method: unbiased by anything that enters the loop after R).
@@ -493,6 +493,10 @@ def broadband_response(axis, *, excitation: str = "multisine", start_hz: float =
         peak amplitude of R, pulse.
     feedforward, filters
         as for :func:`sine_sweep`.
+    min_coherence
+        lines whose coherence is below this (0..1; with periods > 1) are flagged; when any tick of the run saturated
+        (DAC, current command or torque limit; counts in ``signals``) every line is flagged. Flagged lines are left
+        out of margins (``flags``).
 
     The axis continues from its present state around its last command position. Returns a
     :class:`FrequencyResponse` with ``coherence`` (magnitude-squared, R to Y).
@@ -519,7 +523,7 @@ def broadband_response(axis, *, excitation: str = "multisine", start_hz: float =
                 period_ticks = n_min
             x, bins = multisine(start_hz=start_hz, end_hz=end_hz, period_ticks=period_ticks, servo_period_s=ts,
                                 amplitude=amplitude_pulse, lines=lines, periods=int(periods) + 1)
-            run = axis.run(base + x, signals=("fb_pos", "error", "biquad1"))
+            run = axis.run(base + x, signals=("fb_pos", "error", "biquad1", "u", "volts", "torque_nm"))
             n = int(period_ticks)
             seg = slice(n, None)  # drop the settling period
 
@@ -555,7 +559,7 @@ def broadband_response(axis, *, excitation: str = "multisine", start_hz: float =
             n = len(record)
             axis.run(np.full(n_rest, base), signals=())  # settle whatever ran before, at the base position
             x = np.tile(record, int(periods))
-            run = axis.run(base + x, signals=("fb_pos", "error", "biquad1"))
+            run = axis.run(base + x, signals=("fb_pos", "error", "biquad1", "u", "volts", "torque_nm"))
             freq_all = np.fft.rfftfreq(n, ts)
             in_band = np.nonzero((freq_all >= start_hz) & (freq_all <= end_hz))[0]
             if lines is not None and lines < len(in_band):
@@ -577,10 +581,42 @@ def broadband_response(axis, *, excitation: str = "multisine", start_hz: float =
             coh = np.abs(s_ry) ** 2 / (s_rr * s_yy) if periods > 1 else np.ones(len(freq))
         else:
             raise ValueError(f"excitation = {excitation!r} must be 'multisine' or 'chirp'")
+    sat = _saturated_ticks(axis, run)
+    coh = np.clip(coh, 0.0, 1.0)
+    flags = []
+    run_flag = "; ".join(f"{k.replace('_', ' ')} {v} ticks" for k, v in sat.items() if v)
+    for c in coh:
+        why = [run_flag] if run_flag else []
+        if periods > 1 and c < min_coherence:
+            why.append(f"coherence {c:.4g} < {min_coherence:g}")
+        flags.append("; ".join(why))
+    n_bad = sum(1 for f_ in flags if f_)
+    integ = _core.loop_poles(_core_axis(axis), bool(filters))
     return FrequencyResponse(freq_hz=freq, plant=s_ry / s_ru, open_loop=s_ry / s_re, closed_loop=s_ry / s_rr,
                              method=excitation, servo_period_s=ts, feedforward=bool(feedforward),
-                             filters=bool(filters), coherence=np.clip(coh, 0.0, 1.0), status="completed",
-                             message=f"{excitation}: {len(freq)} lines, {len(x)} ticks")
+                             filters=bool(filters), coherence=coh, status="completed",
+                             message=f"{excitation}: {len(freq)} lines, {len(x)} ticks" +
+                             (f"; {n_bad} lines flagged" + (f" (the run saturated: {run_flag})" if run_flag else "")
+                              if n_bad else "; every line passed the checks"),
+                             signals={k: np.array([v]) for k, v in sat.items()}, flags=flags,
+                             integrators=int(integ["integrators"]),
+                             open_loop_unstable_poles=int(integ["open_loop_unstable"]))
+
+
+def _saturated_ticks(axis, run) -> dict:
+    """Ticks of a run at which the output stage or the drive saturated: DAC at full scale or the law's output at
+    +-32767 counts, the torque drive's current command clamped, the torque at the velocity drive's limit."""
+    volts, u, u1, torque = (np.abs(np.asarray(getattr(run, k))) for k in ("volts", "u", "biquad1", "torque_nm"))
+    dac = int(np.sum((volts >= axis.dac.full_scale_v * (1 - 1e-9)) | (u >= 32767) | (u1 >= 32767)))
+    cur = trq = 0
+    drv = axis.drive
+    if isinstance(drv, _core.TorqueDrive):
+        limit = min(drv.current_limit_a, drv.torque_limit_nm / drv.kt)
+        cur = int(np.sum(drv.amps_per_volt * volts >= limit * (1 - 1e-9)))
+    elif isinstance(drv, _core.VelocityDrive):
+        limit = min(drv.torque_limit_nm, drv.current_limit_a * drv.kt)
+        trq = int(np.sum(torque >= limit * (1 - 1e-9)))
+    return {"dac_saturated_ticks": dac, "current_saturated_ticks": cur, "torque_saturated_ticks": trq}
 
 
 # ----------------------------------------------------------------------------------------------------------------
@@ -609,8 +645,12 @@ def linear_model(axis, *, feedforward: bool = False, filters: bool = True) -> di
         vpc = (-1.0 if law.v_inverse else 1.0) * 10.0 / 32767.0
     if not feedforward:
         kvff = kaff = 0.0
-    # C(z) = kp + ki z/(z-1) + kd (z-1)/z = [(kp+ki+kd) z^2 - (kp+2kd) z + kd] / (z^2 - z)
-    c = control.tf([kp + ki + kd, -(kp + 2 * kd), kd], [1, -1, 0], ts)
+    # C(z) = kp + ki z/(z-1) + kd (z-1)/z = [(kp+ki+kd) z^2 - (kp+2kd) z + kd] / (z^2 - z); without an acting
+    # integral term no pole at z = 1 (it would cancel a zero there and leave an unobservable pole on the circle)
+    if ki != 0:
+        c = control.tf([kp + ki + kd, -(kp + 2 * kd), kd], [1, -1, 0], ts)
+    else:
+        c = control.tf([kp + kd, -kd], [1, 0], ts)
     # Cff(z) = kvff (1 - z^-1) + kaff (1 - z^-1)^2 = [(kvff+kaff) z^2 - (kvff+2kaff) z + kaff] / z^2
     cff = control.tf([kvff + kaff, -(kvff + 2 * kaff), kaff], [1, 0, 0], ts)
     f = control.tf([1], [1], ts)

@@ -102,7 +102,7 @@ def test_manual_example_sweep_T13_T14():
     axis = sb.demo_axis()
     axis = sb.Axis(law=sb.GtServoLaw(kp=38, ki=30, kd=1660), plant=axis.plant, drive=axis.drive,
                    encoder=axis.encoder, servo_period_s=TS)
-    meas = fr.sine_sweep(axis)  # the defaults are the manual's example
+    meas = fr.sine_sweep(axis, amplitude_pulse=300)  # the manual's example (the default amplitude is automatic)
     assert meas.status == "completed"
     assert len(meas) == 100 and meas.signals["ticks"] == 100 * 1000
     assert meas.freq_hz[0] == 10 and meas.freq_hz[-1] == pytest.approx(100)
@@ -320,9 +320,9 @@ def test_bode_and_nyquist_plots(tmp_path):
     ax_mag, ax_ph = fig.axes
     assert (tmp_path / "bode.png").stat().st_size > 10000
     labels = [line.get_label() for line in ax_mag.get_lines()]
-    assert "stepped sine: open loop Y/E" in labels and "analytic: open loop Y/E" in labels
+    assert "measured (stepped sine): open loop Y/E" in labels and "model (analytic): open loop Y/E" in labels
     assert any("PM" in t.get_text() for t in ax_mag.texts)  # margins annotated
-    measured = [line for line in ax_mag.get_lines() if line.get_label().startswith("stepped")][0]
+    measured = [line for line in ax_mag.get_lines() if line.get_label().startswith("measured (stepped")][0]
     assert measured.get_linestyle() == "None" and measured.get_marker() == "o"
     fig = meas.plot()
     assert len(fig.axes[0].get_lines()) >= 3

@@ -328,8 +328,9 @@ def test_value_type_protocol():
 def test_plots_return_figures(tmp_path):
     import matplotlib.figure
 
-    fig = design.notch(100, TS, q=30).plot(title="notch")
-    assert isinstance(fig, matplotlib.figure.Figure) and len(fig.axes) == 2
+    fig = design.notch(100, TS, q=30).plot(title="notch")  # a servobench.plot.Plot: figure, axes, data drawn
+    assert isinstance(fig.figure, matplotlib.figure.Figure) and len(fig.axes) == 2
+    assert len(fig.data["FloatBiquad 0"]["gain_db"]) == 2000
     q = sb.AdlinkBiquad(**MANUAL_NOTCH, sample_time_s=TS)
     fig2 = sb.plot.filter_response(design.notch(100, TS, q=30), q, labels=["float", "integer"],
                                    path=str(tmp_path / "n.png"))

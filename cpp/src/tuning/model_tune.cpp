@@ -29,54 +29,6 @@ std::string fixed(double v, int decimals = 1) {
   return buf;
 }
 
-// Effective per-tick feedback gains of a card law, counts/pulse, and its volts per count (sign: V_INVERSE).
-struct Gains {
-  double kp, ki, kd, volts_per_count;
-};
-Gains gains_of(const machine::LawParams& law) {
-  if (const auto* gt = std::get_if<control::GtServoLawParams>(&law))
-    return {gt->kp, gt->ilmt == 0 ? 0.0 : gt->ki / 256.0, gt->kd, 10.0 / 32767.0};
-  const auto& a = std::get<control::ApsServoLawParams>(law);
-  return {a.kp_eff(), a.integral_limit == 0 ? 0.0 : a.ki_eff(), a.kd_eff(), (a.v_inverse ? -1.0 : 1.0) * 10.0 / 32767.0};
-}
-
-struct StateSpace {
-  Eigen::MatrixXd a, b, c, d;
-};
-
-// Series connection: first s1, then s2 (single input, single output).
-StateSpace series(const StateSpace& s1, const StateSpace& s2) {
-  const Eigen::Index n1 = s1.a.rows(), n2 = s2.a.rows();
-  StateSpace s;
-  s.a = Eigen::MatrixXd::Zero(n1 + n2, n1 + n2);
-  s.a.topLeftCorner(n1, n1) = s1.a;
-  s.a.bottomLeftCorner(n2, n1) = s2.b * s1.c;
-  s.a.bottomRightCorner(n2, n2) = s2.a;
-  s.b = Eigen::MatrixXd(n1 + n2, 1);
-  s.b.topRows(n1) = s1.b;
-  s.b.bottomRows(n2) = s2.b * s1.d;
-  s.c = Eigen::MatrixXd(1, n1 + n2);
-  s.c.leftCols(n1) = s2.d * s1.c;
-  s.c.rightCols(n2) = s2.c;
-  s.d = s2.d * s1.d;
-  return s;
-}
-
-StateSpace biquad_ss(const control::BiquadParams& p) {
-  const control::FloatBiquadParams f =
-      std::visit([](const auto& q) -> control::FloatBiquadParams {
-        if constexpr (std::is_same_v<std::decay_t<decltype(q)>, control::AdlinkBiquadParams>) return q.to_float();
-        else return q;
-      }, p);
-  // Transposed direct form II: y = b0 x + s1; s1' = -a1 y + b1 x + s2; s2' = -a2 y + b2 x.
-  StateSpace s;
-  s.a = (Eigen::MatrixXd(2, 2) << -f.a1, 1.0, -f.a2, 0.0).finished();
-  s.b = (Eigen::MatrixXd(2, 1) << f.b1 - f.a1 * f.b0, f.b2 - f.a2 * f.b0).finished();
-  s.c = (Eigen::MatrixXd(1, 2) << 1.0, 0.0).finished();
-  s.d = Eigen::MatrixXd::Constant(1, 1, f.b0);
-  return s;
-}
-
 // Linear interpolation in log frequency is what margins() does; here the log-spaced grid.
 std::vector<double> log_grid(double lo, double hi, int n) {
   std::vector<double> f(static_cast<std::size_t>(n));
@@ -89,8 +41,8 @@ double db(Complex h) { return 20.0 * std::log10(std::abs(h)); }
 
 // margins() over the points where L is not exactly zero (a floating-point notch's null can fall on a grid point);
 // `crossovers`, when given, receives every gain crossover of the same points.
-Margins margins_nonzero(const std::vector<double>& f, const std::vector<Complex>& l,
-                        const std::vector<Complex>& t = {}, std::vector<GainCrossover>* crossovers = nullptr) {
+Margins margins_nonzero(const std::vector<double>& f, const std::vector<Complex>& l, const std::vector<Complex>& t,
+                        const Stability& stability, std::vector<GainCrossover>* crossovers = nullptr) {
   std::vector<double> f2;
   std::vector<Complex> l2, t2;
   for (std::size_t k = 0; k < f.size(); ++k) {
@@ -100,7 +52,9 @@ Margins margins_nonzero(const std::vector<double>& f, const std::vector<Complex>
     if (!t.empty()) t2.push_back(t[k]);
   }
   if (crossovers != nullptr) *crossovers = gain_crossovers(f2, l2);
-  return margins(f2, l2, t2);
+  MarginsOptions o;
+  o.stability = stability;
+  return margins(f2, l2, t2, o);
 }
 
 // Everything a candidate evaluation needs, computed once.
@@ -164,8 +118,9 @@ CrossoverCandidate evaluate(const Problem& pb, const Option& opt, double fc) {
   for (std::size_t k = 0; k < pb.grid.size(); ++k)
     l[k] = opt.f_grid[k] * law_feedback_response(cfg.law, pb.grid[k], pb.ts) * pb.plant[k];
   std::vector<GainCrossover> crossovers;
-  c.margins = margins_nonzero(pb.grid, l, {}, &crossovers);
-  c.max_pole_radius = closed_loop_pole_radius(cfg);
+  const LoopPoles poles = loop_poles(cfg);
+  c.margins = margins_nonzero(pb.grid, l, {}, pole_stability(poles), &crossovers);
+  c.max_pole_radius = poles.max_radius;
   const Margins& m = c.margins;
   // Every gain crossover must have the target margin (R11): a resonance lifted above 0 dB is gain-stabilised by
   // the notch, never left phase-stabilised (its phase moves with the load; decision R15).
@@ -329,47 +284,6 @@ std::vector<ResonancePeak> plant_resonances(const std::vector<double>& f, const 
   return out;
 }
 
-double closed_loop_pole_radius(const machine::AxisConfig& config_in) {
-  machine::AxisConfig config = config_in;
-  config.validate_and_complete();
-  const machine::Axis axis(config);
-  if (axis.power_train().pulse_input())
-    throw std::invalid_argument("closed_loop_pole_radius: a pulse-input axis has no position loop on the card");
-  const machine::TickModel tm = axis.power_train().linear_tick_model();
-  const Gains g = gains_of(config.law);
-  // Controller E -> V: PID (states: Sum(k-1), E(k-1)), biquad 0, biquad 1, output stage.
-  StateSpace pid;
-  pid.a = (Eigen::MatrixXd(2, 2) << 1.0, 0.0, 0.0, 0.0).finished();
-  pid.b = (Eigen::MatrixXd(2, 1) << 1.0, 1.0).finished();
-  pid.c = (Eigen::MatrixXd(1, 2) << g.ki, -g.kd).finished();
-  pid.d = Eigen::MatrixXd::Constant(1, 1, g.kp + g.ki + g.kd);
-  StateSpace k = series(series(pid, biquad_ss(config.filters[0])), biquad_ss(config.filters[1]));
-  k.c *= g.volts_per_count;
-  k.d *= g.volts_per_count;
-  // Plant V -> Y (pulse) with the one-tick output delay: x' = A x + B d, d' = v, y = cpr C x.
-  const Eigen::Index n = tm.a.rows();
-  const double cpr = config.encoder.counts_per_rev / (2.0 * M_PI);
-  StateSpace p;
-  p.a = Eigen::MatrixXd::Zero(n + 1, n + 1);
-  p.a.topLeftCorner(n, n) = tm.a;
-  p.a.topRightCorner(n, 1) = tm.b.col(0);
-  p.b = Eigen::MatrixXd::Zero(n + 1, 1);
-  p.b(n, 0) = 1.0;
-  p.c = Eigen::MatrixXd::Zero(1, n + 1);
-  p.c.leftCols(n) = cpr * (config.encoder.on_load ? tm.c_load : tm.c_motor);
-  // e = -y: x_p' = (Ap - Bp Dk Cp) x_p + Bp Ck x_k, x_k' = -Bk Cp x_p + Ak x_k.
-  const Eigen::Index np = p.a.rows(), nk = k.a.rows();
-  Eigen::MatrixXd a(np + nk, np + nk);
-  a.topLeftCorner(np, np) = p.a - p.b * k.d * p.c;
-  a.topRightCorner(np, nk) = p.b * k.c;
-  a.bottomLeftCorner(nk, np) = -k.b * p.c;
-  a.bottomRightCorner(nk, nk) = k.a;
-  const Eigen::VectorXcd ev = a.eigenvalues();
-  double r = 0;
-  for (Eigen::Index i = 0; i < ev.size(); ++i) r = std::max(r, std::abs(ev(i)));
-  return r;
-}
-
 ModelTuneResult model_tune(const machine::AxisConfig& config_in, const ModelTuneOptions& o) {
   machine::AxisConfig config = config_in;
   config.validate_and_complete();
@@ -502,8 +416,9 @@ ModelTuneResult model_tune(const machine::AxisConfig& config_in, const ModelTune
   fin.law = res.law;
   fin.filters = res.filters;
   const LoopResponse lr = loop_response(fin, pb.grid, LoopOptions{false, true});
-  res.margins = margins_nonzero(pb.grid, lr.loop_gain, lr.closed_loop);
-  res.max_pole_radius = closed_loop_pole_radius(fin);
+  const LoopPoles poles = loop_poles(fin);
+  res.margins = margins_nonzero(pb.grid, lr.loop_gain, lr.closed_loop, pole_stability(poles));
+  res.max_pole_radius = poles.max_radius;
   if (opt.filter) {
     NotchDesign& nd = res.notch;
     nd.used = true;

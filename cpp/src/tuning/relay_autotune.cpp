@@ -146,9 +146,16 @@ RelayTuneResult relay_autotune(machine::Axis& axis, const RelayTuneOptions& o, c
     throw std::invalid_argument("RelayTune: a pulse-output axis (stepper or servo in position mode) has no analog "
                                 "output to drive the relay with");
   const double ts = axis.servo_period_s();
-  const int n_r = std::max(1, static_cast<int>(std::lround(o.sampling_time_s / ts)));
+  // The relay decides at the first tick at or after each multiple of its sampling time, exactly (no rounding to
+  // whole ticks: 250 us on a 100 us axis decides after 2, 3, 2, 3, ... ticks; decisions M8); never more often than
+  // every tick.
+  const double per_tick = ts / o.sampling_time_s;  // relay samples per tick
+  auto decides = [per_tick](long long k) {
+    return k == 0 || std::floor(static_cast<double>(k) * per_tick + 1e-9) !=
+                         std::floor(static_cast<double>(k - 1) * per_tick + 1e-9);
+  };
   RelayTuneResult res;
-  res.sampling_time_s = n_r * ts;
+  res.sampling_time_s = std::max(o.sampling_time_s, ts);
   const double sign = std::visit(
       [](const auto& p) {
         using P = std::decay_t<decltype(p)>;
@@ -164,7 +171,7 @@ RelayTuneResult relay_autotune(machine::Axis& axis, const RelayTuneOptions& o, c
   std::vector<double> e_hist, u_hist;
   const std::function<double(std::size_t, double, double)> relay = [&](std::size_t, double cmd, double fb) {
     const double e = cmd - fb;
-    if ((tick % n_r) == 0) {
+    if (decides(tick)) {
       if (e > eps) {
         if (u < 0) rising.push_back(tick);
         u = d;

@@ -27,6 +27,7 @@
 #include "servobench/tuning/loop_response.hpp"
 #include "servobench/tuning/margins.hpp"
 #include "servobench/tuning/relay_autotune.hpp"
+#include "servobench/tuning/stability.hpp"
 
 namespace servobench::tuning {
 
@@ -109,9 +110,5 @@ ModelTuneResult model_tune(const machine::AxisConfig& config, const ModelTuneOpt
 // most max_width_decades (broader humps are loops or bends, not modes). Sorted by prominence, largest first.
 std::vector<ResonancePeak> plant_resonances(const std::vector<double>& freq_hz, const std::vector<Complex>& h,
                                             double min_prominence_db, double max_width_decades = 1.0);
-
-// Largest |pole| of the closed position loop (law feedback part, both biquads, the plant's tick model with its
-// one-tick delay), from the closed loop's state matrix: < 1 means stable.
-double closed_loop_pole_radius(const machine::AxisConfig& config);
 
 }  // namespace servobench::tuning

@@ -30,7 +30,8 @@ struct RelayTuneOptions {
   double amplitude_v = 1.0;             // relay output +-d, V, 0 < d <= 10 (L1843)
   double hysteresis_pulse = 50.0;       // eps, pulse, > 0 (L1846)
   int data_length = 200;                // gain sets to compute, 1..100000 (L1845)
-  double sampling_time_s = 500e-6;      // relay sampling time, 100e-6..1000e-6 s (L1847); rounded to whole ticks
+  double sampling_time_s = 500e-6;      // relay sampling time, 100e-6..1000e-6 s (L1847); exact: the relay decides
+                                        // at the first tick at or after each multiple of it (at most every tick)
   double deviation_limit_pulse = 2000;  // |e| above this stops the tuning, pulse; 0 = off (L1842)
   double max_spread = 0.10;             // accepted relative standard deviation of each gain (L1794), 0 < . <= 1
   double phase_margin_deg = 60.0;       // design target (L1796), 10..89 deg
@@ -52,7 +53,7 @@ struct PidDesign {
 struct RelayTuneResult {
   TuneStatus status = TuneStatus::kCompleted;
   std::string message;
-  double sampling_time_s = 0;        // the sampling time actually used (whole ticks)
+  double sampling_time_s = 0;        // the sampling time actually used: max(option, servo period), s
   // Per identified cycle (after the settling cycles):
   std::vector<double> period_s, amplitude_pulse, peak_pulse, center_pulse;
   std::vector<double> gain_pulse_per_v, phase_deg;  // describing-function point of G at wu

@@ -14,6 +14,23 @@
 // fundamental explains, 1 for a pure sine) and its harmonic distortion (2nd..5th harmonic amplitude over the
 // fundamental's). A deviation limit > 0 turns the servo off the tick |E| exceeds it and ends the sweep; a drive
 // alarm does the same (L2031).
+//
+// Every point is judged (issue 20): the ticks at which the output stage saturated (DAC at full scale or the law's
+// output at +-32767 counts), the drive's current command was clamped (torque drive: amps_per_volt * V beyond
+// min(current limit, torque limit / kt)) and the motor torque was at the velocity drive's limit are counted over
+// the analysed window; a point with any saturated tick, a coherence below min_coherence, a harmonic distortion above
+// max_distortion, or a response below the quantisation floor (|Y| < min_response_pulse pulse with a quantising
+// encoder, |U| < min_dac_counts counts with a quantising DAC) is flagged with the reason, and left out of margins.
+//
+// Amplitude: amplitude_pulse > 0 is used at every point (and checked as above). amplitude_pulse = 0 (the default
+// of the Python API and the CLI) picks one per point like a careful engineer with the card's Bode tool: the
+// largest that the linear model (tuning/loop_response) predicts keeps the DAC within dac_fraction of full scale
+// and the drive's current command within dac_fraction of its limit, capped at max_amplitude_pulse (travel); when
+// a point still saturates it is run again at half the amplitude (up to 6 times). The amplitudes used are
+// reported per point. Over the first quarter of the settling share the amplitude moves from the previous point's
+// to the new one on a raised cosine, so the command's velocity never steps; with the automatic amplitude the first
+// point is preceded by a lead-in of the same length (amplitude rising from 0, discarded) so that its window sees the
+// steady state (a given amplitude keeps the manual's timing, points x update_s).
 #pragma once
 
 #include <complex>
@@ -29,13 +46,22 @@ namespace servobench::tuning {
 struct SineSweepOptions {
   double start_hz = 10.0;            // first frequency, Hz, > 0 and below Nyquist (manual: about 10 Hz, L2015)
   double end_hz = 100.0;             // last frequency, Hz, > 0 and below Nyquist (manual: keep <= 500 Hz, L2015)
-  double amplitude_pulse = 300.0;    // sine amplitude, pulse, > 0 (manual: about 300 for 10000 pulse/rev, L2019)
+  double amplitude_pulse = 300.0;    // sine amplitude, pulse, > 0 (manual: about 300 for 10000 pulse/rev, L2019);
+                                     // 0: chosen per point (see above)
   int points = 100;                  // data length: number of log-spaced frequencies, 2..100000 (L2038-2045: > 1)
   double update_s = 0.1;             // time per frequency point, s, > 0 (L2023)
   double deviation_limit_pulse = 0;  // |E| above this turns the servo off, pulse; 0 = off (L2031)
   double settle_fraction = 0.25;     // share of each point's samples discarded before the analysis, 0..0.9; cut
                                      // short where it would leave less than one whole period
   LoopOptions loop;                  // feed-forward and filters in the loop (docs/decisions.md B1-B2)
+  // Judging the points (decisions M5): thresholds a point must meet to enter margins.
+  double min_coherence = 0.99;       // 0..1
+  double max_distortion = 0.05;      // harmonic distortion of Y, amplitude ratio, >= 0
+  double min_response_pulse = 4.0;   // |Y| fundamental floor, pulse (encoder quantisation), >= 0
+  double min_dac_counts = 30.0;      // |U| fundamental floor, DAC counts (1 count = 0.3 mV), >= 0
+  // Automatic amplitude (amplitude_pulse = 0).
+  double dac_fraction = 0.5;         // predicted peak |U| / full scale and |i_cmd| / limit, (0, 1]
+  double max_amplitude_pulse = 0;    // travel cap, pulse; 0: one encoder revolution (counts_per_rev)
   // Throws std::invalid_argument naming the field and its range; the update time must hold at least one whole
   // period of the lowest frequency.
   void validate(double servo_period_s) const;
@@ -54,6 +80,13 @@ struct SineSweepResult {
   std::vector<double> distortion;      // harmonic distortion of Y, amplitude ratio
   std::vector<int> periods;            // whole periods analysed per point
   std::vector<int> window;             // samples analysed per point
+  std::vector<double> amplitude_pulse;  // excitation amplitude used per point, pulse
+  std::vector<double> torque_amplitude_nm;   // fundamental of the motor torque per point, N*m
+  std::vector<int> dac_saturated_ticks;      // per point, over its whole run (the last try)
+  std::vector<int> current_saturated_ticks;  // drive current command clamped (torque drive)
+  std::vector<int> torque_saturated_ticks;   // motor torque at the velocity drive's limit
+  std::vector<int> tries;                    // runs of the point (> 1: the amplitude was halved)
+  std::vector<std::string> flag;             // "" for a good point, else the reasons ("; "-separated)
   long long ticks = 0;                 // servo ticks run in total
   double stop_time_s = 0;              // time from the sweep's start at which it ended, s
   double stop_error_pulse = 0;         // the following error that tripped the deviation limit, pulse

@@ -1,0 +1,177 @@
+"""Stability and margins of a position loop (issue 20: stability before margins): the :class:`Margins` every
+frequency-response tool returns, :func:`margins` from frequency-response data (the Nyquist criterion for the
+verdict), :func:`analytic_margins` of an axis's linear loop (closed-loop poles, crossings refined on the exact loop
+gain) and :func:`closed_loop_poles`. Also available from :mod:`servobench.frequency`. C++:
+``tuning/margins.hpp``, ``tuning/stability.hpp``; docs/bode.md, decisions M1-M4."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from . import _core
+
+__all__ = ["Margins", "analytic_margins", "closed_loop_poles", "margins"]
+
+
+def _core_axis(axis):
+    return getattr(axis, "_axis", axis)
+
+
+@dataclass(frozen=True)
+class Margins:
+    """Stability first, then the margins and loop figures of merit (from :func:`margins`,
+    :func:`analytic_margins` or :meth:`FrequencyResponse.margins`). ``str(m)`` starts with "UNSTABLE" for an
+    unstable loop.
+
+    stable, stability
+        the verdict and how it was reached: ``stability`` = {"decided", "stable", "method" ("closed-loop poles" for
+        the linear model, "Nyquist" for data), "reason" (one sentence with the figures), "max_pole_radius" (largest
+        closed-loop ``|z|``, poles only), "unstable_poles" (closed-loop poles outside the unit circle; -1 undecided),
+        "open_loop_unstable_poles", "integrators"}. ``stable`` is False when unstable *or* undecided. The margins of
+        a loop that is not stable are meaningless (python-control reports them all the same).
+    gain_margin_db, gm_freq_hz
+        how far the loop gain may rise before a phase crossover reaches -1, dB (the smallest ``-20 log10|L|`` > 0
+        over the phase crossovers, angle L = -180 deg), and where, Hz. ``inf`` / NaN if there is none.
+    lower_gain_margin_db, lower_gm_freq_hz
+        how far the gain may fall (negative dB) for a conditionally stable loop (a PID on an integrating plant has
+        one at low frequency): the phase crossover with ``|L|`` > 1 closest to 0 dB; ``-inf`` / NaN if none.
+    phase_margin_deg, pm_freq_hz
+        180 deg + angle L at the gain crossover ``|L|`` = 1 nearest to -1, deg, and that crossover frequency, Hz.
+    gain_crossovers, phase_crossovers
+        every crossing (MATLAB's allmargin): {"freq_hz", "phase_margin_deg"} and {"freq_hz", "gain_margin_db",
+        "kind"} arrays, by frequency; kind "upper" (``|L|`` < 1: the gain may rise) or "lower" (it may fall).
+    delay_margin_s
+        extra dead time the loop tolerates, phase margin / (360 deg * crossover), s (the smallest over crossovers).
+    bandwidth_hz
+        closed-loop -3 dB bandwidth (first frequency where ``|Y/R|`` is 3 dB below its value at the lowest
+        frequency), Hz; NaN if not reached in the data.
+    ms, ms_freq_hz
+        peak sensitivity max ``|1/(1 + L)|`` and its frequency, Hz (1/Ms is the distance of L from -1; Ms < 2 is the
+        usual robustness goal).
+    source, note
+        what the figures were read from ("analytic model", "measured (stepped sine)", ...) and what was left out.
+    """
+
+    gain_margin_db: float
+    gm_freq_hz: float
+    lower_gain_margin_db: float
+    lower_gm_freq_hz: float
+    phase_margin_deg: float
+    pm_freq_hz: float
+    delay_margin_s: float
+    bandwidth_hz: float
+    ms: float
+    ms_freq_hz: float
+    stable: bool = False
+    stability: dict = field(default_factory=dict)
+    gain_crossovers: dict = field(default_factory=dict)
+    phase_crossovers: dict = field(default_factory=dict)
+    source: str = ""
+    note: str = ""
+
+    @property
+    def verdict(self) -> str:
+        """"stable", "UNSTABLE" or "UNDECIDED"."""
+        if self.stable:
+            return "stable"
+        return "UNSTABLE" if self.stability.get("decided", True) else "UNDECIDED"
+
+    def __str__(self) -> str:
+        def hz(x):
+            return "-" if not np.isfinite(x) else f"{x:.4g} Hz"
+
+        src = f" ({self.source})" if self.source else ""
+        reason = self.stability.get("reason", "")
+        lines = []
+        if self.verdict == "UNSTABLE":
+            lines.append(f"UNSTABLE{src}: {reason}")
+            lines.append("the margins below are meaningless for an unstable loop")
+        elif self.verdict == "UNDECIDED":
+            lines.append(f"stability UNDECIDED{src}: {reason}")
+            lines.append("the margins below are not backed by a stability verdict")
+        else:
+            lines.append(f"stable{src}: {reason}")
+        lines += [
+            f"phase margin {self.phase_margin_deg:.3g} deg at {hz(self.pm_freq_hz)} "
+            f"(delay margin {self.delay_margin_s * 1e3:.3g} ms)" if np.isfinite(self.phase_margin_deg)
+            else "phase margin: none found (|L| does not cross 1 in the data)",
+            f"gain margin {self.gain_margin_db:.3g} dB at {hz(self.gm_freq_hz)}" if np.isfinite(self.gain_margin_db)
+            else "gain margin: none found (no phase crossover with |L| < 1 in the data)",
+        ]
+        if np.isfinite(self.lower_gain_margin_db):
+            lines.append(f"lower gain margin {self.lower_gain_margin_db:.3g} dB at {hz(self.lower_gm_freq_hz)}")
+        gc, pc = self.gain_crossovers, self.phase_crossovers
+        if len(gc.get("freq_hz", ())) > 1:
+            lines.append("gain crossovers: " + ", ".join(
+                f"{f:.4g} Hz (PM {p:.3g} deg)" for f, p in zip(gc["freq_hz"], gc["phase_margin_deg"])))
+        if len(pc.get("freq_hz", ())) > 1:
+            lines.append("phase crossovers: " + ", ".join(
+                f"{f:.4g} Hz ({k} {g:.3g} dB)" for f, g, k in zip(pc["freq_hz"], pc["gain_margin_db"], pc["kind"])))
+        lines.append(f"closed-loop bandwidth (-3 dB) {hz(self.bandwidth_hz)}")
+        lines.append(f"peak sensitivity Ms {self.ms:.3g} at {hz(self.ms_freq_hz)}")
+        if self.note:
+            lines.append(f"note: {self.note}")
+        return "\n".join(lines)
+
+
+def _margins_from(d: dict, source: str = "", note: str = "") -> Margins:
+    """A :class:`Margins` from the core's dict (adds the crossing kinds)."""
+    d = dict(d)
+    pc = dict(d.get("phase_crossovers", {}))
+    if "gain_margin_db" in pc:
+        pc["kind"] = ["lower" if g < 0 else "upper" for g in np.asarray(pc["gain_margin_db"])]
+    d["phase_crossovers"] = pc
+    st = dict(d.get("stability", {}))
+    keep = {k: v for k, v in d.items() if k not in ("stability", "stable", "source", "note")}
+    return Margins(**keep, stable=bool(st.get("stable", False)), stability=st, source=source, note=note)
+
+
+def margins(freq_hz, loop_gain, closed_loop=None, *, open_loop_unstable_poles: int = 0,
+            integrators: int | None = None, source: str = "") -> Margins:
+    """Stability, gain, phase and delay margins (every crossing), closed-loop bandwidth and peak sensitivity from
+    frequency-response data.
+
+    freq_hz
+        increasing frequencies, Hz.
+    loop_gain
+        the loop gain L (complex, pulse/pulse): the analytic ``loop_gain`` or a measured open loop Y/E taken with
+        the feed-forward off.
+    closed_loop
+        Y/R for the bandwidth (complex); default L/(1 + L).
+    open_loop_unstable_poles, integrators
+        the Nyquist criterion's P (open-loop poles outside the unit circle, 0 for the card loops) and the number of
+        open-loop poles at z = 1 (None: inferred from the slope of the two lowest points, round(-slope / 20
+        dB/decade)). The verdict is "undecided" when the data do not start where ``|L|`` >= 2 or do not end where
+        ``|L|`` < 1.
+
+    Crossings are interpolated linearly in log frequency (gain in dB, phase unwrapped between neighbours), so the
+    figures are as good as the grid is dense around them. The phase margin is that of the crossover nearest to -1
+    (the smallest ``|PM|``, python-control's rule) and the delay margin the smallest over all crossovers. For the
+    linear model use :func:`analytic_margins` (closed-loop poles, exact crossings).
+    """
+    if isinstance(open_loop_unstable_poles, bool) or int(open_loop_unstable_poles) != open_loop_unstable_poles \
+            or open_loop_unstable_poles < 0:
+        raise ValueError(f"open_loop_unstable_poles = {open_loop_unstable_poles!r} must be an integer >= 0")
+    if integrators is not None and (int(integrators) != integrators or not 0 <= integrators <= 10):
+        raise ValueError(f"integrators = {integrators!r} must be None or an integer in 0..10")
+    d = _core.margins(np.asarray(freq_hz, dtype=float), np.asarray(loop_gain, dtype=complex),
+                      None if closed_loop is None else np.asarray(closed_loop, dtype=complex),
+                      int(open_loop_unstable_poles), -1 if integrators is None else int(integrators))
+    return _margins_from(d, source)
+
+
+def analytic_margins(axis, freq_hz=None, *, filters: bool = True) -> Margins:
+    """Margins of the axis's linear loop: stability from the closed-loop poles (the linear model), every crossing
+    found on `freq_hz` (Hz, increasing, below Nyquist; None: 4000 log-spaced points from 1e-5/Ts to Nyquist, plus
+    the Nyquist frequency itself) and refined on the exact loop gain to 1e-10 in log frequency; Ms by golden-section
+    search. What python-control's ``stability_margins(..., returnall=True)`` gives on :func:`linear_model`."""
+    f = None if freq_hz is None else np.asarray(freq_hz, dtype=float)
+    return _margins_from(_core.analytic_margins(_core_axis(axis), f, bool(filters)), "analytic model")
+
+
+def closed_loop_poles(axis, *, filters: bool = True) -> dict:
+    """The axis's linear loop's poles (complex z): {"closed_loop", "open_loop", "max_radius", "integrators"
+    (open-loop poles at z = 1), "open_loop_unstable"}."""
+    return dict(_core.loop_poles(_core_axis(axis), bool(filters)))
