@@ -110,3 +110,26 @@ def test_compiled_controller_ctypes_signature_is_checked():
     with pytest.raises(TypeError, match="controller"):
         sb.demo_axis().run(CMD, controller="pid")
     assert "double *state" in sb.controller_signature()
+
+
+def test_card_step_equals_card_run():
+    def make():
+        base = sb.demo_axis()
+        card = sb.Card(2, law=base.law, drive=base.drive, plant=base.plant, encoder=base.encoder)
+        for i in range(2):
+            card.axis_on(i)
+            card.set_mode(i, "jog")
+            card.stage_acc(i, 0.05)
+            card.stage_vel(i, 3.0)
+        card.update(0b11)
+        return card
+
+    a, b = make(), make()
+    rec = a.run(200, signals=["actual_pos"])
+    for _ in range(200):
+        tick = b.step()
+    assert tick == 200
+    assert b.run(1, signals=["actual_pos"])[0].actual_pos[0] == a.run(1, signals=["actual_pos"])[0].actual_pos[0]
+    assert rec[1].actual_pos[-1] != 0
+    with pytest.raises(ValueError, match="ticks"):
+        b.step(-1)
