@@ -115,13 +115,13 @@ def test_compiled_controller_ctypes_signature_is_checked():
 def test_card_step_equals_card_run():
     def make():
         base = sb.demo_axis()
-        card = sb.Card(2, law=base.law, drive=base.drive, plant=base.plant, encoder=base.encoder)
-        for i in range(2):
+        card = sb.Card(4, law=base.law, drive=base.drive, plant=base.plant, encoder=base.encoder)
+        for i in range(4):
             card.axis_on(i)
             card.set_mode(i, "jog")
             card.stage_acc(i, 0.05)
             card.stage_vel(i, 3.0)
-        card.update(0b11)
+        card.update(0b1111)
         return card
 
     a, b = make(), make()
