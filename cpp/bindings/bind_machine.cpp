@@ -104,6 +104,14 @@ Array checked_array(const py::handle& obj, const char* name, py::ssize_t expecte
   return a;
 }
 
+// A user controller's voltage request must be a number: NaN or inf would enter the DAC and the plant's state.
+double finite_request(double volts, std::size_t tick) {
+  if (!std::isfinite(volts))
+    throw py::value_error("controller returned " + format_value(volts) + " V at tick " + std::to_string(tick) +
+                          " of the run: it must return a finite voltage request");
+  return volts;
+}
+
 }  // namespace
 
 void bind_machine(py::module_& m) {
@@ -216,7 +224,7 @@ void bind_machine(py::module_& m) {
             Array state;
             if (!controller.is_none()) {
               ext = [&controller](std::size_t k, double r, double y) {
-                return controller(k, r, y).cast<double>();
+                return finite_request(controller(k, r, y).cast<double>(), k);
               };
               in.external = &ext;
             } else if (controller_address != 0) {
@@ -228,7 +236,9 @@ void bind_machine(py::module_& m) {
                 st = state.mutable_data();
               }
               const auto fn = reinterpret_cast<CompiledLaw>(controller_address);
-              ext = [fn, st](std::size_t k, double r, double y) { return fn(static_cast<std::int64_t>(k), r, y, st); };
+              ext = [fn, st](std::size_t k, double r, double y) {
+                return finite_request(fn(static_cast<std::int64_t>(k), r, y, st), k);
+              };
               in.external = &ext;
             }
             machine::RunOutcome outcome;

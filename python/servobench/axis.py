@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import Iterable, Mapping
 
@@ -195,6 +196,8 @@ class Axis:
 
         The ticks are exactly those :meth:`run` makes over the same commands (the state carries on between calls).
         """
+        if not math.isfinite(command_pulse):  # TypeError for a non-number; NaN/inf must not enter the state
+            raise ValueError(f"command_pulse = {command_pulse} must be a finite number (pulse)")
         if n == 1 and volts is None:
             return self._axis.step(command_pulse)
         if not isinstance(n, (int, np.integer)) or isinstance(n, bool) or n < 1:

@@ -133,3 +133,15 @@ def test_card_step_equals_card_run():
     assert rec[1].actual_pos[-1] != 0
     with pytest.raises(ValueError, match="ticks"):
         b.step(-1)
+
+
+def test_non_finite_inputs_and_controller_outputs_are_refused():
+    axis = sb.demo_axis()
+    for bad in (float("nan"), float("inf")):
+        with pytest.raises(ValueError, match="command_pulse"):
+            axis.step(bad)
+        with pytest.raises(ValueError, match="finite voltage"):
+            sb.demo_axis().run(CMD, controller=lambda k, c, f, bad=bad: bad)
+    with pytest.raises(TypeError):
+        axis.step("1")
+    assert axis.tick == 0 and np.isfinite(axis.angle_rad)
