@@ -24,6 +24,9 @@ import servobench as sb
 import benchlib
 
 GOAL_TICKS_PER_S = 10e6  # product goal for the full chain on one core
+GOAL_VS_NUMBA = 1.0  # rigid chain, feedback only: >= 1.0x the same loop compiled with numba (issue 22 point 1)
+GOAL_FULL_CHAIN = 15e6  # full chain (two-mass, Stribeck, two biquads, DAC, current loop), ticks/s (issue 22 point 1)
+GOAL_FLAT = 1.25  # cost per tick at the longest run / at 10^4 ticks, feedback only ("flat", issue 22 point 1)
 
 
 def python_reference(axis: sb.Axis, cmd: sb.Trajectory, n: int) -> np.ndarray:
@@ -158,8 +161,8 @@ def best_of(fn, repeats: int) -> float:
     return best
 
 
-FULL = dict(ticks=1_000_000, python_ticks=200_000)
-QUICK = dict(ticks=20_000, python_ticks=5_000)
+FULL = dict(ticks=1_000_000, python_ticks=200_000, flat=(10_000, 100_000, 1_000_000, 10_000_000, 100_000_000))
+QUICK = dict(ticks=20_000, python_ticks=5_000, flat=(10_000, 20_000))
 
 
 def run(quick: bool = False, ticks: int | None = None, python_ticks: int | None = None) -> benchlib.Result:
@@ -203,6 +206,50 @@ def run(quick: bool = False, ticks: int | None = None, python_ticks: int | None 
             raise SystemExit(f"pure-Python reference differs from the C++ core at {mismatch} of {n_py} ticks")
         py_rate = n_py / t_py
 
+    # The strongest peer for the simulated loop: the same rigid chain compiled with numba (issue 22), checked to
+    # reproduce the C++ feedback exactly on every tick; CPU-time medians of alternating runs in this process.
+    numba = benchlib.import_peer("numba", "numba")
+    nb_rate = nb_cpu = sb_cpu = None
+    if numba is not None:
+        import numba_peer
+
+        chain, _ = numba_peer.kernels()
+        consts = numba_peer.chain_constants(sb.demo_axis())
+        nb_out = np.empty(n_ticks)
+        chain(consts, cmd.pos[:10], cmd.vel[:10], cmd.acc[:10], nb_out[:10])  # compile (not timed)
+        ours, theirs = [], []
+        for _ in range(rep5):
+            c0 = time.process_time()
+            ref_fb = sb.demo_axis().run(cmd, signals=["fb_pos"]).fb_pos
+            ours.append(time.process_time() - c0)
+            c0 = time.process_time()
+            chain(consts, cmd.pos, cmd.vel, cmd.acc, nb_out)
+            theirs.append(time.process_time() - c0)
+        bad = int(np.count_nonzero(nb_out != ref_fb))
+        if bad:
+            raise SystemExit(f"numba peer differs from the C++ core at {bad} of {n_ticks} ticks")
+        sb_cpu, nb_cpu = float(np.median(ours)), float(np.median(theirs))
+        nb_rate = n_ticks / nb_cpu
+
+    # Full chain with the feedback only recorded (issue 22's 15 M ticks/s goal) and the cost per tick against the run
+    # length (feedback only: flat from 10^4 ticks up, no cliff).
+    slow_t = long_move(n_ticks)
+    slow_t = sb.Trajectory(pos=slow_t.pos * 0.5, vel=slow_t.vel * 0.5, acc=slow_t.acc * 0.25)
+    t_full_fb = best_of(lambda: full_chain_axis("torque").run(slow_t, signals=["fb_pos"]), rep3)
+    flat = {}
+    for n_flat in size["flat"]:
+        hold = np.full(n_flat, 1000.0)
+        reps = max(1, min(rep5, 10_000_000 // n_flat))
+        costs = []
+        for _ in range(reps):
+            a_flat = sb.demo_axis()
+            c0 = time.process_time()
+            a_flat.run(hold, signals=["fb_pos"])
+            costs.append((time.process_time() - c0) / n_flat)
+        flat[n_flat] = float(np.median(costs))
+        del hold
+    flat_ratio = flat[max(flat)] / flat[min(flat)]
+
     rows.append((f"servobench C++ core, rigid chain, all {len(sb.SIGNALS)} signals recorded", n_ticks, t_all,
                  n_ticks / t_all))
     rows.append(("servobench C++ core, rigid chain, feedback only recorded", n_ticks, t_min, n_ticks / t_min))
@@ -216,6 +263,12 @@ def run(quick: bool = False, ticks: int | None = None, python_ticks: int | None 
                  4 * card_ticks, t_card_scope, 4 * card_ticks / t_card_scope))
     if py_rate is not None:
         rows.append(("rigid chain tick in pure Python (CPython)", n_py, t_py, py_rate))
+    extra_rows = [("full chain, torque drive, feedback only recorded", n_ticks, t_full_fb, n_ticks / t_full_fb)]
+    if nb_rate is not None:
+        extra_rows.append((f"servobench, rigid chain, feedback only (CPU-time median of {rep5})", n_ticks, sb_cpu,
+                           n_ticks / sb_cpu))
+        extra_rows.append((f"the same rigid chain compiled with numba {numba.__version__} (CPU-time median of "
+                           f"{rep5}, same run)", n_ticks, nb_cpu, nb_rate))
 
     lines = [
         "# Axis servo ticks per second",
@@ -236,10 +289,19 @@ def run(quick: bool = False, ticks: int | None = None, python_ticks: int | None 
         "| implementation | ticks | wall [s] | ticks/s | vs pure Python | vs goal 10 M ticks/s |",
         "|---|---:|---:|---:|---:|---:|",
     ]
-    for name, n, wall, rate in rows:
+    for name, n, wall, rate in rows + extra_rows:
         vs_py = f"{rate / py_rate:.0f}x" if py_rate is not None else benchlib.NOT_INSTALLED
         lines.append(f"| {name} | {n:,} | {wall:.4f} | {rate / 1e6:.2f} M | {vs_py} | "
                      f"{rate / GOAL_TICKS_PER_S:.2f} |")
+    lines += ["", "Against numba (issue 22): "
+              + (f"servobench {n_ticks / sb_cpu / 1e6:.2f} M ticks/s, numba {nb_rate / 1e6:.2f} M ticks/s: "
+                 f"servobench is **{nb_cpu / sb_cpu:.2f}x** numba"
+                 + (" -- a loss: the numba loop is faster." if sb_cpu > nb_cpu else ".")
+                 if nb_rate is not None else "numba not installed."),
+              "", "Cost per tick against the run length (rigid chain, feedback only, CPU time):", "",
+              "| ticks | ns/tick |", "|---:|---:|"]
+    lines += [f"| {n:,} | {c * 1e9:.1f} |" for n, c in sorted(flat.items())]
+    lines += ["", f"Longest / shortest: {flat_ratio:.2f}x (goal <= {GOAL_FLAT})."]
     text = "\n".join(lines) + "\n"
 
     # Figures for the summary: every C++ row against the pure-Python rigid tick of the same run.
@@ -258,8 +320,20 @@ def run(quick: bool = False, ticks: int | None = None, python_ticks: int | None 
             **({} if card else goal),
             note="no goal stated for the card, issue 10" if card else
             ("peer is the rigid tick: ratio is a lower bound" if i >= 2 else "")))
+    figures.append(benchlib.Figure(
+        "axis", "rigid chain, feedback only, CPU time, vs numba", "M ticks/s",
+        (n_ticks / sb_cpu if sb_cpu else n_ticks / t_min) / 1e6, True,
+        **benchlib.peer_figure("numba (same loop)", numba, lambda: nb_rate / 1e6),
+        goal=GOAL_VS_NUMBA, goal_on="ratio", goal_source="issue 22",
+        note="a ratio below 1 is a loss to numba"))
+    figures.append(benchlib.Figure(
+        "axis", "full chain, torque drive, feedback only", "M ticks/s", n_ticks / t_full_fb / 1e6, True,
+        **py, goal=GOAL_FULL_CHAIN / 1e6, goal_source="issue 22", note="peer is the rigid tick: ratio is a lower bound"))
+    figures.append(benchlib.Figure(
+        "axis", f"cost per tick, {max(flat):,} vs {min(flat):,} ticks, feedback only", "x", flat_ratio, False,
+        goal=GOAL_FLAT, goal_source="issue 22", note="1.0 = flat"))
     return benchlib.Result("axis", "bench/bench_axis.py", "axis_ticks.md", text, figures, quick,
-                           peers={"SciPy": benchlib.version(scipy_linalg)})
+                           peers={"SciPy": benchlib.version(scipy_linalg), "numba": benchlib.version(numba)})
 
 
 def main(argv=None) -> int:

@@ -18,6 +18,7 @@ import json
 import os
 import pathlib
 import platform
+import resource
 import subprocess
 import sys
 import time
@@ -36,13 +37,14 @@ BENCHES = [
     ("autotune", "bench_autotune.py", "autotune.md"),
     ("paths", "bench_paths.py", "paths.md"),
     ("identify", "bench_identify.py", "identify.md"),
+    ("batch", "bench_batch.py", "batch.md"),
 ]
 SUMMARY_START = "<!-- summary-start -->"  # docs/benchmarks.md includes what lies between these two
 SUMMARY_END = "<!-- summary-end -->"
 TABLE_START = "<!-- summary-table-start -->"
 TABLE_END = "<!-- summary-table-end -->"
 HEADER = "| benchmark | figure | servobench | peer (same run) | speed-up | goal | met |"
-PEER_NAMES = {"SciPy": "scipy", "python-control": "control", "Ruckig": "ruckig"}
+PEER_NAMES = {"SciPy": "scipy", "python-control": "control", "Ruckig": "ruckig", "numba": "numba"}
 
 
 def loadavg() -> str:
@@ -74,6 +76,7 @@ def run_bench(topic: str, script: str, results_dir: pathlib.Path, quick: bool, t
     json_path = results_dir / f"{topic}.json"
     started = datetime.datetime.now(datetime.timezone.utc).replace(microsecond=0)
     load_before = loadavg()
+    cpu0 = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
     out = dict(topic=topic, script=f"bench/{script}", load_before=load_before)
     try:
@@ -82,7 +85,9 @@ def run_bench(topic: str, script: str, results_dir: pathlib.Path, quick: bool, t
     except subprocess.TimeoutExpired as e:
         tail = e.stderr.decode(errors="replace") if isinstance(e.stderr, bytes) else (e.stderr or "")
         code, err = None, tail + f"\ntimed out after {timeout:g} s"
-    out.update(seconds=time.perf_counter() - t0, load_after=loadavg())
+    cpu1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    out.update(seconds=time.perf_counter() - t0, load_after=loadavg(),
+               cpu_seconds=(cpu1.ru_utime - cpu0.ru_utime) + (cpu1.ru_stime - cpu0.ru_stime))
     result = None
     if code == 0 and json_path.exists():
         result = json.loads(json_path.read_text())
@@ -210,7 +215,8 @@ def summary_markdown(runs: list, *, quick: bool, started: datetime.datetime, sec
         if r is None:
             continue
         state = "ok" if r["ok"] else f"FAILED ({r['error']})"
-        lines.append(f"- **{topic}**: `bench/{script}`, {r['seconds']:.1f} s, {state}, load {r['load_before']} → "
+        cpu = f" (CPU {r['cpu_seconds']:.1f} s)" if "cpu_seconds" in r else ""
+        lines.append(f"- **{topic}**: `bench/{script}`, {r['seconds']:.1f} s wall{cpu}, {state}, load {r['load_before']} → "
                      f"{r['load_after']}; detailed table: [{md}]({md})")
     return "\n".join(lines) + "\n"
 

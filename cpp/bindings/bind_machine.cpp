@@ -3,6 +3,8 @@
 #include <pybind11/stl.h>
 
 #include <array>
+#include <cstdint>
+#include <functional>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -19,6 +21,8 @@ using machine::AxisConfig;
 namespace {
 
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+using ExternalLaw = std::function<double(std::size_t, double, double)>;
+using CompiledLaw = double (*)(std::int64_t, double, double, double*);
 
 const std::vector<std::string>& signal_names() {
   static const std::vector<std::string> names = {
@@ -100,6 +104,14 @@ Array checked_array(const py::handle& obj, const char* name, py::ssize_t expecte
   return a;
 }
 
+// A user controller's voltage request must be a number: NaN or inf would enter the DAC and the plant's state.
+double finite_request(double volts, std::size_t tick) {
+  if (!std::isfinite(volts))
+    throw py::value_error("controller returned " + format_value(volts) + " V at tick " + std::to_string(tick) +
+                          " of the run: it must return a finite voltage request");
+  return volts;
+}
+
 }  // namespace
 
 void bind_machine(py::module_& m) {
@@ -164,7 +176,8 @@ void bind_machine(py::module_& m) {
       .def(
           "run",
           [](Axis& axis, const py::object& pos, const py::object& vel, const py::object& acc, const py::object& signals,
-             const py::object& injection, double error_limit, bool stop_on_alarm) {
+             const py::object& injection, double error_limit, bool stop_on_alarm, const py::object& controller,
+             std::uintptr_t controller_address, const py::object& controller_state) {
             Array p = checked_array(pos, "positions", -1);
             const py::ssize_t n = p.shape(0);
             Array v, a, inj;
@@ -207,8 +220,33 @@ void bind_machine(py::module_& m) {
               *slot = buf.mutable_data();
               out[py::str(name)] = buf;
             }
+            // A user's controller in place of the law: a Python callable (called with the GIL, per tick) or a
+            // compiled C function double(int64 tick, double cmd_pulse, double fb_pulse, double* state).
+            ExternalLaw ext;
+            Array state;
+            if (!controller.is_none()) {
+              ext = [&controller](std::size_t k, double r, double y) {
+                return finite_request(controller(k, r, y).cast<double>(), k);
+              };
+              in.external = &ext;
+            } else if (controller_address != 0) {
+              double* st = nullptr;
+              if (!controller_state.is_none()) {
+                state = Array::ensure(controller_state);
+                if (!state || !py::isinstance<py::array>(controller_state) || state.ptr() != controller_state.ptr())
+                  throw py::type_error("controller_state must be a C-contiguous float64 NumPy array (it is updated in place)");
+                st = state.mutable_data();
+              }
+              const auto fn = reinterpret_cast<CompiledLaw>(controller_address);
+              ext = [fn, st](std::size_t k, double r, double y) {
+                return finite_request(fn(static_cast<std::int64_t>(k), r, y, st), k);
+              };
+              in.external = &ext;
+            }
             machine::RunOutcome outcome;
-            {
+            if (!controller.is_none()) {
+              outcome = axis.run(in, trace, guard);  // the Python controller needs the GIL every tick
+            } else {
               py::gil_scoped_release release;
               outcome = axis.run(in, trace, guard);
             }
@@ -225,9 +263,28 @@ void bind_machine(py::module_& m) {
           },
           py::arg("positions"), py::arg("velocities") = py::none(), py::arg("accelerations") = py::none(),
           py::arg("signals") = py::none(), py::arg("injection_v") = py::none(), py::arg("error_limit_pulse") = 0.0,
-          py::arg("stop_on_alarm") = false,
+          py::arg("stop_on_alarm") = false, py::arg("controller") = py::none(), py::arg("controller_address") = 0,
+          py::arg("controller_state") = py::none(),
           "Runs one tick per position (pulse); returns ({signal: array}, stop reason or '', error at the stop). "
-          "Releases the GIL.");
+          "Releases the GIL (not with a Python controller).")
+      .def("step", [](Axis& a, double command_pulse) { return a.step(command_pulse); }, py::arg("command_pulse"),
+           "Advances one tick holding command_pulse (pulse); returns the feedback read, pulse.")
+      .def(
+          "step_n",
+          [](Axis& a, double command_pulse, std::size_t n, const py::object& volts) {
+            if (volts.is_none()) {
+              if (n < 1024) return a.step(command_pulse, n);
+              py::gil_scoped_release release;
+              return a.step(command_pulse, n);
+            }
+            const double v = volts.cast<double>();
+            if (!std::isfinite(v)) throw_invalid("Axis.step", "volts", v, "must be a finite number (V)");
+            const ExternalLaw ext = [v](std::size_t, double, double) { return v; };
+            return a.step(command_pulse, n, &ext);
+          },
+          py::arg("command_pulse"), py::arg("n"), py::arg("volts"),
+          "Advances n ticks holding command_pulse (pulse), the law's output replaced by `volts` (V) if given; "
+          "returns the feedback read at the last tick, pulse.");
 }
 
 }  // namespace servobench::bindings

@@ -16,6 +16,7 @@ void bind_homing(py::module_& m);
 void bind_identify(py::module_& m);
 void bind_paths(py::module_& m);
 void bind_card(py::module_& m);
+void bind_batch(py::module_& m);
 }  // namespace servobench::bindings
 
 PYBIND11_MODULE(_core, m) {
@@ -39,4 +40,5 @@ PYBIND11_MODULE(_core, m) {
   servobench::bindings::bind_identify(m);
   servobench::bindings::bind_paths(m);
   servobench::bindings::bind_card(m);
+  servobench::bindings::bind_batch(m);
 }

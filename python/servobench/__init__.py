@@ -31,7 +31,7 @@ from ._core import (
     TwoMassPlant,
     VelocityDrive,
 )
-from .axis import Axis, AxisRun, SIGNALS, SIGNAL_UNITS
+from .axis import Axis, AxisRun, SIGNALS, SIGNAL_UNITS, controller_signature
 from .trajectory import Trajectory, trapezoid_move
 from .metrics import MoveMetrics, move_metrics
 from .examples import demo_axis
@@ -96,6 +96,8 @@ from .paths import (
     GeLookAheadParams,
     run_adlink,
 )
+from . import batch
+from .batch import BatchResult, monte_carlo, sample_spread, simulate_many  # many plants at once (issue 22)
 from . import card
 from .card import CARD_EVENTS, Card, CardCommandRefused, CardLimits, CardRun, events_named
 from .card import SAMPLE_SIGNALS, FiredEvent, ScopeData  # the card's scope and event callbacks (issue 10.3)
@@ -119,6 +121,12 @@ from .motion import (
 __version__ = "0.1.0"
 
 __all__ = [
+    "batch",
+    "BatchResult",
+    "monte_carlo",
+    "sample_spread",
+    "simulate_many",
+    "controller_signature",
     "CARD_EVENTS",
     "Card",
     "CardCommandRefused",

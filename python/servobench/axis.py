@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import Iterable, Mapping
 
@@ -199,8 +200,29 @@ class Axis:
         on again: the law and the filters restart from power-on memories (the card's GT_AxisOn / servo ON)."""
         self._axis.set_servo_on(bool(on))
 
+    def step(self, command_pulse: float, n: int = 1, *, volts: float | None = None) -> float:
+        """Advances `n` servo ticks holding the command position `command_pulse` (pulse) and returns the feedback
+        read by the encoder at the last of them (pulse); nothing is recorded. The step API for programs in the loop
+        (co-simulation, reinforcement learning): ``fb = axis.step(cmd)`` once per tick costs about a microsecond.
+
+        volts
+            if given, this voltage (V) replaces the servo law's output (and the biquads) for these ticks: a
+            controller written in Python reads the feedback, computes the voltage and steps; it reaches the drive one
+            tick later like the law's output.
+
+        The ticks are exactly those :meth:`run` makes over the same commands (the state carries on between calls).
+        """
+        if not math.isfinite(command_pulse):  # TypeError for a non-number; NaN/inf must not enter the state
+            raise ValueError(f"command_pulse = {command_pulse} must be a finite number (pulse)")
+        if n == 1 and volts is None:
+            return self._axis.step(command_pulse)
+        if not isinstance(n, (int, np.integer)) or isinstance(n, bool) or n < 1:
+            raise ValueError(f"n = {n!r} must be a whole number >= 1 (ticks)")
+        return self._axis.step_n(command_pulse, int(n), volts)
+
     def run(self, command, *, velocities=None, accelerations=None, signals: Iterable[str] | None = None,
-            injection_v=None, error_limit_pulse: float = 0.0, stop_on_alarm: bool = False) -> AxisRun:
+            injection_v=None, error_limit_pulse: float = 0.0, stop_on_alarm: bool = False, controller=None,
+            controller_state=None) -> AxisRun:
         """Runs one servo tick per command sample and returns what was recorded.
 
         command
@@ -222,6 +244,17 @@ class Axis:
             :attr:`AxisRun.stopped` is ``"error_limit"`` and the arrays end at that tick.
         stop_on_alarm
             end the run, servo off, at the first tick with the drive alarm set (``stopped = "drive_alarm"``).
+        controller
+            a user-written controller in place of the servo law and the biquads, called every tick after the encoder
+            read; it returns the voltage request (V) for the DAC (reaching the drive one tick later). Either a Python
+            callable ``controller(tick, cmd_pulse, fb_pulse) -> volts`` (tick: index in this run; called with the
+            GIL, so at Python speed), or a compiled C function ``double f(int64 tick, double cmd_pulse,
+            double fb_pulse, double *state)`` run inside the C++ loop at full speed: a ``numba.cfunc`` (its
+            ``.address`` is used), a ``ctypes`` function pointer or a raw address (int). See
+            :func:`servobench.controller_signature`.
+        controller_state
+            for a compiled controller: a float64 NumPy array passed as ``state`` (read and updated in place; its
+            memories, gains ...). ``None`` passes a null pointer.
 
         Releases the GIL while it runs.
         """
@@ -234,8 +267,58 @@ class Axis:
         positions = np.asarray(positions, dtype=float)
         if positions.ndim == 0:
             raise ValueError("command must be a 1-D array of positions (pulse), one per tick")
+        py_controller, address = _controller_hook(controller)
+        if controller_state is not None and (not isinstance(controller_state, np.ndarray)
+                                             or controller_state.dtype != np.float64
+                                             or not controller_state.flags.c_contiguous
+                                             or not controller_state.flags.writeable):
+            raise TypeError("controller_state must be a writeable, C-contiguous float64 NumPy array")
+        if controller_state is not None and address == 0:
+            raise ValueError("controller_state is for a compiled controller (a numba cfunc or a C function pointer)")
         rec, stop, stop_error = self._axis.run(positions, velocities, accelerations,
                                                None if signals is None else list(signals), injection_v,
-                                               float(error_limit_pulse), bool(stop_on_alarm))
+                                               float(error_limit_pulse), bool(stop_on_alarm), py_controller, address,
+                                               controller_state)
         return AxisRun(signals=rec, servo_period_s=self.servo_period_s, law=self.law, stopped=stop or None,
                        stop_error_pulse=float(stop_error))
+
+
+def controller_signature() -> str:
+    """The C signature of a compiled controller for :meth:`Axis.run` (``controller=``): returns the voltage request
+    (V) from the tick index in the run, the command and the feedback (pulse) and a pointer to the caller's float64
+    state array. With numba: ``numba.cfunc("float64(int64, float64, float64, CPointer(float64))")``."""
+    return "double controller(int64_t tick, double cmd_pulse, double fb_pulse, double *state)"
+
+
+def _controller_hook(controller):
+    """(python callable or None, C function address or 0) for Axis.run's `controller`."""
+    import ctypes
+
+    if controller is None:
+        return None, 0
+    if isinstance(controller, (int, np.integer)) and not isinstance(controller, bool):
+        if controller <= 0:
+            raise ValueError(f"controller address = {controller} must be a positive C function address")
+        return None, int(controller)
+    cfunc_ctypes = getattr(controller, "ctypes", None)  # numba.cfunc: check its signature, use its address
+    if hasattr(controller, "address") and isinstance(cfunc_ctypes, ctypes._CFuncPtr):
+        _check_c_signature(cfunc_ctypes)
+        return None, int(controller.address)
+    if isinstance(controller, ctypes._CFuncPtr):
+        _check_c_signature(controller)
+        return None, int(ctypes.cast(controller, ctypes.c_void_p).value)
+    if callable(controller):
+        return controller, 0
+    raise TypeError(f"controller must be a callable, a numba cfunc, a ctypes function pointer or an address, "
+                    f"got {type(controller).__name__}")
+
+
+def _check_c_signature(fn) -> None:
+    import ctypes
+
+    args = getattr(fn, "argtypes", None)
+    res = getattr(fn, "restype", None)
+    if args is None:
+        return  # a bare ctypes pointer without declared types: the caller vouches for it
+    if res is not ctypes.c_double or len(args) != 4 or args[1] is not ctypes.c_double or args[2] is not ctypes.c_double:
+        raise TypeError("compiled controller has the wrong signature; expected " + controller_signature())

@@ -155,6 +155,16 @@ class Card:
         rec = self._card.run(ticks, None if signals is None else list(signals))
         return CardRun(axes=[AxisSignals(signals=d) for d in rec], servo_period_s=self._card.servo_period_s)
 
+    def step(self, n: int = 1) -> int:
+        """Advances ``n`` servo ticks of every axis recording nothing, and returns the card's tick count: the step
+        API for a program in the loop, which reads and writes the card (its registers, positions, the dialects)
+        between calls. Event callbacks fire as in :meth:`run`."""
+        if self._subs:
+            self._run_with_callbacks(n, ())
+        else:
+            self._card.run(n, [])
+        return self._card.tick
+
     def run_until(self, predicate, max_ticks: int = 10**7, chunk: int = 1) -> int:
         """Runs ``chunk`` ticks at a time until ``predicate(card)`` is true (checked before each chunk), at most
         ``max_ticks``; returns the ticks run."""

@@ -63,7 +63,13 @@ def goals() -> dict:
     assert m["autotune"].GOAL_MS == 100.0
     assert m["paths"].GOAL == 1e6
     assert (m["identify"].GOAL_S, m["identify"].GOAL_RATIO) == (1.0, 10.0)
-    return {"axis": {("value", m["axis"].GOAL_TICKS_PER_S / 1e6, "M ticks/s")},
+    # issue 22: >= 1.0x numba on the rigid chain, 15 M ticks/s on the full chain, flat cost per tick; the batch goals
+    assert (m["axis"].GOAL_VS_NUMBA, m["axis"].GOAL_FULL_CHAIN, m["axis"].GOAL_FLAT) == (1.0, 15e6, 1.25)
+    assert (m["batch"].GOAL_BATCH_S, m["batch"].GOAL_SCALING, m["batch"].GOAL_STEP_US) == (1.0, 1.8, 1.0)
+    return {"axis": {("value", m["axis"].GOAL_TICKS_PER_S / 1e6, "M ticks/s"), ("ratio", m["axis"].GOAL_VS_NUMBA, ""),
+                     ("value", m["axis"].GOAL_FULL_CHAIN / 1e6, "M ticks/s"), ("value", m["axis"].GOAL_FLAT, "x")},
+            "batch": {("value", m["batch"].GOAL_BATCH_S, "s"), ("value", m["batch"].GOAL_SCALING, "x"),
+                      ("value", m["batch"].GOAL_STEP_US, "µs")},
             "motion": {("value", m["motion"].GOAL_US, "µs")},
             "bode": {("value", m["bode"].GOAL_MS, "ms")},
             "autotune": {("value", m["autotune"].GOAL_MS, "ms")},

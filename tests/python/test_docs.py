@@ -18,12 +18,13 @@ NOTEBOOKS = sorted((ROOT / "notebooks").glob("*.ipynb"))
 PAGES = [
     "index", "getting-started", "concepts", "filters", "motion", "paths", "bode", "autotune", "identify",
     "identify-emps", "card",
-    "howto-tune", "howto-bode", "howto-identify", "howto-port", "tour/index", "api/index", "cli", "decisions",
+    "howto-tune", "howto-bode", "howto-identify", "howto-port", "howto-batch", "tour/index", "api/index", "cli",
+    "decisions",
     "coverage", "validation", "benchmarks",
 ]
-API_PAGES = ["axis", "design", "motion", "paths", "frequency", "autotune", "identify", "card", "plot", "dialects",
+API_PAGES = ["axis", "batch", "design", "motion", "paths", "frequency", "autotune", "identify", "card", "plot", "dialects",
              "dialect-gt", "dialect-ge", "dialect-gts", "dialect-aps"]
-MODULES = ["servobench.frequency", "servobench.identify", "servobench.design", "servobench.plot", "servobench.card",
+MODULES = ["servobench.batch", "servobench.frequency", "servobench.identify", "servobench.design", "servobench.plot", "servobench.card",
            "servobench.autotune", "servobench.motion", "servobench.homing", "servobench.gearing", "servobench.pvt",
            "servobench.paths", "servobench.dialects", "servobench.dialects.gt", "servobench.dialects.ge",
            "servobench.dialects.gts", "servobench.dialects.aps"]

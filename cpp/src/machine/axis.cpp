@@ -133,6 +133,18 @@ RunOutcome Axis::run(const CommandInput& command, const Trace& trace, const RunG
   return std::visit([&](auto& law) { return run_with(law, command, trace, guard); }, law_);
 }
 
+double Axis::step(double command_pulse, std::size_t n, const std::function<double(std::size_t, double, double)>* external) {
+  CommandInput in;
+  in.pos = &command_pulse;
+  in.n = 1;
+  in.external = external;
+  double fb = 0.0;
+  Trace t;
+  t.fb_pos = &fb;
+  for (std::size_t k = 0; k < n; ++k) run(in, t);
+  return fb;
+}
+
 template <class Law>
 RunOutcome Axis::run_with(Law& law, const CommandInput& command, const Trace& tr, const RunGuard& guard) {
   RunOutcome outcome;

@@ -142,6 +142,19 @@ PowerTrain::PowerTrain(const DriveParams& drive, const plant::Mechanics& mechani
     gamma_locked_[mask] = gl;
   }
   stuck_.assign(nb_, 1);
+  const auto fill = [&](auto& f) {
+    for (unsigned mask = 0; mask < masks; ++mask) {
+      f.phi[mask] = phi_locked_[mask];
+      f.gamma[mask] = gamma_locked_[mask];
+    }
+  };
+  switch (n) {
+    case 2: fill(fixed_.emplace<Fixed<2>>()); break;
+    case 3: fill(fixed_.emplace<Fixed<3>>()); break;
+    case 4: fill(fixed_.emplace<Fixed<4>>()); break;
+    case 5: fill(fixed_.emplace<Fixed<5>>()); break;
+    default: break;  // other sizes (velocity drives with more states): the run-time-sized path
+  }
   reset();
 }
 
@@ -229,8 +242,27 @@ void PowerTrain::substep() {
   double t_load = -dist.load_nm;
   if (dist.unbalance_nm != 0.0) t_load -= dist.unbalance_nm * std::sin(x_[load_angle_]);
 
-  plant::advance_with_dry_friction(nb_, body_index_, dry_, phi_locked_, gamma_locked_, i_cmd_, t_motor, t_load, x_,
-                                   x_free_, stuck_.data());
+  friction_step(t_motor, t_load);
+}
+
+void PowerTrain::friction_step(double t_motor, double t_load) {
+  switch (fixed_.index()) {
+    case 1: fixed_step(*std::get_if<Fixed<2>>(&fixed_), t_motor, t_load); return;
+    case 2: fixed_step(*std::get_if<Fixed<3>>(&fixed_), t_motor, t_load); return;
+    case 3: fixed_step(*std::get_if<Fixed<4>>(&fixed_), t_motor, t_load); return;
+    case 4: fixed_step(*std::get_if<Fixed<5>>(&fixed_), t_motor, t_load); return;
+    default:
+      plant::advance_with_dry_friction(nb_, body_index_, dry_, phi_locked_, gamma_locked_, i_cmd_, t_motor, t_load,
+                                       x_, x_free_, stuck_.data());
+  }
+}
+
+template <int N>
+void PowerTrain::fixed_step(const Fixed<N>& f, double t_motor, double t_load) {
+  Eigen::Matrix<double, N, 1> x = x_, x_free;
+  plant::advance_with_dry_friction(nb_, body_index_, dry_, f.phi, f.gamma, i_cmd_, t_motor, t_load, x, x_free,
+                                   stuck_.data());
+  x_ = x;
 }
 
 TickModel PowerTrain::linear_tick_model() const {

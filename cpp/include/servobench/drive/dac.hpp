@@ -5,6 +5,8 @@
 // "+-32767 <-> +-max voltage" (L4960-4966). Quantisation rounds to the nearest code (docs/decisions.md).
 #pragma once
 
+#include "servobench/common/rounding.hpp"
+
 #include <cmath>
 
 namespace servobench::drive {
@@ -25,7 +27,7 @@ class Dac {
   double convert(double volts) const {
     const double fs = params_.full_scale_v;
     double v = volts > fs ? fs : (volts < -fs ? -fs : volts);
-    if (params_.quantize) v = std::nearbyint(v * codes_per_volt_) * volts_per_code_;
+    if (params_.quantize) v = nearbyint_inline(v * codes_per_volt_) * volts_per_code_;
     return v;
   }
   double volts_per_code() const { return volts_per_code_; }

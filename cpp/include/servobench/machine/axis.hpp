@@ -108,6 +108,12 @@ class Axis {
   // outcome.ticks entries when a guard trips).
   RunOutcome run(const CommandInput& command, const Trace& trace, const RunGuard& guard = {});
 
+  // The step API (programs in the loop): advances n ticks holding the command position (pulse), nothing recorded,
+  // and returns the feedback read at the last of them (pulse). `external`, if given, replaces the law and the
+  // biquads as in CommandInput. The same ticks as run() over n copies of the command.
+  double step(double command_pulse, std::size_t n = 1,
+              const std::function<double(std::size_t, double, double)>* external = nullptr);
+
   // The command position of the last tick run, pulse (the feedback position before the first run).
   double last_command_pulse() const { return primed_ ? prev_cmd_ : feedback_pulse(); }
 

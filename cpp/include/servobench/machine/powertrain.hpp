@@ -13,6 +13,7 @@
 //    an exactly locked discretisation (no creep, no work); a body never reverses through friction alone.
 #pragma once
 
+#include <array>
 #include <limits>
 #include <variant>
 #include <vector>
@@ -94,6 +95,20 @@ class PowerTrain {
 
  private:
   void substep();
+  // The bodies' linear motion and dry friction over one sub-step with the held inputs (plant/dry_friction.hpp).
+  void friction_step(double t_motor, double t_load);
+
+  // Compile-time-sized copies of the discretisations for the usual state counts: 2 (rigid, ideal current loop),
+  // 3 (rigid + current loop), 4 (two-mass), 5 (two-mass + current loop). The sub-step then runs unrolled, without
+  // size checks or heap-shaped loops, and gives the same doubles as the run-time-sized path (zoh_product).
+  template <int N>
+  struct Fixed {
+    std::array<Eigen::Matrix<double, N, N>, 4> phi;
+    std::array<Eigen::Matrix<double, N, 3>, 4> gamma;
+  };
+  template <int N>
+  void fixed_step(const Fixed<N>& f, double t_motor, double t_load);
+  std::variant<std::monostate, Fixed<2>, Fixed<3>, Fixed<4>, Fixed<5>> fixed_;
 
   enum class Mode { kTorque, kVelocity, kStepper, kServoPosition };
   DriveParams drive_;

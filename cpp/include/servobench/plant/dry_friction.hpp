@@ -17,6 +17,8 @@
 #include <cstddef>
 #include <type_traits>
 
+#include <Eigen/Core>
+
 namespace servobench::plant {
 
 // Where a body lives in the state vector, and its column in the discretisation's input matrix.
@@ -154,6 +156,23 @@ void solve_dry_friction(std::size_t nb, const BodyIndex* idx, const DryFriction<
 // An input that is not there (the default fourth input).
 struct NoInput {};
 
+// y = a x, the linear part over a sub-step. On compile-time-sized double matrices (the simulator's 2..5-state power
+// trains) an unrolled loop summing each row left to right from 0 -- the order Eigen's run-time-sized GEMV uses, so
+// the result is the same double -- with no size checks, no zeroing pass and no call; otherwise Eigen's product.
+template <class Vec, class Mat>
+void zoh_product(Vec& y, const Mat& a, const Vec& x) {
+  if constexpr (Vec::RowsAtCompileTime != Eigen::Dynamic && std::is_same<typename Vec::Scalar, double>::value) {
+    constexpr int n = Vec::RowsAtCompileTime;
+    for (int i = 0; i < n; ++i) {
+      double s = 0.0;
+      for (int k = 0; k < n; ++k) s += a(i, k) * x[k];
+      y[i] = s;
+    }
+  } else {
+    y.noalias() = a * x;
+  }
+}
+
 // x_free += gamma.col(c) * u for an input held over the sub-step. An input known in double (the identification's
 // logged command) costs a scaling of the column rather than a product of Jets; an exactly zero double input costs
 // nothing; NoInput is not even looked up.
@@ -172,7 +191,7 @@ void advance_with_dry_friction(std::size_t nb, const BodyIndex* idx, const DryFr
                                const GammaSet& gammas, const U0& u0, const U1& u1, const U2& u2, Vec& x, Vec& x_free,
                                char* stuck, const U3& u3 = U3()) {
   const auto& gamma0 = gammas[0];
-  x_free.noalias() = phis[0] * x;
+  zoh_product(x_free, phis[0], x);
   add_input<0>(x_free, gamma0, u0);
   add_input<1>(x_free, gamma0, u1);
   add_input<2>(x_free, gamma0, u2);
@@ -193,7 +212,7 @@ void advance_with_dry_friction(std::size_t nb, const BodyIndex* idx, const DryFr
   const auto* gamma = &gamma0;
   if (locked != 0) {
     gamma = &gammas[locked];
-    x_free.noalias() = phis[locked] * x;
+    zoh_product(x_free, phis[locked], x);
     add_input<0>(x_free, *gamma, u0);
     add_input<1>(x_free, *gamma, u1);
     add_input<2>(x_free, *gamma, u2);

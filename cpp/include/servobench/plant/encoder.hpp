@@ -11,6 +11,8 @@
 // a two-mass axis) instead of the motor (semi-closed loop).
 #pragma once
 
+#include "servobench/common/rounding.hpp"
+
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -38,18 +40,18 @@ class Encoder {
   double read(double angle_rad) {
     double c = angle_rad * counts_per_rad_;
     if (noisy_) c += params_.noise_counts * gauss_(rng_);
-    return params_.quantize ? std::floor(c + 0.5) : c;
+    return params_.quantize ? floor_inline(c + 0.5) : c;
   }
   // Noise-free reading (for status displays and tests).
   double read_ideal(double angle_rad) const {
     const double c = angle_rad * counts_per_rad_;
-    return params_.quantize ? std::floor(c + 0.5) : c;
+    return params_.quantize ? floor_inline(c + 0.5) : c;
   }
   // True if the index mark lies between two successive angles (one crossing per revolution).
   bool index_between(double from_rad, double to_rad) const {
     constexpr double two_pi = 2.0 * M_PI;
-    return std::floor((from_rad - params_.index_angle_rad) / two_pi) !=
-           std::floor((to_rad - params_.index_angle_rad) / two_pi);
+    return floor_inline((from_rad - params_.index_angle_rad) / two_pi) !=
+           floor_inline((to_rad - params_.index_angle_rad) / two_pi);
   }
 
  private:

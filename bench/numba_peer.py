@@ -1,0 +1,122 @@
+"""The strongest peer a user would pick for a simulated servo loop: the rigid chain's tick written once in Python and
+compiled with numba (issue 22 point 5). The same arithmetic as bench_axis.python_reference (GT law, 16-bit DAC,
+lagged torque drive, rigid plant with Coulomb friction solved implicitly with stiction, quantised encoder); the
+benches check that it reproduces servobench's feedback exactly before timing it.
+
+``chain_constants(axis)`` computes the plant's ZOH with SciPy (not timed: set-up, as servobench's own set-up is
+not timed in the single-axis rows); ``rigid_chain`` runs one plant, ``rigid_chain_many`` runs many plants in
+parallel (numba ``prange``), each with its own constants row.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+
+def chain_constants(axis) -> np.ndarray:
+    """The rigid chain's constants for the numba kernels, one float64 vector (see _unpack for the layout)."""
+    from scipy.linalg import expm
+
+    law, drv, pl, enc = axis.law, axis.drive, axis.plant, axis.encoder
+    ts = axis.servo_period_s
+    wc = 2 * math.pi * drv.current_bw_hz
+    j = pl.inertia_kgm2
+    a = np.array([[-wc, 0, 0], [0, 0, 1], [drv.kt / j, 0, -pl.viscous_nms / j]])
+    b = np.array([[wc, 0], [0, 0], [0, 1 / j]])
+
+    def zoh(a_, b_):
+        m = np.zeros((5, 5))
+        m[:3, :3], m[:3, 3:] = a_ * ts, b_ * ts
+        e = expm(m)
+        return e[:3, :3], e[:3, 3:]
+
+    phi, gam = zoh(a, b)
+    al, bl = a.copy(), b.copy()
+    al[1:, :] = 0
+    bl[1:, :] = 0
+    phil, gaml = zoh(al, bl)
+    head = [enc.counts_per_rev / (2 * math.pi), law.kp, law.ki, law.kd, law.kvff, law.kaff, law.ilmt, law.bias,
+            law.mtr_lmt, drv.amps_per_volt, drv.current_limit_a, pl.coulomb_nm, pl.load_nm,
+            max(pl.static_nm, pl.coulomb_nm)]
+    return np.concatenate([head, phi.ravel(), gam.ravel(), [phil[0, 0], gaml[0, 0], gaml[0, 1]]]).astype(float)
+
+
+def _build():
+    import numba
+
+    @numba.njit(cache=False, inline="always")
+    def _tick_loop(c, pos, vel, acc, out):
+        cpr, kp, ki, kd, kvff, kaff, ilmt, bias, mlim = c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8]
+        apv, ilim, coul, load, fs = c[9], c[10], c[11], c[12], c[13]
+        p00, p01, p02, p10, p11, p12, p20, p21, p22 = c[14], c[15], c[16], c[17], c[18], c[19], c[20], c[21], c[22]
+        g00, g01, g10, g11, g20, g21 = c[23], c[24], c[25], c[26], c[27], c[28]
+        pl00, gl00, gl01 = c[29], c[30], c[31]
+        g, gth = g21, g11
+        i = th = w = 0.0
+        stuck = True
+        s = e_prev = 0.0
+        pending = 0.0
+        for k in range(pos.shape[0]):
+            icmd = max(-ilim, min(ilim, apv * pending))
+            y = math.floor(th * cpr + 0.5)
+            err = pos[k] - y
+            s = max(-ilmt, min(ilmt, s + err))
+            u = kp * err + ki * s / 256 + kd * (err - e_prev) + kvff * vel[k] + kaff * acc[k] + bias
+            u = max(-mlim, min(mlim, u))
+            e_prev = err
+            v = max(-10.0, min(10.0, u * (10 / 32767)))
+            out[k] = y
+            pending = np.round(v * 3276.7) / 3276.7
+            ext = -load
+            xi = p00 * i + p01 * th + p02 * w + g00 * icmd + g01 * ext
+            xt = p10 * i + p11 * th + p12 * w + g10 * icmd + g11 * ext
+            xw = p20 * i + p21 * th + p22 * w + g20 * icmd + g21 * ext
+            if fs == 0.0:
+                i, th, w = xi, xt, xw
+                continue
+            d = xt - th
+            st = False
+            f_slip = -coul if w > 0 else coul
+            if w != 0.0 and (xw + g * f_slip) * (1.0 if w > 0 else -1.0) > 0.0:
+                f = f_slip
+            else:
+                f_stick = -xw / g
+                if -fs <= f_stick <= fs:
+                    f = f_stick
+                    st = True
+                else:
+                    f = -fs if xw > 0 else fs
+            if not (st and w == 0.0) and f * (d + gth * f) > 0.0:
+                st = False
+                f = 0.0 if d == 0.0 else (-1.0 if d > 0 else 1.0) * min(abs(f), abs(d) / gth)
+            if st and stuck and w == 0.0:
+                i = pl00 * i + gl00 * icmd + gl01 * ext
+                continue
+            i, th, w = xi + g01 * f, xt + g11 * f, xw + g21 * f
+            if st:
+                w = 0.0
+            stuck = st
+
+    @numba.njit(cache=False)
+    def rigid_chain(c, pos, vel, acc, out):
+        _tick_loop(c, pos, vel, acc, out)
+
+    @numba.njit(cache=False, parallel=True)
+    def rigid_chain_many(consts, pos, vel, acc, out):
+        for p in numba.prange(consts.shape[0]):
+            _tick_loop(consts[p], pos, vel, acc, out[p])
+
+    return rigid_chain, rigid_chain_many
+
+
+_KERNELS = None
+
+
+def kernels():
+    """(rigid_chain, rigid_chain_many), compiled on first use (compile time is not timed by the benches)."""
+    global _KERNELS
+    if _KERNELS is None:
+        _KERNELS = _build()
+    return _KERNELS
