@@ -63,10 +63,18 @@ py::dict summary(const identify::FitSummary& s) {
 }
 
 // An iteration callback (iteration, cost) -> bool|None, the GIL taken for the call; empty if None.
-std::function<bool(int, double)> iteration_callback(const py::object& f) {
-  if (f.is_none()) return {};
-  return [f](int it, double cost) {
+// The solver's per-iteration callback: the user's progress function (None: none) and a Ctrl-C check; a pending
+// signal ends the solve and is kept in *interrupt, raised once the solver has returned (raise_pending).
+std::function<bool(int, double)> iteration_callback(const py::object& f,
+                                                   std::shared_ptr<py::error_already_set>* interrupt) {
+  return [f, interrupt](int it, double cost) {
+    if (*interrupt) return false;  // interrupted in an earlier stage: end every later stage at once
     py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) {
+      *interrupt = std::make_shared<py::error_already_set>();
+      return false;
+    }
+    if (f.is_none()) return true;
     py::object r = f(it, cost);
     return r.is_none() || r.cast<bool>();
   };
@@ -150,13 +158,15 @@ void bind_identify(py::module_& m) {
         const identify::TimeLog log = time_log(torque_nm, measured, sample_period_s, measured_is_speed,
                                                measured_on_load);
         identify::TimeFitOptions o = options_from(model, kw);
-        o.progress = iteration_callback(progress);
+        std::shared_ptr<py::error_already_set> interrupt;
+        o.progress = iteration_callback(progress, &interrupt);
         const identify::ParameterSetup s = setup_of(initial, fixed, lower, upper);
         identify::TimeFitResult r;
         {
           py::gil_scoped_release release;
           r = identify::fit_time_domain(log, s, o);
         }
+        raise_pending(interrupt);
         py::dict d;
         d["parameters"] = estimates(r.parameters);
         d["summary"] = summary(r.summary);
@@ -259,13 +269,15 @@ void bind_identify(py::module_& m) {
         o.max_iterations = static_cast<int>(max_iterations);
         o.max_relative_std_error = max_relative_std_error;
         o.validate();
-        o.progress = iteration_callback(progress);
+        std::shared_ptr<py::error_already_set> interrupt;
+        o.progress = iteration_callback(progress, &interrupt);
         const identify::ParameterSetup s = setup_of(initial, fixed, lower, upper);
         identify::FrequencyFitResult r;
         {
           py::gil_scoped_release release;
           r = identify::fit_frequency_response(axis.config(), data, s, o);
         }
+        raise_pending(interrupt);
         py::dict d;
         d["parameters"] = estimates(r.parameters);
         d["summary"] = summary(r.summary);

@@ -9,6 +9,7 @@
 
 #include "servobench/common/validate.hpp"
 #include "servobench/machine/axis.hpp"
+#include "object_lock.hpp"
 
 namespace servobench::bindings {
 
@@ -84,6 +85,49 @@ py::tuple filters_to_python(const std::array<control::BiquadParams, 2>& filters)
                         std::visit([](const auto& p) { return py::cast(p); }, filters[1]));
 }
 
+// The trace with every recording pointer moved `k` samples on (a chunk of a run starting at tick k).
+machine::Trace offset_trace(machine::Trace t, std::size_t k) {
+#define SERVOBENCH_SHIFT(n, unit, doc) \
+  if (t.n) t.n += k;
+  SERVOBENCH_TRACE_SIGNALS(SERVOBENCH_SHIFT)
+#undef SERVOBENCH_SHIFT
+  return t;
+}
+
+// Runs the axis in chunks of about 20 ms of work, each under the axis's state lock, checking for Ctrl-C between
+// chunks (object_lock.hpp); the axis keeps its state between chunks, so the result is the one-call result.
+machine::RunOutcome run_chunked(Axis& axis, const machine::CommandInput& in, const machine::Trace& trace,
+                                const machine::RunGuard& guard) {
+  RunLock lock({&axis});
+  py::gil_scoped_release release;
+  ChunkClock clock;
+  machine::RunOutcome outcome;
+  std::size_t done = 0;
+  while (done < in.n) {
+    machine::CommandInput c = in;
+    c.n = std::min(clock.size(), in.n - done);
+    c.pos += done;
+    if (c.vel) c.vel += done;
+    if (c.acc) c.acc += done;
+    if (c.volts_add) c.volts_add += done;
+    machine::RunOutcome o;
+    {
+      auto held = lock.chunk();
+      clock.start();
+      o = axis.run(c, offset_trace(trace, done), guard);
+      clock.stop();
+    }
+    done += o.ticks;
+    if (o.stop != machine::RunStop::kCompleted) {
+      outcome = o;
+      break;
+    }
+    if (done < in.n) check_signals();
+  }
+  outcome.ticks = done;
+  return outcome;
+}
+
 Array checked_array(const py::handle& obj, const char* name, py::ssize_t expected) {
   Array a = Array::ensure(obj);
   if (!a) throw py::type_error(std::string(name) + " must be a 1-D array of numbers");
@@ -109,8 +153,8 @@ void bind_machine(py::module_& m) {
 #undef SERVOBENCH_META
   m.attr("TRACE_SIGNALS") = meta;
 
-  py::class_<Axis>(m, "Axis", "One simulated servo axis (C++ core). Use servobench.Axis.")
-      .def(py::init([](const py::object& law, const py::object& drv, const py::object& plant,
+  py::class_<Axis> axis_cls(m, "Axis", "One simulated servo axis (C++ core). Use servobench.Axis.");
+  axis_cls.def(py::init([](const py::object& law, const py::object& drv, const py::object& plant,
                        const plant::EncoderParams& enc, const drive::DacParams& dac, const plant::SwitchParams& sw,
                        std::optional<double> servo_period_s, double substeps, const py::object& filters) {
              check_integer("Axis", "substeps", substeps, 1, 1000);
@@ -129,7 +173,10 @@ void bind_machine(py::module_& m) {
            py::kw_only(), py::arg("law"), py::arg("drive"), py::arg("plant"), py::arg("encoder"), py::arg("dac"),
            py::arg("switches"), py::arg("servo_period_s") = py::none(), py::arg("substeps") = 1.0,
            py::arg("filters") = py::none())
-      .def("reset", &Axis::reset, py::arg("angle_rad") = 0.0)
+      .def("reset", [](Axis& a, double angle_rad) {
+             check_range("Axis.reset", "angle_rad", angle_rad, -1e6, 1e6);
+             a.reset(angle_rad);
+           }, py::arg("angle_rad") = 0.0)
       .def("set_law", [](Axis& a, const py::object& law) { a.set_law(law_from(law)); }, py::arg("law"))
       .def_property_readonly("law", [](const Axis& a) -> py::object {
         return std::visit([](const auto& p) { return py::cast(p); }, a.config().law);
@@ -181,8 +228,7 @@ void bind_machine(py::module_& m) {
               inj = checked_array(injection, "injection_v", n);
               in.volts_add = inj.data();
             }
-            if (!(error_limit >= 0) || !std::isfinite(error_limit))
-              throw_invalid("Axis.run", "error_limit_pulse", error_limit, "must be finite and >= 0 (0 = off)");
+            check_range("Axis.run", "error_limit_pulse", error_limit, 0, 1e15, "0 = off");
             machine::RunGuard guard;
             guard.error_limit_pulse = error_limit;
             guard.stop_on_alarm = stop_on_alarm;
@@ -192,6 +238,11 @@ void bind_machine(py::module_& m) {
             } else {
               for (const auto& s : signals) wanted.push_back(py::str(s));
             }
+            if (static_cast<double>(n) * static_cast<double>(wanted.size()) * 8.0 > kMaxRecordBytes)
+              throw py::value_error("Axis.run.positions: " + std::to_string(n) + " ticks x " +
+                                    std::to_string(wanted.size()) + " signals would record " +
+                                    format_value(static_cast<double>(n) * static_cast<double>(wanted.size()) * 8e-9) +
+                                    " GB, above the 2 GB a run may record; record fewer signals or run in pieces");
             machine::Trace trace;
             py::dict out;
             for (const auto& name : wanted) {
@@ -205,11 +256,7 @@ void bind_machine(py::module_& m) {
               *slot = buf.mutable_data();
               out[py::str(name)] = buf;
             }
-            machine::RunOutcome outcome;
-            {
-              py::gil_scoped_release release;
-              outcome = axis.run(in, trace, guard);
-            }
+            const machine::RunOutcome outcome = run_chunked(axis, in, trace, guard);
             const char* stop = outcome.stop == machine::RunStop::kCompleted  ? ""
                                : outcome.stop == machine::RunStop::kErrorLimit ? "error_limit"
                                                                                : "drive_alarm";
@@ -225,7 +272,9 @@ void bind_machine(py::module_& m) {
           py::arg("signals") = py::none(), py::arg("injection_v") = py::none(), py::arg("error_limit_pulse") = 0.0,
           py::arg("stop_on_alarm") = false,
           "Runs one tick per position (pulse); returns ({signal: array}, stop reason or '', error at the stop). "
-          "Releases the GIL.");
+          "Releases the GIL; one run at a time per axis (a second thread waits); Ctrl-C raises KeyboardInterrupt "
+          "within about 20 ms, the axis standing at the last whole tick run.");
+  serialise_methods(axis_cls, {"run"});
 }
 
 }  // namespace servobench::bindings
