@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <complex>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -36,13 +37,28 @@ inline std::vector<std::complex<double>> complex_vector(const pybind11::handle& 
 }
 
 // A Python callable(done, total) -> bool|None as a C++ progress callback (the GIL taken for the call); empty if None.
-inline std::function<bool(int, int)> progress_callback(const pybind11::object& progress) {
-  if (progress.is_none()) return {};
-  return [progress](int done, int total) {
+// A C++ progress callback (called without the GIL) from a Python one (None: no callback). It also checks for
+// Ctrl-C: a pending signal stops the work (the callback returns false) and is kept in `*interrupt`, which the
+// binding raises once the C++ call has returned (raise_pending) -- an exception must not cross the C++ solver.
+inline std::function<bool(int, int)> progress_callback(const pybind11::object& progress,
+                                                       std::shared_ptr<pybind11::error_already_set>* interrupt = nullptr) {
+  if (progress.is_none() && interrupt == nullptr) return {};
+  return [progress, interrupt](int done, int total) {
+    if (interrupt != nullptr && *interrupt) return false;
     pybind11::gil_scoped_acquire gil;
+    if (interrupt != nullptr && PyErr_CheckSignals() != 0) {
+      *interrupt = std::make_shared<pybind11::error_already_set>();
+      return false;
+    }
+    if (progress.is_none()) return true;
     pybind11::object r = progress(done, total);
     return r.is_none() || r.cast<bool>();
   };
+}
+
+// Raises the Ctrl-C a progress callback kept (see progress_callback); call with the GIL held.
+inline void raise_pending(const std::shared_ptr<pybind11::error_already_set>& interrupt) {
+  if (interrupt) throw pybind11::error_already_set(*interrupt);
 }
 
 inline pybind11::tuple state_tuple(const motion::MotionState& s) {
@@ -57,9 +73,11 @@ pybind11::dict run_ticks(const char* owner, double ticks, bool until_done, Step 
   check_integer(owner, "ticks", ticks, 0, 1e8);
   std::vector<double> pos, exact, vel, acc, jerk;
   {
-    pybind11::gil_scoped_release release;
+    // The GIL stays held (the generator is then never stepped by two threads at once); Ctrl-C is checked every
+    // 65536 ticks (a few ms).
     const auto n = static_cast<std::size_t>(ticks);
     for (std::size_t k = 0; k < n; ++k) {
+      if ((k & 0xFFFF) == 0xFFFF && PyErr_CheckSignals() != 0) throw pybind11::error_already_set();
       if (until_done && !moving()) break;
       const motion::MotionState& s = step();
       pos.push_back(static_cast<double>(reported()));

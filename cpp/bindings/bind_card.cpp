@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "arrays.hpp"
+#include "object_lock.hpp"
 #include "param_class.hpp"
 #include "servobench/common/validate.hpp"
 #include "servobench/machine/aps_status.hpp"
@@ -87,6 +88,17 @@ const std::vector<std::string>& card_signal_names() {
 }
 
 // Runs n ticks recording the wanted signals of every axis: a list of dicts (one per axis).
+}  // namespace
+
+// The card, then its axes: the objects a card run locks (object_lock.hpp).
+std::vector<const void*> card_keys(Card& card) {
+  std::vector<const void*> keys{&card};
+  for (std::size_t i = 0; i < card.axis_count(); ++i) keys.push_back(&card.axis(i));
+  return keys;
+}
+
+namespace {
+
 py::list run_card(Card& card, double ticks, const py::object& signals) {
   check_integer("Card.run", "ticks", ticks, 0, 1e9);
   std::vector<std::string> all;
@@ -112,13 +124,20 @@ py::list run_card(Card& card, double ticks, const py::object& signals) {
   }
   const std::size_t n_ax = card.axis_count();
   const auto n = static_cast<std::size_t>(ticks);
+  const double bytes = static_cast<double>(n) * static_cast<double>(n_ax * wanted.size()) * 8.0;
+  if (bytes > kMaxRecordBytes)
+    throw_invalid("Card.run", "ticks", ticks,
+                  "would record " + format_value(bytes * 1e-9) + " GB (" + std::to_string(wanted.size()) +
+                      " signals x " + std::to_string(n_ax) +
+                      " axes), above the 2 GB a run may record; record fewer signals (signals=[]) or run in pieces");
   std::vector<std::map<std::string, std::vector<double>>> buf(n_ax);
   {
+    RunLock lock(card_keys(card));
     py::gil_scoped_release release;
-    constexpr std::size_t kChunk = 65536;
+    ChunkClock clock;
     std::size_t done = 0;
     while (done < n || (n == 0 && done == 0)) {
-      const std::size_t chunk = std::min(kChunk, n - done);
+      const std::size_t chunk = std::min(clock.size(), n - done);
       std::vector<machine::CardTrace> tr(n_ax);
       for (std::size_t i = 0; i < n_ax; ++i) {
         for (const auto& w : wanted) buf[i][w].resize(done + chunk);
@@ -137,9 +156,15 @@ py::list run_card(Card& card, double ticks, const py::object& signals) {
         if (auto it = b.find("servo_on"); it != b.end()) t.servo_on = it->second.data() + done;
         if (auto it = b.find("prf_vel"); it != b.end()) t.prf_vel = it->second.data() + done;
       }
-      card.run(chunk, tr);
+      {
+        auto held = lock.chunk();
+        clock.start();
+        card.run(chunk, tr);
+        clock.stop();
+      }
       done += chunk;
       if (n == 0) break;
+      if (done < n) check_signals();
     }
   }
   py::list out;
@@ -320,18 +345,20 @@ void bind_card(py::module_& m) {
   bind_card_scope(m, c);  // scope, events, compare, probe (issue 10.3)
   bind_card_aps(c, m);    // [aps] ADLINK interpolation group, gear engage ramp
   bind_card_ge_path(c);   // GE SX crd (card_group_ge.hpp)
+  // Every other method waits for the running chunk (object_lock.hpp): the card stays readable while it runs.
+  serialise_methods(c, {"run", "run_until_event"});
 
-  m.def("gt_axis_status", [](const Card& k, double i) { return machine::gt_axis_status(k, idx(k, i)); },
+  m.def("gt_axis_status", [](const Card& k, double i) { auto lk = lock_releasing_gil(locks_of(&k)->state); return machine::gt_axis_status(k, idx(k, i)); },
         py::arg("card"), py::arg("axis"), "GT axis status register (Table 4-14) of a card axis (0-based).");
-  m.def("aps_motion_status", [](const Card& k, double i) { return machine::aps_motion_status(k, idx(k, i)); },
+  m.def("aps_motion_status", [](const Card& k, double i) { auto lk = lock_releasing_gil(locks_of(&k)->state); return machine::aps_motion_status(k, idx(k, i)); },
         py::arg("card"), py::arg("axis"), "ADLINK APS_motion_status (MSTS) of a card axis (0-based), L3164-3206");
-  m.def("aps_motion_io_status", [](const Card& k, double i) { return machine::aps_motion_io_status(k, idx(k, i)); },
+  m.def("aps_motion_io_status", [](const Card& k, double i) { auto lk = lock_releasing_gil(locks_of(&k)->state); return machine::aps_motion_io_status(k, idx(k, i)); },
         py::arg("card"), py::arg("axis"), "ADLINK APS_motion_io_status (MIO) of a card axis (0-based), L3611-3631");
-  m.def("aps_stop_code", [](const Card& k, double i) { return machine::aps_stop_code(k, idx(k, i)); },
+  m.def("aps_stop_code", [](const Card& k, double i) { auto lk = lock_releasing_gil(locks_of(&k)->state); return machine::aps_stop_code(k, idx(k, i)); },
         py::arg("card"), py::arg("axis"), "ADLINK APS_get_stop_code of a card axis (0-based), L3922-4023");
-  m.def("gt_mode_register", [](const Card& k, double i) { return machine::gt_mode_register(k, idx(k, i)); },
+  m.def("gt_mode_register", [](const Card& k, double i) { auto lk = lock_releasing_gil(locks_of(&k)->state); return machine::gt_mode_register(k, idx(k, i)); },
         py::arg("card"), py::arg("axis"), "GT axis mode register (Table 4-15) of a card axis (0-based).");
-  m.def("gt_command_status", [](const Card& k) { return machine::gt_command_status(k); }, py::arg("card"),
+  m.def("gt_command_status", [](const Card& k) { auto lk = lock_releasing_gil(locks_of(&k)->state); return machine::gt_command_status(k); }, py::arg("card"),
         "GT command status register (Table 2-2): the bit of the last refused command's cause.");
   m.def("gt_events_to_clear", [](double mask) {
           check_integer("GT_RstSts", "mask", mask, 0, 65535);

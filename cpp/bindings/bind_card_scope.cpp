@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "arrays.hpp"
+#include "object_lock.hpp"
 #include "servobench/common/validate.hpp"
 #include "servobench/machine/card.hpp"
 #include "servobench/machine/card_scope.hpp"
@@ -18,7 +19,10 @@
 namespace servobench::bindings {
 
 namespace py = pybind11;
+
 using machine::Card;
+
+std::vector<const void*> card_keys(Card& card);  // bind_card.cpp: the card and its axes
 
 namespace {
 
@@ -79,9 +83,15 @@ py::tuple run_until_event(Card& card, double ticks, const std::vector<std::strin
   check_integer("Card.run_until_event", "ticks", ticks, 0, 1e9);
   const std::size_t n_ax = card.axis_count();
   const auto n = static_cast<std::size_t>(ticks);
+  const double bytes = static_cast<double>(n) * static_cast<double>(n_ax * wanted.size()) * 8.0;
+  if (bytes > kMaxRecordBytes)
+    throw_invalid("Card.run_until_event", "ticks", ticks,
+                  "could record " + format_value(bytes * 1e-9) +
+                      " GB, above the 2 GB a run may record; record fewer signals or run in pieces");
   std::vector<std::map<std::string, std::vector<double>>> buf(n_ax);
   std::size_t ran = 0;
   {
+    RunLock lock(card_keys(card));
     py::gil_scoped_release release;
     constexpr std::size_t kChunk = 4096;
     std::vector<machine::CardTrace> tr;
@@ -105,8 +115,15 @@ py::tuple run_until_event(Card& card, double ticks, const std::vector<std::strin
         if (auto it = b.find("servo_on"); it != b.end()) t.servo_on = it->second.data() + ran;
         if (auto it = b.find("prf_vel"); it != b.end()) t.prf_vel = it->second.data() + ran;
       }
-      ran += card.run_until_event(chunk, tr);
-    } while (ran < n && card.scope().fired().empty());
+      bool fired = false;
+      {
+        auto held = lock.chunk();
+        ran += card.run_until_event(chunk, tr);
+        fired = !card.scope().fired().empty();
+      }
+      if (fired || ran >= n) break;
+      check_signals();
+    } while (true);
   }
   py::list rec;
   for (std::size_t i = 0; i < n_ax; ++i) {
@@ -187,7 +204,10 @@ void bind_card_scope(py::module_& m, py::class_<Card>& c) {
       .def("set_timer", [](Card& k, double t) { k.scope().set_timer(t); }, py::arg("ticks"))
       .def_property_readonly("fired", [](const Card& k) { return fired_list(k); })
       .def("run_until_event", &run_until_event, py::arg("ticks"), py::arg("signals") = std::vector<std::string>{})
-      .def("set_probe_time", [](Card& k, double t) { k.set_probe_time(t); }, py::arg("t_s"))
+      .def("set_probe_time", [](Card& k, std::optional<double> t) {
+             if (t) check_range("Card.set_probe_time", "t_s", *t, 0.0, 1e9, "s on the card clock; None = never");
+             k.set_probe_time(t ? *t : std::nan(""));
+           }, py::arg("t_s"), "The probe input EXI0's edge at t_s (s on the card clock, 0..1e9; None: never).")
       .def("set_probe_position", [](Card& k, double axis, double pos) { k.scope().set_probe_position(axis, pos); },
            py::arg("axis"), py::arg("pos"))
       .def("clear_probe_position", [](Card& k) { if (k.has_scope()) k.scope().clear_probe_position(); })

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "arrays.hpp"
+#include "object_lock.hpp"
 #include "param_class.hpp"
 #include "servobench/common/validate.hpp"
 #include "servobench/machine/motion_loop.hpp"
@@ -63,12 +64,17 @@ py::dict run_loop(MotionLoop& loop, double ticks, bool until_done, const py::obj
     buf[name];
   }
   const auto total_max = static_cast<std::size_t>(ticks);
+  if (static_cast<double>(total_max) * static_cast<double>(buf.size()) * 8.0 > kMaxRecordBytes)
+    throw_invalid("MotionLoop.run", until_done ? "max_ticks" : "ticks", ticks,
+                  "could record more than the 2 GB a run may record; record fewer signals or run in pieces");
   std::size_t total = 0;
   {
+    RunLock lock({&loop, &loop.axis()});
     py::gil_scoped_release release;
-    constexpr std::size_t kChunk = 65536;
+    ChunkClock clock;
     while (total < total_max) {
-      const std::size_t chunk = std::min(kChunk, total_max - total);
+      if (total > 0) check_signals();
+      const std::size_t chunk = std::min(clock.size(), total_max - total);
       for (auto& [name, v] : buf) v.resize(total + chunk);
       machine::Trace tr;
       machine::LoopTrace lt;
@@ -81,10 +87,15 @@ py::dict run_loop(MotionLoop& loop, double ticks, bool until_done, const py::obj
       SERVOBENCH_LOOP_SIGNALS(SERVOBENCH_POINT)
 #undef SERVOBENCH_POINT
       std::size_t k = chunk;
-      if (until_done) {
-        k = loop.run_until_done(chunk, tr, lt);
-      } else {
-        loop.run(chunk, tr, lt);
+      {
+        auto held = lock.chunk();
+        clock.start();
+        if (until_done) {
+          k = loop.run_until_done(chunk, tr, lt);
+        } else {
+          loop.run(chunk, tr, lt);
+        }
+        clock.stop();
       }
       total += k;
       if (k < chunk) break;
@@ -219,6 +230,7 @@ void bind_homing(py::module_& m) {
       .def("run_until_done", [](MotionLoop& l, double max_ticks, const py::object& s) {
              return run_loop(l, max_ticks, true, s);
            }, py::arg("max_ticks") = 1e7, py::arg("signals") = py::none());
+  serialise_methods(c, {"run", "run_until_done"});  // one run at a time; the rest between chunks (object_lock.hpp)
 }
 
 }  // namespace servobench::bindings

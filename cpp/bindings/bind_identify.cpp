@@ -63,10 +63,23 @@ py::dict summary(const identify::FitSummary& s) {
 }
 
 // An iteration callback (iteration, cost) -> bool|None, the GIL taken for the call; empty if None.
-std::function<bool(int, double)> iteration_callback(const py::object& f) {
-  if (f.is_none()) return {};
-  return [f](int it, double cost) {
+// Thrown from the iteration callback on Ctrl-C: unwinds the fit (its stages and its covariance are not computed)
+// back to the binding, which raises the kept KeyboardInterrupt (raise_pending). Ceres holds its state in RAII
+// objects, so the unwinding frees it; the fit's result is discarded.
+struct SolveInterrupted {};
+
+// The solver's per-iteration callback: the user's progress function (None: none) and a Ctrl-C check; a pending
+// signal is kept in *interrupt and ends the fit at once (SolveInterrupted).
+std::function<bool(int, double)> iteration_callback(const py::object& f,
+                                                   std::shared_ptr<py::error_already_set>* interrupt) {
+  return [f, interrupt](int it, double cost) {
+    {
+      py::gil_scoped_acquire gil;
+      if (PyErr_CheckSignals() != 0) *interrupt = std::make_shared<py::error_already_set>();
+    }
+    if (*interrupt) throw SolveInterrupted{};
     py::gil_scoped_acquire gil;
+    if (f.is_none()) return true;
     py::object r = f(it, cost);
     return r.is_none() || r.cast<bool>();
   };
@@ -150,13 +163,16 @@ void bind_identify(py::module_& m) {
         const identify::TimeLog log = time_log(torque_nm, measured, sample_period_s, measured_is_speed,
                                                measured_on_load);
         identify::TimeFitOptions o = options_from(model, kw);
-        o.progress = iteration_callback(progress);
+        std::shared_ptr<py::error_already_set> interrupt;
+        o.progress = iteration_callback(progress, &interrupt);
         const identify::ParameterSetup s = setup_of(initial, fixed, lower, upper);
         identify::TimeFitResult r;
-        {
+        try {
           py::gil_scoped_release release;
           r = identify::fit_time_domain(log, s, o);
+        } catch (const SolveInterrupted&) {
         }
+        raise_pending(interrupt);
         py::dict d;
         d["parameters"] = estimates(r.parameters);
         d["summary"] = summary(r.summary);
@@ -259,13 +275,16 @@ void bind_identify(py::module_& m) {
         o.max_iterations = static_cast<int>(max_iterations);
         o.max_relative_std_error = max_relative_std_error;
         o.validate();
-        o.progress = iteration_callback(progress);
+        std::shared_ptr<py::error_already_set> interrupt;
+        o.progress = iteration_callback(progress, &interrupt);
         const identify::ParameterSetup s = setup_of(initial, fixed, lower, upper);
         identify::FrequencyFitResult r;
-        {
+        try {
           py::gil_scoped_release release;
           r = identify::fit_frequency_response(axis.config(), data, s, o);
+        } catch (const SolveInterrupted&) {
         }
+        raise_pending(interrupt);
         py::dict d;
         d["parameters"] = estimates(r.parameters);
         d["summary"] = summary(r.summary);

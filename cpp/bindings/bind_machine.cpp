@@ -11,6 +11,7 @@
 
 #include "servobench/common/validate.hpp"
 #include "servobench/machine/axis.hpp"
+#include "object_lock.hpp"
 
 namespace servobench::bindings {
 
@@ -88,6 +89,52 @@ py::tuple filters_to_python(const std::array<control::BiquadParams, 2>& filters)
                         std::visit([](const auto& p) { return py::cast(p); }, filters[1]));
 }
 
+// The trace with every recording pointer moved `k` samples on (a chunk of a run starting at tick k).
+machine::Trace offset_trace(machine::Trace t, std::size_t k) {
+#define SERVOBENCH_SHIFT(n, unit, doc) \
+  if (t.n) t.n += k;
+  SERVOBENCH_TRACE_SIGNALS(SERVOBENCH_SHIFT)
+#undef SERVOBENCH_SHIFT
+  return t;
+}
+
+// Runs the axis in chunks of about 20 ms of work, each under the axis's state lock, checking for Ctrl-C between
+// chunks (object_lock.hpp); the axis keeps its state between chunks, so the result is the one-call result.
+// chunk_start (optional): set to the run's tick index at which each chunk starts, for a per-tick hook that needs
+// the index in the whole run.
+machine::RunOutcome run_chunked(Axis& axis, const machine::CommandInput& in, const machine::Trace& trace,
+                                const machine::RunGuard& guard, std::size_t* chunk_start = nullptr) {
+  RunLock lock({&axis});
+  py::gil_scoped_release release;
+  ChunkClock clock;
+  machine::RunOutcome outcome;
+  std::size_t done = 0;
+  while (done < in.n) {
+    machine::CommandInput c = in;
+    c.n = std::min(clock.size(), in.n - done);
+    c.pos += done;
+    if (c.vel) c.vel += done;
+    if (c.acc) c.acc += done;
+    if (c.volts_add) c.volts_add += done;
+    machine::RunOutcome o;
+    {
+      auto held = lock.chunk();
+      if (chunk_start) *chunk_start = done;
+      clock.start();
+      o = axis.run(c, offset_trace(trace, done), guard);
+      clock.stop();
+    }
+    done += o.ticks;
+    if (o.stop != machine::RunStop::kCompleted) {
+      outcome = o;
+      break;
+    }
+    if (done < in.n) check_signals();
+  }
+  outcome.ticks = done;
+  return outcome;
+}
+
 Array checked_array(const py::handle& obj, const char* name, py::ssize_t expected) {
   Array a = Array::ensure(obj);
   if (!a) throw py::type_error(std::string(name) + " must be a 1-D array of numbers");
@@ -121,8 +168,8 @@ void bind_machine(py::module_& m) {
 #undef SERVOBENCH_META
   m.attr("TRACE_SIGNALS") = meta;
 
-  py::class_<Axis>(m, "Axis", "One simulated servo axis (C++ core). Use servobench.Axis.")
-      .def(py::init([](const py::object& law, const py::object& drv, const py::object& plant,
+  py::class_<Axis> axis_cls(m, "Axis", "One simulated servo axis (C++ core). Use servobench.Axis.");
+  axis_cls.def(py::init([](const py::object& law, const py::object& drv, const py::object& plant,
                        const plant::EncoderParams& enc, const drive::DacParams& dac, const plant::SwitchParams& sw,
                        std::optional<double> servo_period_s, double substeps, const py::object& filters) {
              check_integer("Axis", "substeps", substeps, 1, 1000);
@@ -141,7 +188,10 @@ void bind_machine(py::module_& m) {
            py::kw_only(), py::arg("law"), py::arg("drive"), py::arg("plant"), py::arg("encoder"), py::arg("dac"),
            py::arg("switches"), py::arg("servo_period_s") = py::none(), py::arg("substeps") = 1.0,
            py::arg("filters") = py::none())
-      .def("reset", &Axis::reset, py::arg("angle_rad") = 0.0)
+      .def("reset", [](Axis& a, double angle_rad) {
+             check_range("Axis.reset", "angle_rad", angle_rad, -1e6, 1e6);
+             a.reset(angle_rad);
+           }, py::arg("angle_rad") = 0.0)
       .def("reset_state", &Axis::reset_state, py::arg("angle_rad"), py::arg("speed_rad_s"), py::arg("load_angle_rad"),
            py::arg("load_speed_rad_s"))
       .def("set_law", [](Axis& a, const py::object& law) { a.set_law(law_from(law)); }, py::arg("law"))
@@ -196,8 +246,7 @@ void bind_machine(py::module_& m) {
               inj = checked_array(injection, "injection_v", n);
               in.volts_add = inj.data();
             }
-            if (!(error_limit >= 0) || !std::isfinite(error_limit))
-              throw_invalid("Axis.run", "error_limit_pulse", error_limit, "must be finite and >= 0 (0 = off)");
+            check_range("Axis.run", "error_limit_pulse", error_limit, 0, 1e15, "0 = off");
             machine::RunGuard guard;
             guard.error_limit_pulse = error_limit;
             guard.stop_on_alarm = stop_on_alarm;
@@ -207,6 +256,11 @@ void bind_machine(py::module_& m) {
             } else {
               for (const auto& s : signals) wanted.push_back(py::str(s));
             }
+            if (static_cast<double>(n) * static_cast<double>(wanted.size()) * 8.0 > kMaxRecordBytes)
+              throw py::value_error("Axis.run.positions: " + std::to_string(n) + " ticks x " +
+                                    std::to_string(wanted.size()) + " signals would record " +
+                                    format_value(static_cast<double>(n) * static_cast<double>(wanted.size()) * 8e-9) +
+                                    " GB, above the 2 GB a run may record; record fewer signals or run in pieces");
             machine::Trace trace;
             py::dict out;
             for (const auto& name : wanted) {
@@ -221,9 +275,12 @@ void bind_machine(py::module_& m) {
               out[py::str(name)] = buf;
             }
             // A user's controller in place of the law: a Python callable (called with the GIL, per tick) or a
-            // compiled C function double(int64 tick, double cmd_pulse, double fb_pulse, double* state).
+            // compiled C function double(int64 tick, double cmd_pulse, double fb_pulse, double* state). The
+            // compiled one runs in chunks like the law (run_chunked); `chunk_start` turns the chunk's tick index
+            // back into the index in this run.
             ExternalLaw ext;
             Array state;
+            std::size_t chunk_start = 0;
             if (!controller.is_none()) {
               ext = [&controller](std::size_t k, double r, double y) {
                 return finite_request(controller(k, r, y).cast<double>(), k);
@@ -238,17 +295,21 @@ void bind_machine(py::module_& m) {
                 st = state.mutable_data();
               }
               const auto fn = reinterpret_cast<CompiledLaw>(controller_address);
-              ext = [fn, st](std::size_t k, double r, double y) {
-                return finite_request(fn(static_cast<std::int64_t>(k), r, y, st), k);
+              ext = [fn, st, &chunk_start](std::size_t k, double r, double y) {
+                const std::size_t tick = chunk_start + k;
+                return finite_request(fn(static_cast<std::int64_t>(tick), r, y, st), tick);
               };
               in.external = &ext;
             }
             machine::RunOutcome outcome;
             if (!controller.is_none()) {
-              outcome = axis.run(in, trace, guard);  // the Python controller needs the GIL every tick
-            } else {
-              py::gil_scoped_release release;
+              // The Python controller needs the GIL every tick: one piece, under the run lock; Ctrl-C surfaces
+              // as the KeyboardInterrupt the controller's own Python code raises.
+              RunLock lock({&axis});
+              auto held = lock_releasing_gil(locks_of(&axis)->state);
               outcome = axis.run(in, trace, guard);
+            } else {
+              outcome = run_chunked(axis, in, trace, guard, &chunk_start);
             }
             const char* stop = outcome.stop == machine::RunStop::kCompleted  ? ""
                                : outcome.stop == machine::RunStop::kErrorLimit ? "error_limit"
@@ -266,7 +327,8 @@ void bind_machine(py::module_& m) {
           py::arg("stop_on_alarm") = false, py::arg("controller") = py::none(), py::arg("controller_address") = 0,
           py::arg("controller_state") = py::none(),
           "Runs one tick per position (pulse); returns ({signal: array}, stop reason or '', error at the stop). "
-          "Releases the GIL (not with a Python controller).")
+          "Releases the GIL (not with a Python controller); one run at a time per axis (a second thread waits); "
+          "Ctrl-C raises KeyboardInterrupt within about 20 ms, the axis standing at the last whole tick run.")
       .def("step", [](Axis& a, double command_pulse) { return a.step(command_pulse); }, py::arg("command_pulse"),
            "Advances one tick holding command_pulse (pulse); returns the feedback read, pulse.")
       .def(
@@ -285,6 +347,7 @@ void bind_machine(py::module_& m) {
           py::arg("command_pulse"), py::arg("n"), py::arg("volts"),
           "Advances n ticks holding command_pulse (pulse), the law's output replaced by `volts` (V) if given; "
           "returns the feedback read at the last tick, pulse.");
+  serialise_methods(axis_cls, {"run"});
 }
 
 }  // namespace servobench::bindings

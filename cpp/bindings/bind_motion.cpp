@@ -155,7 +155,7 @@ void bind_motion(py::module_& m) {
       .def("follow", [](ElectronicGear& g, py::array_t<long long, py::array::c_style | py::array::forcecast> master) {
              py::array_t<double> out(master.size());
              {
-               py::gil_scoped_release release;
+               // GIL held: one thread per gear
                for (py::ssize_t i = 0; i < master.size(); ++i) {
                  g.step(master.data()[i]);
                  out.mutable_data()[i] = static_cast<double>(g.reported_pos());

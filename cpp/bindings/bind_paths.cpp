@@ -80,10 +80,7 @@ template <class G>
 py::dict record_py(G& g, double ticks, bool until_done) {
   check_integer("record", "ticks", ticks, 0, 1e8);
   motion::PathRecording r;
-  {
-    py::gil_scoped_release release;
-    r = motion::record(g, static_cast<std::size_t>(ticks), until_done);
-  }
+  r = motion::record(g, static_cast<std::size_t>(ticks), until_done);  // GIL held: one thread per generator
   return recording_dict(r);
 }
 
@@ -469,11 +466,7 @@ void bind_paths(py::module_& m) {
       .def_property_readonly("done", &AdlinkInterpolator::done)
       .def("record", [](AdlinkInterpolator& g, double ticks, bool until_done) {
              check_integer("AdlinkInterpolator.record", "ticks", ticks, 0, 1e8);
-             AdlinkInterpRecording r;
-             {
-               py::gil_scoped_release release;
-               r = record(g, static_cast<std::size_t>(ticks), until_done);
-             }
+             AdlinkInterpRecording r = record(g, static_cast<std::size_t>(ticks), until_done);  // GIL held
              py::dict d;
              d["t_s"] = to_array(r.t_s);
              d["pos"] = matrix(r.pos, static_cast<std::size_t>(r.dim));

@@ -286,7 +286,7 @@ void bind_pvt(py::module_& m) {
              const auto mv = vec(master, "FollowEx.follow", "master_pos");
              std::vector<double> pos(mv.size()), exact(mv.size()), vel(mv.size()), acc(mv.size()), ratio(mv.size());
              {
-               py::gil_scoped_release release;
+               // GIL held: one thread per FollowEx
                for (std::size_t i = 0; i < mv.size(); ++i) {
                  const auto& s = f.step(mv[i]);
                  pos[i] = static_cast<double>(f.reported_pos());

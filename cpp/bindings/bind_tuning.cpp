@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "arrays.hpp"
+#include "object_lock.hpp"
 #include "servobench/common/validate.hpp"
 #include "servobench/tuning/loop_response.hpp"
 #include "servobench/tuning/margins.hpp"
@@ -126,12 +127,16 @@ void bind_tuning(py::module_& m) {
         o.dac_fraction = dac_fraction;
         o.max_amplitude_pulse = max_amplitude_pulse;
         o.validate(axis.servo_period_s());
-        const tuning::SweepProgress cb = progress_callback(progress);
+        std::shared_ptr<py::error_already_set> interrupt;
+        const tuning::SweepProgress cb = progress_callback(progress, &interrupt);
         tuning::SineSweepResult r;
         {
+          RunLock lock({&axis});  // one run at a time on the axis; its other calls wait for the sweep
           py::gil_scoped_release release;
+          auto held = lock.chunk();
           r = tuning::sine_sweep(axis, o, cb);
         }
+        raise_pending(interrupt);
         py::dict d;
         d["status"] = status_name(r.status);
         d["message"] = r.message;
@@ -230,12 +235,16 @@ void bind_tuning(py::module_& m) {
         o.settle_cycles = static_cast<int>(settle_cycles);
         o.max_cycle_s = max_cycle_s;
         o.validate();
-        const tuning::TuneProgress cb = progress_callback(progress);
+        std::shared_ptr<py::error_already_set> interrupt;
+        const tuning::TuneProgress cb = progress_callback(progress, &interrupt);
         tuning::RelayTuneResult r;
         {
+          RunLock lock({&axis});
           py::gil_scoped_release release;
+          auto held = lock.chunk();
           r = tuning::relay_autotune(axis, o, cb);
         }
+        raise_pending(interrupt);
         static const char* names[] = {"completed", "user_stop", "limit_or_alarm", "deviation_exceeded",
                                       "spread_too_large", "no_oscillation"};
         py::dict d;

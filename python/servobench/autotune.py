@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from . import _checks
 from . import _core
 
 __all__ = ["ModelTuneResult", "RelayTuneResult", "model_based_tune", "predicted_limit_cycle", "relay_autotune"]
@@ -435,7 +436,7 @@ def model_based_tune(axis, *, phase_margin_deg: float = 60.0, alpha: float = 4.0
                          "use None to find it in the plant response")
     d = _core.model_tune(getattr(axis, "_axis", axis), phase_margin_deg=float(phase_margin_deg), alpha=float(alpha),
                          pm_tolerance_deg=float(pm_tolerance_deg), min_gain_margin_db=float(min_gain_margin_db),
-                         max_ms=float(max_ms), max_pid_lead_deg=float(max_pid_lead_deg), notch=bool(notch),
+                         max_ms=float(max_ms), max_pid_lead_deg=float(max_pid_lead_deg), notch=_checks.flag("model_based_tune", "notch", notch),
                          resonance_hz=0.0 if resonance_hz is None else float(resonance_hz),
                          min_resonance_prominence_db=float(min_resonance_prominence_db),
                          notch_q_set=[float(q) for q in np.atleast_1d(notch_q)],

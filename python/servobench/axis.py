@@ -8,7 +8,7 @@ from typing import Iterable, Mapping
 
 import numpy as np
 
-from . import _core
+from . import _checks, _core
 from .trajectory import Trajectory
 
 #: Names of the signals an axis records every tick, in order.
@@ -117,6 +117,10 @@ class Axis:
 
     The controller output computed at tick k reaches the drive at tick k+1 (one-tick computation delay).
     The axis keeps its state between :meth:`run` calls; :meth:`reset` returns it to power-on.
+
+    Thread safety: an Axis may be shared between threads. One run at a time: a second :meth:`run` (or a
+    :class:`~servobench.Card` run using this axis) waits until the first has finished; every other call waits
+    at most for the running chunk (about 20 ms of work), so the axis's state can be read while it runs.
     """
 
     def __init__(self, *, law=None, drive=None, plant=None, encoder=None, dac=None, switches=None,
@@ -155,6 +159,13 @@ class Axis:
     substeps_per_tick = property(lambda self: self._axis.substeps_per_tick,
                                  doc="Integration sub-steps actually taken per tick.")
 
+    @property
+    def default_error_limit_pulse(self) -> float:
+        """The least following-error limit :meth:`run` applies by default, pulse: 2 revolutions of the encoder
+        (2 x ``encoder.counts_per_rev``); a run whose command goes further from where the axis stands gets twice
+        that distance instead. No tuned axis lags by that much; a loop that does has lost control (decision RB4)."""
+        return 2.0 * float(self.encoder.counts_per_rev)
+
     def __repr__(self) -> str:
         return (f"Axis(law={self.law!r}, drive={self.drive!r}, plant={self.plant!r}, encoder={self.encoder!r}, "
                 f"dac={self.dac!r}, switches={self.switches!r}, servo_period_s={self.servo_period_s!r}, "
@@ -164,19 +175,19 @@ class Axis:
     def reset(self, angle_rad: float = 0.0, *, speed_rad_s: float = 0.0, load_angle_rad: float | None = None,
               load_speed_rad_s: float | None = None) -> None:
         """Power-on state (law memories cleared, output 0 V, tick 0) with the mechanics where you put them: motor
-        angle `angle_rad` (rad) and speed `speed_rad_s` (rad/s); on a two-mass plant the load's angle and speed
-        (default: the motor's). A body at rest starts held by its static friction. A rigid plant has one body: a
-        load state different from the motor's is a ValueError."""
-        a, w = float(angle_rad), float(speed_rad_s)
-        la = a if load_angle_rad is None else float(load_angle_rad)
-        lw = w if load_speed_rad_s is None else float(load_speed_rad_s)
-        for name, v in (("angle_rad", a), ("speed_rad_s", w), ("load_angle_rad", la), ("load_speed_rad_s", lw)):
-            if not np.isfinite(v):
-                raise ValueError(f"Axis.reset.{name} = {v} is not a finite number")
+        angle `angle_rad` (rad, -1e6..1e6) and speed `speed_rad_s` (rad/s, -1e6..1e6); on a two-mass plant the
+        load's angle and speed (default: the motor's). A body at rest starts held by its static friction. A rigid
+        plant has one body: a load state different from the motor's is a ValueError."""
+        a = _checks.real("Axis.reset", "angle_rad", angle_rad, -1e6, 1e6, unit="rad")
+        w = _checks.real("Axis.reset", "speed_rad_s", speed_rad_s, -1e6, 1e6, unit="rad/s")
+        la = a if load_angle_rad is None else _checks.real("Axis.reset", "load_angle_rad", load_angle_rad,
+                                                           -1e6, 1e6, unit="rad")
+        lw = w if load_speed_rad_s is None else _checks.real("Axis.reset", "load_speed_rad_s", load_speed_rad_s,
+                                                             -1e6, 1e6, unit="rad/s")
         if not isinstance(self.plant, _core.TwoMassPlant) and (la != a or lw != w):
             raise ValueError(f"Axis.reset: load_angle_rad = {la}, load_speed_rad_s = {lw} differ from the motor's, but "
                              "a rigid plant has one body (leave them out)")
-        if w == 0.0 and load_speed_rad_s is None and load_angle_rad is None and np.isfinite(a):
+        if w == 0.0 and load_speed_rad_s is None and load_angle_rad is None:
             self._axis.reset(a)  # the power-on reset, unchanged
         else:
             self._axis.reset_state(a, w, la, lw)
@@ -198,7 +209,7 @@ class Axis:
     def set_servo_on(self, on: bool) -> None:
         """Servo on (True) or off (False). Off: the law is not evaluated and the output is 0 V (plus any injection);
         on again: the law and the filters restart from power-on memories (the card's GT_AxisOn / servo ON)."""
-        self._axis.set_servo_on(bool(on))
+        self._axis.set_servo_on(_checks.flag("Axis.set_servo_on", "on", on))
 
     def step(self, command_pulse: float, n: int = 1, *, volts: float | None = None) -> float:
         """Advances `n` servo ticks holding the command position `command_pulse` (pulse) and returns the feedback
@@ -221,8 +232,8 @@ class Axis:
         return self._axis.step_n(command_pulse, int(n), volts)
 
     def run(self, command, *, velocities=None, accelerations=None, signals: Iterable[str] | None = None,
-            injection_v=None, error_limit_pulse: float = 0.0, stop_on_alarm: bool = False, controller=None,
-            controller_state=None) -> AxisRun:
+            injection_v=None, error_limit_pulse: float | str | None = "auto", stop_on_alarm: bool = False,
+            controller=None, controller_state=None) -> AxisRun:
         """Runs one servo tick per command sample and returns what was recorded.
 
         command
@@ -239,8 +250,11 @@ class Axis:
             plant input, for open-loop and disturbance-injection experiments; with the servo off it is the whole
             output). Like the law's output it reaches the drive one tick later.
         error_limit_pulse
-            position-error protection (ADLINK ERR_POS_LEVEL, the Bode tool's deviation limit), pulse; 0 = off.
-            When ``|cmd_pos - fb_pos|`` exceeds it the servo is turned off at that tick and the run ends there:
+            position-error protection (ADLINK ERR_POS_LEVEL, the Bode tool's deviation limit), pulse. Default
+            ``"auto"``: the larger of :attr:`default_error_limit_pulse` (2 revolutions of the encoder) and twice
+            the command's largest distance from the axis's position, so an unstable design stops instead of
+            running away; ``None`` or 0 = off. When ``|cmd_pos - fb_pos|`` exceeds it (or is not
+            a finite number) while the servo is on, the servo is turned off at that tick and the run ends there:
             :attr:`AxisRun.stopped` is ``"error_limit"`` and the arrays end at that tick.
         stop_on_alarm
             end the run, servo off, at the first tick with the drive alarm set (``stopped = "drive_alarm"``).
@@ -256,7 +270,10 @@ class Axis:
             for a compiled controller: a float64 NumPy array passed as ``state`` (read and updated in place; its
             memories, gains ...). ``None`` passes a null pointer.
 
-        Releases the GIL while it runs.
+        Releases the GIL while it runs. One run at a time per axis: a second thread's run (or any other call on
+        this axis, or a card run using it) waits for it. Ctrl-C raises KeyboardInterrupt within about 20 ms; the
+        axis then stands at the last whole tick it ran (its state is consistent; the recording is discarded).
+        A run may record at most 2 GB (ticks x signals x 8 bytes), checked before allocating.
         """
         if isinstance(command, Trajectory):
             positions = command.pos
@@ -275,10 +292,14 @@ class Axis:
             raise TypeError("controller_state must be a writeable, C-contiguous float64 NumPy array")
         if controller_state is not None and address == 0:
             raise ValueError("controller_state is for a compiled controller (a numba cfunc or a C function pointer)")
+        fb = self.feedback_pulse  # the command's largest distance from here, without a temporary array
+        span = max(abs(float(positions.max()) - fb), abs(float(positions.min()) - fb)) if positions.size else 0.0
+        limit = _checks.error_limit("Axis.run", "error_limit_pulse", error_limit_pulse, self,
+                                    span if np.isfinite(span) else 0.0)
         rec, stop, stop_error = self._axis.run(positions, velocities, accelerations,
                                                None if signals is None else list(signals), injection_v,
-                                               float(error_limit_pulse), bool(stop_on_alarm), py_controller, address,
-                                               controller_state)
+                                               limit, _checks.flag("Axis.run", "stop_on_alarm", stop_on_alarm),
+                                               py_controller, address, controller_state)
         return AxisRun(signals=rec, servo_period_s=self.servo_period_s, law=self.law, stopped=stop or None,
                        stop_error_pulse=float(stop_error))
 

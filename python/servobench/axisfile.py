@@ -43,6 +43,7 @@ import os
 import re
 from dataclasses import dataclass, field
 
+from . import _checks
 from . import _core, design
 from .axis import Axis
 
@@ -491,6 +492,7 @@ def axis_to_dict(axis: Axis, *, filter_specs=None, description: str | None = Non
     switches when not at their defaults; the filters that are not pass-through. A filter is written in its design
     form (``type = "notch"``, ``center_hz`` ...) when the matching entry of `filter_specs` (a list of filter tables,
     e.g. from the file it was loaded from) designs exactly these coefficients, else as coefficients."""
+    _checks.has("axis_to_dict", "axis", axis, "servo_period_s", "law")
     d = {}
     if description:
         d["description"] = description

@@ -25,6 +25,7 @@ from typing import Mapping, Sequence
 
 import numpy as np
 
+from . import _checks
 from . import _core
 from ._core import CardCommandRefused, CardLimits
 from .axis import SIGNAL_UNITS, Axis
@@ -40,7 +41,7 @@ _CARD_UNITS = {"events": "bits", "moving": "bool", "servo_on": "bool", "prf_vel"
 
 def events_named(bits: int) -> list[str]:
     """The names of the events set in ``bits`` (a value of :meth:`Card.events` or the ``events`` signal)."""
-    bits = int(bits)
+    bits = int(_checks.real("events_named", "bits", bits, 0, 2**32 - 1))
     return [name for k, name in enumerate(CARD_EVENTS) if bits & (1 << k)]
 
 
@@ -110,6 +111,13 @@ class Card:
     ``set_alarm_input``, ``set_alarm_enabled``, ``set_error_level`` (pulse), ``emergency_stop``.
     Refused commands raise :class:`CardCommandRefused` (a RuntimeError) and leave the state unchanged; the
     cause is ``last_fault``. Events: ``events(i)`` (bits, :func:`events_named`), ``clear_events(i, bits)``.
+
+    Thread safety: a Card may be shared between threads. One run at a time (:meth:`run`,
+    ``run_until_event``; a second thread's run waits until the first has finished; the card's axes are locked
+    with it). Every other call (commands, status reads, the scope: ``sampler_pop_block``, ``sampler_snapshot``,
+    ...) runs between two chunks of the running card (about 20 ms of work each), as a host talks to a running
+    card. Ctrl-C during a run raises KeyboardInterrupt within a chunk; the card stands at the last whole tick.
+    A run may record at most 2 GB (ticks x axes x signals x 8 bytes), checked before allocating.
     """
 
     #: Signals :meth:`run` can record: the axis signals, the loop signals and the card's own.
@@ -124,6 +132,8 @@ class Card:
         else:
             if axis_parts:
                 raise TypeError("give either Axis objects or the parts to build them from, not both")
+            if not isinstance(axes, (list, tuple)):
+                raise TypeError(f"Card.axes must be 4 or 8, or a list of Axis objects, got {type(axes).__name__}")
             self.axes = list(axes)
             for a in self.axes:
                 if not isinstance(a, Axis):
@@ -135,7 +145,7 @@ class Card:
 
     def __setattr__(self, name, value):
         if name == "emergency_stop":
-            self._card.emergency_stop = bool(value)
+            self._card.emergency_stop = _checks.flag("Card", "emergency_stop", value)
         else:
             object.__setattr__(self, name, value)
 
@@ -205,6 +215,9 @@ class Card:
         """Unit of a recorded signal."""
         from .homing import LOOP_SIGNAL_UNITS
 
+        if not isinstance(signal, str) or not (signal in SIGNAL_UNITS or signal in LOOP_SIGNAL_UNITS
+                                               or signal in _CARD_UNITS):
+            raise ValueError(f"Card.units.signal = {signal!r} is not a signal; the signals are {Card.SIGNALS}")
         return SIGNAL_UNITS.get(signal) or LOOP_SIGNAL_UNITS.get(signal) or _CARD_UNITS[signal]
 
     # -- scope, events, compare, probe (issue 10 point 3; docs/card.md "Scope, events, compare") ----------------
@@ -232,7 +245,8 @@ class Card:
         mask = _event_mask(events, "events") if trigger == "event" else 1
         chans = [(float(a), str(sig)) for a, sig in channels]
         self._card.sampler_start(chans, float(every_ticks), float(depth), str(trigger), float(trigger_channel),
-                                 float(level), float(event_axis), float(mask), float(pretrigger), bool(continuous))
+                                 float(level), float(event_axis), float(mask), float(pretrigger),
+                                 _checks.flag("Card.sample", "continuous", continuous))
         object.__setattr__(self, "_scope_channels", tuple((int(a), s) for a, s in chans))
 
     @property

@@ -21,6 +21,7 @@ import numbers
 
 import numpy as np
 
+from . import _checks
 from . import _core
 
 _d = _core.design
@@ -51,7 +52,7 @@ def lowpass(cutoff_hz: float, sample_time_s: float, zeta: float = 0.707, *, prew
     Returns a :class:`~servobench.FloatBiquad` bound to `sample_time_s`.
     """
     return _d.lowpass(_num("lowpass", "cutoff_hz", cutoff_hz), _num("lowpass", "sample_time_s", sample_time_s),
-                      _num("lowpass", "zeta", zeta), bool(prewarp))
+                      _num("lowpass", "zeta", zeta), _checks.flag("design", "prewarp", prewarp))
 
 
 def notch_q(center_hz: float, low_hz: float, high_hz: float, sample_time_s: float) -> float:
@@ -92,8 +93,8 @@ def notch(center_hz: float, sample_time_s: float, *, q: float | None = None, low
     if (q is not None) == band or (band and (low_hz is None or high_hz is None)):
         raise ValueError("notch: give either q (quality factor) or both low_hz and high_hz (the -3 dB edges, Hz)")
     if band:
-        return _d.notch_band(c, _num(o, "low_hz", low_hz), _num(o, "high_hz", high_hz), ts, bool(prewarp))
-    return _d.notch(c, _num(o, "q", q), ts, bool(prewarp))
+        return _d.notch_band(c, _num(o, "low_hz", low_hz), _num(o, "high_hz", high_hz), ts, _checks.flag("design", "prewarp", prewarp))
+    return _d.notch(c, _num(o, "q", q), ts, _checks.flag("design", "prewarp", prewarp))
 
 
 def lead_lag(zero_hz: float, pole_hz: float, sample_time_s: float, *, gain: float = 1.0, prewarp: bool = False):
@@ -105,7 +106,7 @@ def lead_lag(zero_hz: float, pole_hz: float, sample_time_s: float, *, gain: floa
     """
     o = "lead_lag"
     return _d.lead_lag(_num(o, "zero_hz", zero_hz), _num(o, "pole_hz", pole_hz),
-                       _num(o, "sample_time_s", sample_time_s), _num(o, "gain", gain), bool(prewarp))
+                       _num(o, "sample_time_s", sample_time_s), _num(o, "gain", gain), _checks.flag("design", "prewarp", prewarp))
 
 
 def _poly3(name: str, coefs) -> list[float]:

@@ -25,7 +25,7 @@ from typing import Callable
 
 import numpy as np
 
-from . import _core
+from . import _checks, _core
 from .margins import Margins, _margins_from, analytic_margins, closed_loop_poles, margins
 
 __all__ = [
@@ -291,7 +291,7 @@ def _core_axis(axis):
 # Measurements
 # ----------------------------------------------------------------------------------------------------------------
 def sine_sweep(axis, *, start_hz: float = 10.0, end_hz: float = 100.0, amplitude_pulse: float | None = None,
-               points: int = 100, update_s: float = 0.1, deviation_limit_pulse: float = 0.0,
+               points: int = 100, update_s: float = 0.1, deviation_limit_pulse: float | str | None = "auto",
                feedforward: bool = False, filters: bool = True, settle_fraction: float = 0.25,
                progress=None, min_coherence: float = 0.99, max_distortion: float = 0.05,
                min_response_pulse: float = 4.0, min_dac_counts: float = 30.0, dac_fraction: float = 0.5,
@@ -322,7 +322,9 @@ def sine_sweep(axis, *, start_hz: float = 10.0, end_hz: float = 100.0, amplitude
         time per frequency point, s; the first `settle_fraction` (0..0.9) of it is discarded, the rest analysed over
         whole periods (it must hold at least one period of the lowest frequency).
     deviation_limit_pulse
-        ``|E|`` above this turns the servo off and ends the sweep (status ``"deviation_exceeded"``), pulse; 0 = off. A
+        ``|E|`` above this turns the servo off and ends the sweep (status ``"deviation_exceeded"``), pulse; default
+        ``"auto"``: the larger of the axis's :attr:`~servobench.Axis.default_error_limit_pulse` (2 encoder
+        revolutions) and twice the amplitude, so an unstable loop stops with that status; ``None`` or 0 = off. A
         drive alarm also ends it (``"drive_alarm"``).
     feedforward, filters
         feed-forward and biquads in the loop during the sweep (restored afterwards); see the module doc.
@@ -332,14 +334,23 @@ def sine_sweep(axis, *, start_hz: float = 10.0, end_hz: float = 100.0, amplitude
 
     Releases the GIL while it runs; deterministic (no randomness unless the encoder has noise, seeded).
     """
-    if amplitude_pulse is not None and not float(amplitude_pulse) > 0:
-        raise ValueError(f"sine_sweep.amplitude_pulse = {amplitude_pulse} must be > 0 pulse (or None: automatic)")
-    if max_amplitude_pulse is not None and not float(max_amplitude_pulse) > 0:
-        raise ValueError(f"sine_sweep.max_amplitude_pulse = {max_amplitude_pulse} must be > 0 pulse (or None)")
+    feedforward = _checks.flag("sine_sweep", "feedforward", feedforward)
+    filters = _checks.flag("sine_sweep", "filters", filters)
+    if amplitude_pulse is not None:
+        amplitude_pulse = _checks.real("sine_sweep", "amplitude_pulse", amplitude_pulse, 1e-9, 1e12,
+                                       unit="pulse (or None: automatic)")
+    if max_amplitude_pulse is not None:
+        max_amplitude_pulse = _checks.real("sine_sweep", "max_amplitude_pulse", max_amplitude_pulse, 1e-9, 1e12,
+                                           unit="pulse (or None: one encoder revolution)")
+    # The automatic amplitude is at most max_amplitude_pulse (default one revolution): the "auto" deviation limit
+    # (two revolutions, or twice the amplitude) then never trips on a loop that follows.
+    span = amplitude_pulse if amplitude_pulse is not None else (max_amplitude_pulse or 0.0)
     d = _core.sine_sweep(_core_axis(axis), start_hz=float(start_hz), end_hz=float(end_hz),
                          amplitude_pulse=0.0 if amplitude_pulse is None else float(amplitude_pulse),
                          points=float(points), update_s=float(update_s),
-                         deviation_limit_pulse=float(deviation_limit_pulse), settle_fraction=float(settle_fraction),
+                         deviation_limit_pulse=_checks.error_limit("sine_sweep", "deviation_limit_pulse",
+                                                                   deviation_limit_pulse, axis, span),
+                         settle_fraction=float(settle_fraction),
                          feedforward=bool(feedforward), filters=bool(filters),
                          progress=_progress_callback(progress, "Bode sweep"), min_coherence=float(min_coherence),
                          max_distortion=float(max_distortion), min_response_pulse=float(min_response_pulse),
@@ -370,6 +381,8 @@ def analytic_response(axis, freq_hz, *, feedforward: bool = False, filters: bool
     Exact for a linear configuration (no friction, saturation, quantisation or noise): a stepped-sine sweep of
     such an axis agrees with it (tests/python/test_bode.py). Also returns ``loop_gain`` and ``sensitivity``.
     """
+    feedforward = _checks.flag("analytic_response", "feedforward", feedforward)
+    filters = _checks.flag("analytic_response", "filters", filters)
     f = np.atleast_1d(np.asarray(freq_hz, dtype=float))
     d = _core.loop_response(_core_axis(axis), f, bool(feedforward), bool(filters))
     mm = None
@@ -469,6 +482,17 @@ def _measure_with(axis, feedforward: bool, filters: bool):
     return ctx()
 
 
+def _stopped(run, method, ts, feedforward, filters) -> FrequencyResponse:
+    """The empty response of a broadband run the axis's protection ended (issue 21.4)."""
+    status = "deviation_exceeded" if run.stopped == "error_limit" else run.stopped
+    empty = np.zeros(0)
+    return FrequencyResponse(freq_hz=empty, plant=empty.astype(complex), open_loop=empty.astype(complex),
+                             closed_loop=empty.astype(complex), method=method, servo_period_s=ts,
+                             feedforward=bool(feedforward), filters=bool(filters), coherence=empty, status=status,
+                             message=f"{method}: the run stopped at tick {len(run.fb_pos)} ({run.stopped}, "
+                                     f"|E| = {abs(run.stop_error_pulse):.6g} pulse); the loop is not stable")
+
+
 def broadband_response(axis, *, excitation: str = "multisine", start_hz: float = 10.0, end_hz: float | None = None,
                        amplitude_pulse: float = 10.0, lines: int | None = 1000, period_ticks: int | None = None,
                        periods: int = 4, duration_s: float | None = None, rest_s: float = 0.5,
@@ -501,6 +525,8 @@ def broadband_response(axis, *, excitation: str = "multisine", start_hz: float =
     The axis continues from its present state around its last command position. Returns a
     :class:`FrequencyResponse` with ``coherence`` (magnitude-squared, R to Y).
     """
+    feedforward = _checks.flag("broadband_response", "feedforward", feedforward)
+    filters = _checks.flag("broadband_response", "filters", filters)
     ts = axis.servo_period_s
     fs = 1.0 / ts
     if end_hz is None:
@@ -524,6 +550,8 @@ def broadband_response(axis, *, excitation: str = "multisine", start_hz: float =
             x, bins = multisine(start_hz=start_hz, end_hz=end_hz, period_ticks=period_ticks, servo_period_s=ts,
                                 amplitude=amplitude_pulse, lines=lines, periods=int(periods) + 1)
             run = axis.run(base + x, signals=("fb_pos", "error", "biquad1", "u", "volts", "torque_nm"))
+            if run.stopped:  # the loop tripped the axis's default error limit (or the drive alarmed): report it
+                return _stopped(run, excitation, ts, feedforward, filters)
             n = int(period_ticks)
             seg = slice(n, None)  # drop the settling period
 
@@ -560,6 +588,8 @@ def broadband_response(axis, *, excitation: str = "multisine", start_hz: float =
             axis.run(np.full(n_rest, base), signals=())  # settle whatever ran before, at the base position
             x = np.tile(record, int(periods))
             run = axis.run(base + x, signals=("fb_pos", "error", "biquad1", "u", "volts", "torque_nm"))
+            if run.stopped:  # the loop tripped the axis's default error limit (or the drive alarmed): report it
+                return _stopped(run, excitation, ts, feedforward, filters)
             freq_all = np.fft.rfftfreq(n, ts)
             in_band = np.nonzero((freq_all >= start_hz) & (freq_all <= end_hz))[0]
             if lines is not None and lines < len(in_band):
@@ -628,6 +658,7 @@ def linear_model(axis, *, feedforward: bool = False, filters: bool = True) -> di
     ``filters`` F(z) (both biquads), all three as state-space systems, ``plant`` P(z) (DAC counts to encoder pulses, with the one-tick delay; a
     state-space system from the lifted power train), ``loop_gain`` F C P and ``closed_loop`` Y/R. Needs the
     ``control`` package. For analysis with python-control's tools (step responses, root locus, margins)."""
+    _checks.has("linear_model", "axis", axis, "servo_period_s", "law")
     import control
 
     ts = axis.servo_period_s

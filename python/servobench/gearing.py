@@ -32,8 +32,12 @@ def master_counts(master, source: str = "profile") -> np.ndarray:
     if source == "aux":
         counts = np.asarray(master, dtype=float)
     elif source == "profile":
+        if not isinstance(master, Trajectory) and not hasattr(master, "cmd_pos"):
+            raise TypeError(f"master_counts.master must be a Trajectory or an AxisRun, got {type(master).__name__}")
         counts = np.asarray(master.pos if isinstance(master, Trajectory) else master.cmd_pos, dtype=float)
     else:
+        if not hasattr(master, "fb_pos"):
+            raise TypeError(f"master_counts.master must be an AxisRun (with fb_pos), got {type(master).__name__}")
         counts = np.asarray(master.fb_pos, dtype=float)
     if counts.ndim != 1 or not np.all(np.isfinite(counts)):
         raise ValueError("the master positions must be a 1-D array of finite counts (pulse)")

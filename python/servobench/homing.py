@@ -71,6 +71,10 @@ class MotionLoop:
     """A profile generator driving an :class:`~servobench.Axis` tick by tick, reacting to its switches, index
     mark and encoder: homing, capture, GT breakpoints with auto-update, and the ADLINK jog.
 
+    Thread safety: like its Axis, a MotionLoop runs one :meth:`run` at a time (a second thread's run, or a run of
+    its Axis, waits); every other call waits for the running chunk (about 20 ms of work). Ctrl-C during a run
+    raises KeyboardInterrupt within a chunk, the loop standing at the last whole tick.
+
     Commands (``command``: the card's Set* + Update, immediate): :class:`~servobench.GtTCurve`,
     :class:`~servobench.GtSCurve`, :class:`~servobench.GtJog`, the GE sets and :class:`~servobench.AdlinkPtp`
     (on the fly where the manuals allow it). ``stage(params)`` / ``stage_smooth_stop()`` hold a

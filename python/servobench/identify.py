@@ -22,7 +22,7 @@ from typing import Iterable
 
 import numpy as np
 
-from . import _core
+from . import _checks, _core
 from .idlog import IdentificationLog
 
 __all__ = [
@@ -131,6 +131,9 @@ def run_experiment(axis, *, duration_s: float = 5.0, speed_rad_s: tuple[float, f
     """
     tpv = torque_per_volt(axis.drive)
     ts = axis.servo_period_s
+    _checks.real("run_experiment", "reversal_hz", reversal_hz, 1e-3, 0.1 / ts, unit="Hz (up to a tenth of the servo rate)")
+    _checks.real("run_experiment", "amplitude_v", amplitude_v, 0.0, 10.0, unit="V")
+    _checks.real("run_experiment", "duration_s", duration_s, ts, 3600.0, unit="s")
     if not (duration_s > 0 and math.isfinite(duration_s)):
         raise ValueError(f"run_experiment.duration_s = {duration_s} must be > 0")
     lo, hi = (float(v) for v in speed_rad_s)
@@ -188,6 +191,7 @@ def log_spectrum(log: IdentificationLog, *, segment_samples: int = 1024, instrum
         inverse of the controller where the noise dominates. The coherence is the instrument's (or the torque's)
         with the speed.
     """
+    _checks.has("log_spectrum", "log", log, "torque_nm", "sample_period_s")
     n = len(log)
     segment_samples = _whole("log_spectrum", "segment_samples", segment_samples, 16, max(16, n - 1))
     if instrument is None:
@@ -244,6 +248,7 @@ class ResonanceGuess:
 def resonance_guess(log: IdentificationLog, *, min_coherence: float = 0.3,
                     segment_samples: int = 1024) -> ResonanceGuess:
     """Starting values of jm, jl and k for a two-mass fit from a motor-side log's spectrum (:func:`log_spectrum`).
+    `min_coherence` is 0..1.
 
     The apparent inertia of the undamped-to-lightly-damped two-mass model,
     1 / (``|V/T|`` w) with V/T = (jl s^2 + c s + k) / (s (jm jl s^2 + c (jm + jl) s + k (jm + jl))), is matched in
@@ -252,6 +257,8 @@ def resonance_guess(log: IdentificationLog, *, min_coherence: float = 0.3,
     (0.01..0.3), the total inertia in closed form. Magnitude only: the phase carries the sampling's delays. Raises
     :class:`IdentificationError` when the best two-mass shape explains the spectrum less than 4x better than a rigid
     body (no resonance in the excited band) or for a load-side log."""
+    _checks.has("resonance_guess", "log", log, "measured_on_load", "sample_period_s")
+    _checks.real("resonance_guess", "min_coherence", min_coherence, 0.0, 1.0)
     if log.measured_on_load:
         raise IdentificationError("resonance_guess: a load-side log has no anti-resonance to read jm/jl from")
     sp = log_spectrum(log, segment_samples=segment_samples)
@@ -471,6 +478,9 @@ def _setup(model: str, guess: dict, fixed: Iterable[str], bounds: dict | None):
         upper.append(hi)
         if not off and not (lo <= v <= hi):
             raise ValueError(f"guess[{n!r}] = {v} is outside its bounds {lo:g}..{hi:g}")
+    if all(hold):
+        raise ValueError(f"guess: no parameter left to fit (every parameter of the {model} model is absent from "
+                         f"guess or in fixed); give a guess for at least one of {names}")
     return names, np.array(initial), hold, np.array(lower), np.array(upper)
 
 

@@ -6,6 +6,8 @@ from dataclasses import dataclass, asdict
 
 import numpy as np
 
+from . import _checks
+
 
 @dataclass(frozen=True)
 class MoveMetrics:
@@ -51,6 +53,7 @@ def move_metrics(run, *, settle_band_pulse: float = 5.0) -> MoveMetrics:
 
     settle_band_pulse: the in-position band for the settling time, pulse (> 0).
     """
+    _checks.has("move_metrics", "run", run, "time_s")
     if not np.isfinite(settle_band_pulse) or settle_band_pulse <= 0:
         raise ValueError(f"settle_band_pulse = {settle_band_pulse} must be a finite number > 0 (pulse)")
     t = np.asarray(run.time_s, dtype=float)

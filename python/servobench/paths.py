@@ -26,6 +26,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from . import _checks
 from ._core import (
     AdlinkInterpolator,
     AdlinkInterpSetup,
@@ -114,6 +115,7 @@ class PathRun:
 def run_path(gen, *, max_ticks: int = 10**7, ticks: int | None = None) -> PathRun:
     """Steps ``gen`` (a :class:`PathGenerator` or a :class:`CrdFifoPair`) until it is done (path finished and outside axes at rest; at most ``max_ticks`` cycles),
     or exactly ``ticks`` cycles if given, and returns the :class:`PathRun`. The GIL is released while stepping."""
+    _checks.has("run_path", "gen", gen, "record")
     d = gen.record(ticks if ticks is not None else max_ticks, until_done=ticks is None)
     return PathRun(t_ms=d["t_ms"], pos=d["pos"], axis_pos=d["axis_pos"], speed=d["speed"], acc=d["acc"],
                    segments=d["segments"], gpo=d["gpo"], aux=d["aux"], axes=list(d["axes"]),
@@ -144,5 +146,6 @@ def run_adlink(interp: AdlinkInterpolator, *, max_ticks: int = 10**7, ticks: int
     ``interp.push(kind, target=..., center=..., normal=..., angle_deg=..., dir=..., height=..., final_radius=...,
     relative=False, mode=BlendMode.BUFFERED, blend=0, vm=0, params=None)``; kind is one of line, arc2_ca,
     arc2_ce, arc3_ca, arc3_ce, spiral_ca, spiral_ce (ADLINK L2813-3150). The GIL is released while stepping."""
+    _checks.has("run_adlink", "interp", interp, "record")
     d = interp.record(ticks if ticks is not None else max_ticks, until_done=ticks is None)
     return AdlinkRun(t_s=d["t_s"], pos=d["pos"], speed=d["speed"], moves_done=d["moves_done"])

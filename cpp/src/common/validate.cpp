@@ -34,19 +34,22 @@ void check_integer(const char* owner, const char* field, double value, double lo
   if (value != std::floor(value)) throw_invalid(owner, field, value, "is not a whole number; the allowed range is " + range_text(lo, hi, source));
 }
 
-void check_positive(const char* owner, const char* field, double value) {
-  if (!std::isfinite(value)) throw_invalid(owner, field, value, "is not a finite number; it must be > 0");
-  if (!(value > 0)) throw_invalid(owner, field, value, "must be > 0");
+void check_positive(const char* owner, const char* field, double value, double hi) {
+  const std::string range = "must be > 0 and <= " + format_value(hi);
+  if (!std::isfinite(value)) throw_invalid(owner, field, value, "is not a finite number; it " + range);
+  if (!(value > 0) || value > hi) throw_invalid(owner, field, value, range);
 }
 
-void check_nonnegative(const char* owner, const char* field, double value) {
-  if (!std::isfinite(value)) throw_invalid(owner, field, value, "is not a finite number; it must be >= 0");
-  if (value < 0) throw_invalid(owner, field, value, "must be >= 0");
+void check_nonnegative(const char* owner, const char* field, double value, double hi) {
+  const std::string range = "must be >= 0 and <= " + format_value(hi);
+  if (!std::isfinite(value)) throw_invalid(owner, field, value, "is not a finite number; it " + range);
+  if (value < 0 || value > hi) throw_invalid(owner, field, value, range);
 }
 
-void check_positive_or_inf(const char* owner, const char* field, double value) {
-  if (std::isnan(value)) throw_invalid(owner, field, value, "is not a number; it must be > 0 (inf = none)");
-  if (!(value > 0)) throw_invalid(owner, field, value, "must be > 0 (inf = none)");
+void check_positive_or_inf(const char* owner, const char* field, double value, double hi) {
+  const std::string range = "must be > 0 and <= " + format_value(hi) + " (inf = none)";
+  if (std::isnan(value)) throw_invalid(owner, field, value, "is not a number; it " + range);
+  if (!(value > 0) || (value > hi && value != INFINITY)) throw_invalid(owner, field, value, range);
 }
 
 }  // namespace servobench

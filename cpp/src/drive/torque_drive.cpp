@@ -8,11 +8,11 @@
 namespace servobench::drive {
 
 void TorqueDriveParams::validate() const {
-  check_positive("TorqueDrive", "amps_per_volt", amps_per_volt);
-  check_positive("TorqueDrive", "kt", kt);
-  check_positive_or_inf("TorqueDrive", "current_limit_a", current_limit_a);
-  check_positive_or_inf("TorqueDrive", "torque_limit_nm", torque_limit_nm);
-  check_positive_or_inf("TorqueDrive", "current_bw_hz", current_bw_hz);
+  check_positive("TorqueDrive", "amps_per_volt", amps_per_volt, kMaxAmpsPerVolt);
+  check_positive("TorqueDrive", "kt", kt, kMaxKt);
+  check_positive_or_inf("TorqueDrive", "current_limit_a", current_limit_a, kMaxCurrentA);
+  check_positive_or_inf("TorqueDrive", "torque_limit_nm", torque_limit_nm, kMaxTorqueNm);
+  check_positive_or_inf("TorqueDrive", "current_bw_hz", current_bw_hz, kMaxCurrentBwHz);
   if (std::isnan(alarm_at_s) || alarm_at_s < 0) throw_invalid("TorqueDrive", "alarm_at_s", alarm_at_s, "must be >= 0 (inf = never)");
 }
 

@@ -8,14 +8,14 @@
 namespace servobench::drive {
 
 void VelocityDriveParams::validate(const char* owner) const {
-  check_positive(owner, "speed_per_volt_rad_s", speed_per_volt_rad_s);
-  check_nonnegative(owner, "kp_nms", kp_nms);
-  check_nonnegative(owner, "ki_nm_per_rad", ki_nm_per_rad);
+  check_positive(owner, "speed_per_volt_rad_s", speed_per_volt_rad_s, 1e5);
+  check_nonnegative(owner, "kp_nms", kp_nms, 1e6);
+  check_nonnegative(owner, "ki_nm_per_rad", ki_nm_per_rad, 1e9);
   check_range(owner, "loop_rate_hz", loop_rate_hz, 100.0, 1e6);
-  check_positive(owner, "kt", kt);
-  check_positive_or_inf(owner, "current_limit_a", current_limit_a);
-  check_positive_or_inf(owner, "torque_limit_nm", torque_limit_nm);
-  check_positive_or_inf(owner, "current_bw_hz", current_bw_hz);
+  check_positive(owner, "kt", kt, kMaxKt);
+  check_positive_or_inf(owner, "current_limit_a", current_limit_a, kMaxCurrentA);
+  check_positive_or_inf(owner, "torque_limit_nm", torque_limit_nm, kMaxTorqueNm);
+  check_positive_or_inf(owner, "current_bw_hz", current_bw_hz, kMaxCurrentBwHz);
   if (std::isnan(alarm_at_s) || alarm_at_s < 0) throw_invalid(owner, "alarm_at_s", alarm_at_s, "must be >= 0 (inf = never)");
   if (current_limit_a == kInf && torque_limit_nm == kInf)
     throw_invalid(owner, "torque_limit_nm", torque_limit_nm, "and current_limit_a cannot both be inf (the speed loop needs a limit)");

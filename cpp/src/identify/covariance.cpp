@@ -13,6 +13,12 @@ CovarianceResult reduced_covariance(const ceres::CRSMatrix& jacobian, const std:
                                     const std::vector<double>& values, const std::vector<double>& initial,
                                     const std::vector<std::string>& names, double max_relative_error) {
   const Eigen::Index g = static_cast<Eigen::Index>(free_index.size());
+  if (g == 0) {  // nothing estimated (every parameter held): no covariance to compute
+    CovarianceResult none;
+    none.covariance = Eigen::MatrixXd::Zero(n_params, n_params);
+    none.std_error.assign(static_cast<std::size_t>(n_params), 0.0);
+    return none;
+  }
   const Eigen::Index q = nuisance_per_block;
   const Eigen::Index blocks = q > 0 ? (jacobian.num_cols - g) / q : 0;
   Eigen::MatrixXd hgg = Eigen::MatrixXd::Zero(g, g);

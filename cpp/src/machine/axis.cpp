@@ -168,7 +168,7 @@ RunOutcome Axis::run_with(Law& law, const CommandInput& command, const Trace& tr
     const double y = encoder_.read(enc_angle);
     bool trip = false;
     if (guarded) {
-      if (guard.error_limit_pulse > 0.0 && std::fabs(r - y) > guard.error_limit_pulse) {
+      if (guard.error_limit_pulse > 0.0 && servo_on_ && !(std::fabs(r - y) <= guard.error_limit_pulse)) {  // NaN trips
         trip = true;
         outcome.stop = RunStop::kErrorLimit;
       } else if (guard.stop_on_alarm && power_.alarm()) {

@@ -489,7 +489,7 @@ void Card::abrupt_stop(std::size_t i) {
 void Card::set_actual_pos(std::size_t i, double pos) {
   CardAxisState& s = at(i);
   checked(i, CommandFault::MotionParamOverflow,
-          [&] { check_integer("Card", "pos", pos, kPosMin, kPosMax, "whole pulses, GT L4617"); });
+          [&] { check_integer("Card", "pos", pos, -2147483648.0, 2147483647.0, "whole pulses, the 32-bit register"); });
   if (s.mode == AxisMode::Gear)
     refuse(static_cast<int>(i), CommandFault::InvalidInMode, "ZeroPos/SetAtlPos are invalid in gear mode (GT L1421-1429)");
   if (s.mode == AxisMode::Coordinated)  // [modes] the coordinate system owns the position (V55)
@@ -934,7 +934,9 @@ void Card::after_tick(std::size_t i, double error) {
   MotionLoop& l = *loops_[i];
   s.error_pulse = error;
   // Following error (GT L2154-2178): every sample, closed loop, drive enabled.
-  s.following_error_now = s.enabled && s.closed_loop && std::fabs(error) > s.active.pos_err;
+  // An encoder fault (GE status bit 27) counts as a following error: the feedback can no longer be trusted, and the
+  // following-error protection is the card's guard against encoder faults (GE L2358; decision RB6). NaN trips.
+  s.following_error_now = s.enabled && s.closed_loop && (!(std::fabs(error) <= s.active.pos_err) || s.encoder_fault);
   if (s.following_error_now) {
     s.events |= event_bit(CardEvent::FollowingError);
     if (s.auto_stop) {
@@ -943,7 +945,7 @@ void Card::after_tick(std::size_t i, double error) {
     }
   }
   // Position-error protection (ADLINK PRA_ERR_POS_LEVEL, L4012-4023): servo off.
-  if (s.error_level_pulse > 0.0 && s.enabled && s.closed_loop && std::fabs(error) > s.error_level_pulse) {
+  if (s.error_level_pulse > 0.0 && s.enabled && s.closed_loop && !(std::fabs(error) <= s.error_level_pulse)) {
     s.events |= event_bit(CardEvent::ErrorLevel);
     fault_stop(i, StopCause::ErrorLevel, true);
   }

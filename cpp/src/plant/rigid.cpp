@@ -12,8 +12,17 @@ void validate_disturbances(const char* owner, double load_nm, double unbalance_n
   check_integer(owner, "cogging_periods", cogging_periods, 0, 1000);
 }
 
+void check_inertia(const char* owner, const char* field, double j) {
+  check_positive(owner, field, j, kMaxInertiaKgm2);
+  if (j < kMinInertiaKgm2)
+    throw_invalid(owner, field, j,
+                  "must be > 0, at least " + format_value(kMinInertiaKgm2) +
+                      " kg*m^2 (the floor the plant solver resolves; decision RB2) and <= " +
+                      format_value(kMaxInertiaKgm2));
+}
+
 void RigidPlantParams::validate() const {
-  check_positive("RigidPlant", "inertia_kgm2", inertia_kgm2);
+  check_inertia("RigidPlant", "inertia_kgm2", inertia_kgm2);
   friction().validate("RigidPlant", "");
   validate_disturbances("RigidPlant", load_nm, unbalance_nm, cogging_nm, cogging_periods);
 }

@@ -11,10 +11,10 @@ void validate_disturbances(const char* owner, double load_nm, double unbalance_n
 
 void TwoMassPlantParams::validate() const {
   constexpr const char* owner = "TwoMassPlant";
-  check_positive(owner, "jm_kgm2", jm_kgm2);
-  check_positive(owner, "jl_kgm2", jl_kgm2);
-  check_positive(owner, "k_nm_per_rad", k_nm_per_rad);
-  check_nonnegative(owner, "c_nms_per_rad", c_nms_per_rad);
+  check_inertia(owner, "jm_kgm2", jm_kgm2);
+  check_inertia(owner, "jl_kgm2", jl_kgm2);
+  check_positive(owner, "k_nm_per_rad", k_nm_per_rad, 1e9);
+  check_nonnegative(owner, "c_nms_per_rad", c_nms_per_rad, 1e6);
   motor_friction().validate(owner, "motor_");
   load_friction().validate(owner, "load_");
   validate_disturbances(owner, load_nm, unbalance_nm, cogging_nm, cogging_periods);

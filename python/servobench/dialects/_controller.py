@@ -3,6 +3,9 @@ ticks, and the module-level functions (the vendor's free functions) that call th
 
 from __future__ import annotations
 
+import functools
+import math
+
 from .._core import CardCommandRefused, MotionCommandRefused
 from ..card import Card
 
@@ -10,8 +13,69 @@ from ..card import Card
 GOOGOL_SUCCESS, GOOGOL_COMMAND_ERROR, GOOGOL_PARAMETER_ERROR, GOOGOL_COMM_ERROR = 0, 1, 7, -1
 
 
+def register32(pulse: float) -> int:
+    """A position as the card's 32-bit position register holds it: the whole pulses, wrapped two's-complement
+    into -2^31..2^31-1 the way the counter wraps (a C ``long`` on the GT/GE/GUC cards, ``I32`` on ADLINK; issue
+    21.5). The simulated axis itself keeps moving; only the register reading wraps."""
+    v = int(round(pulse))
+    return ((v + 2**31) % 2**32) - 2**31
+
+
+def wrap32(pulse: float) -> float:
+    """:func:`register32` keeping the fraction (the GUC/iDEABOX ``double`` position reads): ``pulse`` shifted by
+    the multiple of 2^32 that brings it into -2^31..2^31."""
+    return float(pulse) - 2.0**32 * math.floor((float(pulse) + 2.0**31) / 2.0**32)
+
+
+# The simulator's own setup step: GT_Open(card) binds a servobench Card (not a vendor argument), and a wrong Card
+# is a programming error of the simulation, reported as a ValueError/TypeError naming it.
+_SETUP_FUNCTIONS = frozenset({"GT_Open"})
+
+
+def _vendor_call(fn, parameter_error: int, command_error: int, returns_code: bool):
+    """`fn` as the vendor library behaves: whatever goes wrong inside comes back as the vendor's error code, never
+    as a Python exception (issue 21.2). A refused card command gives `command_error`; any other failure (a value
+    of the wrong type or out of range that slipped past the function's own checks) gives `parameter_error`. Read
+    functions (not annotated ``-> int``) return ``(code, 0)``, their outputs untouched as in C."""
+
+    @functools.wraps(fn)
+    def call(*args, **kwargs):
+        try:
+            return fn(*args, **kwargs)
+        except (CardCommandRefused, MotionCommandRefused):
+            code = command_error
+        except Exception:  # noqa: BLE001 -- the vendor contract: an error code, never an exception
+            code = parameter_error
+        return code if returns_code else (code, 0)
+
+    call.__wrapped_vendor__ = True
+    return call
+
+
+def _wrap_vendor_methods(cls) -> None:
+    """Wraps every ``GT_*``/``APS_*`` method of `cls` (its own, its mixins', those attached later) with
+    :func:`_vendor_call`, once."""
+    for name in dir(cls):
+        fn = getattr(cls, name, None)
+        if (name.startswith(("GT_", "APS_")) and callable(fn) and name not in _SETUP_FUNCTIONS
+                and not getattr(fn, "__wrapped_vendor__", False)):
+            returns_code = getattr(fn, "__annotations__", {}).get("return") in ("int", int)
+            setattr(cls, name, _vendor_call(fn, cls._PARAMETER_ERROR, cls._COMMAND_ERROR, returns_code))
+
+
 class DialectController:
-    """Base of the dialect controllers: the open card and the ways a program lets it run."""
+    """Base of the dialect controllers: the open card and the ways a program lets it run.
+
+    Every vendor function of a subclass (a method named ``GT_*`` or ``APS_*``) is wrapped once, here, so that it
+    returns the vendor's error code instead of raising (:func:`_vendor_call`); a subclass states its codes in
+    ``_PARAMETER_ERROR`` and ``_COMMAND_ERROR`` (default: the Googol 7 and 1)."""
+
+    _PARAMETER_ERROR = GOOGOL_PARAMETER_ERROR
+    _COMMAND_ERROR = GOOGOL_COMMAND_ERROR
+
+    def __init_subclass__(cls, **kwargs):
+        super().__init_subclass__(**kwargs)
+        _wrap_vendor_methods(cls)
 
     def __init__(self):
         self._card: Card | None = None
@@ -52,6 +116,7 @@ def export_functions(namespace: dict, default: DialectController, prefix: str) -
     and docstring, calling `default`), plus ``controller()``, ``card()``, ``run(ticks)`` and ``wait_until(...)``;
     returns the exported vendor names."""
     cls = type(default)
+    _wrap_vendor_methods(cls)  # methods attached after the class statement too
 
     def bind(name):
         def f(*args, **kwargs):

@@ -48,6 +48,11 @@ class TWatchBuffer:
     """``TWatchBuffer {TAxis Axis[AXIS_NUM];}``: ``buffer.Axis[k]`` for axis k+1."""
 
     def __init__(self, axis_num: int = 8):
+        # The GE cards have at most 8 axes (AXIS_NUM, L2784); checked before allocating (issue 21.3).
+        if isinstance(axis_num, bool) or not isinstance(axis_num, (int, float)) and not hasattr(axis_num, "__index__"):
+            raise TypeError(f"TWatchBuffer.axis_num must be a whole number 1..8, got {type(axis_num).__name__}")
+        if not (isinstance(axis_num, int) or float(axis_num).is_integer()) or not 1 <= axis_num <= 8:
+            raise ValueError(f"TWatchBuffer.axis_num = {axis_num!r} is outside the allowed range 1..8 (AXIS_NUM)")
         self.Axis = [TAxis() for _ in range(int(axis_num))]
 
 

@@ -25,7 +25,7 @@ import numpy as np
 from .. import _core
 from .._core import AdlinkHome, AdlinkJog, AdlinkPtp, ApsServoLaw, BlendMode, CardCommandRefused, MotionCommandRefused
 from ..card import Card
-from ._controller import DialectController, export_functions
+from ._controller import DialectController, export_functions, register32, wrap32  # noqa: F401
 
 # -- return codes (APS library ErrorCodeDef.h; the manual uses ERR_NoError, L2309) -------------------------------
 ERR_NoError = 0
@@ -161,6 +161,9 @@ def _num(value):
 
 class ApsController(DialectController):
     """One APS program's view of a :class:`~servobench.Card`: the APS_* functions with the card's axes 0..n-1."""
+
+    _PARAMETER_ERROR = ERR_ParametersInvalid   # what an APS_* function returns instead of raising (issue 21.2)
+    _COMMAND_ERROR = ERR_FunctionNotAvailable
 
     def __init__(self):
         super().__init__()
@@ -883,7 +886,7 @@ class ApsController(DialectController):
     def APS_get_position(self, Axis_ID):
         """``APS_get_position(Axis_ID, &Position)`` -> ``(rtn, feedback position)``, whole pulses (L2085)."""
         i = self._axis(Axis_ID)
-        return (self._bad(), 0) if i is None else (ERR_NoError, int(round(self._card.actual_pos(i))))
+        return (self._bad(), 0) if i is None else (ERR_NoError, register32(self._card.actual_pos(i)))
 
     def APS_set_position(self, Axis_ID, Position) -> int:
         """``APS_set_position(Axis_ID, Position)``: sets the feedback (and command) position, at rest only
@@ -898,7 +901,7 @@ class ApsController(DialectController):
     def APS_get_command(self, Axis_ID):
         """``APS_get_command(Axis_ID, &Command)`` -> ``(rtn, command position)``, whole pulses (L2083)."""
         i = self._axis(Axis_ID)
-        return (self._bad(), 0) if i is None else (ERR_NoError, int(self._card.profile_pos(i)))
+        return (self._bad(), 0) if i is None else (ERR_NoError, register32(self._card.profile_pos(i)))
 
     def APS_get_error_position(self, Axis_ID):
         """``APS_get_error_position(Axis_ID, &Err_Pos)`` -> ``(rtn, E)``: the law's error of the last servo tick

@@ -35,7 +35,7 @@ from . import _ge_watch
 
 _GE_CRD_SLOT = 4  # the card's group slot of the GE SX crd (machine/card_group_ge.hpp kGeCrdSlot)
 from ._ge_watch import TAxis, TWatchBuffer  # noqa: F401 (the manual's watch structures)
-from ._controller import DialectController, export_functions
+from ._controller import DialectController, export_functions, register32, wrap32  # noqa: F401
 
 # Return codes (Table 2-1 L263-270, Table 2-2 L272-283).
 RTN_SUCCESS = 0
@@ -359,9 +359,9 @@ class GeController(DialectController):
                 st.gpo_seen = gpo
         return slot.outputs
 
-    def set_probe_time(self, t_s: float):
-        """The simulated probe edge on EXI0 at time ``t_s`` (s, the axes' clock tick * Ts; NaN: never)."""
-        self._card.set_probe_time(float(t_s))
+    def set_probe_time(self, t_s: float | None):
+        """The simulated probe edge on EXI0 at time ``t_s`` (s, the axes' clock tick * Ts, 0..1e9; None: never)."""
+        self._card.set_probe_time(None if t_s is None else float(t_s))
 
     # -- 7.1 system -------------------------------------------------------------------------------------------
     def GT_Open(self, address=65535, card: Card | None = None, **axis_parts) -> int:
@@ -745,14 +745,14 @@ class GeController(DialectController):
         """(rtn, actual position, pulse) (L4173); with the encoder off, the profile position (L4180)."""
         def atl(a):
             if not self._slot.enc_on[a]:
-                return int(self._card.profile_pos(a))
-            return int(round(self._card.actual_pos(a)))
+                return register32(self._card.profile_pos(a))
+            return register32(self._card.actual_pos(a))
 
         return self._read(axis, atl)
 
     def GT_GetPrfPos(self, axis):
         """(rtn, profile position, pulse) (L4701)."""
-        return self._read(axis, lambda a: int(self._card.profile_pos(a)))
+        return self._read(axis, lambda a: register32(self._card.profile_pos(a)))
 
     def GT_GetAtlErr(self, axis):
         """(rtn, following error profile - actual of the last tick, pulse) (L4144-4171)."""

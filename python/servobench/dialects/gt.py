@@ -21,7 +21,7 @@ import math
 from .. import _core
 from .._core import CardCommandRefused, GtHome, MotionCommandRefused, PathSegment
 from ..card import Card
-from ._controller import DialectController, export_functions
+from ._controller import DialectController, export_functions, register32, wrap32  # noqa: F401
 
 # Return codes (Table 2-1, L393-408).
 RTN_SUCCESS = 0
@@ -361,7 +361,7 @@ class GtController(DialectController):
 
     def GT_GetPos(self):
         """(rtn, staged target, pulse) (L4024-4036)."""
-        return self._get(lambda: int(self._card.staged(self._axis)["pos"]))
+        return self._get(lambda: register32(self._card.staged(self._axis)["pos"]))
 
     def GT_SetVel(self, vel) -> int:
         """Velocity, pulse/ST: 0..16384 in T/S mode, -16384..16384 in jog mode (staged) (L5076-5090)."""
@@ -450,7 +450,7 @@ class GtController(DialectController):
 
     def GT_GetAtlPos(self):
         """(rtn, actual position, pulse) (L3578-3606)."""
-        return self._get(lambda: int(round(self._card.actual_pos(self._axis))))
+        return self._get(lambda: register32(self._card.actual_pos(self._axis)))
 
     # -- 8.5 breakpoints ----------------------------------------------------------------------------------------
     def GT_SetBrkCn(self, brk) -> int:

@@ -35,7 +35,7 @@ import numpy as np
 from .. import _core
 from .._core import CardCommandRefused, LookAheadParams, MotionCommandRefused
 from ..card import Card
-from ._controller import DialectController, export_functions
+from ._controller import DialectController, export_functions, register32, wrap32  # noqa: F401
 
 # Return codes (GUC Tab 2-1 L165-180; iDEABOX Table 3-1 L333-361).
 RTN_SUCCESS = 0
@@ -214,7 +214,7 @@ class GtsController(DialectController):
         """(rtn, profile position, pulse)."""
         if not self._axis_ok(profile):
             return self._bad(), 0.0
-        return self._get(lambda: float(self._card.profile_pos(int(profile) - 1)))
+        return self._get(lambda: wrap32(self._card.profile_pos(int(profile) - 1)))
 
     def GT_GetPrfVel(self, profile, count=1):
         """(rtn, profile velocity, pulse/ms)."""
@@ -226,7 +226,7 @@ class GtsController(DialectController):
         """(rtn, encoder (actual) position, pulse)."""
         if not self._axis_ok(axis):
             return self._bad(), 0.0
-        return self._get(lambda: float(self._card.actual_pos(int(axis) - 1)))
+        return self._get(lambda: wrap32(self._card.actual_pos(int(axis) - 1)))
 
     def GT_PrfTrap(self, profile) -> int:
         """Point-to-point (trapezoid) mode (refused while moving)."""

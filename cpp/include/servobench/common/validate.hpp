@@ -21,13 +21,17 @@ void check_range(const char* owner, const char* field, double value, double lo, 
 // value finite, a whole number, and lo <= value <= hi.
 void check_integer(const char* owner, const char* field, double value, double lo, double hi, const char* source = "");
 
-// value finite and > 0.
-void check_positive(const char* owner, const char* field, double value);
+// The largest magnitude a parameter without a stated physical range may take (decision RB1): above it a value is
+// a typo or an overflow (1e308, 2^63), never a setting.
+inline constexpr double kMaxMagnitude = 1e12;
 
-// value finite and >= 0.
-void check_nonnegative(const char* owner, const char* field, double value);
+// value finite and 0 < value <= hi.
+void check_positive(const char* owner, const char* field, double value, double hi = kMaxMagnitude);
 
-// value > 0; +infinity allowed (it means "none", e.g. no current limit). NaN rejected.
-void check_positive_or_inf(const char* owner, const char* field, double value);
+// value finite and 0 <= value <= hi.
+void check_nonnegative(const char* owner, const char* field, double value, double hi = kMaxMagnitude);
+
+// 0 < value <= hi, or +infinity (it means "none", e.g. no current limit). NaN rejected.
+void check_positive_or_inf(const char* owner, const char* field, double value, double hi = kMaxMagnitude);
 
 }  // namespace servobench

@@ -15,6 +15,14 @@
 namespace servobench::drive {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// Upper bounds of the drive parameters (decision RB3). The current-loop bandwidth stays below what the plant's
+// exact discretisation resolves (above ~1e6 Hz the loop's pole, -2 pi f Ts, underflows the matrix exponential:
+// the axis freezes or runs NaN); inf = an ideal current loop.
+constexpr double kMaxCurrentBwHz = 1e6;
+constexpr double kMaxAmpsPerVolt = 1e3;  // A/V
+constexpr double kMaxKt = 1e3;           // N*m/A
+constexpr double kMaxCurrentA = 1e12;    // A (the generic cap: a finite "no limit" stays allowed)
+constexpr double kMaxTorqueNm = 1e12;    // N*m
 
 struct TorqueDriveParams {
   double amps_per_volt = 0.8;     // A/V, > 0

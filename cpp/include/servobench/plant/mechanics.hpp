@@ -16,6 +16,14 @@
 
 namespace servobench::plant {
 
+// The inertias a plant may have, kg*m^2 (decision RB2): below 1e-9 (a thousandth of the smallest servo rotor) the
+// motor's time constant falls far below any servo tick and the dry-friction stepping stalls; above 1e6 the
+// axis cannot be moved by any drive the library models.
+constexpr double kMinInertiaKgm2 = 1e-9;
+constexpr double kMaxInertiaKgm2 = 1e6;
+// Throws std::invalid_argument unless kMinInertiaKgm2 <= j <= kMaxInertiaKgm2 (finite), naming owner.field.
+void check_inertia(const char* owner, const char* field, double j);
+
 struct Body {
   int angle_index = 0;  // index in x
   int speed_index = 1;
