@@ -345,6 +345,7 @@ def cmd_bode(args) -> int:
                 report["margins"], report["margins_note"] = _margins_dict(mm), mm.note
             except ValueError as e:
                 report["margins_note"] = f"no measured margin: {e}"
+                failed = report["margins_note"]
         if len(data):
             agr = model_agreement(axis, data, kind)
             report["model_agreement"] = {k: agr[k] for k in ("max_gain_error_db", "max_phase_error_deg", "agrees",

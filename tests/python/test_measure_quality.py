@@ -111,6 +111,15 @@ def test_unstable_loop_margins_are_marked_and_cli_exits_1(tmp_path, capsys):
     assert rep["unstable"] and rep["analytic_margins"]["stable"] is False
 
 
+def test_cli_saturating_sweep_reads_no_margin_and_exits_1(tmp_path, capsys):
+    code = cli.main(["bode", str(AXES / "gt_rigid.toml"), "--end-hz", "1000", "--points", "10",
+                     "--amplitude-pulse", "1e6", "--out", str(tmp_path)])
+    out = capsys.readouterr()
+    assert code == 1
+    assert "no measured margin" in out.out and "DAC" in out.out and "phase margin inf" not in out.out
+    assert "no measured margin" in out.err
+
+
 def test_readme_bode_command_reports_amplitudes_flags_and_agreement(tmp_path, capsys):
     code = cli.main(["bode", str(AXES / "gt_rigid.toml"), "--end-hz", "1000", "--out", str(tmp_path)])
     out = capsys.readouterr().out
