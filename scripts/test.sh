@@ -30,9 +30,10 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir build/asan --output-on-failure -j "$(nproc)"
 
 echo "== pytest subset against the ASan+UBSan module (build/asan)"
+# libasan and libstdc++ preloaded: the interpreter links neither, and ASan's __cxa_throw interceptor needs the real one.
 rm -rf build/asan/pkg && mkdir -p build/asan/pkg && cp -r python/servobench build/asan/pkg/
 cp build/asan/_core*.so build/asan/pkg/servobench/
-(cd build/asan && LD_PRELOAD="$(${CXX:-g++} -print-file-name=libasan.so)" \
+(cd build/asan && LD_PRELOAD="$(${CXX:-g++} -print-file-name=libasan.so) $(${CXX:-g++} -print-file-name=libstdc++.so)" \
   ASAN_OPTIONS=detect_leaks=0:detect_odr_violation=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 PYTHONPATH="$PWD/pkg" \
   "$py" -m pytest -q -p no:cacheprovider --rootdir ../.. \
   ../../tests/python/test_robust_threads.py ../../tests/python/test_robust_inputs.py \

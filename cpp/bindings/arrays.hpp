@@ -43,7 +43,9 @@ inline std::vector<std::complex<double>> complex_vector(const pybind11::handle& 
 inline std::function<bool(int, int)> progress_callback(const pybind11::object& progress,
                                                        std::shared_ptr<pybind11::error_already_set>* interrupt = nullptr) {
   if (progress.is_none() && interrupt == nullptr) return {};
-  return [progress, interrupt](int done, int total) {
+  const pybind11::object* pp = &progress;  // pointers only: the callback may be copied without the GIL
+  return [pp, interrupt](int done, int total) {
+    const pybind11::object& progress = *pp;
     if (interrupt != nullptr && *interrupt) return false;
     pybind11::gil_scoped_acquire gil;
     if (interrupt != nullptr && PyErr_CheckSignals() != 0) {

@@ -83,11 +83,10 @@ py::tuple run_until_event(Card& card, double ticks, const std::vector<std::strin
   check_integer("Card.run_until_event", "ticks", ticks, 0, 1e9);
   const std::size_t n_ax = card.axis_count();
   const auto n = static_cast<std::size_t>(ticks);
-  const double bytes = static_cast<double>(n) * static_cast<double>(n_ax * wanted.size()) * 8.0;
-  if (bytes > kMaxRecordBytes)
-    throw_invalid("Card.run_until_event", "ticks", ticks,
-                  "could record " + format_value(bytes * 1e-9) +
-                      " GB, above the 2 GB a run may record; record fewer signals or run in pieces");
+  // The run usually ends at an event long before `ticks`: its buffers are checked before each growth.
+  const auto too_big = [&](std::size_t m) {
+    return static_cast<double>(m) * static_cast<double>(n_ax * wanted.size()) * 8.0 > kMaxRecordBytes;
+  };
   std::vector<std::map<std::string, std::vector<double>>> buf(n_ax);
   std::size_t ran = 0;
   {
@@ -98,6 +97,9 @@ py::tuple run_until_event(Card& card, double ticks, const std::vector<std::strin
     if (!wanted.empty()) tr.resize(n_ax);
     do {
       const std::size_t chunk = std::min(kChunk, n - ran);
+      if (too_big(ran + chunk))
+        throw_invalid("Card.run_until_event", "ticks", ticks,
+                      "would record more than the 2 GB a run may record; record fewer signals or run in pieces");
       for (std::size_t i = 0; i < n_ax && !wanted.empty(); ++i) {
         auto& b = buf[i];
         for (const auto& w : wanted) b[w].resize(ran + chunk);

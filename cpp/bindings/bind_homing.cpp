@@ -64,9 +64,12 @@ py::dict run_loop(MotionLoop& loop, double ticks, bool until_done, const py::obj
     buf[name];
   }
   const auto total_max = static_cast<std::size_t>(ticks);
-  if (static_cast<double>(total_max) * static_cast<double>(buf.size()) * 8.0 > kMaxRecordBytes)
-    throw_invalid("MotionLoop.run", until_done ? "max_ticks" : "ticks", ticks,
-                  "could record more than the 2 GB a run may record; record fewer signals or run in pieces");
+  // A fixed run is checked before it starts; a run until done (which usually ends long before max_ticks) before
+  // each growth of its buffers.
+  const auto too_big = [&](std::size_t n) { return static_cast<double>(n) * static_cast<double>(buf.size()) * 8.0 > kMaxRecordBytes; };
+  const char* what = until_done ? "max_ticks" : "ticks";
+  const std::string why = "would record more than the 2 GB a run may record; record fewer signals or run in pieces";
+  if (!until_done && too_big(total_max)) throw_invalid("MotionLoop.run", what, ticks, why);
   std::size_t total = 0;
   {
     RunLock lock({&loop, &loop.axis()});
@@ -75,6 +78,7 @@ py::dict run_loop(MotionLoop& loop, double ticks, bool until_done, const py::obj
     while (total < total_max) {
       if (total > 0) check_signals();
       const std::size_t chunk = std::min(clock.size(), total_max - total);
+      if (too_big(total + chunk)) throw_invalid("MotionLoop.run", what, ticks, why);
       for (auto& [name, v] : buf) v.resize(total + chunk);
       machine::Trace tr;
       machine::LoopTrace lt;

@@ -69,10 +69,13 @@ py::dict summary(const identify::FitSummary& s) {
 struct SolveInterrupted {};
 
 // The solver's per-iteration callback: the user's progress function (None: none) and a Ctrl-C check; a pending
-// signal is kept in *interrupt and ends the fit at once (SolveInterrupted).
-std::function<bool(int, double)> iteration_callback(const py::object& f,
+// signal is kept in *interrupt and ends the fit at once (SolveInterrupted). It holds pointers only (`f` outlives
+// the fit): the solver may copy it without the GIL, and copying a py::object would touch its reference count.
+std::function<bool(int, double)> iteration_callback(const py::object& progress,
                                                    std::shared_ptr<py::error_already_set>* interrupt) {
-  return [f, interrupt](int it, double cost) {
+  const py::object* fp = &progress;
+  return [fp, interrupt](int it, double cost) {
+    const py::object& f = *fp;
     {
       py::gil_scoped_acquire gil;
       if (PyErr_CheckSignals() != 0) *interrupt = std::make_shared<py::error_already_set>();

@@ -110,8 +110,8 @@ TEST(ThreadStress, SamplerReadWhileTheCardRuns) {
 }
 
 TEST(ThreadStress, ThreadsByObjectsByOperationsMatchTheSerialRuns) {
-  // 4 threads x 3 axes x (run, state read, reset): every axis's runs match the same runs done serially.
-  constexpr int kAxes = 3, kThreads = 4, kIterations = 60;
+  // 4 threads x 3 axes x (run, state read, servo on) x 300 iterations: every axis's runs match the serial runs.
+  constexpr int kAxes = 3, kThreads = 4, kIterations = 300;
   std::vector<double> cmd(400);
   for (std::size_t k = 0; k < cmd.size(); ++k) cmd[k] = 5.0 * static_cast<double>(k);
   mc::Axis reference(tuned_axis());

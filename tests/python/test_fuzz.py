@@ -181,9 +181,11 @@ def _call(task):
 
 def _draw_tasks(callables):
     tasks = []
+    dialects = {"gt": gt, "ge": ge, "gts": gts, "aps": aps}
     for label, name in callables:
-        try:
-            names = _parameter_names(_resolve(label, name))
+        try:  # the parameter names, without opening a card in this (the test) process
+            fn = getattr(dialects[label].controller(), name) if label in dialects else _resolve(label, name)
+            names = _parameter_names(fn)
         except Exception:  # noqa: BLE001
             names = []
         drawn = []
