@@ -24,6 +24,7 @@ import servobench as sb
 import benchlib
 
 GOAL_TICKS_PER_S = 10e6  # product goal for the full chain on one core
+GOAL_VS_TIGHT = 1.5  # rigid chain, feedback only: within 1.5x of a tight C++ loop of the same arithmetic (issue 22)
 GOAL_VS_NUMBA = 1.0  # rigid chain, feedback only: >= 1.0x the same loop compiled with numba (issue 22 point 1)
 GOAL_FULL_CHAIN = 15e6  # full chain (two-mass, Stribeck, two biquads, DAC, current loop), ticks/s (issue 22 point 1)
 GOAL_FLAT = 1.25  # cost per tick at the longest run / at 10^4 ticks, feedback only ("flat", issue 22 point 1)
@@ -231,6 +232,61 @@ def run(quick: bool = False, ticks: int | None = None, python_ticks: int | None 
         sb_cpu, nb_cpu = float(np.median(ours)), float(np.median(theirs))
         nb_rate = n_ticks / nb_cpu
 
+    # "A tight C++ loop of the same arithmetic" (issue 22): bench/tight_rigid.cpp, the numba loop written once in C++
+    # and compiled for this CPU; bench-only, checked bit-identical to servobench, alternating CPU-time medians.
+    import numba_peer
+    import tight_peer
+
+    tight = tight_peer.kernel()
+    tight_cpu = tight_sb_cpu = None
+    if tight is not None:
+        consts = numba_peer.chain_constants(sb.demo_axis())
+        t_out = np.empty(n_ticks)
+        ours, theirs = [], []
+        for _ in range(rep5):
+            c0 = time.process_time()
+            ref_fb = sb.demo_axis().run(cmd, signals=["fb_pos"]).fb_pos
+            ours.append(time.process_time() - c0)
+            c0 = time.process_time()
+            tight(consts, cmd.pos, cmd.vel, cmd.acc, t_out)
+            theirs.append(time.process_time() - c0)
+        bad = int(np.count_nonzero(t_out != ref_fb))
+        if bad:
+            raise SystemExit(f"tight C++ peer differs from the C++ core at {bad} of {n_ticks} ticks")
+        tight_sb_cpu, tight_cpu = float(np.median(ours)), float(np.median(theirs))
+
+    # The linear loop (no friction, quantisation or saturation; no feed-forward) against the strongest peer for a
+    # linear loop: scipy.signal.lfilter of the closed loop's transfer function (servobench's own linear_model, made a
+    # transfer function with ss2tf: set-up, not timed). Outputs checked equal to 1e-6 pulse; CPU-time medians.
+    scipy_signal = benchlib.import_peer("scipy.signal", "scipy")
+    lf_cpu = lin_cpu = lf_dev = None
+    if scipy_signal is not None:
+        from servobench import frequency as fr
+
+        base = sb.demo_axis()
+
+        def lin_axis():
+            return sb.Axis(law=base.law.replace(kvff=0, kaff=0), plant=base.plant.replace(coulomb_nm=0, static_nm=0),
+                           drive=base.drive.replace(current_limit_a=float("inf")),
+                           encoder=base.encoder.replace(quantize=False), dac=sb.Dac(quantize=False),
+                           servo_period_s=base.servo_period_s)
+
+        closed = fr.linear_model(lin_axis())["closed_loop"]
+        num, den = scipy_signal.ss2tf(*(np.asarray(getattr(closed, k)) for k in "ABCD"))
+        r_lin = cmd.pos * 0.01  # +-100 pulse: inside +-10 V on the whole move
+        ours, theirs = [], []
+        for _ in range(rep5):
+            c0 = time.process_time()
+            y_lin = lin_axis().run(r_lin, signals=["fb_pos"]).fb_pos
+            ours.append(time.process_time() - c0)
+            c0 = time.process_time()
+            y_lf = scipy_signal.lfilter(num[0], den, r_lin)
+            theirs.append(time.process_time() - c0)
+        lf_dev = float(np.max(np.abs(y_lin - y_lf)))
+        if not lf_dev <= 1e-6:
+            raise SystemExit(f"lfilter peer differs from the linear C++ loop by {lf_dev} pulse (> 1e-6)")
+        lin_cpu, lf_cpu = float(np.median(ours)), float(np.median(theirs))
+
     # Full chain with the feedback only recorded (issue 22's 15 M ticks/s goal) and the cost per tick against the run
     # length (feedback only: flat from 10^4 ticks up, no cliff).
     slow_t = long_move(n_ticks)
@@ -269,6 +325,18 @@ def run(quick: bool = False, ticks: int | None = None, python_ticks: int | None 
                            n_ticks / sb_cpu))
         extra_rows.append((f"the same rigid chain compiled with numba {numba.__version__} (CPU-time median of "
                            f"{rep5}, same run)", n_ticks, nb_cpu, nb_rate))
+    if lf_cpu is not None:
+        extra_rows.append((f"servobench, linear loop (no friction/quantisation/saturation), feedback only (CPU-time "
+                           f"median of {rep5})", n_ticks, lin_cpu, n_ticks / lin_cpu))
+        extra_rows.append((f"scipy.signal.lfilter of the same closed loop (order {len(den) - 1}; max deviation "
+                           f"{lf_dev:.1e} pulse; CPU-time median of {rep5}, same run)", n_ticks, lf_cpu,
+                           n_ticks / lf_cpu))
+    if tight_cpu is not None:
+        extra_rows.append((f"servobench, rigid chain, feedback only (CPU-time median of {rep5}, alternating with the "
+                           "tight loop)", n_ticks, tight_sb_cpu, n_ticks / tight_sb_cpu))
+        extra_rows.append((f"tight C++ loop of the same arithmetic, bench-only ({tight_peer.compiler_version()}, "
+                           f"{' '.join(tight_peer.FLAGS[:3])}; CPU-time median of {rep5}, same run)", n_ticks,
+                           tight_cpu, n_ticks / tight_cpu))
 
     lines = [
         "# Axis servo ticks per second",
@@ -298,6 +366,12 @@ def run(quick: bool = False, ticks: int | None = None, python_ticks: int | None 
                  f"servobench is **{nb_cpu / sb_cpu:.2f}x** numba"
                  + (" -- a loss: the numba loop is faster." if sb_cpu > nb_cpu else ".")
                  if nb_rate is not None else "numba not installed."),
+              "", "Against a tight C++ loop of the same arithmetic (issue 22, goal: servobench within "
+              f"{GOAL_VS_TIGHT:g}x of it): "
+              + (f"servobench {tight_sb_cpu / n_ticks * 1e9:.1f} ns/tick, tight loop {tight_cpu / n_ticks * 1e9:.1f} "
+                 f"ns/tick: servobench takes **{tight_sb_cpu / tight_cpu:.2f}x** its time"
+                 + (" -- a loss." if tight_sb_cpu > tight_cpu else ".")
+                 if tight_cpu is not None else "no C++ compiler found."),
               "", "Cost per tick against the run length (rigid chain, feedback only, CPU time):", "",
               "| ticks | ns/tick |", "|---:|---:|"]
     lines += [f"| {n:,} | {c * 1e9:.1f} |" for n, c in sorted(flat.items())]
@@ -326,6 +400,17 @@ def run(quick: bool = False, ticks: int | None = None, python_ticks: int | None 
         **benchlib.peer_figure("numba (same loop)", numba, lambda: nb_rate / 1e6),
         goal=GOAL_VS_NUMBA, goal_on="ratio", goal_source="issue 22",
         note="a ratio below 1 is a loss to numba"))
+    figures.append(benchlib.Figure(
+        "axis", "rigid chain, feedback only, CPU time, vs a tight C++ loop of the same arithmetic", "M ticks/s",
+        (n_ticks / tight_sb_cpu if tight_sb_cpu else n_ticks / t_min) / 1e6, True,
+        **benchlib.peer_figure("tight C++ loop (bench-only)", tight, lambda: n_ticks / tight_cpu / 1e6),
+        goal=1 / GOAL_VS_TIGHT, goal_on="ratio", goal_source="issue 22",
+        note=f"within {GOAL_VS_TIGHT:g}x of it = ratio >= {1 / GOAL_VS_TIGHT:.2f}; below 1 is a loss"))
+    figures.append(benchlib.Figure(
+        "axis", "linear loop (no friction, quantisation, saturation), feedback only, CPU time", "M ticks/s",
+        (n_ticks / lin_cpu if lin_cpu else n_ticks / t_min) / 1e6, True,
+        **benchlib.peer_figure("scipy.signal.lfilter, same closed loop", scipy_signal, lambda: n_ticks / lf_cpu / 1e6),
+        note="outputs equal to 1e-6 pulse; a ratio below 1 is a loss to lfilter"))
     figures.append(benchlib.Figure(
         "axis", "full chain, torque drive, feedback only", "M ticks/s", n_ticks / t_full_fb / 1e6, True,
         **py, goal=GOAL_FULL_CHAIN / 1e6, goal_source="issue 22", note="peer is the rigid tick: ratio is a lower bound"))

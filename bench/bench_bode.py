@@ -102,6 +102,38 @@ def run(quick: bool = False, repeat: int | None = None) -> benchlib.Result:
         assert meas.status == "completed" and meas.signals["ticks"] == 100_000
         sweep_ms[label] = t * 1e3
         rows.append((f"stepped sine, manual example, {label}: servobench (nonlinear axis)", t * 1e3, None))
+    # The strongest peer for the nonlinear sweep: the same rigid chain (friction, quantisation, saturation) and the
+    # same stepped sine compiled with numba (bench/numba_peer.py), CPU-time medians alternating with servobench.
+    numba = benchlib.import_peer("numba", "numba")
+    nb_ms = sb_ms_cpu = nb_dev = None
+    if numba is not None:
+        import numba_peer
+
+        consts = numba_peer.chain_constants(demo_axis_10k())
+        nb_sweep = numba_peer.sweep_kernel()
+        f100 = np.geomspace(10, 100, 100)
+        args = (consts, f100, 1000, 300.0, TS, 0.25)
+        nb_sweep(*args)  # compile (not timed)
+        ours, theirs = [], []
+        for _ in range(repeat):
+            c0 = time.process_time()
+            meas = fr.sine_sweep(demo_axis_10k())
+            ours.append(time.process_time() - c0)
+            c0 = time.process_time()
+            nb_h = nb_sweep(*args)
+            theirs.append(time.process_time() - c0)
+        nb_dev = float(np.max(np.abs(nb_h / meas.closed_loop - 1)))
+        if not nb_dev <= 1e-2:
+            raise SystemExit(f"numba sweep differs from servobench's by {nb_dev:.1e} (relative, > 1e-2)")
+        sb_ms_cpu, nb_ms = float(np.median(ours)) * 1e3, float(np.median(theirs)) * 1e3
+        rows.append((f"stepped sine, manual example, rigid demo axis: servobench, CPU-time median of {repeat}",
+                     sb_ms_cpu, None))
+        rows.append((f"the same sweep on the same nonlinear chain compiled with numba {numba.__version__} (closed "
+                     f"loop within {nb_dev:.1e} relative of servobench's), CPU-time median, same run", nb_ms,
+                     nb_ms / sb_ms_cpu))
+    else:
+        rows.append((f"the same sweep compiled with numba ({benchlib.NOT_INSTALLED})", None, None))
+
     axis = demo_axis_10k()
     freqs = np.geomspace(10, 100, 100)
     lin = sb.Axis(law=axis.law, plant=axis.plant.replace(coulomb_nm=0), drive=axis.drive.replace(
@@ -184,6 +216,10 @@ def run(quick: bool = False, repeat: int | None = None) -> benchlib.Result:
                         sweep_ms["rigid demo axis"], False, **benchlib.peer_figure(
                             "SciPy dlsim, linear model only", scipy_peer, lambda: t_peer * 1e3), **goal,
                         note="the peer does less: no friction, quantisation or saturation"),
+        benchlib.Figure("bode", "manual example sweep (100 points, 100 000 ticks), rigid demo axis, CPU time", "ms",
+                        sb_ms_cpu if sb_ms_cpu is not None else sweep_ms["rigid demo axis"], False,
+                        **benchlib.peer_figure("numba, same nonlinear sweep", numba, lambda: nb_ms), **goal,
+                        note="same chain and work; a ratio below 1 is a loss to numba"),
         benchlib.Figure("bode", "manual example sweep, two-mass axis", "ms", sweep_ms["two-mass axis"], False,
                         **goal, note="no peer run on the two-mass axis"),
         benchlib.Figure("bode", "analytic closed-loop response, 1000 frequencies", "ms", t_ours * 1e3, False,
@@ -193,7 +229,8 @@ def run(quick: bool = False, repeat: int | None = None) -> benchlib.Result:
                         note="no peer measures this"),
     ]
     return benchlib.Result("bode", "bench/bench_bode.py", "bode.md", text, figures, quick,
-                           peers={"SciPy": benchlib.version(scipy_mod), "python-control": benchlib.version(control)})
+                           peers={"SciPy": benchlib.version(scipy_mod), "python-control": benchlib.version(control),
+                                  "numba": benchlib.version(numba)})
 
 
 def main(argv=None) -> int:

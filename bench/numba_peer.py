@@ -108,7 +108,47 @@ def _build():
         for p in numba.prange(consts.shape[0]):
             _tick_loop(consts[p], pos, vel, acc, out[p])
 
-    return rigid_chain, rigid_chain_many
+    @numba.njit(cache=False)
+    def sweep(c, freqs, n_tick, amp, ts, settle_fraction):
+        # The stepped-sine sweep of servobench.frequency.sine_sweep on the same chain: one sine per frequency (phase
+        # continuous across points, state carried over), then least-squares fits of cos, -sin and a constant to the
+        # command and the feedback over the last whole periods after the settling share; returns y/r per point.
+        n_pt = freqs.shape[0]
+        pos = np.empty(n_pt * n_tick)
+        zero = np.zeros(n_pt * n_tick)
+        phase = 0.0
+        for p in range(n_pt):
+            w = 2 * math.pi * freqs[p] * ts
+            for k in range(n_tick):
+                pos[p * n_tick + k] = amp * math.sin(phase + w * k)
+            phase = np.fmod(phase + w * n_tick, 2 * math.pi)
+        y = np.empty(n_pt * n_tick)
+        _tick_loop(c, pos, zero, zero, y)
+        out = np.empty(n_pt, dtype=np.complex128)
+        for p in range(n_pt):
+            w = 2 * math.pi * freqs[p] * ts
+            per = 1.0 / (freqs[p] * ts)
+            m = max(1, int(math.floor((n_tick - math.floor(settle_fraction * n_tick)) / per + 1e-9)))
+            ln = min(n_tick, max(3, int(round(m * per))))
+            g = np.zeros((3, 3))
+            rr = np.zeros(3)
+            ry = np.zeros(3)
+            b = np.empty(3)
+            for k in range(ln):
+                b[0], b[1], b[2] = math.cos(w * k), -math.sin(w * k), 1.0
+                x_r = pos[(p + 1) * n_tick - ln + k]
+                x_y = y[(p + 1) * n_tick - ln + k]
+                for i in range(3):
+                    rr[i] += b[i] * x_r
+                    ry[i] += b[i] * x_y
+                    for j in range(3):
+                        g[i, j] += b[i] * b[j]
+            cr = np.linalg.solve(g, rr)
+            cy = np.linalg.solve(g, ry)
+            out[p] = complex(cy[0], cy[1]) / complex(cr[0], cr[1])
+        return out
+
+    return rigid_chain, rigid_chain_many, sweep
 
 
 _KERNELS = None
@@ -116,6 +156,16 @@ _KERNELS = None
 
 def kernels():
     """(rigid_chain, rigid_chain_many), compiled on first use (compile time is not timed by the benches)."""
+    return _built()[:2]
+
+
+def sweep_kernel():
+    """sweep(consts, freqs_hz, n_tick, amplitude_pulse, ts_s, settle_fraction) -> closed loop y/r per frequency
+    (complex), the stepped-sine sweep on the rigid chain; compiled on first use."""
+    return _built()[2]
+
+
+def _built():
     global _KERNELS
     if _KERNELS is None:
         _KERNELS = _build()
