@@ -37,7 +37,9 @@ cp build/asan/_core*.so build/asan/pkg/servobench/
   ASAN_OPTIONS=detect_leaks=0:detect_odr_violation=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 PYTHONPATH="$PWD/pkg" \
   "$py" -m pytest -q -p no:cacheprovider --rootdir ../.. \
   ../../tests/python/test_robust_threads.py ../../tests/python/test_robust_inputs.py \
-  ../../tests/python/test_axis.py ../../tests/python/test_card_scope.py ../../tests/python/test_card_gt.py)
+  ../../tests/python/test_axis.py ../../tests/python/test_card_scope.py ../../tests/python/test_card_gt.py \
+  -k "not (ctrl_c and fit_time)")
+# (that case times a 0.5 s bound; under ASan one solver iteration of its 100,000-sample fit alone takes ~0.6 s)
 
 echo "== C++ thread stress under ThreadSanitizer (build/tsan)"
 sanitized build/tsan thread OFF
