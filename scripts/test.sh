@@ -20,6 +20,7 @@ echo "== Python tests (pytest)"
 if [ "${SERVOBENCH_SANITIZERS:-1}" = "0" ]; then exit 0; fi
 sanitized() {  # folder, sanitizers, build the module (ON/OFF)
   cmake -S . -B "$1" -G Ninja -DCMAKE_BUILD_TYPE=Sanitize -DCMAKE_CXX_FLAGS_SANITIZE="-O1 -g1" -DSERVOBENCH_SANITIZE="$2" \
+    -DSERVOBENCH_NO_LTO=ON \
     -DSERVOBENCH_BUILD_PYTHON="$3" -DSERVOBENCH_BUILD_TESTS=ON \
     -DPython_EXECUTABLE="$(command -v "$py")" -Dpybind11_DIR="$("$py" -m pybind11 --cmakedir)" >/dev/null
 }
