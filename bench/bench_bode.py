@@ -117,7 +117,7 @@ def run(quick: bool = False, repeat: int | None = None) -> benchlib.Result:
         ours, theirs = [], []
         for _ in range(repeat):
             c0 = time.process_time()
-            meas = fr.sine_sweep(demo_axis_10k())
+            meas = fr.sine_sweep(demo_axis_10k(), amplitude_pulse=300)  # the same 300 pulse as the peer
             ours.append(time.process_time() - c0)
             c0 = time.process_time()
             nb_h = nb_sweep(*args)

@@ -119,8 +119,14 @@ def _build():
         phase = 0.0
         for p in range(n_pt):
             w = 2 * math.pi * freqs[p] * ts
+            # servobench's sweep raises the first point's amplitude from 0 on a raised cosine over a quarter of
+            # the settling share (decision M6); later points keep the amplitude, so they need no ramp.
+            per = 1.0 / (freqs[p] * ts)
+            m = max(1, int(math.floor((n_tick - math.floor(settle_fraction * n_tick)) / per + 1e-9)))
+            ramp = (n_tick - min(n_tick, max(3, int(round(m * per))))) // 4 if p == 0 else 0
             for k in range(n_tick):
-                pos[p * n_tick + k] = amp * math.sin(phase + w * k)
+                a = amp * (0.5 - 0.5 * math.cos(math.pi * k / ramp)) if k < ramp else amp
+                pos[p * n_tick + k] = a * math.sin(phase + w * k)
             phase = np.fmod(phase + w * n_tick, 2 * math.pi)
         y = np.empty(n_pt * n_tick)
         _tick_loop(c, pos, zero, zero, y)

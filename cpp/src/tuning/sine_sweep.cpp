@@ -89,11 +89,14 @@ struct SineFit {
 
 // Amplitude of the h-th harmonic over the window (whole periods of the fundamental, so whole periods of each
 // harmonic): single-bin DFT by the Goertzel recursion.
-double harmonic_amplitude(const double* x, int n, double w) {
+// Amplitude of the component at w (rad/tick) of x[0..n) about `offset` (the window's mean): the window holds whole
+// periods of the fundamental only to the nearest tick, so an uncentred signal (an axis standing at 10000 pulse)
+// would leak its mean into every harmonic bin and read as distortion.
+double harmonic_amplitude(const double* x, int n, double w, double offset) {
   const double coeff = 2.0 * std::cos(w);
   double s1 = 0.0, s2 = 0.0;
   for (int k = 0; k < n; ++k) {
-    const double s0 = x[k] + coeff * s1 - s2;
+    const double s0 = (x[k] - offset) + coeff * s1 - s2;
     s2 = s1;
     s1 = s0;
   }
@@ -287,9 +290,11 @@ SineSweepResult sine_sweep(machine::Axis& axis, const SineSweepOptions& options,
     res.u.push_back(fit.fit(u.data() + start));
     res.y.push_back(fit.fit(y.data() + start, &resid));
     res.coherence.push_back(std::clamp(1.0 - resid, 0.0, 1.0));
-    double harm = 0.0;
+    double harm = 0.0, y_mean = 0.0;
+    for (int k = 0; k < len; ++k) y_mean += y[start + static_cast<std::size_t>(k)];
+    y_mean /= len;
     for (int h = 2; h <= 5 && h * f < 0.5 / ts; ++h) {
-      const double a = harmonic_amplitude(y.data() + start, len, h * w);
+      const double a = harmonic_amplitude(y.data() + start, len, h * w, y_mean);
       harm += a * a;
     }
     const double fund = std::abs(res.y.back());
