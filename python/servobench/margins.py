@@ -2,7 +2,7 @@
 frequency-response tool returns, :func:`margins` from frequency-response data (the Nyquist criterion for the
 verdict), :func:`analytic_margins` of an axis's linear loop (closed-loop poles, crossings refined on the exact loop
 gain) and :func:`closed_loop_poles`. Also available from :mod:`servobench.frequency`. C++:
-``tuning/margins.hpp``, ``tuning/stability.hpp``; docs/bode.md, decisions M1-M4."""
+``tuning/margins.hpp``, ``tuning/stability.hpp``; docs/bode.md, decisions Q1-Q4."""
 
 from __future__ import annotations
 

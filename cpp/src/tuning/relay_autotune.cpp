@@ -147,7 +147,7 @@ RelayTuneResult relay_autotune(machine::Axis& axis, const RelayTuneOptions& o, c
                                 "output to drive the relay with");
   const double ts = axis.servo_period_s();
   // The relay decides at the first tick at or after each multiple of its sampling time, exactly (no rounding to
-  // whole ticks: 250 us on a 100 us axis decides after 2, 3, 2, 3, ... ticks; decisions M8); never more often than
+  // whole ticks: 250 us on a 100 us axis decides after 2, 3, 2, 3, ... ticks; decisions Q8); never more often than
   // every tick.
   const double per_tick = ts / o.sampling_time_s;  // relay samples per tick
   auto decides = [per_tick](long long k) {

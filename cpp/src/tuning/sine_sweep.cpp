@@ -219,10 +219,10 @@ SineSweepResult sine_sweep(machine::Axis& axis, const SineSweepOptions& options,
     const int len = std::min(static_cast<int>(n_tick), std::max(3, static_cast<int>(std::lround(m * per))));
     const std::size_t start = n_tick - static_cast<std::size_t>(len);
     // Over the first quarter of the settling share the amplitude moves from the previous point's to this one's on
-    // a raised cosine: no step of command velocity between points (decisions M6).
+    // a raised cosine: no step of command velocity between points (decisions Q6).
     // With the automatic amplitude the first point is preceded by a lead-in of the same length whose amplitude
     // rises from 0 on a raised cosine (discarded): the loop is in its periodic steady state when the first window
-    // starts, even where the window is the whole point (decisions M6).
+    // starts, even where the window is the whole point (decisions Q6).
     bool lead_in = (i == 0 && options.amplitude_pulse == 0.0);  // automatic amplitude only: a given one keeps the
                                                                   // manual's timing (points x update_s)
     for (;;) {

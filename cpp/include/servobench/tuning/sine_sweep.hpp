@@ -54,7 +54,7 @@ struct SineSweepOptions {
   double settle_fraction = 0.25;     // share of each point's samples discarded before the analysis, 0..0.9; cut
                                      // short where it would leave less than one whole period
   LoopOptions loop;                  // feed-forward and filters in the loop (docs/decisions.md B1-B2)
-  // Judging the points (decisions M5): thresholds a point must meet to enter margins.
+  // Judging the points (decisions Q5): thresholds a point must meet to enter margins.
   double min_coherence = 0.99;       // 0..1
   double max_distortion = 0.05;      // harmonic distortion of Y, amplitude ratio, >= 0
   double min_response_pulse = 4.0;   // |Y| fundamental floor, pulse (encoder quantisation), >= 0
