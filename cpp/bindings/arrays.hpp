@@ -6,6 +6,8 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include "flag.hpp"
+
 #include <algorithm>
 #include <complex>
 #include <functional>
@@ -70,7 +72,7 @@ inline pybind11::tuple state_tuple(const motion::MotionState& s) {
 // Steps `ticks` times (or until the motion ends, if until_done), the GIL released; returns arrays pos (whole
 // pulses, as reported), pos_exact, vel, acc, jerk in per-tick units.
 template <class Step, class Moving, class Reported>
-pybind11::dict run_ticks(const char* owner, double ticks, bool until_done, Step step, Moving moving,
+pybind11::dict run_ticks(const char* owner, double ticks, Flag until_done, Step step, Moving moving,
                          Reported reported) {
   check_integer(owner, "ticks", ticks, 0, 1e8);
   std::vector<double> pos, exact, vel, acc, jerk;

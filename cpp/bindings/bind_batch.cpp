@@ -3,6 +3,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "flag.hpp"
+
 #include <cmath>
 #include <string>
 #include <vector>
@@ -51,7 +53,7 @@ void bind_batch(py::module_& m) {
       "run_batch",
       [](const machine::Axis& base, const std::vector<std::string>& names, const py::object& table,
          const py::object& pos, const py::object& vel, const py::object& acc, const std::vector<std::string>& signals,
-         bool metrics, double settle_band_pulse, int threads) {
+         Flag metrics, double settle_band_pulse, int threads) {
         Array tab = finite_array(table, "parameters", 2);
         if (static_cast<std::size_t>(tab.shape(1)) != names.size())
           throw py::value_error("parameters has " + std::to_string(tab.shape(1)) + " columns for " +

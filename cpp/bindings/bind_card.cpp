@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "arrays.hpp"
+#include "flag.hpp"
 #include "object_lock.hpp"
 #include "param_class.hpp"
 #include "servobench/common/validate.hpp"
@@ -256,11 +257,11 @@ void bind_card(py::module_& m) {
       .def("axis_on", [](Card& k, double i) { k.axis_on(idx(k, i)); }, py::arg("axis"))
       .def("axis_off", [](Card& k, double i) { k.axis_off(idx(k, i)); }, py::arg("axis"))
       .def("drive_reset", [](Card& k, double i) { k.drive_reset(idx(k, i)); }, py::arg("axis"))
-      .def("set_closed_loop", [](Card& k, double i, bool on) { k.set_closed_loop(idx(k, i), on); }, py::arg("axis"), py::arg("closed"))
+      .def("set_closed_loop", [](Card& k, double i, Flag on) { k.set_closed_loop(idx(k, i), on); }, py::arg("axis"), py::arg("closed"))
       .def("set_mtr_cmd", [](Card& k, double i, double v) { k.set_mtr_cmd(idx(k, i), v); }, py::arg("axis"), py::arg("counts"))
       .def("mtr_cmd", [](const Card& k, double i) { return k.state(idx(k, i)).mtr_cmd; }, py::arg("axis"))
-      .def("set_auto_stop", [](Card& k, double i, bool on) { k.set_auto_stop(idx(k, i), on); }, py::arg("axis"), py::arg("on"))
-      .def("set_auto_update", [](Card& k, double i, bool on) { k.set_auto_update(idx(k, i), on); }, py::arg("axis"), py::arg("on"))
+      .def("set_auto_stop", [](Card& k, double i, Flag on) { k.set_auto_stop(idx(k, i), on); }, py::arg("axis"), py::arg("on"))
+      .def("set_auto_update", [](Card& k, double i, Flag on) { k.set_auto_update(idx(k, i), on); }, py::arg("axis"), py::arg("on"))
       .def("arm_breakpoint", [](Card& k, double i, const std::string& s) { k.arm_breakpoint(idx(k, i), break_from(s)); },
            py::arg("axis"), py::arg("kind"))
       .def("breakpoint_armed", [](Card& k, double i) { return std::string(to_string(k.loop(idx(k, i)).breakpoint().armed())); },
@@ -273,7 +274,7 @@ void bind_card(py::module_& m) {
            py::arg("params"))
       .def("jog", [](Card& k, double i, const motion::AdlinkJogParams& p) { k.jog(idx(k, i), p); }, py::arg("axis"),
            py::arg("params"))
-      .def("set_jog_on", [](Card& k, double i, bool on) { k.set_jog_on(idx(k, i), on); }, py::arg("axis"), py::arg("on"))
+      .def("set_jog_on", [](Card& k, double i, Flag on) { k.set_jog_on(idx(k, i), on); }, py::arg("axis"), py::arg("on"))
       .def("jog_on", [](const Card& k, double i) { return k.jog_on(idx(k, i)); }, py::arg("axis"))
       .def("jogging", [](const Card& k, double i) { return k.jogging(idx(k, i)); }, py::arg("axis"))
       .def("move_ptp_wait", [](Card& k, double i, const motion::AdlinkPtpParams& p) { k.move_ptp_wait(idx(k, i), p); },
@@ -283,7 +284,7 @@ void bind_card(py::module_& m) {
              k.move_trigger(static_cast<std::uint32_t>(mask));
            }, py::arg("mask"))
       .def("waiting_trigger", [](const Card& k, double i) { return k.waiting_trigger(idx(k, i)); }, py::arg("axis"))
-      .def("set_limit_stop_mode", [](Card& k, double i, bool dec, double d) { k.set_limit_stop_mode(idx(k, i), dec, d); },
+      .def("set_limit_stop_mode", [](Card& k, double i, Flag dec, double d) { k.set_limit_stop_mode(idx(k, i), dec, d); },
            py::arg("axis"), py::arg("decelerate"), py::arg("dec_pulse_per_s2"))
       .def("limit_stop_mode", [](const Card& k, double i) {
              const auto& s = k.state(idx(k, i));
@@ -309,8 +310,8 @@ void bind_card(py::module_& m) {
       .def("set_limits", [](Card& k, double i, const machine::LimitConfig& l) { k.set_limits(idx(k, i), l); },
            py::arg("axis"), py::arg("limits"))
       .def("limits", [](const Card& k, double i) { return k.state(idx(k, i)).limits; }, py::arg("axis"))
-      .def("set_alarm_enabled", [](Card& k, double i, bool on) { k.set_alarm_enabled(idx(k, i), on); }, py::arg("axis"), py::arg("on"))
-      .def("set_alarm_input", [](Card& k, double i, bool on) { k.set_alarm_input(idx(k, i), on); }, py::arg("axis"), py::arg("alarm"))
+      .def("set_alarm_enabled", [](Card& k, double i, Flag on) { k.set_alarm_enabled(idx(k, i), on); }, py::arg("axis"), py::arg("on"))
+      .def("set_alarm_input", [](Card& k, double i, Flag on) { k.set_alarm_input(idx(k, i), on); }, py::arg("axis"), py::arg("alarm"))
       .def("set_error_level", [](Card& k, double i, double v) { k.set_error_level(idx(k, i), v); }, py::arg("axis"), py::arg("pulse"))
       .def("error_level", [](const Card& k, double i) { return k.state(idx(k, i)).error_level_pulse; }, py::arg("axis"))
       .def_property("emergency_stop", &Card::emergency_stop, &Card::set_emergency_stop)

@@ -3,6 +3,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "flag.hpp"
+
 #include <string>
 #include <vector>
 
@@ -50,8 +52,8 @@ void bind_card_aps(py::class_<Card>& c, py::module_& m) {
   c.def("aps_interp", [](Card& k, const std::vector<double>& array, const std::vector<motion::AdlinkPtpParams>& params,
                          const std::string& kind, const std::vector<double>& target, const std::vector<double>& center,
                          const std::vector<double>& normal, double angle_deg, int dir, double height,
-                         double final_radius, bool relative, motion::BlendMode mode, double blend, double vm,
-                         const motion::AdlinkPtpParams* all, bool wait) {
+                         double final_radius, Flag relative, motion::BlendMode mode, double blend, double vm,
+                         const motion::AdlinkPtpParams* all, Flag wait) {
          machine::AdlinkGroupMove mv;
          for (double a : array) mv.array.push_back(ax(k, a));
          mv.params = params;

@@ -3,6 +3,8 @@
 // dialect (servobench.dialects.ge) numbers axes from 1.
 #include <pybind11/pybind11.h>
 
+#include "flag.hpp"
+
 #include <string>
 
 #include "servobench/common/validate.hpp"
@@ -38,7 +40,7 @@ void bind_card_ge(py::module_& m) {
       [](Card& k) { k.arm_probe(); }, py::is_method(cls),
       "GE GT_CaptProb: arms every axis's capture on the probe input EXI0, one shot (GE L3828-3862).");
   cls.attr("set_encoder_fault") = py::cpp_function(
-      [](Card& k, double i, bool on) { k.set_encoder_fault(ge_idx(k, i), on); }, py::is_method(cls),
+      [](Card& k, double i, Flag on) { k.set_encoder_fault(ge_idx(k, i), on); }, py::is_method(cls),
       py::arg("axis"), py::arg("on"), "The encoder-abnormal input of an axis (GE PX status bit 27).");
   cls.attr("synch_pos_now") = py::cpp_function(
       [](Card& k, double i) { k.synch_pos_now(ge_idx(k, i)); }, py::is_method(cls), py::arg("axis"),

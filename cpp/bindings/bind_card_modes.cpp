@@ -5,6 +5,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "flag.hpp"
+
 #include <array>
 #include <memory>
 #include <string>
@@ -52,7 +54,7 @@ py::object view(T* obj, std::shared_ptr<void> owner, const py::object& card) {
 }
 
 motion::CrdPrm crd_prm_from(double dimension, const std::vector<double>& profile, double syn_vel_max,
-                            double syn_acc_max, double even_time_ms, bool set_origin,
+                            double syn_acc_max, double even_time_ms, Flag set_origin,
                             const std::vector<double>& origin_pos) {
   motion::CrdPrm p;
   check_integer("CrdPrm", "dimension", dimension, 1, 4, "GUC L375");
@@ -167,7 +169,7 @@ void bind_card_modes(py::class_<Card>& c, py::module_& m) {
            }, py::arg("axis"))
       // -- coordinate systems
       .def("set_crd_prm", [](Card& k, double crd, double dimension, const std::vector<double>& profile,
-                             double syn_vel_max, double syn_acc_max, double even_time_ms, bool set_origin,
+                             double syn_vel_max, double syn_acc_max, double even_time_ms, Flag set_origin,
                              const std::vector<double>& origin_pos) {
              k.modes().set_crd_prm(crd_of(crd), crd_prm_from(dimension, profile, syn_vel_max, syn_acc_max,
                                                              even_time_ms, set_origin, origin_pos));
@@ -197,7 +199,7 @@ void bind_card_modes(py::class_<Card>& c, py::module_& m) {
       .def("crd_start", [](Card& k, double mask, double option) {
              k.modes().crd_start(mask_of(mask, "mask"), mask_of(option, "option"));
            }, py::arg("mask"), py::arg("option") = 0.0)
-      .def("crd_stop", [](Card& k, double crd, bool abrupt) {
+      .def("crd_stop", [](Card& k, double crd, Flag abrupt) {
              k.modes().stop_group(static_cast<std::size_t>(crd_of(crd) - 1), abrupt);
            }, py::arg("crd"), py::arg("abrupt") = false)
       .def("crd_status", [](Card& k, double crd, double fifo) {
@@ -235,7 +237,7 @@ void bind_card_modes(py::class_<Card>& c, py::module_& m) {
              const auto s = static_cast<std::size_t>(slot);
              k.modes().before_group_start(s);
            }, py::arg("slot"), "the card's checks and bookkeeping before a group's own start()")
-      .def("group_stop", [](Card& k, double slot, bool abrupt) {
+      .def("group_stop", [](Card& k, double slot, Flag abrupt) {
              check_integer("Card", "slot", slot, 0, static_cast<double>(machine::kGroupSlots) - 1);
              k.modes().stop_group(static_cast<std::size_t>(slot), abrupt);
            }, py::arg("slot"), py::arg("abrupt") = false);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "arrays.hpp"
+#include "flag.hpp"
 #include "object_lock.hpp"
 #include "servobench/common/validate.hpp"
 #include "servobench/machine/card.hpp"
@@ -153,7 +154,7 @@ void bind_card_scope(py::module_& m, py::class_<Card>& c) {
   c.def("sampler_start",
         [](Card& k, const std::vector<std::pair<double, std::string>>& channels, double every_ticks, double depth,
            const std::string& trigger, double trigger_channel, double level, double event_axis, double event_bits,
-           double pretrigger, bool continuous) {
+           double pretrigger, Flag continuous) {
           machine::SamplerConfig cfg;
           for (const auto& [axis, name] : channels) {
             machine::SampleChannel ch;
@@ -220,7 +221,7 @@ void bind_card_scope(py::module_& m, py::class_<Card>& c) {
              return std::string(machine::to_string(k.loop(axis_index(k, i)).capture().source()));
            }, py::arg("axis"))
       // position compare
-      .def("compare_set_source", [](Card& k, double comp, double axis, bool command) {
+      .def("compare_set_source", [](Card& k, double comp, double axis, Flag command) {
              check_integer("Card", "comparator", comp, 0, 3);
              machine::CompareSource s;
              s.axis = axis;
@@ -249,7 +250,7 @@ void bind_card_scope(py::module_& m, py::class_<Card>& c) {
              check_integer("Card", "channel", ch, 0, 1);
              return k.scope().compare().table_direction(static_cast<int>(ch));
            }, py::arg("channel"))
-      .def("compare_set_output", [](Card& k, double trg, double sources, double width, bool active_low, bool toggle) {
+      .def("compare_set_output", [](Card& k, double trg, double sources, double width, Flag active_low, Flag toggle) {
              check_integer("Card", "output", trg, 0, 3);
              check_integer("Card", "sources", sources, 0, 31);
              machine::TriggerOutputConfig o;

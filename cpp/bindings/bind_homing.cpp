@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "arrays.hpp"
+#include "flag.hpp"
 #include "object_lock.hpp"
 #include "param_class.hpp"
 #include "servobench/common/validate.hpp"
@@ -41,7 +42,7 @@ const std::vector<std::string>& loop_signal_names() {
 }
 
 // Runs the loop in chunks, recording the wanted signals; until_done stops when the sequence/motion ends.
-py::dict run_loop(MotionLoop& loop, double ticks, bool until_done, const py::object& signals) {
+py::dict run_loop(MotionLoop& loop, double ticks, Flag until_done, const py::object& signals) {
   check_integer("MotionLoop.run", until_done ? "max_ticks" : "ticks", ticks, 0, 1e9);
   std::vector<std::string> wanted;
   if (signals.is_none()) {

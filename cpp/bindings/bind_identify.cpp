@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "arrays.hpp"
+#include "flag.hpp"
 #include "servobench/common/validate.hpp"
 #include "servobench/identify/frequency_fit.hpp"
 #include "servobench/identify/time_fit.hpp"
@@ -32,11 +33,11 @@ identify::Loss loss_of(const std::string& name) {
   throw py::value_error("loss = '" + name + "' is not one of 'none', 'huber', 'soft_l1', 'cauchy'");
 }
 
-identify::ParameterSetup setup_of(const py::handle& initial, const std::vector<bool>& fixed, const py::handle& lower,
+identify::ParameterSetup setup_of(const py::handle& initial, const std::vector<Flag>& fixed, const py::handle& lower,
                                   const py::handle& upper) {
   identify::ParameterSetup s;
   s.initial = real_vector(initial, "initial");
-  s.fixed = fixed;
+  s.fixed.assign(fixed.begin(), fixed.end());
   s.lower = real_vector(lower, "lower");
   s.upper = real_vector(upper, "upper");
   return s;
@@ -90,7 +91,7 @@ std::function<bool(int, double)> iteration_callback(const py::object& progress,
 
 // A log from arrays.
 identify::TimeLog time_log(const py::handle& torque_nm, const py::handle& measured, double sample_period_s,
-                           bool measured_is_speed, bool measured_on_load) {
+                           Flag measured_is_speed, Flag measured_on_load) {
   identify::TimeLog log;
   log.sample_period_s = sample_period_s;
   log.torque_nm = real_vector(torque_nm, "torque_nm");
@@ -160,8 +161,8 @@ void bind_identify(py::module_& m) {
 
   m.def(
       "identify_time",
-      [](const py::handle& torque_nm, const py::handle& measured, double sample_period_s, bool measured_is_speed,
-         bool measured_on_load, const std::string& model, const py::handle& initial, const std::vector<bool>& fixed,
+      [](const py::handle& torque_nm, const py::handle& measured, double sample_period_s, Flag measured_is_speed,
+         Flag measured_on_load, const std::string& model, const py::handle& initial, const std::vector<Flag>& fixed,
          const py::handle& lower, const py::handle& upper, const py::object& progress, const py::kwargs& kw) {
         const identify::TimeLog log = time_log(torque_nm, measured, sample_period_s, measured_is_speed,
                                                measured_on_load);
@@ -192,8 +193,8 @@ void bind_identify(py::module_& m) {
 
   m.def(
       "identify_shooting_problem",
-      [](const py::handle& torque_nm, const py::handle& measured, double sample_period_s, bool measured_is_speed,
-         bool measured_on_load, const std::string& model, const py::kwargs& kw) {
+      [](const py::handle& torque_nm, const py::handle& measured, double sample_period_s, Flag measured_is_speed,
+         Flag measured_on_load, const std::string& model, const py::kwargs& kw) {
         const identify::TimeLog log = time_log(torque_nm, measured, sample_period_s, measured_is_speed,
                                                measured_on_load);
         const identify::ShootingProblem sp = identify::shooting_problem(log, options_from(model, kw));
@@ -207,9 +208,9 @@ void bind_identify(py::module_& m) {
 
   m.def(
       "identify_shooting_residual",
-      [](const py::handle& torque_nm, const py::handle& measured, double sample_period_s, bool measured_is_speed,
-         bool measured_on_load, const std::string& model, const py::handle& starts, const py::handle& counts,
-         const py::handle& parameters, const py::handle& states, bool jacobian, const py::kwargs& kw) -> py::object {
+      [](const py::handle& torque_nm, const py::handle& measured, double sample_period_s, Flag measured_is_speed,
+         Flag measured_on_load, const std::string& model, const py::handle& starts, const py::handle& counts,
+         const py::handle& parameters, const py::handle& states, Flag jacobian, const py::kwargs& kw) -> py::object {
         const identify::TimeLog log = time_log(torque_nm, measured, sample_period_s, measured_is_speed,
                                                measured_on_load);
         const identify::TimeFitOptions o = options_from(model, kw);
@@ -241,7 +242,7 @@ void bind_identify(py::module_& m) {
 
   m.def(
       "identify_simulate",
-      [](const py::handle& torque_nm, double sample_period_s, bool measured_is_speed, bool measured_on_load,
+      [](const py::handle& torque_nm, double sample_period_s, Flag measured_is_speed, Flag measured_on_load,
          const std::string& model, const py::handle& parameters, const py::handle& initial_state,
          const py::kwargs& kw) {
         identify::TimeLog log = time_log(torque_nm, torque_nm, sample_period_s, measured_is_speed, measured_on_load);
@@ -263,8 +264,8 @@ void bind_identify(py::module_& m) {
   m.def(
       "identify_frequency",
       [](const machine::Axis& axis, const py::handle& freq_hz, const py::handle& response, const py::handle& weight,
-         const std::string& model, const py::handle& initial, const std::vector<bool>& fixed, const py::handle& lower,
-         const py::handle& upper, bool fit_delay, double delay_initial_s, double max_iterations,
+         const std::string& model, const py::handle& initial, const std::vector<Flag>& fixed, const py::handle& lower,
+         const py::handle& upper, Flag fit_delay, double delay_initial_s, double max_iterations,
          double max_relative_std_error, const py::object& progress) {
         identify::FrequencyData data;
         data.freq_hz = real_vector(freq_hz, "freq_hz");

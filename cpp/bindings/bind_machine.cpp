@@ -12,6 +12,7 @@
 #include "servobench/common/validate.hpp"
 #include "servobench/machine/axis.hpp"
 #include "object_lock.hpp"
+#include "flag.hpp"
 
 namespace servobench::bindings {
 
@@ -221,12 +222,12 @@ void bind_machine(py::module_& m) {
       .def_property_readonly("substeps_per_tick", [](const Axis& a) { return a.power_train().substeps_per_tick(); })
       .def_property_readonly("mechanical_energy_j", [](const Axis& a) { return a.power_train().mechanical_energy_j(); })
       .def_property_readonly("servo_on", &Axis::servo_on)
-      .def("set_servo_on", &Axis::set_servo_on, py::arg("on"))
+      .def("set_servo_on", strict(&Axis::set_servo_on), py::arg("on"))
       .def_property_readonly("last_command_pulse", &Axis::last_command_pulse)
       .def(
           "run",
           [](Axis& axis, const py::object& pos, const py::object& vel, const py::object& acc, const py::object& signals,
-             const py::object& injection, double error_limit, bool stop_on_alarm, const py::object& controller,
+             const py::object& injection, double error_limit, Flag stop_on_alarm, const py::object& controller,
              std::uintptr_t controller_address, const py::object& controller_state) {
             Array p = checked_array(pos, "positions", -1);
             const py::ssize_t n = p.shape(0);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "arrays.hpp"
+#include "flag.hpp"
 #include "param_class.hpp"
 #include "servobench/common/validate.hpp"
 #include "servobench/motion/adlink_interpolation.hpp"
@@ -77,7 +78,7 @@ py::dict recording_dict(const motion::PathRecording& r) {
 }
 
 template <class G>
-py::dict record_py(G& g, double ticks, bool until_done) {
+py::dict record_py(G& g, double ticks, Flag until_done) {
   check_integer("record", "ticks", ticks, 0, 1e8);
   motion::PathRecording r;
   r = motion::record(g, static_cast<std::size_t>(ticks), until_done);  // GIL held: one thread per generator
@@ -149,14 +150,14 @@ void bind_paths(py::module_& m) {
           "GT/GE arc: absolute centre (plane coordinates), angle in degrees (-360..360, + = CCW about the\n"
           "positive third axis); axial: displacement of the other coordinates over the arc (a helix).")
       .def_static("arc_radius", [](const std::vector<double>& start, const std::vector<double>& end,
-                                   const std::string& plane, double radius, bool ccw) {
+                                   const std::string& plane, double radius, Flag ccw) {
             if (start.size() != end.size()) throw std::invalid_argument("PathArcRadius: start and end differ in length");
             return PathSegmentGeometry::arc_end_radius(point(start, "start"), point(end, "end"),
                                                        static_cast<int>(start.size()), plane_of(plane), radius, ccw);
           }, py::arg("start"), py::arg("end"), py::arg("plane"), py::arg("radius"), py::arg("ccw"),
           "End point and signed radius: radius > 0 the arc <= 180 deg, < 0 the arc > 180 deg (no full circle).")
       .def_static("arc_center", [](const std::vector<double>& start, const std::vector<double>& end,
-                                   const std::string& plane, std::pair<double, double> offset, bool ccw) {
+                                   const std::string& plane, std::pair<double, double> offset, Flag ccw) {
             if (start.size() != end.size()) throw std::invalid_argument("PathArcCenter: start and end differ in length");
             return PathSegmentGeometry::arc_center_offset(point(start, "start"), point(end, "end"),
                                                           static_cast<int>(start.size()), plane_of(plane),
@@ -201,7 +202,7 @@ void bind_paths(py::module_& m) {
             return CoordSystem::gt_map(r);
           }, py::arg("rows"), "GT_MapAxis: rows (axis, Cx, Cy, Cz, Ca, C): axis = Cx x + Cy y + Cz z + Ca a + C.")
       .def_static("crd_prm", [](double dimension, const std::vector<double>& profile, double syn_vel_max,
-                                double syn_acc_max, double even_time_ms, bool set_origin,
+                                double syn_acc_max, double even_time_ms, Flag set_origin,
                                 const std::vector<double>& origin_pos, const std::vector<double>& profile_pos) {
             CrdPrm p;
             check_integer("CrdPrm", "dimension", dimension, 1, 4, "GUC L375");
@@ -262,9 +263,9 @@ void bind_paths(py::module_& m) {
       .def("set_aux_position", &PathGenerator::set_aux_position, py::arg("axis"), py::arg("pos"))
       .def_property_readonly("tail", [](const PathGenerator& g) { return crd_array(g.tail(), g.coords().dim()); },
                              "start point of the next buffered segment")
-      .def("push_segment", &PathGenerator::push_segment, py::arg("segment"), py::arg("vel"), py::arg("acc"),
+      .def("push_segment", strict(&PathGenerator::push_segment), py::arg("segment"), py::arg("vel"), py::arg("acc"),
            py::arg("vel_end") = 0.0, py::arg("g0") = false, py::arg("auto_end") = false, py::arg("stop_at_end") = false)
-      .def("line", [](PathGenerator& g, const std::vector<double>& end, double vel, double acc, double vel_end, bool g0) {
+      .def("line", [](PathGenerator& g, const std::vector<double>& end, double vel, double acc, double vel_end, Flag g0) {
              g.line(point_from(end, g.tail(), "end"), vel, acc, vel_end, g0);
            }, py::arg("end"), py::arg("vel"), py::arg("acc"), py::arg("vel_end") = 0.0, py::arg("g0") = false)
       .def("arc_center_angle", [](PathGenerator& g, const std::string& plane, std::pair<double, double> center,
@@ -278,14 +279,14 @@ void bind_paths(py::module_& m) {
            }, py::arg("plane"), py::arg("center"), py::arg("angle_deg"), py::arg("vel"), py::arg("acc"),
            py::arg("vel_end") = 0.0, py::arg("axial") = std::vector<double>{})
       .def("arc_radius", [](PathGenerator& g, const std::string& plane, const std::vector<double>& end, double radius,
-                            bool ccw, double vel, double acc, double vel_end) {
+                            Flag ccw, double vel, double acc, double vel_end) {
              g.push_segment(PathSegmentGeometry::arc_end_radius(g.tail(), point_from(end, g.tail(), "end"),
                                                                 g.coords().dim(), plane_of(plane), radius, ccw),
                             vel, acc, vel_end);
            }, py::arg("plane"), py::arg("end"), py::arg("radius"), py::arg("ccw"), py::arg("vel"), py::arg("acc"),
            py::arg("vel_end") = 0.0)
       .def("arc_center", [](PathGenerator& g, const std::string& plane, const std::vector<double>& end,
-                            std::pair<double, double> offset, bool ccw, double vel, double acc, double vel_end) {
+                            std::pair<double, double> offset, Flag ccw, double vel, double acc, double vel_end) {
              g.push_segment(PathSegmentGeometry::arc_center_offset(g.tail(), point_from(end, g.tail(), "end"),
                                                                    g.coords().dim(), plane_of(plane), offset.first,
                                                                    offset.second, ccw),
@@ -295,17 +296,17 @@ void bind_paths(py::module_& m) {
       .def("buf_io", &PathGenerator::buf_io, py::arg("do_type"), py::arg("mask"), py::arg("value"))
       .def("buf_delay", &PathGenerator::buf_delay, py::arg("delay_ms"))
       .def("buf_da", &PathGenerator::buf_da, py::arg("channel"), py::arg("value"))
-      .def("buf_move", &PathGenerator::buf_move, py::arg("axis"), py::arg("pos"), py::arg("vel"), py::arg("acc"),
+      .def("buf_move", strict(&PathGenerator::buf_move), py::arg("axis"), py::arg("pos"), py::arg("vel"), py::arg("acc"),
            py::arg("modal"))
       .def("buf_gear", &PathGenerator::buf_gear, py::arg("axis"), py::arg("distance"))
       .def("set_user_seg_num", &PathGenerator::set_user_seg_num, py::arg("seg_num"))
-      .def("buf_lmts", &PathGenerator::buf_lmts, py::arg("axis"), py::arg("limit_type"), py::arg("on"),
+      .def("buf_lmts", strict(&PathGenerator::buf_lmts), py::arg("axis"), py::arg("limit_type"), py::arg("on"),
            "GT_BufLmtsOn (on) / GT_BufLmtsOff: axis 1..16, limit_type 0 positive, 1 negative, -1 both.")
       .def("buf_set_stop_io", &PathGenerator::buf_set_stop_io, py::arg("axis"), py::arg("stop_type"),
            py::arg("input_type"), py::arg("input_index"),
            "GT_BufSetStopIo: axis 1..8, stop_type 0 emergency / 1 smooth, input_type 0 +limit, 1 -limit, 2 alarm,\n"
            "3 home, 4 GPI; input_index 1..8 (GPI 1..16).")
-      .def("set_input", &PathGenerator::set_input, py::arg("input_type"), py::arg("index"), py::arg("active"),
+      .def("set_input", strict(&PathGenerator::set_input), py::arg("input_type"), py::arg("index"), py::arg("active"),
            "The logical state of an input (the card's sense applied): input_type 0..4, index 1..8 (GPI 1..16).")
       .def("input", &PathGenerator::input, py::arg("input_type"), py::arg("index"))
       .def("stop_io", [](const PathGenerator& g, int axis) -> py::object {
@@ -319,7 +320,7 @@ void bind_paths(py::module_& m) {
            }, py::arg("axis"), "The armed stop input of an axis (dict), or None.")
       .def("flush", &PathGenerator::flush, "GT_CrdData(NULL): window -> FIFO; False if the FIFO filled first")
       .def("start", &PathGenerator::start)
-      .def("stop", &PathGenerator::stop, py::arg("abrupt") = false)
+      .def("stop", strict(&PathGenerator::stop), py::arg("abrupt") = false)
       .def("clear", &PathGenerator::clear)
       .def("move_immediate", [](PathGenerator& g, const std::vector<double>& end, double vel, double acc) {
              g.move_immediate(point_from(end, g.state().pos, "end"), vel, acc);
@@ -358,7 +359,7 @@ void bind_paths(py::module_& m) {
       .def("fifo", py::overload_cast<int>(&CrdFifoPair::fifo), py::arg("k"), py::return_value_policy::reference_internal,
            "FIFO k (0 or 1) as a PathGenerator: push commands to it; start through start(k).")
       .def("start", &CrdFifoPair::start, py::arg("fifo"), "GT_CrdStart with option bit = fifo")
-      .def("stop", &CrdFifoPair::stop, py::arg("abrupt") = false)
+      .def("stop", strict(&CrdFifoPair::stop), py::arg("abrupt") = false)
       .def("step", &CrdFifoPair::step, py::return_value_policy::copy)
       .def_property_readonly("state", &CrdFifoPair::state, py::return_value_policy::copy)
       .def_property_readonly("active", &CrdFifoPair::active, "the FIFO that moved the coordinate system last")
@@ -387,7 +388,7 @@ void bind_paths(py::module_& m) {
       .def(py::init([](const GeLookAheadParams& p, const std::vector<double>& start) {
              return GeLookAhead(p, start.empty() ? CrdPoint{} : point(start, "start"));
            }), py::arg("params"), py::arg("start_mm") = std::vector<double>{})
-      .def("add_look_data", &GeLookAhead::add, py::arg("code"), py::arg("plane_group"), py::arg("r"), py::arg("x"),
+      .def("add_look_data", strict(&GeLookAhead::add), py::arg("code"), py::arg("plane_group"), py::arg("r"), py::arg("x"),
            py::arg("y"), py::arg("z"), py::arg("vel"), py::arg("cx"), py::arg("cy"), py::arg("number"),
            py::arg("flag"),
            "code 0 G00, 1 G01, 2 G02 (CW), 3 G03 (CCW); plane_group 17 XY, 18 ZX, 19 YZ; mm, mm/s. Returns 0, or\n"
@@ -422,7 +423,7 @@ void bind_paths(py::module_& m) {
       .def("set_axis_params", &AdlinkInterpolator::set_axis_params, py::arg("axis"), py::arg("params"))
       .def("push", [](AdlinkInterpolator& g, const std::string& kind, const std::vector<double>& target,
                       const std::vector<double>& center, const std::vector<double>& normal, double angle_deg, int dir,
-                      double height, double final_radius, bool relative, BlendMode mode, double blend, double vm,
+                      double height, double final_radius, Flag relative, BlendMode mode, double blend, double vm,
                       const AdlinkPtpParams* all) {
              AdlinkMoveSpec s;
              using K = AdlinkMoveSpec::Kind;
@@ -464,7 +465,7 @@ void bind_paths(py::module_& m) {
       .def_property_readonly("axes", &AdlinkInterpolator::axes)
       .def_property_readonly("pending", &AdlinkInterpolator::pending)
       .def_property_readonly("done", &AdlinkInterpolator::done)
-      .def("record", [](AdlinkInterpolator& g, double ticks, bool until_done) {
+      .def("record", [](AdlinkInterpolator& g, double ticks, Flag until_done) {
              check_integer("AdlinkInterpolator.record", "ticks", ticks, 0, 1e8);
              AdlinkInterpRecording r = record(g, static_cast<std::size_t>(ticks), until_done);  // GIL held
              py::dict d;

@@ -2,6 +2,7 @@
 #include <pybind11/numpy.h>
 
 #include "param_class.hpp"
+#include "flag.hpp"
 #include "servobench/plant/encoder.hpp"
 #include "servobench/plant/mechanics.hpp"
 #include "servobench/plant/rigid.hpp"
@@ -21,7 +22,7 @@ std::vector<double> to_vector(const py::handle& obj, const char* name) {
   return std::vector<double>(a.data(), a.data() + n);
 }
 
-py::array_t<std::complex<double>> response(const plant::Mechanics& m, const py::handle& freq, bool load_side,
+py::array_t<std::complex<double>> response(const plant::Mechanics& m, const py::handle& freq, Flag load_side,
                                            const std::optional<double>& period_s) {
   if (period_s && !(*period_s > 0 && std::isfinite(*period_s)))
     throw_invalid("frequency_response", "period_s", *period_s, "must be finite and > 0 (or None: continuous)");

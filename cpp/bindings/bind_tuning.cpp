@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "arrays.hpp"
+#include "flag.hpp"
 #include "object_lock.hpp"
 #include "servobench/common/validate.hpp"
 #include "servobench/tuning/loop_response.hpp"
@@ -78,7 +79,7 @@ const char* status_name(tuning::SweepStatus s) {
 void bind_tuning(py::module_& m) {
   m.def(
       "loop_response",
-      [](const machine::Axis& axis, const py::object& freq, bool feedforward, bool filters) {
+      [](const machine::Axis& axis, const py::object& freq, Flag feedforward, Flag filters) {
         const std::vector<double> f = real_vector(freq, "freq_hz");
         tuning::LoopOptions o;
         o.feedforward = feedforward;
@@ -106,7 +107,7 @@ void bind_tuning(py::module_& m) {
   m.def(
       "sine_sweep",
       [](machine::Axis& axis, double start_hz, double end_hz, double amplitude_pulse, double points, double update_s,
-         double deviation_limit_pulse, double settle_fraction, bool feedforward, bool filters,
+         double deviation_limit_pulse, double settle_fraction, Flag feedforward, Flag filters,
          const py::object& progress, double min_coherence, double max_distortion, double min_response_pulse,
          double min_dac_counts, double dac_fraction, double max_amplitude_pulse) {
         tuning::SineSweepOptions o;
@@ -173,7 +174,7 @@ void bind_tuning(py::module_& m) {
 
   m.def(
       "analytic_margins",
-      [](const machine::Axis& axis, const py::object& freq, bool filters) {
+      [](const machine::Axis& axis, const py::object& freq, Flag filters) {
         std::vector<double> f;
         if (!freq.is_none()) f = real_vector(freq, "freq_hz");
         tuning::LoopOptions o;
@@ -189,7 +190,7 @@ void bind_tuning(py::module_& m) {
       "Margins of the axis's analytic loop: stability from the closed-loop poles, crossings refined on the exact L.");
   m.def(
       "loop_poles",
-      [](const machine::Axis& axis, bool filters) {
+      [](const machine::Axis& axis, Flag filters) {
         tuning::LoopOptions o;
         o.filters = filters;
         const tuning::LoopPoles p = tuning::loop_poles(axis.config(), o);
@@ -279,7 +280,7 @@ void bind_tuning(py::module_& m) {
   m.def(
       "model_tune",
       [](const machine::Axis& axis, double phase_margin_deg, double alpha, double pm_tolerance_deg,
-         double min_gain_margin_db, double max_ms, double max_pid_lead_deg, bool notch, double resonance_hz, double min_resonance_prominence_db,
+         double min_gain_margin_db, double max_ms, double max_pid_lead_deg, Flag notch, double resonance_hz, double min_resonance_prominence_db,
          const std::vector<double>& notch_q_set, double min_crossover_hz, double max_crossover_hz, double candidates,
          double points, const std::string& law) {
         tuning::ModelTuneOptions o;

@@ -160,3 +160,52 @@ def test_nan_is_never_a_bool():
         with pytest.raises(TypeError, match="stop_on_alarm"):
             sb.Axis().run(np.zeros(3), stop_on_alarm=bad)
     assert math.isfinite(sb.Axis().default_error_limit_pulse)
+
+
+def _core_flag_calls():
+    """One call per compiled binding file whose parameter is a C++ bool, with the bool replaced by `value`."""
+    from servobench import _core as c
+    axis = sb.Axis()._axis
+    freq = np.array([10.0, 100.0])
+    card = sb.Card(4)._card
+    gen = c.PathGenerator(c.CoordSystem.identity(2))
+    return [
+        ("Card.set_auto_stop", "on", lambda v: card.set_auto_stop(0, v)),
+        ("Card.set_closed_loop", "closed", lambda v: card.set_closed_loop(0, v)),
+        ("Card.set_limit_stop_mode", "decelerate", lambda v: card.set_limit_stop_mode(0, v, 1e5)),
+        ("Card.crd_stop", "abrupt", lambda v: card.crd_stop(1, v)),
+        ("Card.compare_set_source", "command", lambda v: card.compare_set_source(0, 0, v)),
+        ("Axis.set_servo_on", "on", lambda v: axis.set_servo_on(v)),
+        ("PathGenerator.stop", "abrupt", lambda v: gen.stop(abrupt=v)),
+        ("PathGenerator.record", "until_done", lambda v: gen.record(3, until_done=v)),
+        ("loop_response", "feedforward", lambda v: c.loop_response(axis, freq, feedforward=v)),
+        ("loop_response", "filters", lambda v: c.loop_response(axis, freq, filters=v)),
+    ]
+
+
+@pytest.mark.parametrize("bad", [NAN, INF, 0.5, 1.0, 2, -1, "yes", None, [1]])
+def test_compiled_bool_parameters_accept_only_bools(bad):
+    # pybind11's own bool conversion read NaN, 2.5 or "no" as True (issue 21.2): a compiled bool parameter now takes
+    # True/False, NumPy bools and the integers 0/1 only, and the TypeError shows the signature with its name.
+    for label, name, call in _core_flag_calls():
+        with pytest.raises(TypeError) as info:
+            call(bad)
+        assert f"{name}: bool" in str(info.value), (label, str(info.value)[:300])
+
+
+@pytest.mark.parametrize("good", [True, False, 0, 1, np.bool_(True), np.bool_(False), np.int64(1)])
+def test_compiled_bool_parameters_take_bools_and_0_1(good):
+    for label, name, call in _core_flag_calls():
+        try:
+            call(good)
+        except sb._core.CardCommandRefused:
+            pass  # the argument was taken; the card refuses the command in its state (no coordinate system)
+
+
+def test_compiled_bool_list_parameters_accept_only_bools():
+    t = np.zeros(200)
+    t[50:] = 1e-3
+    with pytest.raises(TypeError, match="fixed"):
+        sb._core.identify_time(t, np.cumsum(np.cumsum(t)), sample_period_s=1e-3, measured_is_speed=False,
+                               measured_on_load=False, model="rigid", initial=[1e-3, 0.0, 0.0],
+                               fixed=[False, NAN, False], lower=[1e-6, 0, 0], upper=[1, 1, 1])
