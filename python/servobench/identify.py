@@ -552,9 +552,15 @@ def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None
         raise :class:`IdentificationError` (a ValueError) naming the parameters the data cannot determine; with
         False they are reported in ``not_identifiable`` and their standard error is inf.
     num_threads
-        Ceres threads. 1 (default) is deterministic: the same log gives bit-identical estimates. More threads evaluate
-        the segments in parallel (about 1.7x faster on 2 cores) but Ceres then sums the Schur complement in a
-        varying order, so estimates differ from run to run at ~1e-8 relative and iteration counts by a few.
+        Ceres threads inside one start. 1 (default) is deterministic: the same log gives bit-identical estimates.
+        More threads evaluate the segments in parallel, but on the 5 s bench experiment they do not help (measured
+        0.94x with 2 threads, issue 22: the segments are too short to pay for the hand-over), and Ceres then sums
+        the Schur complement in a varying order, so estimates differ from run to run at ~1e-8 relative.
+    start_threads
+        how many starts run at once (None: one per core, at most n_starts). Threads help wall time only: the starts
+        are independent one-thread solves that release the GIL, so they overlap (measured 1.47x less wall time for
+        3 starts on 2 shared cores) but the CPU time is the sum of the starts (0.4-0.7 s each on the 5 s bench
+        experiment). Results do not depend on it. With `progress` the starts run one after the other.
     progress
         None, or a callable(iteration, cost) -> bool (False stops the solve).
     """
@@ -668,12 +674,14 @@ def _correlated_errors(best: IdentifiedPlant, log: IdentificationLog, model: str
             if stat in se and coul in se:  # back to the breakaway level: var(Fs) = var(Fc) + var(e) + 2 cov(Fc, e)
                 a, b = names.index(coul), names.index(stat)
                 se[stat] = math.sqrt(max(cov[a, a] + cov[b, b] + 2 * cov[a, b], 0.0))
-            factor = {n: se[n] / best.parameters[n].std_error for n in se if best.parameters[n].std_error > 0}
+            # never below the white-noise value: with few segments the sandwich is itself uncertain (J19)
+            factor = {n: max(se[n] / best.parameters[n].std_error, 1.0) for n in se
+                      if best.parameters[n].std_error > 0}
             if all(math.isfinite(f) and f > 0 for f in factor.values()):
                 lo, hi = min(factor.values()), max(factor.values())
                 return factor, (f"Standard errors: sandwich clustered by segment ({sw.segments} segments, Newey-West "
-                                f"over {sw.lags} neighbouring segments), {lo:.3g}..{hi:.3g} x the white-noise "
-                                "values."), sw
+                                f"over {sw.lags} neighbouring segments, never below the white-noise values), "
+                                f"{lo:.3g}..{hi:.3g} x the white-noise values."), sw
             why = "non-finite sandwich"
         note_why = f" (the segment sandwich failed: {why})"
     else:
