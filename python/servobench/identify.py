@@ -545,9 +545,10 @@ def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None
         with the Stribeck peak free, solve a first stage with its level and speed held at their guesses (far from
         the truth, the peak otherwise tends to vanish, ws -> 0, and stay vanished).
     max_relative_std_error
-        standard errors are the segment-clustered sandwich (correlated residuals: :func:`servobench.oefit.
-        segment_sandwich`; with a robust loss Ceres' times sqrt(long-run / plain variance) of the residual); a
-        parameter whose standard error exceeds this fraction of its own value is not identifiable.
+        standard errors are the segment-clustered sandwich for correlated residuals
+        (:func:`servobench.oefit.segment_sandwich`; with a robust loss Ceres' times sqrt(long-run / plain variance)
+        of the residual); a parameter whose standard error exceeds this fraction of its own value is not
+        identifiable.
     strict
         raise :class:`IdentificationError` (a ValueError) naming the parameters the data cannot determine; with
         False they are reported in ``not_identifiable`` and their standard error is inf.
