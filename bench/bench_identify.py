@@ -52,7 +52,7 @@ GOAL_CPU_S = 0.5
 
 def full_fits(repeat, duration_s=5.0):
     """(plant, wall s best of `repeat`, iterations of the chosen start, worst error %, CPU s best of `repeat`,
-    iterations of all starts) of the whole fit_time (3 starts on a thread pool) on the test plants."""
+    iterations of all starts) of the whole fit_time (3 starts) on the test plants."""
     import servobench as sb
     from servobench import _core
 
@@ -334,8 +334,8 @@ def run(quick: bool = False, repeat: int | None = None) -> benchlib.Result:
         f"## The whole fit on the {duration:g} s experiment (goals: <= 1 s wall, issue 7; <= 0.5 s CPU, issue 22)",
         "",
         f"`fit_time` as a user calls it (continuation over segment lengths; two-mass: start from the log's "
-        f"spectrum; 3 starts on a thread pool, one Ceres thread each), every guess 50 % off, best of {repeat}. CPU "
-        "time is the process's (all threads); the threads overlap the starts, they do not make them cheaper:",
+        f"spectrum; 3 starts one after the other, one Ceres thread each), every guess 50 % off, best of {repeat}. CPU "
+        "time is the process's (all threads; start_threads=2 would overlap the starts, not make them cheaper):",
         "",
         "| plant | wall [s] | CPU [s] | iterations (chosen start / all starts) | worst parameter error | goal wall | "
         "goal CPU |",

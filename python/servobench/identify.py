@@ -509,7 +509,7 @@ def _estimates(ps) -> dict:
 def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None = None, fixed: Iterable[str] = (),
              bounds: dict | None = None, segment_samples: int | str = "auto", initial_segment_samples: int = 250,
              n_starts: int = 3, seed: int = 0, dynamics_hz: float | None = None, max_relative_std_error: float = 0.2,
-             strict: bool = True, progress=None, start_threads: int | None = None, **options) -> IdentifiedPlant:
+             strict: bool = True, progress=None, start_threads: int = 1, **options) -> IdentifiedPlant:
     """Fits a rigid or two-mass plant to a time log (Ceres; the GIL is released).
 
     guess
@@ -558,10 +558,12 @@ def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None
         0.94x with 2 threads, issue 22: the segments are too short to pay for the hand-over), and Ceres then sums
         the Schur complement in a varying order, so estimates differ from run to run at ~1e-8 relative.
     start_threads
-        how many starts run at once (None: one per core, at most n_starts). Threads help wall time only: the starts
+        how many starts run at once (default 1: one after the other). Threads help wall time only: the starts
         are independent one-thread solves that release the GIL, so they overlap (measured 1.47x less wall time for
         3 starts on 2 shared cores) but the CPU time is the sum of the starts (0.4-0.7 s each on the 5 s bench
-        experiment). Results do not depend on it. With `progress` the starts run one after the other.
+        experiment). Results do not depend on it. With `progress` the starts run one after the other. Ctrl-C
+        stops a parallel run at every start's next iteration, which on a loaded machine took 0.6 s (one iteration
+        of a 100,000-sample fit), hence the sequential default.
     progress
         None, or a callable(iteration, cost) -> bool (False stops the solve).
     """
@@ -572,8 +574,7 @@ def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None
     if not isinstance(log, IdentificationLog):
         raise TypeError("log must be an IdentificationLog (see IdentificationLog.from_arrays / run_experiment)")
     n_starts = _whole("fit_time", "n_starts", n_starts, 1, 20)
-    if start_threads is not None:
-        start_threads = _whole("fit_time", "start_threads", start_threads, 1, 64)
+    start_threads = _whole("fit_time", "start_threads", start_threads, 1, 64)
     notes = []
     idim = None
     idim_ok = model == "rigid" and not log.measured_is_speed and (log.reference is not None or dynamics_hz)

@@ -12,8 +12,8 @@ standard errors are made to hold for correlated residuals. Used by :func:`servob
   log-uniformly in [1/1.5, 1.5] (seeded). Two converged starts *disagree* when a parameter differs by more than
   2 sqrt(se1^2 + se2^2); the result says so.
 * **Threads**: the starts are independent fits (Ceres with one thread each, the GIL released), so
-  :func:`run_starts` runs them on a thread pool: the same results in less wall time on several cores; the CPU time
-  is the same (threads do not make a fit cheaper, they overlap the starts).
+  :func:`run_starts` can run them on a thread pool (``fit_time(start_threads=2)``): the same results in less wall
+  time on several cores; the CPU time is the same (threads do not make a fit cheaper, they overlap the starts).
 * **Standard errors** (:func:`segment_sandwich`): Ceres' covariance s^2 (J'J)^-1 assumes white residuals; the
   output-error residual is coloured (an unmeasured disturbance integrates into a random walk in speed within each
   segment), and the white-noise bars were 7-25x too tight on the EMPS record. fit_time reports the sandwich
