@@ -336,7 +336,8 @@ class IdentifiedPlant:
     model: 'rigid' or 'two_mass'; parameters: name -> :class:`Estimate`; nrmse: residual RMS over the measurement's
     standard deviation (time) or relative complex error (frequency); residual_rms in the measurement's unit (rad, or
     rad/s; nepers/radians for a frequency fit); summary: Ceres-style report; not_identifiable: what the data could not
-    determine; time-domain fits keep predicted/residual per sample (NaN outside the segments used).
+    determine; time-domain fits keep predicted/residual per sample (NaN outside the segments used); warnings: what the
+    data say against the model (:attr:`misfit`).
     """
 
     model: str
@@ -361,6 +362,15 @@ class IdentifiedPlant:
     segment_samples: int | None = None
     linear: bool = False
     start_guess: dict = field(default_factory=dict, repr=False)
+    warnings: list = field(default_factory=list)
+    asymmetry_p_value: float = math.nan
+    lead_m_per_rev: float | None = None
+
+    @property
+    def misfit(self) -> bool:
+        """True when the data reject the fitted friction model (a rigid time fit: the segment score test of
+        Fv+ = Fv- at the 1 % level; see ``warnings``)."""
+        return bool(self.asymmetry_p_value < 0.01)
 
     def __getitem__(self, name: str) -> float:
         return self.parameters[_LINEAR_ALIASES.get(name, (name,))[0]].value
@@ -379,6 +389,13 @@ class IdentifiedPlant:
             for e in self.parameters.values():
                 alias = _LINEAR_NAMES.get(e.name)
                 shown.append(str(dataclasses.replace(e, name=alias[0], unit=alias[1])) if alias else str(e))
+            from .idlog import motor_side_line
+
+            side = motor_side_line([(_LINEAR_NAMES[e.name][0], e.value, _LINEAR_NAMES[e.name][1])
+                                    for e in self.parameters.values() if e.name in _LINEAR_NAMES],
+                                   self.lead_m_per_rev)
+            if side:
+                shown.append(side)
         else:
             shown = [str(e) for e in self.parameters.values()]
         return "\n".join([self.summary, ""] + shown)
@@ -492,7 +509,7 @@ def _estimates(ps) -> dict:
 def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None = None, fixed: Iterable[str] = (),
              bounds: dict | None = None, segment_samples: int | str = "auto", initial_segment_samples: int = 250,
              n_starts: int = 3, seed: int = 0, dynamics_hz: float | None = None, max_relative_std_error: float = 0.2,
-             strict: bool = True, progress=None, **options) -> IdentifiedPlant:
+             strict: bool = True, progress=None, start_threads: int = 1, **options) -> IdentifiedPlant:
     """Fits a rigid or two-mass plant to a time log (Ceres; the GIL is released).
 
     guess
@@ -528,16 +545,25 @@ def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None
         with the Stribeck peak free, solve a first stage with its level and speed held at their guesses (far from
         the truth, the peak otherwise tends to vanish, ws -> 0, and stay vanished).
     max_relative_std_error
-        standard errors are Ceres' times sqrt(long-run variance / variance) of the residual (correlated residuals,
-        :func:`servobench.oefit.long_run_variance_ratio`); a parameter whose standard error exceeds this fraction
-        of its own value is not identifiable.
+        standard errors are the segment-clustered sandwich for correlated residuals
+        (:func:`servobench.oefit.segment_sandwich`; with a robust loss Ceres' times sqrt(long-run / plain variance)
+        of the residual); a parameter whose standard error exceeds this fraction of its own value is not
+        identifiable.
     strict
         raise :class:`IdentificationError` (a ValueError) naming the parameters the data cannot determine; with
         False they are reported in ``not_identifiable`` and their standard error is inf.
     num_threads
-        Ceres threads. 1 (default) is deterministic: the same log gives bit-identical estimates. More threads evaluate
-        the segments in parallel (about 1.7x faster on 2 cores) but Ceres then sums the Schur complement in a
-        varying order, so estimates differ from run to run at ~1e-8 relative and iteration counts by a few.
+        Ceres threads inside one start. 1 (default) is deterministic: the same log gives bit-identical estimates.
+        More threads evaluate the segments in parallel, but on the 5 s bench experiment they do not help (measured
+        0.94x with 2 threads, issue 22: the segments are too short to pay for the hand-over), and Ceres then sums
+        the Schur complement in a varying order, so estimates differ from run to run at ~1e-8 relative.
+    start_threads
+        how many starts run at once (default 1: one after the other). Threads help wall time only: the starts
+        are independent one-thread solves that release the GIL, so they overlap (measured 1.47x less wall time for
+        3 starts on 2 shared cores) but the CPU time is the sum of the starts (0.4-0.7 s each on the 5 s bench
+        experiment). Results do not depend on it. With `progress` the starts run one after the other. Ctrl-C
+        stops a parallel run at every start's next iteration, which on a loaded machine took 0.6 s (one iteration
+        of a 100,000-sample fit), hence the sequential default.
     progress
         None, or a callable(iteration, cost) -> bool (False stops the solve).
     """
@@ -548,6 +574,7 @@ def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None
     if not isinstance(log, IdentificationLog):
         raise TypeError("log must be an IdentificationLog (see IdentificationLog.from_arrays / run_experiment)")
     n_starts = _whole("fit_time", "n_starts", n_starts, 1, 20)
+    start_threads = _whole("fit_time", "start_threads", start_threads, 1, 64)
     notes = []
     idim = None
     idim_ok = model == "rigid" and not log.measured_is_speed and (log.reference is not None or dynamics_hz)
@@ -577,23 +604,26 @@ def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None
     initial_segment_samples = min(_whole("fit_time", "initial_segment_samples", initial_segment_samples, 20, 10**8),
                                   segment_samples)
     free = set(guess) - set(fixed)
-    fits = []
-    for i, g in enumerate(oefit.perturbed_starts(guess, free, n_starts, seed)):
-        try:
-            fits.append(_fit_once(log, model, guess=g, fixed=fixed, bounds=bounds, segment_samples=segment_samples,
-                                  initial_segment_samples=initial_segment_samples,
-                                  max_relative_std_error=max_relative_std_error, strict=False, progress=progress,
-                                  **options))
-        except ValueError:
-            if i == 0:
-                raise
+
+    def fit_one(g, prog):
+        return _fit_once(log, model, guess=g, fixed=fixed, bounds=bounds, segment_samples=segment_samples,
+                         initial_segment_samples=initial_segment_samples,
+                         max_relative_std_error=max_relative_std_error, strict=False, progress=prog, **options)
+
+    fits = oefit.run_starts(fit_one, oefit.perturbed_starts(guess, free, n_starts, seed), threads=start_threads,
+                            progress=progress)
     converged = [f for f in fits if f.converged]
     best = min(converged or fits, key=lambda f: f.residual_rms)
-    ratio = oefit.long_run_variance_ratio(best.residual) if best.residual is not None else 1.0
-    k = math.sqrt(ratio)
-    params = {n: Estimate(e.name, e.value, e.std_error * k, e.unit, e.initial, e.fixed, e.at_bound)
+    factor, se_note, sw = _correlated_errors(best, log, model, segment_samples, options)
+    warnings = []
+    if sw is not None and sw.asymmetry_p_value < 0.01:
+        u = "N*s/m" if log.linear else "N*m*s/rad"
+        warnings.append(f"friction is asymmetric (robust score test of Fv+ = Fv- over the segments: p = "
+                        f"{sw.asymmetry_p_value:.2g}, Fv+ - Fv- about {sw.asymmetry_viscous:.4g} {u}): the symmetric "
+                        "friction model is mis-specified; use idim_ls(log, friction='asymmetric') or identify_rigid")
+    params = {n: Estimate(e.name, e.value, _scaled(e, factor), e.unit, e.initial, e.fixed, e.at_bound)
               for n, e in best.parameters.items()}
-    inflated = [dataclasses.replace(f, parameters={n: dataclasses.replace(e, std_error=e.std_error * k)
+    inflated = [dataclasses.replace(f, parameters={n: dataclasses.replace(e, std_error=_scaled(e, factor))
                                                    for n, e in f.parameters.items()}) for f in fits]
     disagree = oefit.disagreements(inflated)
     not_id = [x for x in best.not_identifiable if "too weakly excited" not in x]
@@ -606,14 +636,63 @@ def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None
         raise IdentificationError("the log cannot determine: " + "; ".join(not_id) +
                                   " -- excite the axis more (longer log, more speed range or reversals), or fix "
                                   "these parameters (fixed=...)")
-    notes.append(f"Standard errors x {k:.3g} for correlated residuals (long-run / plain variance {ratio:.3g}).")
+    notes.append(se_note)
+    notes += ["WARNING: " + w for w in warnings]
     notes.append(f"Starts: {len(fits)}, converged {len(converged)}" +
                  (("; DISAGREE beyond their error bars: " + "; ".join(disagree[:3])) if disagree else
                   ", agreeing within their error bars") + ".")
     return dataclasses.replace(best, parameters=params, not_identifiable=not_id,
                                summary=best.summary + "\n" + "\n".join(notes), starts=inflated,
                                disagreement=disagree, segment_samples=segment_samples, linear=log.linear,
-                               start_guess=dict(guess))
+                               start_guess=dict(guess), warnings=warnings,
+                               lead_m_per_rev=log.lead_m_per_rev if log.linear else None,
+                               asymmetry_p_value=sw.asymmetry_p_value if sw is not None else math.nan)
+
+
+def _scaled(e: Estimate, factor: dict) -> float:
+    return e.std_error * factor.get(e.name, 1.0) if math.isfinite(e.std_error) else e.std_error
+
+
+def _correlated_errors(best: IdentifiedPlant, log: IdentificationLog, model: str, segment_samples: int,
+                       options: dict) -> tuple[dict, str, object]:
+    """(name -> factor from Ceres' white-noise standard error to the one reported, note): the segment-clustered
+    sandwich (:func:`servobench.oefit.segment_sandwich`) for least squares; the long-run / plain variance ratio of
+    the residual for a robust loss (whose weights the sandwich does not model) or when the sandwich fails; and the
+    :class:`~servobench.oefit.SegmentSandwich` (None in those cases)."""
+    from . import oefit
+
+    free = {n for n, e in best.parameters.items() if not e.fixed and math.isfinite(e.std_error)}
+    if options.get("loss", "none") == "none" and free:
+        try:
+            sw = oefit.segment_sandwich(log, model, best.values(), free, segment_samples, options)
+        except (ValueError, IndexError, np.linalg.LinAlgError) as err:
+            sw, why = None, str(err)
+        else:
+            cov = sw.covariance
+            names = sw.names
+            se = {n: math.sqrt(max(cov[i, i], 0.0)) for i, n in enumerate(names)}
+            stat = "static_nm" if model == "rigid" else "motor_static_nm"
+            coul = "coulomb_nm" if model == "rigid" else "motor_coulomb_nm"
+            if stat in se and coul in se:  # back to the breakaway level: var(Fs) = var(Fc) + var(e) + 2 cov(Fc, e)
+                a, b = names.index(coul), names.index(stat)
+                se[stat] = math.sqrt(max(cov[a, a] + cov[b, b] + 2 * cov[a, b], 0.0))
+            # never below the white-noise value: with few segments the sandwich is itself uncertain (J19)
+            factor = {n: max(se[n] / best.parameters[n].std_error, 1.0) for n in se
+                      if best.parameters[n].std_error > 0}
+            if all(math.isfinite(f) and f > 0 for f in factor.values()):
+                lo, hi = min(factor.values()), max(factor.values())
+                return factor, (f"Standard errors: sandwich clustered by segment ({sw.segments} segments, Newey-West "
+                                f"over {sw.lags} neighbouring segments, never below the white-noise values), "
+                                f"{lo:.3g}..{hi:.3g} x the white-noise values."), sw
+            why = "non-finite sandwich"
+        note_why = f" (the segment sandwich failed: {why})"
+    else:
+        note_why = " (robust loss)" if free else ""
+    ratio = oefit.long_run_variance_ratio(best.residual) if best.residual is not None else 1.0
+    k = math.sqrt(ratio)
+    return ({n: k for n in best.parameters},
+            f"Standard errors x {k:.3g} for correlated residuals (long-run / plain variance {ratio:.3g}){note_why}.",
+            None)
 
 
 def _fit_once(log: IdentificationLog, model: str = "rigid", *, guess: dict, fixed: Iterable[str] = (),

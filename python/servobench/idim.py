@@ -96,7 +96,16 @@ def hac_covariance(X: np.ndarray, e: np.ndarray, *, lags: int | None = None, Z: 
     + u_t, S = (I - B)^-1 S_u (I - B)^-T -- and the small-sample factor n / (n - p). lags (for u) defaults to
     Andrews' (1991) AR(1) plug-in bandwidth."""
     Z = X if Z is None else Z
-    g = Z * e[:, None]
+    S, lags = long_run_covariance(Z * e[:, None], lags=lags)
+    A = np.linalg.inv(Z.T @ X)
+    return A @ S @ A.T, lags
+
+
+def long_run_covariance(g: np.ndarray, *, lags: int | None = None):
+    """(S, lags): the long-run covariance sum_j E[g_t g_{t-j}'] of a score series g (n x p), estimated by Newey-West
+    (Bartlett kernel) with Andrews & Monahan's (1992) VAR(1) prewhitening -- g_t = B g_{t-1} + u_t,
+    S = (I - B)^-1 S_u (I - B)^-T, eigenvalues of B capped at 0.97 -- and the small-sample factor n / (n - p).
+    lags (for u) defaults to Andrews' (1991) AR(1) plug-in bandwidth."""
     n, p = g.shape
     B = np.linalg.lstsq(g[:-1], g[1:], rcond=None)[0].T
     ev = np.abs(np.linalg.eigvals(B))
@@ -112,8 +121,7 @@ def hac_covariance(X: np.ndarray, e: np.ndarray, *, lags: int | None = None, Z: 
     Su = _bartlett(u, lags)
     D = np.linalg.inv(np.eye(p) - B)
     S = D @ Su @ D.T * (n / (n - 1)) * (n / (n - p))
-    A = np.linalg.inv(Z.T @ X)
-    return A @ S @ A.T, lags
+    return S, lags
 
 
 def dynamics_frequency(log) -> float:
@@ -203,6 +211,7 @@ class IdimResult:
     time_s: np.ndarray | None = field(default=None, repr=False)
     measured: np.ndarray | None = field(default=None, repr=False)
     predicted: np.ndarray | None = field(default=None, repr=False)
+    lead_m_per_rev: float | None = None
 
     def __getitem__(self, name: str) -> float:
         return self.parameters[name].value
@@ -235,6 +244,12 @@ class IdimResult:
                          f"{self.std_error_iid[k]:12.4g}  {e.unit}")
         lines.append(f"  relative error {self.relative_error_pct:.4g} %, residual std {self.residual_std:.4g} {unit}, "
                      f"condition number {self.condition_number:.4g}, HAC lags {self.hac_lags}")
+        if self.linear:
+            from .idlog import motor_side_line
+
+            side = motor_side_line([(k, e.value, e.unit) for k, e in self.parameters.items()], self.lead_m_per_rev)
+            if side:
+                lines.append("  " + side)
         if self.not_identified:
             lines.append("  NOT IDENTIFIED: " + ", ".join(self.not_identified))
         for w in self.warnings:
@@ -355,7 +370,7 @@ def _result(method, friction, offset, log, X, y, theta, td, nd, fc, fdyn, Z, max
     return IdimResult(method, friction, params, {n: float(s) for (n, _), s in zip(names, np.sqrt(np.diag(cov_iid)))},
                       cov, float(100 * np.linalg.norm(e) / np.linalg.norm(y)), float(np.linalg.cond(X)),
                       float(np.std(e, ddof=1)), len(y), nd, fc, fdyn, lags, not_id, warnings, diag, log.linear,
-                      td, y, X @ theta)
+                      td, y, X @ theta, log.lead_m_per_rev if log.linear else None)
 
 
 def _asymmetry_check(X_asym, y, theta_asym, Z=None):

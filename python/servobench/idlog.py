@@ -30,10 +30,36 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["UNITS", "parse_header", "unit_factor", "check_time", "MAX_JITTER_PPM", "IdentificationLog"]
+__all__ = ["UNITS", "parse_header", "unit_factor", "check_time", "MAX_JITTER_PPM", "IdentificationLog", "motor_side"]
 
 #: Steps of a real time vector may differ from the median step by this much (parts per million) and be accepted.
 MAX_JITTER_PPM = 100.0
+
+# a linear quantity's unit -> (its motor-side unit, power of lead / 2 pi that converts it)
+_MOTOR_SIDE = {"kg": ("kg*m^2", 2), "N*s/m": ("N*m*s/rad", 2), "N": ("N*m", 1), "m": ("rad", -1),
+               "m/s": ("rad/s", -1)}
+
+
+def motor_side(value: float, unit: str, lead_m_per_rev: float) -> tuple[float, str]:
+    """(value, unit) of a linear-axis quantity seen from the motor through a screw lead / gear ratio of
+    lead_m_per_rev (m of travel per motor revolution, k = lead / 2 pi): mass kg -> kg*m^2 (x k^2), viscous N*s/m ->
+    N*m*s/rad (x k^2), force N -> N*m (x k), position m -> rad and speed m/s -> rad/s (/ k). Other units unchanged."""
+    if unit not in _MOTOR_SIDE:
+        return value, unit
+    to, power = _MOTOR_SIDE[unit]
+    return value * (lead_m_per_rev / (2 * math.pi)) ** power, to
+
+
+def motor_side_line(items, lead_m_per_rev: float | None) -> str | None:
+    """'motor side (lead L mm/rev): name = value unit, ...' for (name, value, linear unit) items, or None without a
+    lead."""
+    if lead_m_per_rev is None:
+        return None
+    parts = []
+    for name, value, unit in items:
+        v, u = motor_side(value, unit, lead_m_per_rev)
+        parts.append(f"{name} = {v:.6g} {u}")
+    return f"motor side (lead {1e3 * lead_m_per_rev:.6g} mm/rev): " + ", ".join(parts)
 
 # unit -> (quantity, axis kind or None for both, SI factor; 'count' = times the count size)
 UNITS = {

@@ -11,18 +11,32 @@ standard errors are made to hold for correlated residuals. Used by :func:`servob
 * **Starts**: the plan's start and ``n_starts - 1`` others, each free parameter scaled by a factor drawn
   log-uniformly in [1/1.5, 1.5] (seeded). Two converged starts *disagree* when a parameter differs by more than
   2 sqrt(se1^2 + se2^2); the result says so.
-* **Standard errors**: Ceres' covariance assumes white residuals; each is multiplied by sqrt(long-run variance /
-  variance) of the fit's residual (Bartlett kernel, Andrews' bandwidth, pooled over the segments) -- the sandwich's
-  correction for a slowly varying Jacobian.
+* **Threads**: the starts are independent fits (Ceres with one thread each, the GIL released), so
+  :func:`run_starts` can run them on a thread pool (``fit_time(start_threads=2)``): the same results in less wall
+  time on several cores; the CPU time is the same (threads do not make a fit cheaper, they overlap the starts).
+* **Standard errors** (:func:`segment_sandwich`): Ceres' covariance s^2 (J'J)^-1 assumes white residuals; the
+  output-error residual is coloured (an unmeasured disturbance integrates into a random walk in speed within each
+  segment), and the white-noise bars were 7-25x too tight on the EMPS record. fit_time reports the sandwich
+  H^-1 S H^-1 instead: H = J~'J~ with each segment's own start state projected out of the parameter columns (the
+  Schur complement Ceres eliminates), S the long-run covariance of the per-segment scores g_s = J~_s' r~_s --
+  Newey-West over the sequence of segments with the IDIM's VAR(1) prewhitening and Andrews' plug-in bandwidth
+  (:func:`servobench.idim.long_run_covariance`), small-sample factor m/(m - p) for m segments. Segments are the clusters: within one the residual is strongly correlated, between
+  neighbours weakly (the segment is about one correlation time long), so a sum of per-segment scores with a few lags
+  holds where a per-sample correction does not (docs/decisions.md, J19).
 """
 
 from __future__ import annotations
 
 import math
+import os
+import threading
+from concurrent import futures
+from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["segment_length", "start_from_idim", "perturbed_starts", "long_run_variance_ratio", "disagreements"]
+__all__ = ["segment_length", "start_from_idim", "perturbed_starts", "long_run_variance_ratio", "disagreements",
+           "segment_sandwich", "SegmentSandwich", "run_starts"]
 
 MIN_SEGMENT, MAX_SEGMENT = 50, 1000
 
@@ -72,6 +86,48 @@ def perturbed_starts(guess: dict, free: set, n_starts: int, seed: int = 0, sprea
     return out
 
 
+def run_starts(fit_one, guesses: list, *, threads: int | None = None, progress=None) -> list:
+    """[fit_one(guess, progress) for each guess], the first start's ValueError raised, later starts' dropped.
+
+    threads: how many starts run at once (None: min(len(guesses), CPU count)); each fit releases the GIL, so
+    threads overlap them (wall time), not cheapen them (CPU time). Results do not depend on it. With a `progress`
+    callback the starts run one after the other (the callback sees one solve at a time). Ctrl-C in the calling
+    thread stops every running start at its next iteration and is re-raised."""
+    n = len(guesses)
+    threads = min(n, os.cpu_count() or 1) if threads is None else int(threads)
+    out = []
+    if threads <= 1 or n == 1 or progress is not None:
+        for i, g in enumerate(guesses):
+            try:
+                out.append(fit_one(g, progress))
+            except ValueError:
+                if i == 0:
+                    raise
+        return out
+    stop = threading.Event()
+
+    def keep_going(_iteration, _cost):
+        if stop.is_set():  # raised through the solver like the C++ side's own Ctrl-C: no later stage, no covariance
+            raise KeyboardInterrupt
+        return True
+
+    with futures.ThreadPoolExecutor(max_workers=threads) as pool:
+        jobs = [pool.submit(fit_one, g, keep_going) for g in guesses]
+        try:
+            while futures.wait(jobs, timeout=0.05).not_done:
+                pass
+        except BaseException:  # Ctrl-C: every start ends at its next iteration, then the pool joins them
+            stop.set()
+            raise
+    for i, job in enumerate(jobs):
+        try:
+            out.append(job.result())
+        except ValueError:
+            if i == 0:
+                raise
+    return out
+
+
 def long_run_variance_ratio(residual: np.ndarray) -> float:
     """Long-run variance / variance of a residual with NaN between segments (each finite run is one segment):
     1 + 2 sum_j w_j rho_j, Bartlett weights, Andrews' AR(1) bandwidth; >= 1."""
@@ -112,3 +168,122 @@ def disagreements(fits: list) -> list[str]:
                     out.append(f"starts {i} and {j} disagree on {k}: {ea.value:.6g} vs {eb.value:.6g} "
                                f"(> 2 x {s:.3g})")
     return out
+
+
+@dataclass(frozen=True)
+class SegmentSandwich:
+    """The segment-clustered sandwich covariance of an output-error fit (:func:`segment_sandwich`).
+
+    names: the free parameters (SI, the fit's internal order; the Stribeck entry is the excess Fs - Fc);
+    covariance: p x p; covariance_iid: s^2 H^-1 (white residuals) for comparison; lags: Newey-West lags over
+    segments; segments: their number; residual_rms: of the re-solved segment states, in encoder counts."""
+
+    names: list
+    covariance: np.ndarray
+    covariance_iid: np.ndarray
+    lags: int
+    segments: int
+    residual_rms: float
+    asymmetry_p_value: float = 1.0
+    asymmetry_viscous: float = 0.0
+
+    def std_error(self, name: str) -> float:
+        i = self.names.index(name)
+        return float(math.sqrt(max(self.covariance[i, i], 0.0)))
+
+
+def shooting_options(log, segment_samples: int, options: dict) -> dict:
+    """The keyword arguments of ``_core.identify_shooting_problem`` / ``identify_shooting_residual`` that describe
+    the final stage of a :func:`servobench.fit_time` call with these options."""
+    scale = log.count_rad if not log.measured_is_speed else log.count_rad / log.sample_period_s
+    return dict(sample_period_s=log.sample_period_s, measured_is_speed=log.measured_is_speed,
+                measured_on_load=log.measured_on_load, segment_samples=int(segment_samples),
+                min_segment_samples=min(20, int(segment_samples)), edge_samples=options.get("edge_samples", 3),
+                direction_window=options.get("direction_window", 6),
+                rest_threshold=options.get("rest_threshold_counts", 2.0), substeps=log.substeps,
+                current_bw_hz=log.current_bw_hz, stribeck_exponent=options.get("stribeck_exponent", 2.0),
+                measurement_scale=scale)
+
+
+def segment_sandwich(log, model: str, values: dict, free, segment_samples: int, options: dict | None = None,
+                     *, max_state_iterations: int = 8) -> SegmentSandwich:
+    """The sandwich covariance of the fit's free parameters at `values` (SI, external names), clustered by
+    shooting segment (see the module's text). The segment start states are re-solved with the parameters held
+    (Gauss-Newton per segment, at most `max_state_iterations`, stopping when the residual stops falling by 0.1 %).
+    Costs a few residual-and-Jacobian evaluations (about 0.05 s for 25,000 samples)."""
+    from . import _core
+
+    kw = shooting_options(log, segment_samples, options or {})
+    names = [p["name"] for p in _core.identify_parameters(model)]
+    sp = _core.identify_shooting_problem(log.torque_nm, log.measured, model=model, **kw)
+    starts, counts = sp["starts"].astype(int), sp["counts"].astype(int)
+    ns = int(sp["state_size"])
+    x = np.array(sp["states"], float)
+    p = np.array([values[n] for n in names], float)
+    si = names.index("static_nm" if model == "rigid" else "motor_static_nm")
+    ci = names.index("coulomb_nm" if model == "rigid" else "motor_coulomb_nm")
+    p[si] = p[si] - p[ci] if p[si] > p[ci] else 0.0  # the internal Stribeck excess
+    nseg, npar = len(starts), len(p)
+    seg = np.repeat(np.arange(nseg), counts)
+    fi = [i for i, n in enumerate(names) if n in free]
+
+    def evaluate():
+        r, (d, idx, ptr), shape = _core.identify_shooting_residual(
+            log.torque_nm, log.measured, model=model, starts=starts, counts=counts, parameters=p, states=x,
+            jacobian=True, **kw)
+        rows = np.repeat(np.arange(shape[0]), np.diff(ptr.astype(np.int64)))
+        idx = idx.astype(np.int64)
+        jp, jx = np.zeros((shape[0], npar)), np.zeros((shape[0], ns))
+        on_p = idx < npar
+        jp[rows[on_p], idx[on_p]] = d[on_p]
+        jx[rows[~on_p], idx[~on_p] - npar - ns * seg[rows[~on_p]]] = d[~on_p]
+        return np.asarray(r, float), jp[:, fi], jx
+
+    def by_segment(m):
+        out = np.zeros((nseg,) + m.shape[1:])
+        np.add.at(out, seg, m)
+        return out
+
+    prev = math.inf
+    for it in range(max_state_iterations + 1):
+        r, jp, jx = evaluate()
+        a = by_segment(jx[:, :, None] * jx[:, None, :])
+        ai = np.linalg.pinv(a)
+        ss = float(r @ r)
+        if it == max_state_iterations or ss > 0.999 * prev:
+            break
+        prev = ss
+        x_old = x.copy()
+        x -= (ai @ by_segment(jx * r[:, None])[:, :, None])[:, :, 0].ravel()
+    if ss > prev:  # the last step did not help: back to the previous states
+        x = x_old
+        r, jp, jx = evaluate()
+        ai = np.linalg.pinv(by_segment(jx[:, :, None] * jx[:, None, :]))
+    # each segment's state directions projected out of its parameter columns and residual (Schur complement)
+    coef = ai @ by_segment(jx[:, :, None] * jp[:, None, :])
+    jt = jp - np.einsum("ns,nsk->nk", jx, coef[seg])
+    rt = r - np.einsum("ns,ns->n", jx, (ai @ by_segment(jx * r[:, None])[:, :, None])[:, :, 0][seg])
+    g = by_segment(jt * rt[:, None])
+    k = len(fi)
+    from .idim import long_run_covariance
+
+    s, lags = long_run_covariance(g)
+    hi = np.linalg.pinv(jt.T @ jt)
+    dof = max(len(r) - k - ns * nseg, 1)
+    p_asym, d_asym = 1.0, 0.0
+    if model == "rigid" and "viscous_nms" in free and nseg > 4:
+        y = np.asarray(log.measured, float)
+        direction = np.sign(y[starts + counts - 1] - y[starts])
+        if np.any(direction > 0) and np.any(direction < 0):
+            from scipy import stats
+
+            a = jt[:, [names[i] for i in fi].index("viscous_nms")] * direction[seg]
+            a = a - jt @ (hi @ (jt.T @ a))
+            h = by_segment(a * rt)
+            lrv, _ = long_run_covariance(h[:, None])
+            if lrv[0, 0] > 0:
+                stat = float(h.sum()) ** 2 / lrv[0, 0]  # long_run_covariance is the variance of the sum
+                p_asym = float(stats.chi2.sf(stat, 1))
+                d_asym = -2.0 * float(h.sum() / (a @ a))  # r = model - measured: one Gauss-Newton step
+    return SegmentSandwich([names[i] for i in fi], hi @ s @ hi, float(rt @ rt) / dof * hi, lags, nseg,
+                           float(math.sqrt(ss / max(len(r), 1))), p_asym, d_asym)

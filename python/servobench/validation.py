@@ -243,7 +243,8 @@ def _simulate_scalar(m, ts, src, closed, ctrl, q, v, substeps):
 class ValidationResult:
     """Measured vs simulated position of one record: rms (m or rad), nrmse (rms over the measured position's
     standard deviation), r2 (1 - SSE/SST) of the open-loop simulation; closed_loop: the same three for the
-    closed-loop simulation (None without a known controller); series: the arrays drawn."""
+    closed-loop simulation (None without a known controller); series: the arrays drawn; lead_m_per_rev: the log's
+    screw lead (a linear axis prints its RMS at the motor too)."""
 
     rms: float
     nrmse: float
@@ -251,13 +252,23 @@ class ValidationResult:
     closed_loop: dict | None
     linear: bool
     series: dict = field(repr=False)
+    lead_m_per_rev: float | None = None
+
+    def _rms(self, rms: float) -> str:
+        u = "m" if self.linear else "rad"
+        out = f"RMS {rms:.4g} {u}"
+        if self.linear and self.lead_m_per_rev is not None:
+            from .idlog import motor_side
+
+            v, mu = motor_side(rms, "m", self.lead_m_per_rev)
+            out += f" ({v:.4g} {mu} at the motor, lead {1e3 * self.lead_m_per_rev:.6g} mm/rev)"
+        return out
 
     def __str__(self) -> str:
-        u = "m" if self.linear else "rad"
-        s = f"open loop: RMS {self.rms:.4g} {u}, NRMSE {self.nrmse:.4g}, R^2 {self.r2:.6f}"
+        s = f"open loop: {self._rms(self.rms)}, NRMSE {self.nrmse:.4g}, R^2 {self.r2:.6f}"
         if self.closed_loop:
             c = self.closed_loop
-            s += f"\nclosed loop: RMS {c['rms']:.4g} {u}, NRMSE {c['nrmse']:.4g}, R^2 {c['r2']:.6f}"
+            s += f"\nclosed loop: {self._rms(c['rms'])}, NRMSE {c['nrmse']:.4g}, R^2 {c['r2']:.6f}"
         return s
 
     def plot(self, *, ax=None, path: str | None = None):
@@ -321,4 +332,5 @@ def validate(model, log, *, controller="auto", substeps: int = 10) -> Validation
         series["closed_loop"] = Qc
         closed = _scores(q, Qc)
     s = _scores(q, Q)
-    return ValidationResult(s["rms"], s["nrmse"], s["r2"], closed, log.linear, series)
+    return ValidationResult(s["rms"], s["nrmse"], s["r2"], closed, log.linear, series,
+                            log.lead_m_per_rev if log.linear else None)

@@ -87,6 +87,53 @@ def test_fit_time_as_a_user_calls_it(emps):
     for name, k in (("mass_kg", "M"), ("viscous_ns_per_m", "Fv"), ("coulomb_n", "Fc")):
         assert fit[name] == pytest.approx(PUBLISHED[k], rel=0.02), name   # measured: -0.55 %, -1.35 %, +1.89 %
     assert 50 <= fit.segment_samples <= 1000
+    # honest error bars: the segment-clustered sandwich is of the size of the IDIM's HAC bars (measured 1.3-2x),
+    # no longer 7-25x smaller (Ceres' white-noise values); the published values lie within 2 of them
+    idim = sb.idim_ls(emps)
+    for name, k in (("inertia_kgm2", "M"), ("viscous_nms", "Fv"), ("coulomb_nm", "Fc"), ("load_nm", "offset")):
+        e = fit.parameters[name]
+        assert 0.7 * idim.parameters[k].std_error < e.std_error < 5 * idim.parameters[k].std_error, (name, e)
+        assert abs(e.value - PUBLISHED[k]) < 2 * e.std_error, (name, e)
+    assert "sandwich clustered by segment" in fit.summary
+    # the symmetric model is flagged: the segment score test rejects Fv+ = Fv- (IDIM: Fv+ - Fv- = -74 N*s/m)
+    assert fit.misfit and fit.asymmetry_p_value < 1e-4
+    assert any("friction is asymmetric" in w and "N*s/m" in w for w in fit.warnings)
+
+
+def test_the_60_40_split_is_governed_by_the_machine_drift(emps):
+    # issue 19 point 7 asks the model fitted on the first 60 % to simulate the last 40 % open loop no worse than the
+    # published parameters (fitted on 100 %, the last 40 % included). Measured: it does not (4.42 vs 2.92 mm), and
+    # the cause is in the machine, not the estimator: the friction balance drifts during the record.
+    est, val = emps.split(0.6)
+    shift = {}
+    for name, part in (("first 60 %", est), ("last 40 %", val)):
+        a = sb.idim_ls(part, friction="asymmetric", dynamics_hz=20.0)
+        shift[name] = (a["Fc+"] - a["Fc-"]) / 2     # the constant force the asymmetric model carries, N
+    assert shift["last 40 %"] - shift["first 60 %"] < -0.08        # N; measured -0.113
+    # the same estimator on the last 40 % itself simulates it to 0.91 mm: the simulation and the model class hold
+    own = sb.validate(sb.RigidModel.from_result(sb.idim_ls(val, friction="asymmetric", dynamics_hz=20.0)), val)
+    first = sb.validate(sb.RigidModel.from_result(sb.idim_ls(est, friction="asymmetric", dynamics_hz=20.0)), val)
+    published = sb.validate(sb.RigidModel(**dict(zip(("mass_kg", "fv_pos", "fc_pos", "fv_neg", "fc_neg"),
+                                                      PUBLISHED_ASYM.values()))), val)
+    assert own.rms < 1.5e-3 < published.rms < first.rms              # m; measured 0.91, 2.92, 4.42 mm
+    # and the open-loop RMS is a 0.1 N question: 0.1 N of constant force moves it by about 1.7 mm
+    import dataclasses
+    m = sb.RigidModel.from_result(sb.idim_ls(est, friction="asymmetric", dynamics_hz=20.0))
+    moved = sb.validate(dataclasses.replace(m, offset=-0.1), val)
+    assert abs(moved.rms - first.rms) > 1e-3
+
+
+def test_results_print_in_the_axis_units_and_at_the_motor(emps):
+    log = emps._replace(lead_m_per_rev=0.01)       # a 10 mm screw
+    r = sb.idim_ls(log, dynamics_hz=20.0)
+    text = str(r)
+    assert " kg" in text and "N*s/m" in text and "motor side (lead 10 mm/rev)" in text and "kg*m^2" in text
+    k = 0.01 / (2 * np.pi)
+    assert f"M = {r['M'] * k ** 2:.6g} kg*m^2" in text and f"Fc = {r['Fc'] * k:.6g} N*m" in text
+    v = sb.validate(r, log.split(0.6)[1])
+    assert " m (" in str(v) and "rad at the motor" in str(v)
+    iv = sb.idim_iv(log, dynamics_hz=20.0)
+    assert "motor side" in str(iv)
 
 
 def test_validation_open_and_closed_loop_and_the_60_40_split(emps):
