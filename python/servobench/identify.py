@@ -5,9 +5,11 @@ Coulomb and Stribeck friction, a constant load -- from a log of the drive's torq
 (or speed). Its model is the simulator's own plant code (the same matrices, the same exact zero-order hold, the same
 dry-friction sub-step, templated in C++ so that Ceres differentiates it); the fit is an output-error fit by multiple
 shooting over the stretches of one-way motion, with a segment-length continuation that makes it converge from
-guesses 50 % off. The frequency-domain fit (:func:`fit_frequency`) matches the axis's analytic plant response to a
-measured Y/U. Both return an :class:`IdentifiedPlant`: estimates with standard errors, fit quality, the parameters
-the data could not determine, a residual plot, and :meth:`IdentifiedPlant.to_plant` for simulation and tuning.
+guesses 50 % off. The frequency-domain fit (:func:`fit_frequency`, module :mod:`servobench.frequency_fit`) matches
+the axis's analytic plant response -- or, without an Axis, the mechanics described by a :class:`MechanicsIO` -- to a
+measured response. The experiments (:func:`run_experiment`, :func:`excitation`) are in :mod:`servobench.experiment`.
+Both fits return an :class:`IdentifiedPlant`: estimates with standard errors, fit quality, the parameters the data
+could not determine, a residual plot, and :meth:`IdentifiedPlant.to_plant` for simulation and tuning.
 
 Units: torque N*m, angles rad, speeds rad/s, inertias kg*m^2, time s; the log's measured position may be given in
 pulses with the encoder's counts per revolution.
@@ -501,13 +503,28 @@ def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None
     notes.append(f"Starts: {len(fits)}, converged {len(converged)}" +
                  (("; DISAGREE beyond their error bars: " + "; ".join(disagree[:3])) if disagree else
                   ", agreeing within their error bars") + ".")
-    if disagree and best.converged:  # the solver stopped, but where depends on the start (decision J43)
-        notes.append("NOT CONVERGED: the starts end at different points; the answer depends on where the fit starts "
-                     "(a local minimum). Give a better guess or a log that excites the resonance.")
-    return dataclasses.replace(best, parameters=params, not_identifiable=not_id, converged=best.converged and not disagree,
+    alone = best.converged and len(fits) > 1 and not any(
+        _same_point(best, f, k) for f in converged if f is not best)
+    if alone:  # the solver stopped, but no other start confirms the point (decision J43)
+        notes.append("NOT CONVERGED: no other start ends at the best start's point (within 2 standard errors or "
+                     "5 %): the answer depends on where the fit starts (a local minimum). Give a better guess or a "
+                     "log that excites the resonance.")
+    return dataclasses.replace(best, parameters=params, not_identifiable=not_id, converged=best.converged and not alone,
                                summary=best.summary + "\n" + "\n".join(notes), starts=inflated,
                                disagreement=disagree, segment_samples=segment_samples, linear=log.linear,
                                start_guess=dict(guess))
+
+
+def _same_point(a, b, inflate: float) -> bool:
+    """Two fits end at the same point: every free parameter within 2 combined standard errors (x inflate) or 5 %."""
+    for n, e in a.parameters.items():
+        if e.fixed:
+            continue
+        v = b.parameters[n].value
+        tol = max(2 * inflate * math.hypot(e.std_error, b.parameters[n].std_error), 0.05 * abs(e.value))
+        if not abs(e.value - v) <= tol:
+            return False
+    return True
 
 
 def _fit_once(log: IdentificationLog, model: str = "rigid", *, guess: dict, fixed: Iterable[str] = (),
