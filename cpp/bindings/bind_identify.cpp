@@ -263,10 +263,10 @@ void bind_identify(py::module_& m) {
 
   m.def(
       "identify_frequency",
-      [](const machine::Axis& axis, const py::handle& freq_hz, const py::handle& response, const py::handle& weight,
+      [](const py::object& axis, const py::handle& freq_hz, const py::handle& response, const py::handle& weight,
          const std::string& model, const py::handle& initial, const std::vector<Flag>& fixed, const py::handle& lower,
          const py::handle& upper, Flag fit_delay, double delay_initial_s, double max_iterations,
-         double max_relative_std_error, const py::object& progress) {
+         double max_relative_std_error, const py::object& progress, const py::object& io) {
         identify::FrequencyData data;
         data.freq_hz = real_vector(freq_hz, "freq_hz");
         data.response = complex_vector(response, "response");
@@ -283,9 +283,26 @@ void bind_identify(py::module_& m) {
         o.progress = iteration_callback(progress, &interrupt);
         const identify::ParameterSetup s = setup_of(initial, fixed, lower, upper);
         identify::FrequencyFitResult r;
+        const bool with_axis = !axis.is_none();
+        machine::AxisConfig config;
+        identify::MechanicsIO mio;
+        if (with_axis) {
+          config = axis.cast<const machine::Axis&>().config();
+        } else {
+          const py::dict d = io.cast<py::dict>();
+          mio.sample_period_s = d["sample_period_s"].cast<double>();
+          mio.delay_samples = d["delay_samples"].cast<int>();
+          mio.torque_per_input = d["torque_per_input"].cast<double>();
+          mio.output_per_rad = d["output_per_rad"].cast<double>();
+          mio.speed_output = d["speed_output"].cast<bool>();
+          mio.on_load = d["on_load"].cast<bool>();
+          mio.current_bw_hz = d["current_bw_hz"].cast<double>();
+          mio.validate();
+        }
         try {
           py::gil_scoped_release release;
-          r = identify::fit_frequency_response(axis.config(), data, s, o);
+          r = with_axis ? identify::fit_frequency_response(config, data, s, o)
+                        : identify::fit_frequency_response(mio, data, s, o);
         } catch (const SolveInterrupted&) {
         }
         raise_pending(interrupt);
@@ -298,8 +315,9 @@ void bind_identify(py::module_& m) {
       py::arg("axis"), py::arg("freq_hz"), py::arg("response"), py::kw_only(), py::arg("weight"), py::arg("model"),
       py::arg("initial"), py::arg("fixed"), py::arg("lower"), py::arg("upper"), py::arg("fit_delay"),
       py::arg("delay_initial_s"), py::arg("max_iterations"), py::arg("max_relative_std_error"),
-      py::arg("progress") = py::none(),
-      "Frequency-domain fit of the plant to a measured Y/U (U counts -> Y pulse). Releases the GIL.");
+      py::arg("progress") = py::none(), py::arg("io") = py::none(),
+      "Frequency-domain fit of the plant to a measured Y/U: U counts -> Y pulse of `axis`, or (axis None) the "
+      "mechanics described by `io` (MechanicsIO field names). Releases the GIL.");
 }
 
 }  // namespace servobench::bindings

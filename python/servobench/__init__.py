@@ -42,6 +42,8 @@ from . import frequency
 from . import autotune
 from . import identify
 from .identify import IdentificationLog, IdentifiedPlant, fit_frequency, fit_time, run_experiment
+from . import experiment, frequency_fit
+from .frequency_fit import MechanicsIO
 from . import idim, idlog, oefit, validation
 from .idim import IdimResult, idim_iv, idim_ls
 from .validation import CascadePD, RigidModel, ValidationResult, simulate_rigid, validate
@@ -154,6 +156,9 @@ __all__ = [
     "IdentificationLog",
     "IdentifiedPlant",
     "fit_frequency",
+    "MechanicsIO",
+    "experiment",
+    "frequency_fit",
     "fit_time",
     "run_experiment",
     "idim",

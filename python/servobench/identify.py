@@ -5,9 +5,11 @@ Coulomb and Stribeck friction, a constant load -- from a log of the drive's torq
 (or speed). Its model is the simulator's own plant code (the same matrices, the same exact zero-order hold, the same
 dry-friction sub-step, templated in C++ so that Ceres differentiates it); the fit is an output-error fit by multiple
 shooting over the stretches of one-way motion, with a segment-length continuation that makes it converge from
-guesses 50 % off. The frequency-domain fit (:func:`fit_frequency`) matches the axis's analytic plant response to a
-measured Y/U. Both return an :class:`IdentifiedPlant`: estimates with standard errors, fit quality, the parameters
-the data could not determine, a residual plot, and :meth:`IdentifiedPlant.to_plant` for simulation and tuning.
+guesses 50 % off. The frequency-domain fit (:func:`fit_frequency`, module :mod:`servobench.frequency_fit`) matches
+the axis's analytic plant response -- or, without an Axis, the mechanics described by a :class:`MechanicsIO` -- to a
+measured response. The experiments (:func:`run_experiment`, :func:`excitation`) are in :mod:`servobench.experiment`.
+Both fits return an :class:`IdentifiedPlant`: estimates with standard errors, fit quality, the parameters the data
+could not determine, a residual plot, and :meth:`IdentifiedPlant.to_plant` for simulation and tuning.
 
 Units: torque N*m, angles rad, speeds rad/s, inertias kg*m^2, time s; the log's measured position may be given in
 pulses with the encoder's counts per revolution.
@@ -23,6 +25,7 @@ from typing import Iterable
 import numpy as np
 
 from . import _checks, _core
+from .experiment import _whole, excitation, run_experiment, torque_per_volt  # noqa: F401 (re-exported)
 from .idlog import IdentificationLog
 
 __all__ = [
@@ -44,116 +47,6 @@ def _model(model: str) -> str:
     if model not in MODELS:
         raise ValueError(f"model = {model!r} is not one of 'rigid', 'two_mass'")
     return model
-
-
-# ----------------------------------------------------------------------------------------------------------------
-# Excitations
-# ----------------------------------------------------------------------------------------------------------------
-def excitation(kind: str, n_samples: int, *, amplitude: float = 1.0, servo_period_s: float = 200e-6,
-               seed: int = 0, hold_samples: int = 10, start_hz: float = 1.0, end_hz: float | None = None,
-               step_samples: int = 500) -> np.ndarray:
-    """An identification input of n_samples, in the unit of `amplitude` (V at the DAC, or N*m).
-
-    kind
-        ``"prbs"``: a random binary sequence +-amplitude held for `hold_samples` ticks (flat spectrum up to about
-        1/(2.3 hold_samples Ts)); ``"multisine"``: random-phase sines on every DFT line from start_hz to end_hz
-        (whole periods), crest-scaled to peak `amplitude`; ``"chirp"``: a logarithmic sweep start_hz..end_hz;
-        ``"steps"``: random levels in [-amplitude, amplitude] held for `step_samples`.
-    seed
-        the random generator's seed: the same seed gives the same signal.
-    """
-    if kind not in ("prbs", "multisine", "chirp", "steps"):
-        raise ValueError(f"kind = {kind!r} is not one of 'prbs', 'multisine', 'chirp', 'steps'")
-    n = _whole("excitation", "n_samples", n_samples, 1, 10**8)
-    amplitude = float(amplitude)
-    if not (math.isfinite(amplitude) and amplitude >= 0):
-        raise ValueError(f"excitation.amplitude = {amplitude} must be a finite number >= 0")
-    ts = float(servo_period_s)
-    if not (ts > 0 and math.isfinite(ts)):
-        raise ValueError(f"excitation.servo_period_s = {servo_period_s} must be > 0")
-    nyq = 0.5 / ts
-    end = nyq * 0.5 if end_hz is None else float(end_hz)
-    rng = np.random.default_rng(seed)
-    if kind == "prbs":
-        h = _whole("excitation", "hold_samples", hold_samples, 1, n)
-        return np.repeat(rng.choice([-1.0, 1.0], size=n // h + 1), h)[:n] * amplitude
-    if kind == "steps":
-        h = _whole("excitation", "step_samples", step_samples, 1, n)
-        return np.repeat(rng.uniform(-1.0, 1.0, size=n // h + 1), h)[:n] * amplitude
-    if not (0 < start_hz < end <= nyq):
-        raise ValueError(f"excitation: start_hz = {start_hz}, end_hz = {end} must satisfy 0 < start < end <= "
-                         f"{nyq:g} Hz (the Nyquist frequency)")
-    t = np.arange(n) * ts
-    if kind == "chirp":
-        dur = n * ts
-        k = math.log(end / start_hz) / dur
-        return amplitude * np.sin(2 * np.pi * start_hz * (np.exp(k * t) - 1) / k)
-    df = 1.0 / (n * ts)
-    lines = np.arange(max(1, math.ceil(start_hz / df)), math.floor(end / df) + 1)
-    if len(lines) == 0:
-        raise ValueError("excitation: no DFT line between start_hz and end_hz; lengthen the signal")
-    phases = rng.uniform(0, 2 * np.pi, size=len(lines))
-    x = np.zeros(n)
-    for k, ph in zip(lines, phases):
-        x += np.cos(2 * np.pi * k * df * t + ph)
-    return amplitude * x / np.max(np.abs(x))
-
-
-def _whole(owner, name, value, lo, hi) -> int:
-    v = float(value)
-    if not (math.isfinite(v) and v == int(v) and lo <= v <= hi):
-        raise ValueError(f"{owner}.{name} = {value} is outside the allowed range {lo}..{hi} (a whole number)")
-    return int(v)
-
-
-def torque_per_volt(drive) -> float:
-    """N*m per DAC volt of a torque-mode drive: kt * amps_per_volt."""
-    if not isinstance(drive, _core.TorqueDrive):
-        raise ValueError("identification needs a torque-mode drive (TorqueDrive): with a velocity-mode drive the "
-                         "torque reaching the mechanics is not the card's output")
-    return drive.kt * drive.amps_per_volt
-
-
-# ----------------------------------------------------------------------------------------------------------------
-# Logs
-# ----------------------------------------------------------------------------------------------------------------
-def run_experiment(axis, *, duration_s: float = 5.0, speed_rad_s: tuple[float, float] = (3.0, 30.0),
-                   reversal_hz: float = 2.0, injection: str = "prbs", amplitude_v: float = 0.1, seed: int = 0,
-                   **excitation_options) -> IdentificationLog:
-    """Runs an identification experiment on `axis` (its servo law closes the loop) and returns the log.
-
-    The command is a reversing motion whose speed amplitude grows geometrically from speed_rad_s[0] to
-    speed_rad_s[1] (rad/s, motor side) at reversal_hz reversals pairs per second -- so the friction is seen at
-    every speed, on the way through its low-speed (Stribeck) branch many times -- and an `injection`
-    (:func:`excitation` kind, amplitude_v volts at the DAC, seeded) is added to the controller's output for the
-    inertia and the resonances. The log holds the drive's torque command (from the DAC voltage, its A/V, its current
-    limit and kt) and the encoder reading. The axis must have a torque-mode drive.
-    """
-    tpv = torque_per_volt(axis.drive)
-    ts = axis.servo_period_s
-    _checks.real("run_experiment", "reversal_hz", reversal_hz, 1e-3, 0.1 / ts, unit="Hz (up to a tenth of the servo rate)")
-    _checks.real("run_experiment", "amplitude_v", amplitude_v, 0.0, 10.0, unit="V")
-    _checks.real("run_experiment", "duration_s", duration_s, ts, 3600.0, unit="s")
-    if not (duration_s > 0 and math.isfinite(duration_s)):
-        raise ValueError(f"run_experiment.duration_s = {duration_s} must be > 0")
-    lo, hi = (float(v) for v in speed_rad_s)
-    if not (0 < lo <= hi and math.isfinite(hi)):
-        raise ValueError(f"run_experiment.speed_rad_s = {speed_rad_s} must be (low, high) with 0 < low <= high")
-    n = int(round(duration_s / ts))
-    t = np.arange(n) * ts
-    speed = np.geomspace(lo, hi, n) * np.sin(2 * np.pi * reversal_hz * t)
-    cpr = axis.encoder.counts_per_rev
-    ref = axis.feedback_pulse + np.cumsum(speed) * ts * cpr / (2 * np.pi)
-    inj = excitation(injection, n, amplitude=amplitude_v, servo_period_s=ts, seed=seed, **excitation_options)
-    run = axis.run(ref, injection_v=inj, signals=["volts", "fb_pos"])
-    drive = axis.drive
-    i_max = min(drive.current_limit_a, drive.torque_limit_nm / drive.kt)
-    volts_applied = np.concatenate([[0.0], run.volts[:-1]])
-    torque = np.clip(volts_applied * drive.amps_per_volt, -i_max, i_max) * drive.kt
-    return IdentificationLog(ts, torque, run.fb_pos * 2 * np.pi / cpr, False, axis.encoder.on_load, cpr,
-                             drive.current_bw_hz, axis.substeps,
-                             extra={"volts": run.volts, "fb_pulse": run.fb_pos, "command_pulse": ref,
-                                    "injection_v": inj, "torque_per_volt": tpv})
 
 
 # ----------------------------------------------------------------------------------------------------------------
@@ -641,7 +534,13 @@ def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None
     notes.append(f"Starts: {len(fits)}, converged {len(converged)}" +
                  (("; DISAGREE beyond their error bars: " + "; ".join(disagree[:3])) if disagree else
                   ", agreeing within their error bars") + ".")
-    return dataclasses.replace(best, parameters=params, not_identifiable=not_id,
+    alone = best.converged and len(fits) > 1 and not any(
+        _same_point(best, f, k) for f in converged if f is not best)
+    if alone:  # the solver stopped, but no other start confirms the point (decision J43)
+        notes.append("NOT CONVERGED: no other start ends at the best start's point (within 2 standard errors or "
+                     "5 %): the answer depends on where the fit starts (a local minimum). Give a better guess or a "
+                     "log that excites the resonance.")
+    return dataclasses.replace(best, parameters=params, not_identifiable=not_id, converged=best.converged and not alone,
                                summary=best.summary + "\n" + "\n".join(notes), starts=inflated,
                                disagreement=disagree, segment_samples=segment_samples, linear=log.linear,
                                start_guess=dict(guess), warnings=warnings,
@@ -695,6 +594,18 @@ def _correlated_errors(best: IdentifiedPlant, log: IdentificationLog, model: str
             None)
 
 
+def _same_point(a, b, inflate: float) -> bool:
+    """Two fits end at the same point: every free parameter within 2 combined standard errors (x inflate) or 5 %."""
+    for n, e in a.parameters.items():
+        if e.fixed:
+            continue
+        v = b.parameters[n].value
+        tol = max(2 * inflate * math.hypot(e.std_error, b.parameters[n].std_error), 0.05 * abs(e.value))
+        if not abs(e.value - v) <= tol:
+            return False
+    return True
+
+
 def _fit_once(log: IdentificationLog, model: str = "rigid", *, guess: dict, fixed: Iterable[str] = (),
              bounds: dict | None = None, segment_samples: int = 1000, initial_segment_samples: int = 250,
              loss: str = "none", loss_scale_counts: float = 3.0, stribeck_exponent: float = 2.0,
@@ -709,7 +620,12 @@ def _fit_once(log: IdentificationLog, model: str = "rigid", *, guess: dict, fixe
     if start not in ("auto", "spectrum", "guess"):
         raise ValueError(f"fit_time.start = {start!r} must be 'auto', 'spectrum' or 'guess'")
     start_note = ""
-    if model == "two_mass" and start != "guess":
+    if model == "two_mass" and start == "auto" and log.extra.get("injection_v") is None:
+        # Without the injection the closed loop biases the spectrum (H1 = S_uv/S_uu fills the anti-resonance with
+        # the controller's inverse): the guess, not a misread resonance (decision J42).
+        start_note = ("\nStart: the guess (the log has no injection signal; its closed-loop spectrum would misplace "
+                      "the resonance).")
+    elif model == "two_mass" and start != "guess":
         free = {"jm_kgm2", "jl_kgm2", "k_nm_per_rad"} & set(guess) - set(fixed)
         try:
             rg = resonance_guess(log)
@@ -747,86 +663,4 @@ def _fit_once(log: IdentificationLog, model: str = "rigid", *, guess: dict, fixe
                            stribeck_exponent, log.time_s, log.measured, r["predicted"], r["residual"])
 
 
-_BODE_UNITS = {"hz": ("freq", 1.0), "rad/s": ("freq", 1 / (2 * math.pi)), "db": ("gain", "db"),
-               "abs": ("gain", "abs"), "deg": ("phase", math.pi / 180), "rad": ("phase", 1.0)}
-
-
-def frequency_input(response):
-    """(freq_hz, complex response, coherence or None) of a measured response given as a servobench
-    :class:`FrequencyResponse` (its plant Y/U), a python-control ``FRD`` (frequencies in rad/s), the path of a Bode
-    CSV (a header row with unit tags: frequency ``[Hz]`` or ``[rad/s]``, gain ``[dB]`` or ``[abs]``, phase ``[deg]``
-    or ``[rad]``; pandas), or a (freq_hz, complex) pair. ValueError naming what is wrong."""
-    if hasattr(response, "freq_hz"):
-        coh = getattr(response, "coherence", None)
-        return (np.asarray(response.freq_hz, float), np.asarray(response.response("plant")),
-                None if coh is None else np.asarray(coh, float))
-    if hasattr(response, "omega") and (hasattr(response, "frdata") or hasattr(response, "fresp")):
-        data = np.asarray(response.frdata if hasattr(response, "frdata") else response.fresp)
-        if data.ndim == 3:
-            if data.shape[:2] != (1, 1):
-                raise ValueError(f"fit_frequency: the FRD has {data.shape[0]} outputs x {data.shape[1]} inputs; "
-                                 "give a single-input single-output response")
-            data = data[0, 0]
-        return np.asarray(response.omega, float) / (2 * math.pi), np.asarray(data, complex).ravel(), None
-    if isinstance(response, (str, bytes)) or hasattr(response, "__fspath__"):
-        from .idlog import finite_column, read_csv
-
-        cols = read_csv(str(response) if not isinstance(response, bytes) else response.decode())
-        roles = {}
-        for name, (values, unit) in cols.items():
-            if unit is None:
-                continue
-            u = unit.strip().lower()
-            if u not in _BODE_UNITS:
-                raise ValueError(f"{response}: column {name!r}: unit {unit!r} is not a Bode unit "
-                                 f"({', '.join(['Hz', 'rad/s', 'dB', 'abs', 'deg', 'rad'])})")
-            role, conv = _BODE_UNITS[u]
-            if role in roles:
-                raise ValueError(f"{response}: two {role} columns ({roles[role][0]!r} and {name!r})")
-            roles[role] = (name, conv, finite_column(name, values))
-        missing = [r for r in ("freq", "gain", "phase") if r not in roles]
-        if missing:
-            raise ValueError(f"{response}: no {' / '.join(missing)} column with a unit tag (e.g. 'f [Hz]', "
-                             "'gain [dB]', 'phase [deg]')")
-        f = roles["freq"][2] * roles["freq"][1]
-        gain = roles["gain"][2]
-        mag = 10 ** (gain / 20) if roles["gain"][1] == "db" else gain
-        return f, mag * np.exp(1j * roles["phase"][2] * roles["phase"][1]), None
-    try:
-        f, g = (np.asarray(a) for a in response)
-    except (TypeError, ValueError):
-        raise TypeError("fit_frequency: response must be a FrequencyResponse, a control.FRD, a Bode CSV path or a "
-                        "(freq_hz, complex) pair") from None
-    return np.asarray(f, float), np.asarray(g, complex), None
-
-
-def fit_frequency(response, axis, model: str = "rigid", *, guess: dict, fixed: Iterable[str] = (),
-                  bounds: dict | None = None, fit_delay: bool = False, delay_s: float = 0.0, weight=None,
-                  max_iterations: int = 200, max_relative_std_error: float = 0.2, strict: bool = True,
-                  progress=None) -> IdentifiedPlant:
-    """Fits the mechanics of `axis` to a measured plant response Y/U (U in DAC counts, Y in pulse: the ``plant`` of a
-    :func:`servobench.frequency.sine_sweep` or :func:`broadband_response`, a python-control ``FRD`` (rad/s), a Bode
-    CSV (Hz or rad/s, dB, deg; see :func:`frequency_input`) or (freq_hz, complex) arrays).
-
-    The model is the axis's own analytic plant response with its mechanics replaced (friction is invisible to a
-    linear response: only inertias, stiffness, damping and viscous friction are fitted), optionally times an extra
-    delay exp(-j w tau) (`fit_delay`, starting at delay_s) for lags a real machine adds. The residual is the complex
-    log-ratio (nepers and radians), weighted by `weight` (default: the measurement's coherence if it has one).
-    """
-    model = _model(model)
-    f, g, coh = frequency_input(response)
-    if weight is None and coh is not None:
-        weight = coh
-    names, initial, hold, lower, upper = _setup(model, guess, fixed, bounds)
-    w = np.ones(len(f)) if weight is None else np.asarray(weight, float)
-    core_axis = getattr(axis, "_axis", axis)
-    r = _core.identify_frequency(core_axis, f.astype(float), g.astype(complex), weight=w, model=model,
-                                 initial=initial, fixed=hold, lower=lower, upper=upper, fit_delay=fit_delay,
-                                 delay_initial_s=delay_s, max_iterations=max_iterations,
-                                 max_relative_std_error=max_relative_std_error, progress=progress)
-    s = r["summary"]
-    if strict and s["not_identifiable"]:
-        raise IdentificationError("the response cannot determine: " + "; ".join(s["not_identifiable"]))
-    return IdentifiedPlant(model, _estimates(r["parameters"]), s["nrmse"], s["residual_rms"], s["converged"],
-                           s["iterations"], s["seconds"], s["report"], list(s["not_identifiable"]), 2.0,
-                           freq_hz=f, response=g, predicted_response=r["predicted"])
+from .frequency_fit import MechanicsIO, fit_frequency, frequency_input  # noqa: E402,F401 (re-exported)

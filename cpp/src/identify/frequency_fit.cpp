@@ -22,6 +22,60 @@ void FrequencyFitOptions::validate() const {
   check_positive("FrequencyFitOptions", "max_relative_std_error", max_relative_std_error);
 }
 
+void MechanicsIO::validate() const {
+  check_nonnegative("MechanicsIO", "sample_period_s", sample_period_s);
+  check_integer("MechanicsIO", "delay_samples", delay_samples, 0, 1000);
+  if (delay_samples != 0 && sample_period_s == 0.0)
+    throw std::invalid_argument("MechanicsIO.delay_samples = " + std::to_string(delay_samples) +
+                                " needs a sample_period_s > 0 (a continuous-time response has no samples)");
+  if (!(std::isfinite(torque_per_input) && torque_per_input != 0.0))
+    throw_invalid("MechanicsIO", "torque_per_input", torque_per_input, "must be a finite non-zero number (N*m per unit)");
+  if (!(std::isfinite(output_per_rad) && output_per_rad != 0.0))
+    throw_invalid("MechanicsIO", "output_per_rad", output_per_rad, "must be a finite non-zero number (units per rad)");
+  if (!(current_bw_hz > 0.0))
+    throw_invalid("MechanicsIO", "current_bw_hz", current_bw_hz, "must be > 0 Hz (inf: no current loop)");
+}
+
+std::vector<std::complex<double>> mechanics_response(const MechanicsIO& io, PlantModel model,
+                                                     const std::vector<double>& parameters, double delay_s,
+                                                     const std::vector<double>& freq_hz) {
+  using Complex = std::complex<double>;
+  ModelLayout layout;
+  layout.model = model;
+  layout.current_bw_hz = io.current_bw_hz;
+  const int n = layout.states();
+  const int nlin = linear_parameter_count(model);
+  const std::vector<double> lin(parameters.begin(), parameters.begin() + nlin);
+  // The plant objects validate the parameters (an out-of-range trial point throws, as with an Axis).
+  if (model == PlantModel::kRigid)
+    rigid_plant(parameters, 2.0).validate();
+  else
+    two_mass_plant(parameters, 2.0).validate();
+  Eigen::MatrixXd a, b;
+  if (io.sample_period_s > 0.0) {
+    const Discretisation d = discretise(layout, lin, io.sample_period_s, false);
+    a = d.phi[0];
+    b = d.gamma[0];
+  } else {
+    model_linear(layout, lin.data(), a, b);
+  }
+  const int row = io.speed_output ? (io.on_load ? layout.load_speed() : layout.motor_speed())
+                                  : (io.on_load ? layout.load_angle() : layout.motor_angle());
+  const Eigen::MatrixXcd ac = a.cast<Complex>();
+  const Eigen::VectorXcd bc = b.col(0).cast<Complex>();
+  std::vector<Complex> g(freq_hz.size());
+  for (std::size_t k = 0; k < freq_hz.size(); ++k) {
+    const Complex s(0.0, 2.0 * M_PI * freq_hz[k]);
+    const Complex z = io.sample_period_s > 0.0 ? std::exp(s * io.sample_period_s) : s;
+    const Eigen::VectorXcd x = (z * Eigen::MatrixXcd::Identity(n, n) - ac).partialPivLu().solve(bc);
+    Complex y = io.output_per_rad * io.torque_per_input * x(row);
+    if (io.delay_samples > 0) y *= std::pow(z, -io.delay_samples);
+    if (delay_s != 0.0) y *= std::exp(-s * delay_s);
+    g[k] = y;
+  }
+  return g;
+}
+
 std::vector<std::complex<double>> model_plant_response(const machine::AxisConfig& config, PlantModel model,
                                                        const std::vector<double>& parameters, double delay_s,
                                                        const std::vector<double>& freq_hz) {
@@ -38,8 +92,10 @@ std::vector<std::complex<double>> model_plant_response(const machine::AxisConfig
 
 namespace {
 
+using Evaluate = std::function<std::vector<std::complex<double>>(const std::vector<double>&, double)>;
+
 struct ResponseCost {
-  const machine::AxisConfig* config;
+  const Evaluate* evaluate;
   const FrequencyData* data;
   PlantModel model;
   int np;
@@ -52,7 +108,7 @@ struct ResponseCost {
       v[static_cast<std::size_t>(i)] = std::max(v[static_cast<std::size_t>(i)], info[static_cast<std::size_t>(i)].lower);
     std::vector<std::complex<double>> g;
     try {
-      g = model_plant_response(*config, model, v, delay[0], data->freq_hz);
+      g = (*evaluate)(v, delay[0]);
     } catch (const std::exception&) {
       return false;  // a trial point outside the plant's valid range: Ceres shrinks the step
     }
@@ -66,11 +122,8 @@ struct ResponseCost {
   }
 };
 
-
-}  // namespace
-
-FrequencyFitResult fit_frequency_response(const machine::AxisConfig& config, const FrequencyData& data,
-                                          const ParameterSetup& setup, const FrequencyFitOptions& options) {
+FrequencyFitResult fit_with(const Evaluate& evaluate, double nyquist, const FrequencyData& data,
+                            const ParameterSetup& setup, const FrequencyFitOptions& options) {
   options.validate();
   const PlantModel model = options.model;
   const auto& info = model_parameters(model);
@@ -82,9 +135,6 @@ FrequencyFitResult fit_frequency_response(const machine::AxisConfig& config, con
                                 std::to_string(data.response.size()) + "; they must have the same length");
   if (!data.weight.empty() && data.weight.size() != nf)
     throw std::invalid_argument("FrequencyData: weight must be empty or have one entry per frequency");
-  machine::AxisConfig cfg = config;
-  cfg.validate_and_complete();
-  const double nyquist = 0.5 / *cfg.servo_period_s;
   for (std::size_t k = 0; k < nf; ++k) {
     if (!(data.freq_hz[k] > 0.0 && data.freq_hz[k] < nyquist))
       throw std::invalid_argument("FrequencyData.freq_hz[" + std::to_string(k) + "] = " +
@@ -124,7 +174,7 @@ FrequencyFitResult fit_frequency_response(const machine::AxisConfig& config, con
   std::vector<double> p = setup.initial;
   double delay = options.delay_initial_s;
   ceres::Problem problem;
-  auto* f = new ResponseCost{&cfg, &data, model, np};
+  auto* f = new ResponseCost{&evaluate, &data, model, np};
   ceres::CostFunction* cost = nullptr;
   const int nr = static_cast<int>(2 * nf);
   if (model == PlantModel::kRigid)
@@ -199,7 +249,7 @@ FrequencyFitResult fit_frequency_response(const machine::AxisConfig& config, con
     e.fixed = i < np ? bool(fixed[u]) : !options.fit_delay;
     result.parameters.push_back(e);
   }
-  result.predicted = model_plant_response(cfg, model, p, delay, data.freq_hz);
+  result.predicted = evaluate(p, delay);
   FitSummary& fs = result.summary;
   fs.converged = summary.termination_type == ceres::CONVERGENCE;
   fs.termination = summary.message;
@@ -230,6 +280,31 @@ FrequencyFitResult fit_frequency_response(const machine::AxisConfig& config, con
   }
   fs.report = os.str();
   return result;
+}
+
+}  // namespace
+
+FrequencyFitResult fit_frequency_response(const machine::AxisConfig& config, const FrequencyData& data,
+                                          const ParameterSetup& setup, const FrequencyFitOptions& options) {
+  machine::AxisConfig cfg = config;
+  cfg.validate_and_complete();
+  const PlantModel model = options.model;
+  const Evaluate evaluate = [&](const std::vector<double>& p, double delay) {
+    return model_plant_response(cfg, model, p, delay, data.freq_hz);
+  };
+  return fit_with(evaluate, 0.5 / *cfg.servo_period_s, data, setup, options);
+}
+
+FrequencyFitResult fit_frequency_response(const MechanicsIO& io, const FrequencyData& data,
+                                          const ParameterSetup& setup, const FrequencyFitOptions& options) {
+  io.validate();
+  const PlantModel model = options.model;
+  const Evaluate evaluate = [&](const std::vector<double>& p, double delay) {
+    return mechanics_response(io, model, p, delay, data.freq_hz);
+  };
+  const double nyquist =
+      io.sample_period_s > 0.0 ? 0.5 / io.sample_period_s : std::numeric_limits<double>::infinity();
+  return fit_with(evaluate, nyquist, data, setup, options);
 }
 
 }  // namespace servobench::identify

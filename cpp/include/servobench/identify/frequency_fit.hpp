@@ -12,6 +12,7 @@
 
 #include <complex>
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include "servobench/identify/fit_report.hpp"
@@ -42,6 +43,33 @@ struct FrequencyFitResult {
   FitSummary summary;
   std::vector<std::complex<double>> predicted;  // the model's response at freq_hz
 };
+
+// What surrounds the mechanics in a measured response when there is no servobench Axis (a drive's analyser, a Bode
+// CSV, an FRD from elsewhere): the response is
+//   G(f) = output_per_rad * C (s I - A)^-1 B * torque_per_input                    (continuous: s = j 2 pi f)
+//   G(f) = output_per_rad * C (z I - Phi)^-1 Gamma * z^-delay_samples * torque_per_input   (sampled, z = e^{s Ts})
+// with (A, B) the model's linear part (current loop at current_bw_hz in series with the mechanics, plant_model.hpp),
+// (Phi, Gamma) its exact zero-order hold over the sample period, C the motor or load angle (or speed) row.
+struct MechanicsIO {
+  double sample_period_s = 0.0;   // s; 0: a continuous-time response, > 0: sampled, torque held over each sample
+  int delay_samples = 0;          // whole samples of delay between the input and the output (sampled only), 0..1000
+  double torque_per_input = 1.0;  // N*m per unit of the response's input (1: the input is the torque command), != 0
+  double output_per_rad = 1.0;    // output units per rad (speed output: per rad/s), != 0 (counts_per_rev / 2 pi)
+  bool speed_output = false;      // the output is a speed (rad/s x output_per_rad), else an angle
+  bool on_load = false;           // the output is the load side's (two-mass), else the motor's
+  double current_bw_hz = std::numeric_limits<double>::infinity();  // the known current loop, Hz (inf: none)
+  void validate() const;
+};
+
+// The response of the mechanics described by `io` for a parameter vector (full model vector, friction ignored).
+std::vector<std::complex<double>> mechanics_response(const MechanicsIO& io, PlantModel model,
+                                                     const std::vector<double>& parameters, double delay_s,
+                                                     const std::vector<double>& freq_hz);
+
+// The same fit without an Axis: the model is mechanics_response(io, ...). Frequencies must be > 0 (and below the
+// Nyquist frequency when sampled).
+FrequencyFitResult fit_frequency_response(const MechanicsIO& io, const FrequencyData& data,
+                                          const ParameterSetup& setup, const FrequencyFitOptions& options);
 
 // `config`: the axis the response was measured on (drive, output stage, encoder, servo period, sub-steps); its
 // plant is replaced by the model. Throws std::invalid_argument for bad data (lengths, non-finite values,
