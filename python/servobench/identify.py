@@ -145,7 +145,7 @@ def run_experiment(axis, *, duration_s: float = 5.0, speed_rad_s: tuple[float, f
     cpr = axis.encoder.counts_per_rev
     ref = axis.feedback_pulse + np.cumsum(speed) * ts * cpr / (2 * np.pi)
     inj = excitation(injection, n, amplitude=amplitude_v, servo_period_s=ts, seed=seed, **excitation_options)
-    run = axis.run(ref, injection_v=inj, signals=["volts", "fb_pos"])
+    run = axis.run(ref, injection_v=inj, signals=["volts", "fb_pos"], continue_=True)  # from where it stands
     drive = axis.drive
     i_max = min(drive.current_limit_a, drive.torque_limit_nm / drive.kt)
     volts_applied = np.concatenate([[0.0], run.volts[:-1]])
