@@ -136,8 +136,11 @@ def time_ruckig_moving(ruckig, moves, n: int, repeats: int = 3):
             inp.max_acceleration = [acc[i]]
             inp.max_jerk = [jerk[i]]
             if call:
-                otg.calculate(inp, traj)
-                durations[i] = traj.duration
+                try:
+                    otg.calculate(inp, traj)
+                    durations[i] = traj.duration
+                except ruckig.RuckigError:  # Ruckig found no solution for this state (counted, left out)
+                    durations[i] = np.nan
         return time.perf_counter() - t0
 
     total = min(loop(True) for _ in range(repeats))
@@ -187,16 +190,24 @@ def run(quick: bool = False, moves: int | None = None, ruckig_moves: int | None 
     if ruckig is not None:
         n_r = min(size["ruckig_moves"], n_moves)
         t_rm, t_rm_over, dur_rm = time_ruckig_moving(ruckig, moving, n_r, repeats=1 if quick else 3)
-        dur_ratio = dur_sbm[:n_r] / dur_rm
+        solved = np.isfinite(dur_rm)
+        n_failed = int(np.count_nonzero(~solved))
+        dur_ratio = dur_sbm[:n_r][solved] / dur_rm[solved]
         us_rm, us_rm_net = t_rm / n_r * 1e6, (t_rm - t_rm_over) / n_r * 1e6
         moving_rows += [("Ruckig `calculate` via its Python binding", n_r, us_rm, us_rm / us_sbm),
                         ("Ruckig, binding loop overhead subtracted (net)", n_r, us_rm_net, us_rm_net / us_sbm)]
         longer = int(np.count_nonzero(dur_ratio > 1 + 1e-6))
-        moving_text = (f"Durations, servobench / Ruckig over {n_r} moves: median {np.median(dur_ratio):.6f}, worst "
-                       f"{dur_ratio.max():.4f} (best {dur_ratio.min():.6f}); {longer} moves "
-                       f"({100 * longer / n_r:.1f} %) longer than Ruckig's by more than 1e-6 relative"
+        shorter = int(np.count_nonzero(dur_ratio < 1 - 1e-6))
+        moving_text = (f"Ruckig raised an error (no solution) on {n_failed} of {n_r} states, left out. "
+                       f"Durations, servobench / Ruckig over the other {len(dur_ratio)} moves: median "
+                       f"{np.median(dur_ratio):.6f}, worst {dur_ratio.max():.4f} (best {dur_ratio.min():.6f}); "
+                       f"{longer} moves "
+                       f"({100 * longer / len(dur_ratio):.1f} %) longer than Ruckig's by more than 1e-6 relative"
                        + (" -- a loss: servobench's re-plan from a moving state is not time-optimal (issue 25 "
                           "point 5)." if longer else ".")
+                       + (f" {shorter} moves are shorter than Ruckig's time-optimal plan by more than 1e-6: there "
+                          "the two planners do not solve the same problem (servobench's limits during a change are "
+                          "the card's, issue 25 point 5); not a win." if shorter else "")
                        + f" Time: Ruckig net {us_rm_net:.4f} us against servobench {us_sbm:.4f} us per plan: "
                        f"servobench takes **{us_sbm / us_rm_net:.2f}x** Ruckig's net time"
                        + (" -- a loss." if us_sbm > us_rm_net else "."))
@@ -223,7 +234,8 @@ def run(quick: bool = False, moves: int | None = None, ruckig_moves: int | None 
               "The same planners on the problem Ruckig solves in general: start velocity |v0| <= 0.9 vel, start "
               "acceleration |a0| <= acc (the speed it still adds within vel), distance 1..1e6 pulse either way, "
               "the limits as above; durations and times as measured, a longer plan or a slower planner is a loss.",
-              "", "| planner (moving start) | moves | mean per plan [us] | time vs servobench |", "|---|---:|---:|---:|"]
+              "", "| planner (moving start) | moves | mean per plan [us] | time vs servobench |",
+              "|---|---:|---:|---:|"]
     lines += [f"| {name} | {n:,} | {us:.4f} | {ratio:.2f}x |" for name, n, us, ratio in moving_rows]
     if ruckig is None:
         lines.append(f"| Ruckig | {benchlib.NOT_INSTALLED} | | |")
@@ -246,8 +258,9 @@ def run(quick: bool = False, moves: int | None = None, ruckig_moves: int | None 
     ]
     if dur_ratio is not None:
         figures.append(benchlib.Figure("motion", "S-curve moving start -> rest, worst duration / Ruckig's", "x",
-                                       float(dur_ratio.max()), False, goal=1.0 + 1e-6, goal_source="issue 25 point 5",
-                                       note="1.0 = time-optimal like Ruckig; above is a loss"))
+                                       float(dur_ratio.max()), False,
+                                       note="1.0 = time-optimal like Ruckig; above is a loss (issue 25 point 5 asks "
+                                            "for 1 + 1e-6)"))
     return benchlib.Result("motion", "bench/bench_motion.py", "motion_planning.md", text, figures, quick,
                            peers={"Ruckig": benchlib.version(ruckig)})
 
