@@ -348,6 +348,14 @@ class Axis:
         if controller_state is not None and address == 0:
             raise ValueError("controller_state is for a compiled controller (a numba cfunc or a C function pointer)")
         if not _checks.flag("Axis.run", "continue_", continue_):
+            # A call that fails its checks leaves the axis as it was: check the inputs first, then restart.
+            _checks.error_limit("Axis.run", "error_limit_pulse", error_limit_pulse, self, 0.0)
+            _checks.flag("Axis.run", "stop_on_alarm", stop_on_alarm)
+            n = positions.shape[0] if positions.ndim == 1 else -1
+            for name, x in (("positions", positions), ("velocities", velocities), ("accelerations", accelerations),
+                            ("injection_v", injection_v)):
+                if x is not None:
+                    _precheck(name, x, n)
             self._restart()
         fb = self.feedback_pulse  # the command's largest distance from here, without a temporary array
         span = max(abs(float(positions.max()) - fb), abs(float(positions.min()) - fb)) if positions.size else 0.0
@@ -372,6 +380,21 @@ class Axis:
             replay.command = rec["cmd_pos"]
         return AxisRun(signals=rec, servo_period_s=self.servo_period_s, law=self.law, stopped=stop or None,
                        stop_error_pulse=float(stop_error), _replay=replay)
+
+
+def _precheck(name: str, x, n: int) -> None:
+    """The binding's checks of a run's input array (1-D, n samples, finite), made before the axis restarts."""
+    try:
+        a = np.asarray(x, dtype=float)
+    except (TypeError, ValueError):
+        raise TypeError(f"{name} must be a 1-D array of numbers") from None
+    if a.ndim != 1:
+        raise ValueError(f"{name} must be 1-D, got {a.ndim} dimensions")
+    if n >= 0 and a.shape[0] != n:
+        raise ValueError(f"{name} has {a.shape[0]} samples; expected {n} (one per tick, like the positions)")
+    if a.size and not (np.isfinite(a.min()) and np.isfinite(a.max())):  # min/max carry NaN: no temporary array
+        k = int(np.flatnonzero(~np.isfinite(a))[0])
+        raise ValueError(f"{name}[{k}] = {a[k]} is not a finite number")
 
 
 class _Replay:
