@@ -95,8 +95,10 @@ class AxisRun:
 
     @property
     def units(self) -> dict[str, str]:
-        """Unit of each recorded signal."""
-        return {k: SIGNAL_UNITS[k] for k in self.signals}
+        """Unit of each signal this run gives: the recorded ones, and for a default run every other signal too
+        (read on request, see the class docstring)."""
+        more = [k for k in SIGNALS if k not in self.signals and (self._replay is not None or k in self._more)]
+        return {k: SIGNAL_UNITS[k] for k in [*self.signals, *more]}
 
     def to_dict(self) -> dict[str, np.ndarray]:
         """The recorded signals as a plain dict of arrays."""
