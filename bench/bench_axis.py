@@ -153,6 +153,20 @@ def card_run(card_ticks: int, sampler: bool) -> float:
     return time.perf_counter() - t0
 
 
+def alternate_cpu(ours, theirs, repeats: int):
+    """CPU-time medians (s) of `ours()` and `theirs()` run alternately `repeats` times in this process (so load
+    changes hit both alike); returns (ours s, theirs s, the last values `ours()` and `theirs()` returned)."""
+    t_ours, t_theirs, v_ours, v_theirs = [], [], None, None
+    for _ in range(repeats):
+        c0 = time.process_time()
+        v_ours = ours()
+        t_ours.append(time.process_time() - c0)
+        c0 = time.process_time()
+        v_theirs = theirs()
+        t_theirs.append(time.process_time() - c0)
+    return float(np.median(t_ours)), float(np.median(t_theirs)), v_ours, v_theirs
+
+
 def best_of(fn, repeats: int) -> float:
     best = math.inf
     for _ in range(repeats):
@@ -179,13 +193,14 @@ def run(quick: bool = False, ticks: int | None = None, python_ticks: int | None 
         axis = sb.demo_axis()
         axis.run(cmd, signals=signals)
 
-    t_all = best_of(lambda: cpp_run(None), rep5)
+    t_all = best_of(lambda: cpp_run("all"), rep5)
+    t_default = best_of(lambda: cpp_run(None), rep5)
     t_min = best_of(lambda: cpp_run(["fb_pos"]), rep5)
     t_chain = {}
     for mode in ("torque", "velocity"):
         slow = long_move(n_ticks)
         slow = sb.Trajectory(pos=slow.pos * 0.5, vel=slow.vel * 0.5, acc=slow.acc * 0.25)
-        t_chain[mode] = best_of(lambda: full_chain_axis(mode).run(slow, signals=None), rep3)
+        t_chain[mode] = best_of(lambda: full_chain_axis(mode).run(slow, signals="all"), rep3)
 
     card_ticks = n_ticks // 4
     t_card = min(card_run(card_ticks, False) for _ in range(rep3))
@@ -218,18 +233,11 @@ def run(quick: bool = False, ticks: int | None = None, python_ticks: int | None 
         consts = numba_peer.chain_constants(sb.demo_axis())
         nb_out = np.empty(n_ticks)
         chain(consts, cmd.pos[:10], cmd.vel[:10], cmd.acc[:10], nb_out[:10])  # compile (not timed)
-        ours, theirs = [], []
-        for _ in range(rep5):
-            c0 = time.process_time()
-            ref_fb = sb.demo_axis().run(cmd, signals=["fb_pos"]).fb_pos
-            ours.append(time.process_time() - c0)
-            c0 = time.process_time()
-            chain(consts, cmd.pos, cmd.vel, cmd.acc, nb_out)
-            theirs.append(time.process_time() - c0)
+        sb_cpu, nb_cpu, ref_fb, _ = alternate_cpu(lambda: sb.demo_axis().run(cmd, signals=["fb_pos"]).fb_pos,
+                                               lambda: chain(consts, cmd.pos, cmd.vel, cmd.acc, nb_out), rep5)
         bad = int(np.count_nonzero(nb_out != ref_fb))
         if bad:
             raise SystemExit(f"numba peer differs from the C++ core at {bad} of {n_ticks} ticks")
-        sb_cpu, nb_cpu = float(np.median(ours)), float(np.median(theirs))
         nb_rate = n_ticks / nb_cpu
 
     # "A tight C++ loop of the same arithmetic" (issue 22): bench/tight_rigid.cpp, the numba loop written once in C++
@@ -242,18 +250,12 @@ def run(quick: bool = False, ticks: int | None = None, python_ticks: int | None 
     if tight is not None:
         consts = numba_peer.chain_constants(sb.demo_axis())
         t_out = np.empty(n_ticks)
-        ours, theirs = [], []
-        for _ in range(rep5):
-            c0 = time.process_time()
-            ref_fb = sb.demo_axis().run(cmd, signals=["fb_pos"]).fb_pos
-            ours.append(time.process_time() - c0)
-            c0 = time.process_time()
-            tight(consts, cmd.pos, cmd.vel, cmd.acc, t_out)
-            theirs.append(time.process_time() - c0)
+        tight_sb_cpu, tight_cpu, ref_fb, _ = alternate_cpu(
+            lambda: sb.demo_axis().run(cmd, signals=["fb_pos"]).fb_pos,
+            lambda: tight(consts, cmd.pos, cmd.vel, cmd.acc, t_out), rep5)
         bad = int(np.count_nonzero(t_out != ref_fb))
         if bad:
             raise SystemExit(f"tight C++ peer differs from the C++ core at {bad} of {n_ticks} ticks")
-        tight_sb_cpu, tight_cpu = float(np.median(ours)), float(np.median(theirs))
 
     # The linear loop (no friction, quantisation or saturation; no feed-forward) against the strongest peer for a
     # linear loop: scipy.signal.lfilter of the closed loop's transfer function (servobench's own linear_model, made a
@@ -274,18 +276,11 @@ def run(quick: bool = False, ticks: int | None = None, python_ticks: int | None 
         closed = fr.linear_model(lin_axis())["closed_loop"]
         num, den = scipy_signal.ss2tf(*(np.asarray(getattr(closed, k)) for k in "ABCD"))
         r_lin = cmd.pos * 0.01  # +-100 pulse: inside +-10 V on the whole move
-        ours, theirs = [], []
-        for _ in range(rep5):
-            c0 = time.process_time()
-            y_lin = lin_axis().run(r_lin, signals=["fb_pos"]).fb_pos
-            ours.append(time.process_time() - c0)
-            c0 = time.process_time()
-            y_lf = scipy_signal.lfilter(num[0], den, r_lin)
-            theirs.append(time.process_time() - c0)
+        lin_cpu, lf_cpu, y_lin, y_lf = alternate_cpu(lambda: lin_axis().run(r_lin, signals=["fb_pos"]).fb_pos,
+                                                     lambda: scipy_signal.lfilter(num[0], den, r_lin), rep5)
         lf_dev = float(np.max(np.abs(y_lin - y_lf)))
         if not lf_dev <= 1e-6:
             raise SystemExit(f"lfilter peer differs from the linear C++ loop by {lf_dev} pulse (> 1e-6)")
-        lin_cpu, lf_cpu = float(np.median(ours)), float(np.median(theirs))
 
     # Full chain with the feedback only recorded (issue 22's 15 M ticks/s goal) and the cost per tick against the run
     # length (feedback only: flat from 10^4 ticks up, no cliff).
@@ -319,7 +314,9 @@ def run(quick: bool = False, ticks: int | None = None, python_ticks: int | None 
                  4 * card_ticks, t_card_scope, 4 * card_ticks / t_card_scope))
     if py_rate is not None:
         rows.append(("rigid chain tick in pure Python (CPython)", n_py, t_py, py_rate))
-    extra_rows = [("full chain, torque drive, feedback only recorded", n_ticks, t_full_fb, n_ticks / t_full_fb)]
+    extra_rows = [(f"servobench C++ core, rigid chain, the default {len(sb.DEFAULT_SIGNALS)} signals recorded "
+                   f"({', '.join(sb.DEFAULT_SIGNALS)})", n_ticks, t_default, n_ticks / t_default),
+                  ("full chain, torque drive, feedback only recorded", n_ticks, t_full_fb, n_ticks / t_full_fb)]
     if nb_rate is not None:
         extra_rows.append((f"servobench, rigid chain, feedback only (CPU-time median of {rep5})", n_ticks, sb_cpu,
                            n_ticks / sb_cpu))

@@ -223,6 +223,11 @@ void bind_machine(py::module_& m) {
       .def_property_readonly("mechanical_energy_j", [](const Axis& a) { return a.power_train().mechanical_energy_j(); })
       .def_property_readonly("servo_on", &Axis::servo_on)
       .def("set_servo_on", strict(&Axis::set_servo_on), py::arg("on"))
+      .def("copy", [](const Axis& a) { return Axis(a); },
+           "A copy of this axis: configuration and the whole state (law memories, filters, power train, encoder noise "
+           "generator), so the copy runs the same ticks")
+      .def("set_fused_tick", strict(&Axis::set_fused_tick), py::arg("on"),
+           "True (default): the fused per-configuration tick where it applies; False: the general loop (for tests)")
       .def_property_readonly("last_command_pulse", &Axis::last_command_pulse)
       .def(
           "run",

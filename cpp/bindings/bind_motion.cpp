@@ -195,6 +195,41 @@ void bind_motion(py::module_& m) {
       py::arg("start"), py::arg("target"), py::arg("vel"), py::arg("acc"), py::arg("jerk"),
       "Plans rest-to-rest S-curves (pulse; limits pulse/tick, pulse/tick^2, pulse/tick^3, all > 0) and returns\n"
       "their minimal durations in ticks. The benchmark's batch entry point (GIL released while planning).");
+  m.def(
+      "plan_s_curve_from_state_batch",
+      [](py::array_t<double, py::array::c_style | py::array::forcecast> pos0,
+         py::array_t<double, py::array::c_style | py::array::forcecast> vel0,
+         py::array_t<double, py::array::c_style | py::array::forcecast> acc0,
+         py::array_t<double, py::array::c_style | py::array::forcecast> target,
+         py::array_t<double, py::array::c_style | py::array::forcecast> vel,
+         py::array_t<double, py::array::c_style | py::array::forcecast> acc,
+         py::array_t<double, py::array::c_style | py::array::forcecast> jerk) {
+        const auto n = pos0.size();
+        for (const auto* a : {&vel0, &acc0, &target, &vel, &acc, &jerk})
+          if (a->size() != n)
+            throw std::invalid_argument(
+                "plan_s_curve_from_state_batch: pos0, vel0, acc0, target, vel, acc and jerk must have equal lengths");
+        for (py::ssize_t i = 0; i < n; ++i) {
+          SCurveLimits lim{vel.data()[i], acc.data()[i], jerk.data()[i]};
+          lim.validate();
+          if (!std::isfinite(pos0.data()[i]) || !std::isfinite(vel0.data()[i]) || !std::isfinite(target.data()[i]) ||
+              !(std::fabs(acc0.data()[i]) <= lim.acc))
+            throw std::invalid_argument("plan_s_curve_from_state_batch: pos0, vel0, target must be finite and |acc0| "
+                                        "<= acc (index " + std::to_string(i) + ")");
+        }
+        py::array_t<double> out(n);
+        {
+          py::gil_scoped_release release;
+          plan_s_curve_from_state_batch(static_cast<std::size_t>(n), pos0.data(), vel0.data(), acc0.data(),
+                                        target.data(), vel.data(), acc.data(), jerk.data(), out.mutable_data());
+        }
+        return out;
+      },
+      py::arg("pos0"), py::arg("vel0"), py::arg("acc0"), py::arg("target"), py::arg("vel"), py::arg("acc"),
+      py::arg("jerk"),
+      "Plans S-curves from moving states (pulse, pulse/tick, pulse/tick^2; |acc0| <= acc) to rest at target (pulse;\n"
+      "limits pulse/tick, pulse/tick^2, pulse/tick^3, all > 0) and returns their durations in ticks. The benchmark's\n"
+      "entry point for the general problem (GIL released while planning).");
   m.def("s_curve_min_time", [](double distance, double vel, double acc, double jerk) {
         SCurveLimits lim{vel, acc, jerk};
         lim.validate();

@@ -31,7 +31,7 @@ from ._core import (
     TwoMassPlant,
     VelocityDrive,
 )
-from .axis import Axis, AxisRun, SIGNALS, SIGNAL_UNITS, controller_signature
+from .axis import Axis, AxisRun, DEFAULT_SIGNALS, SIGNALS, SIGNAL_UNITS, controller_signature
 from .trajectory import Trajectory, trapezoid_move
 from .metrics import MoveMetrics, move_metrics
 from .examples import demo_axis
@@ -100,6 +100,7 @@ from .paths import (
 )
 from . import batch
 from .batch import BatchResult, monte_carlo, sample_spread, simulate_many  # many plants at once (issue 22)
+from .tune_robust import RobustTuneResult, tune_robust  # tuning for the worst plant of a spread (issue 22.3)
 from . import card
 from .card import CARD_EVENTS, Card, CardCommandRefused, CardLimits, CardRun, events_named
 from .card import SAMPLE_SIGNALS, FiredEvent, ScopeData  # the card's scope and event callbacks (issue 10.3)
@@ -126,6 +127,8 @@ __all__ = [
     "batch",
     "BatchResult",
     "monte_carlo",
+    "tune_robust",
+    "RobustTuneResult",
     "sample_spread",
     "simulate_many",
     "controller_signature",
@@ -251,6 +254,7 @@ __all__ = [
     "GtServoLaw",
     "MoveMetrics",
     "RigidPlant",
+    "DEFAULT_SIGNALS",
     "SIGNALS",
     "ServoPositionDrive",
     "StepperDrive",

@@ -13,6 +13,11 @@ from .trajectory import Trajectory
 
 #: Names of the signals an axis records every tick, in order.
 SIGNALS: tuple[str, ...] = tuple(name for name, _unit, _doc in _core.TRACE_SIGNALS)
+#: The signals :meth:`Axis.run` records when ``signals`` is not given (decision P17): time, command, feedback,
+#: following error, the law's output and the DAC voltage. Every other signal of :data:`SIGNALS` is still there on
+#: request: read it (``run.current_a``) and the run is replayed once, exactly, from a copy of the axis taken before
+#: it, recording all signals; ``signals="all"`` records them all at once.
+DEFAULT_SIGNALS: tuple[str, ...] = ("time_s", "cmd_pos", "fb_pos", "error", "u", "volts")
 #: Unit of each signal.
 SIGNAL_UNITS: dict[str, str] = {name: unit for name, unit, _doc in _core.TRACE_SIGNALS}
 _SIGNAL_DOCS: dict[str, str] = {name: doc for name, _unit, doc in _core.TRACE_SIGNALS}
@@ -31,6 +36,11 @@ class AxisRun:
     (motor); ``load_angle_rad`` rad; ``load_speed_rad_s`` rad/s; flags (0/1): ``alarm`` (drive alarm), ``index``
     (encoder index passed since the previous tick), ``home_sw``, ``pos_limit_sw``, ``neg_limit_sw``.
     Mechanical signals are sampled at the instant the encoder is read.
+
+    ``signals`` holds what was recorded (by default :data:`DEFAULT_SIGNALS`); a run recorded with the default set
+    gives every other signal too when it is read (``run.current_a``, ``run["p"]``): the run is then replayed once
+    from a copy of the axis taken before it, with all signals recorded, and checked to reproduce the feedback
+    exactly (decision P17).
     """
 
     signals: Mapping[str, np.ndarray]
@@ -41,17 +51,39 @@ class AxisRun:
     stopped: str | None = None
     #: The following error (pulse) at the tick that tripped the error limit.
     stop_error_pulse: float = 0.0
+    _replay: object = field(default=None, repr=False, compare=False)
+    _more: dict = field(default_factory=dict, repr=False, compare=False)
 
-    def __getattr__(self, name: str) -> np.ndarray:
-        signals = object.__getattribute__(self, "signals")
+    def _signal(self, name: str) -> np.ndarray | None:
+        try:
+            signals = object.__getattribute__(self, "signals")
+            more = object.__getattribute__(self, "_more")
+            replay = object.__getattribute__(self, "_replay")
+        except AttributeError:  # not initialised yet (copy, unpickling)
+            return None
         if name in signals:
             return signals[name]
+        if name in more:
+            return more[name]
+        if name in SIGNAL_UNITS and replay is not None:
+            more.update({k: v for k, v in replay(signals["fb_pos"]).items() if k not in signals})
+            object.__setattr__(self, "_replay", None)
+            return more.get(name)
+        return None
+
+    def __getattr__(self, name: str) -> np.ndarray:
+        sig = self._signal(name)
+        if sig is not None:
+            return sig
         if name in SIGNAL_UNITS:
             raise AttributeError(f"signal '{name}' was not recorded in this run (see Axis.run(signals=...))")
         raise AttributeError(name)
 
     def __getitem__(self, name: str) -> np.ndarray:
-        return self.signals[name]
+        sig = self._signal(name)
+        if sig is None:
+            raise KeyError(name)
+        return sig
 
     def __len__(self) -> int:
         return len(next(iter(self.signals.values()))) if self.signals else 0
@@ -63,8 +95,10 @@ class AxisRun:
 
     @property
     def units(self) -> dict[str, str]:
-        """Unit of each recorded signal."""
-        return {k: SIGNAL_UNITS[k] for k in self.signals}
+        """Unit of each signal this run gives: the recorded ones, and for a default run every other signal too
+        (read on request, see the class docstring)."""
+        more = [k for k in SIGNALS if k not in self.signals and (self._replay is not None or k in self._more)]
+        return {k: SIGNAL_UNITS[k] for k in [*self.signals, *more]}
 
     def to_dict(self) -> dict[str, np.ndarray]:
         """The recorded signals as a plain dict of arrays."""
@@ -116,7 +150,9 @@ class Axis:
         ``biquad0`` and ``biquad1`` (counts).
 
     The controller output computed at tick k reaches the drive at tick k+1 (one-tick computation delay).
-    The axis keeps its state between :meth:`run` calls; :meth:`reset` returns it to power-on.
+    Every :meth:`run` starts from the axis's initial state -- power-on, or the state the last :meth:`reset` set --
+    so running a notebook cell twice gives the same answer; ``run(..., continue_=True)`` continues from where the
+    last run or :meth:`step` left the axis instead (decision P18). :meth:`step` always continues.
 
     Thread safety: an Axis may be shared between threads. One run at a time: a second :meth:`run` (or a
     :class:`~servobench.Card` run using this axis) waits until the first has finished; every other call waits
@@ -136,6 +172,7 @@ class Axis:
             substeps=substeps,
             filters=filters,
         )
+        self._start = (0.0, 0.0, 0.0, 0.0, True)  # the initial state run() starts from (see reset)
 
     # -- parts ------------------------------------------------------------------------------------
     law = property(lambda self: self._axis.law, doc="The active servo-law parameters.")
@@ -187,10 +224,21 @@ class Axis:
         if not isinstance(self.plant, _core.TwoMassPlant) and (la != a or lw != w):
             raise ValueError(f"Axis.reset: load_angle_rad = {la}, load_speed_rad_s = {lw} differ from the motor's, but "
                              "a rigid plant has one body (leave them out)")
-        if w == 0.0 and load_speed_rad_s is None and load_angle_rad is None:
+        plain = w == 0.0 and load_speed_rad_s is None and load_angle_rad is None
+        self._start = (a, w, la, lw, plain)
+        self._restart()
+
+    def _restart(self) -> None:
+        """Returns the axis to its initial state (the last reset's, or power-on), keeping its configuration: law,
+        filters and the servo on/off setting."""
+        a, w, la, lw, plain = self._start
+        on = self._axis.servo_on
+        if plain:
             self._axis.reset(a)  # the power-on reset, unchanged
         else:
             self._axis.reset_state(a, w, la, lw)
+        if not on:
+            self._axis.set_servo_on(False)
 
     def set_law(self, law) -> None:
         """Replaces the servo-law parameters from the next tick on (the card's Update)."""
@@ -221,7 +269,8 @@ class Axis:
             controller written in Python reads the feedback, computes the voltage and steps; it reaches the drive one
             tick later like the law's output.
 
-        The ticks are exactly those :meth:`run` makes over the same commands (the state carries on between calls).
+        The ticks are exactly those :meth:`run` makes over the same commands (the state carries on between calls;
+        a :meth:`run` after steps starts from the initial state again unless ``continue_=True``).
         """
         if not math.isfinite(command_pulse):  # TypeError for a non-number; NaN/inf must not enter the state
             raise ValueError(f"command_pulse = {command_pulse} must be a finite number (pulse)")
@@ -233,8 +282,13 @@ class Axis:
 
     def run(self, command, *, velocities=None, accelerations=None, signals: Iterable[str] | None = None,
             injection_v=None, error_limit_pulse: float | str | None = "auto", stop_on_alarm: bool = False,
-            controller=None, controller_state=None) -> AxisRun:
+            controller=None, controller_state=None, continue_: bool = False) -> AxisRun:
         """Runs one servo tick per command sample and returns what was recorded.
+
+        The run starts from the axis's initial state (power-on, or the last :meth:`reset`'s state), with the
+        axis's present law, filters and servo on/off setting: the same call gives the same run every time.
+        ``continue_=True`` continues from where the last run or :meth:`step` left the axis (its mechanics, law
+        memories, filters, tick count).
 
         command
             command positions in pulse, one per tick (array-like), or a :class:`Trajectory` (whose velocities
@@ -244,7 +298,10 @@ class Axis:
             Kvff/Kaff terms; by default backward differences of the positions. The ADLINK law always uses the
             differences, as its manual defines CmdVel and CmdAcc.
         signals
-            names of the signals to record (default all, see :data:`SIGNALS`); fewer is faster.
+            names of the signals to record (see :data:`SIGNALS`), or ``"all"``; fewer is faster. Default: the small
+            set :data:`DEFAULT_SIGNALS` (time, command, feedback, error, law output, volts), every other signal
+            still readable from the result (the run is replayed once, exactly, when one is first read); with a
+            ``controller`` the default is all signals (a replay would call the controller again).
         injection_v
             optional voltage added to the controller's output before the DAC, V, one per tick (an injection at the
             plant input, for open-loop and disturbance-injection experiments; with the servo off it is the whole
@@ -292,16 +349,77 @@ class Axis:
             raise TypeError("controller_state must be a writeable, C-contiguous float64 NumPy array")
         if controller_state is not None and address == 0:
             raise ValueError("controller_state is for a compiled controller (a numba cfunc or a C function pointer)")
+        if not _checks.flag("Axis.run", "continue_", continue_):
+            # A call that fails its checks leaves the axis as it was: check the inputs first, then restart.
+            _checks.error_limit("Axis.run", "error_limit_pulse", error_limit_pulse, self, 0.0)
+            _checks.flag("Axis.run", "stop_on_alarm", stop_on_alarm)
+            n = positions.shape[0] if positions.ndim == 1 else -1
+            for name, x in (("positions", positions), ("velocities", velocities), ("accelerations", accelerations),
+                            ("injection_v", injection_v)):
+                if x is not None:
+                    _precheck(name, x, n)
+            self._restart()
         fb = self.feedback_pulse  # the command's largest distance from here, without a temporary array
         span = max(abs(float(positions.max()) - fb), abs(float(positions.min()) - fb)) if positions.size else 0.0
         limit = _checks.error_limit("Axis.run", "error_limit_pulse", error_limit_pulse, self,
                                     span if np.isfinite(span) else 0.0)
-        rec, stop, stop_error = self._axis.run(positions, velocities, accelerations,
-                                               None if signals is None else list(signals), injection_v,
-                                               limit, _checks.flag("Axis.run", "stop_on_alarm", stop_on_alarm),
-                                               py_controller, address, controller_state)
+        stop_alarm = _checks.flag("Axis.run", "stop_on_alarm", stop_on_alarm)
+        replay = None
+        if isinstance(signals, str):
+            if signals != "all":
+                raise ValueError(f"signals = {signals!r}: give a list of signal names or 'all'")
+            wanted = None
+        elif signals is not None:
+            wanted = list(signals)
+        elif controller is not None:
+            wanted = None  # a replay would call the user's controller again
+        else:
+            wanted = list(DEFAULT_SIGNALS)
+            replay = _Replay(self._axis.copy(), velocities, accelerations, injection_v, limit, stop_alarm)
+        rec, stop, stop_error = self._axis.run(positions, velocities, accelerations, wanted, injection_v,
+                                               limit, stop_alarm, py_controller, address, controller_state)
+        if replay is not None:
+            replay.command = rec["cmd_pos"]
         return AxisRun(signals=rec, servo_period_s=self.servo_period_s, law=self.law, stopped=stop or None,
-                       stop_error_pulse=float(stop_error))
+                       stop_error_pulse=float(stop_error), _replay=replay)
+
+
+def _precheck(name: str, x, n: int) -> None:
+    """The binding's checks of a run's input array (1-D, n samples, finite), made before the axis restarts."""
+    try:
+        a = np.asarray(x, dtype=float)
+    except (TypeError, ValueError):
+        raise TypeError(f"{name} must be a 1-D array of numbers") from None
+    if a.ndim != 1:
+        raise ValueError(f"{name} must be 1-D, got {a.ndim} dimensions")
+    if n >= 0 and a.shape[0] != n:
+        raise ValueError(f"{name} has {a.shape[0]} samples; expected {n} (one per tick, like the positions)")
+    if a.size and not (np.isfinite(a.min()) and np.isfinite(a.max())):  # min/max carry NaN: no temporary array
+        k = int(np.flatnonzero(~np.isfinite(a))[0])
+        raise ValueError(f"{name}[{k}] = {a[k]} is not a finite number")
+
+
+class _Replay:
+    """The rest of a default run's signals, on request: the same run again from a copy of the axis taken before
+    it, every signal recorded (decision P17). The optional arrays are copied, so changing them later changes
+    nothing; the positions are the run's own recorded cmd_pos."""
+
+    def __init__(self, axis_copy, velocities, accelerations, injection_v, limit, stop_on_alarm):
+        own = lambda x: None if x is None else np.array(x, dtype=float, copy=True)  # noqa: E731
+        self.axis = axis_copy
+        self.vel, self.acc, self.inj = own(velocities), own(accelerations), own(injection_v)
+        self.limit, self.stop_on_alarm = limit, stop_on_alarm
+        self.command = None
+
+    def __call__(self, fb_pos: np.ndarray) -> dict:
+        n = len(self.command)
+        cut = lambda x: None if x is None else x[:n]  # noqa: E731
+        rec, _stop, _err = self.axis.run(self.command, cut(self.vel), cut(self.acc), None, cut(self.inj),
+                                         self.limit, self.stop_on_alarm, None, 0, None)
+        if not np.array_equal(rec["fb_pos"], fb_pos):
+            raise RuntimeError("AxisRun: the replay of this run did not reproduce its feedback; record the signals "
+                               "you need with Axis.run(signals=...)")
+        return rec
 
 
 def controller_signature() -> str:

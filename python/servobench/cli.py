@@ -238,7 +238,7 @@ def cmd_simulate(args) -> int:
         if not (args.settle_band_pulse > 0 and math.isfinite(args.settle_band_pulse)):
             raise ValueError(f"--settle-band-pulse = {args.settle_band_pulse} must be > 0 (pulse)")
     out = Output(args, _stem(args.axis))
-    run = axis.run(move)
+    run = axis.run(move, signals="all")  # the trace file holds every signal
     metrics = move_metrics(run, settle_band_pulse=args.settle_band_pulse)
     ts = axis.servo_period_s
     if not args.quiet:

@@ -155,7 +155,7 @@ def run_experiment(axis, *, duration_s: float = 5.0, speed_rad_s: tuple[float, f
         excitation_options.setdefault("start_hz", band[0])
         excitation_options.setdefault("end_hz", band[1])
     inj = excitation(injection, n, amplitude=amplitude_v, servo_period_s=ts, seed=seed, **excitation_options)
-    run = axis.run(ref, injection_v=inj, signals=["volts", "fb_pos"])
+    run = axis.run(ref, injection_v=inj, signals=["volts", "fb_pos"], continue_=True)  # from where it stands
     drive = axis.drive
     i_max = min(drive.current_limit_a, drive.torque_limit_nm / drive.kt)
     volts_applied = np.concatenate([[0.0], run.volts[:-1]])

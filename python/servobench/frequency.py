@@ -549,7 +549,8 @@ def broadband_response(axis, *, excitation: str = "multisine", start_hz: float =
                 period_ticks = n_min
             x, bins = multisine(start_hz=start_hz, end_hz=end_hz, period_ticks=period_ticks, servo_period_s=ts,
                                 amplitude=amplitude_pulse, lines=lines, periods=int(periods) + 1)
-            run = axis.run(base + x, signals=("fb_pos", "error", "biquad1", "u", "volts", "torque_nm"))
+            run = axis.run(base + x, signals=("fb_pos", "error", "biquad1", "u", "volts", "torque_nm"),
+                           continue_=True)
             if run.stopped:  # the loop tripped the axis's default error limit (or the drive alarmed): report it
                 return _stopped(run, excitation, ts, feedforward, filters)
             n = int(period_ticks)
@@ -585,9 +586,11 @@ def broadband_response(axis, *, excitation: str = "multisine", start_hz: float =
             taper[n_chirp - ramp_out:] = 0.5 + 0.5 * np.cos(np.pi * np.arange(1, ramp_out + 1) / ramp_out)
             record = np.concatenate([x1 * taper, np.zeros(n_rest)])
             n = len(record)
-            axis.run(np.full(n_rest, base), signals=())  # settle whatever ran before, at the base position
+            # settle whatever ran before, at the base position
+            axis.run(np.full(n_rest, base), signals=(), continue_=True)
             x = np.tile(record, int(periods))
-            run = axis.run(base + x, signals=("fb_pos", "error", "biquad1", "u", "volts", "torque_nm"))
+            run = axis.run(base + x, signals=("fb_pos", "error", "biquad1", "u", "volts", "torque_nm"),
+                           continue_=True)
             if run.stopped:  # the loop tripped the axis's default error limit (or the drive alarmed): report it
                 return _stopped(run, excitation, ts, feedforward, filters)
             freq_all = np.fft.rfftfreq(n, ts)

@@ -139,7 +139,7 @@ def test_state_carries_over_between_runs_and_reset_restores_power_on():
     whole = sb.demo_axis().run(cmd)
     axis = sb.demo_axis()
     first = axis.run(cmd.pos[:400], velocities=cmd.vel[:400], accelerations=cmd.acc[:400])
-    second = axis.run(cmd.pos[400:], velocities=cmd.vel[400:], accelerations=cmd.acc[400:])
+    second = axis.run(cmd.pos[400:], velocities=cmd.vel[400:], accelerations=cmd.acc[400:], continue_=True)
     assert axis.tick == len(cmd)
     assert np.array_equal(np.concatenate([first.fb_pos, second.fb_pos]), whole.fb_pos)
     assert np.array_equal(second.time_s, whole.time_s[400:])

@@ -181,7 +181,7 @@ def test_ctrl_c_one_second_into_a_long_run_returns_within_half_a_second(what):
     if what == "axis":
         tick = axis.tick
         assert 0 < tick < len(cmd)
-        run = axis.run(np.zeros(100), signals=["fb_pos"])  # consistent: it runs on from where it stood
+        run = axis.run(np.zeros(100), signals=["fb_pos"], continue_=True)  # consistent: it runs on from where it stood
         assert axis.tick == tick + 100 and np.all(np.isfinite(run.fb_pos))
     elif what == "card":
         tick = card.tick

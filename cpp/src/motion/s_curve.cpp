@@ -80,6 +80,18 @@ void plan_s_curve_batch(std::size_t n, const double* start, const double* target
   }
 }
 
+void plan_s_curve_from_state_batch(std::size_t n, const double* pos0, const double* vel0, const double* acc0,
+                                   const double* target, const double* vel, const double* acc, const double* jerk,
+                                   double* duration) {
+  for (std::size_t i = 0; i < n; ++i) {
+    MotionState from;
+    from.pos = pos0[i];
+    from.vel = vel0[i];
+    from.acc = acc0[i];
+    duration[i] = plan_s_curve(from, target[i], SCurveLimits{vel[i], acc[i], jerk[i]}).duration();
+  }
+}
+
 Profile plan_s_curve(const MotionState& from, double target, const SCurveLimits& lim) {
   if (from.vel == 0.0 && from.acc == 0.0) return plan_s_curve_rest_to_rest(from.pos, target, lim);
   const double V = lim.vel, A = lim.acc, J = lim.jerk;

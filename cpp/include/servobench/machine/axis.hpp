@@ -132,7 +132,18 @@ class Axis {
   void clear_drive_alarm() { power_.clear_alarm(); }
   const PowerTrain& power_train() const { return power_; }
 
+  // The fused tick (decision P16) is on by default; false makes run() take the general loop everywhere. The two give
+  // the same doubles (tests/cpp/test_fused_tick.cpp compares them signal by signal); this switch exists for that test.
+  void set_fused_tick(bool on) { fused_enabled_ = on; }
+
  private:
+  // The fused tick (axis_fused.cpp): the same ticks as run_with for a servo-on axis with its law in place and a
+  // torque drive on the power train's fixed-size discretisations, with the law, biquads, DAC and power train in
+  // local copies of compile-time size and one loop specialised per (law, state count, body count). Returns false,
+  // having done nothing, where it does not apply.
+  bool run_fused(const CommandInput& command, const Trace& trace, const RunGuard& guard, RunOutcome& outcome);
+  template <class Law, int N, int NB>
+  RunOutcome fused_loop(Law& law, const CommandInput& command, const Trace& trace, const RunGuard& guard);
   template <class Law>
   RunOutcome run_with(Law& law, const CommandInput& command, const Trace& trace, const RunGuard& guard);
   double encoder_angle() const {
@@ -150,6 +161,7 @@ class Axis {
   double prev_encoder_angle_ = 0.0;
   bool primed_ = false;
   bool servo_on_ = true;
+  bool fused_enabled_ = true;
   long long tick_ = 0;
 };
 

@@ -93,6 +93,17 @@ class PowerTrain {
   // Bodies frozen by static friction now.
   bool stuck(std::size_t body) const { return stuck_[body] != 0; }
 
+  // The fused tick (machine/axis_fused.cpp, decision P16): the state count N (2..5) for which a local copy
+  // PowerTrain::Local<N, NB> (machine/powertrain_local.hpp) advances this power train exactly as advance_tick
+  // does -- a torque drive on the fixed-size discretisations -- or 0 when only the general tick applies.
+  int fused_states() const {
+    if (mode_ != Mode::kTorque || fixed_.index() == 0) return 0;
+    return static_cast<int>(fixed_.index()) + 1;
+  }
+  std::size_t bodies() const { return nb_; }
+  template <int N, int NB>
+  class Local;
+
  private:
   void substep();
   // The bodies' linear motion and dry friction over one sub-step with the held inputs (plant/dry_friction.hpp).

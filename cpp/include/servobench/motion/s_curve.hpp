@@ -37,6 +37,13 @@ double s_curve_min_time(double distance, const SCurveLimits& lim);
 void plan_s_curve_batch(std::size_t n, const double* start, const double* target, const double* vel,
                         const double* acc, const double* jerk, double* duration);
 
+// Plans n moves from a moving state (pos0, vel0, acc0 [i], pulse, pulse/tick, pulse/tick^2) to rest at target[i]
+// with plan_s_curve and writes each duration (ticks): the benchmark's entry point for the general problem, the
+// one Ruckig solves (issue 22 point 5).
+void plan_s_curve_from_state_batch(std::size_t n, const double* pos0, const double* vel0, const double* acc0,
+                                   const double* target, const double* vel, const double* acc, const double* jerk,
+                                   double* duration);
+
 // GT_PrflS parameters in the GT units (per sample time ST = the tick): GT L854-858, L4852, L4936.
 struct GtSCurveParams {
   double pos = 0.0;   // target, whole pulses, -2^30..2^30-1 (L854)

@@ -1,0 +1,198 @@
+// The power train of a torque-mode axis held in a local object of compile-time size, for the fused tick
+// (machine/axis_fused.cpp, decision P16).
+//
+// PowerTrain::Local<N, NB> copies the state (N = 2..5 states, NB = 1 or 2 bodies) and the scalars of one tick out of
+// a PowerTrain, advances them with exactly the arithmetic of PowerTrain::set_input / advance_tick (torque drive:
+// A/V and the current limit; the drive alarm; cogging, constant load and unbalance at the sub-step start; dry
+// friction solved implicitly on the fixed-size discretisations), and writes them back with store(). Inside the
+// loop nothing is reached through `this` of the PowerTrain, so the compiler keeps the state in registers instead of
+// reloading it after every store to a recording buffer, and every size and body count is a constant.
+#pragma once
+
+#include <cmath>
+
+#include "servobench/machine/powertrain.hpp"
+
+namespace servobench::machine {
+
+template <int N, int NB>
+class PowerTrain::Local {
+ public:
+  using Vec = Eigen::Matrix<double, N, 1>;
+
+  explicit Local(const PowerTrain& p)
+      : f_(*std::get_if<Fixed<N>>(&p.fixed_)),
+        dist_(p.mech_.disturbances),
+        amps_per_volt_(p.amps_per_volt_),
+        i_max_(p.i_max_),
+        kt_(p.kt_),
+        h_(p.h_),
+        alarm_at_s_(p.alarm_at_s_),
+        n_sub_(p.n_sub_),
+        drive_states_(p.drive_states_),
+        motor_angle_(p.motor_angle_),
+        motor_speed_(p.motor_speed_),
+        load_angle_(p.load_angle_),
+        load_speed_(p.load_speed_),
+        substep_count_(p.substep_count_),
+        volts_(p.volts_),
+        i_cmd_(p.i_cmd_),
+        alarm_(p.alarm_),
+        alarm_before_(p.alarm_) {
+    for (int i = 0; i < N; ++i) x_[i] = p.x_[i];
+    for (int b = 0; b < NB; ++b) {
+      idx_[b] = p.body_index_[b];
+      dry_[b] = p.dry_[b];
+      stuck_[b] = p.stuck_[b];
+    }
+  }
+
+  // Whether this Local applies to `p`: N states and NB bodies, and with one body (a rigid plant) its angle and speed
+  // the last two states and its torque input column 1 -- the layout the one-body sub-step uses at compile time.
+  static bool applies(const PowerTrain& p) {
+    if (p.fused_states() != N || p.nb_ != static_cast<std::size_t>(NB)) return false;
+    if constexpr (NB == 1)
+      return p.body_index_[0].angle == kAngle && p.body_index_[0].speed == kSpeed && p.body_index_[0].input == 1 &&
+             p.motor_angle_ == kAngle && p.load_angle_ == kAngle && p.motor_speed_ == kSpeed &&
+             p.load_speed_ == kSpeed && p.drive_states_ == N - 2;
+    return true;
+  }
+
+  // Writes the state back (the tables are the PowerTrain's own and unchanged).
+  void store(PowerTrain& p) const {
+    for (int i = 0; i < N; ++i) p.x_[i] = x_[i];
+    for (int b = 0; b < NB; ++b) p.stuck_[b] = stuck_[b];
+    p.substep_count_ = substep_count_;
+    p.sub_in_tick_ = n_sub_ - 1;
+    p.volts_ = volts_;
+    p.i_cmd_ = i_cmd_;
+    p.alarm_ = alarm_;
+    if (alarm_ && !alarm_before_) p.speed_loop_.reset();  // as substep() does when the alarm trips
+  }
+
+  // PowerTrain::set_input for a torque drive.
+  void set_input(double volts) {
+    volts_ = volts;
+    const double i = amps_per_volt_ * volts;
+    i_cmd_ = alarm_ ? 0.0 : (i > i_max_ ? i_max_ : (i < -i_max_ ? -i_max_ : i));
+  }
+
+  // PowerTrain::advance_tick for a torque drive: every sub-step with the held input.
+  void advance_tick() {
+    for (int s = 0; s < n_sub_; ++s) {
+      if (!alarm_ && static_cast<double>(substep_count_) * h_ >= alarm_at_s_) alarm_ = true;
+      if (alarm_) i_cmd_ = 0.0;
+      ++substep_count_;
+      double t_motor = 0.0;
+      if (dist_.cogging_nm != 0.0) t_motor = dist_.cogging_nm * std::sin(dist_.cogging_periods * motor_angle_rad());
+      double t_load = -dist_.load_nm;
+      if (dist_.unbalance_nm != 0.0) t_load -= dist_.unbalance_nm * std::sin(load_angle_rad());
+      if constexpr (NB == 1) {
+        one_body_substep(t_motor, t_load);
+      } else {
+        plant::advance_with_dry_friction(static_cast<std::size_t>(NB), idx_, dry_, f_.phi, f_.gamma, i_cmd_,
+                                         t_motor, t_load, x_, x_free_, stuck_);
+      }
+    }
+  }
+
+  // plant::advance_with_dry_friction for one body (a rigid plant), written out on scalars: the same operations in
+  // the same order (zoh_product's rows summed left to right from 0.0, add_input's zero skips, solve_dry_friction's
+  // single sweep, the locked re-solve), so the same doubles, with the state in registers.
+  void one_body_substep(double t_motor, double t_load) {
+    const Eigen::Matrix<double, N, N>& phi0 = f_.phi[0];
+    const Eigen::Matrix<double, N, 3>& gam0 = f_.gamma[0];
+    double xf[N];
+    free_motion(phi0, gam0, t_motor, t_load, xf);
+    const plant::DryFriction<double>& fr = dry_[0];
+    if (!fr.active()) {
+      for (int i = 0; i < N; ++i) x_[i] = xf[i];
+      return;
+    }
+    constexpr int sa = kAngle, sv = kSpeed, in = 1;  // the layout fused_states() checked
+    const double v0 = x_[sv];
+    // solve_dry_friction, one body, nothing locked.
+    double fb;
+    bool st = false;
+    {
+      const double v_free = xf[sv];
+      const double d = xf[sa] - x_[sa];
+      const double g = gam0(sv, in);
+      const double gth = gam0(sa, in);
+      const double dir = v0 > 0.0 ? 1.0 : -1.0;
+      const double f_slip = -dir * plant::directional_sliding_nm(fr, v0, dir);
+      if (v0 != 0.0 && (v_free + g * f_slip) * dir > 0.0) {
+        fb = f_slip;
+      } else {
+        const double f_stick = -v_free / g;
+        const double fs_pos = plant::directional_breakaway_nm(fr, 1.0);
+        const double fs_neg = plant::directional_breakaway_nm(fr, -1.0);
+        if (f_stick <= fs_neg && f_stick >= -fs_pos) {
+          fb = f_stick;
+          st = true;
+        } else {
+          fb = v_free > 0.0 ? -fs_pos : fs_neg;
+        }
+      }
+      if (!(st && v0 == 0.0) && fb * (d + gth * fb) > 0.0) {
+        st = false;
+        const double cap = gth > 0.0 ? std::fabs(d) / gth : 0.0;
+        const double afb = std::fabs(fb);
+        const double mag = afb < cap ? afb : cap;
+        fb = d == 0.0 ? 0.0 : (d > 0.0 ? -mag : mag);
+      }
+    }
+    if (st && stuck_[0] && v0 == 0.0) {  // held by static friction: the locked discretisation, no friction work
+      free_motion(f_.phi[1], f_.gamma[1], t_motor, t_load, xf);
+      stuck_[0] = 1;
+      for (int i = 0; i < N; ++i) x_[i] = xf[i];
+      return;
+    }
+    if (fb != 0.0)
+      for (int i = 0; i < N; ++i) xf[i] += gam0(i, in) * fb;
+    if (st) xf[sv] = 0.0;
+    stuck_[0] = st ? 1 : 0;
+    for (int i = 0; i < N; ++i) x_[i] = xf[i];
+  }
+
+  // zoh_product and add_input: xf = phi x + gamma [i_cmd, t_motor, t_load], each input skipped when exactly 0.
+  void free_motion(const Eigen::Matrix<double, N, N>& phi, const Eigen::Matrix<double, N, 3>& gam, double t_motor,
+                   double t_load, double* xf) const {
+    for (int i = 0; i < N; ++i) {
+      double s = 0.0;
+      for (int k = 0; k < N; ++k) s += phi(i, k) * x_[k];
+      xf[i] = s;
+    }
+    if (i_cmd_ != 0.0)
+      for (int i = 0; i < N; ++i) xf[i] += gam(i, 0) * i_cmd_;
+    if (t_motor != 0.0)
+      for (int i = 0; i < N; ++i) xf[i] += gam(i, 1) * t_motor;
+    if (t_load != 0.0)
+      for (int i = 0; i < N; ++i) xf[i] += gam(i, 2) * t_load;
+  }
+
+  // One body: the angle and speed are the last two states (after the drive's), known at compile time.
+  double motor_angle_rad() const { return NB == 1 ? x_[kAngle] : x_[motor_angle_]; }
+  double motor_speed_rad_s() const { return NB == 1 ? x_[kSpeed] : x_[motor_speed_]; }
+  double load_angle_rad() const { return NB == 1 ? x_[kAngle] : x_[load_angle_]; }
+  double load_speed_rad_s() const { return NB == 1 ? x_[kSpeed] : x_[load_speed_]; }
+  double current_a() const { return (NB == 1 ? N == 3 : drive_states_ > 0) ? x_[0] : i_cmd_; }
+  double torque_nm() const { return kt_ * current_a(); }
+  bool alarm() const { return alarm_; }
+
+ private:
+  static constexpr int kAngle = N - 2, kSpeed = N - 1;
+  const Fixed<N>& f_;
+  const plant::Disturbances dist_;
+  const double amps_per_volt_, i_max_, kt_, h_, alarm_at_s_;
+  const int n_sub_, drive_states_, motor_angle_, motor_speed_, load_angle_, load_speed_;
+  plant::BodyIndex idx_[2];
+  plant::DryFriction<double> dry_[2];
+  char stuck_[2] = {1, 1};
+  Vec x_, x_free_;
+  long long substep_count_;
+  double volts_, i_cmd_;
+  bool alarm_, alarm_before_;
+};
+
+}  // namespace servobench::machine
