@@ -261,3 +261,12 @@ def test_relay_on_textbook_third_order_plant():
     assert 0.015 < eps < 0.03 and dw < 0.035 and dku < 0.05  # the bound the docs state: 2.2 % and 4.2 %
     assert abs(wu - w0) <= dw, (wu, w0, dw)
     assert abs(ku - 8.0) / 8.0 <= dku, (ku, dku)
+
+
+def test_free_drive_trains_are_marginal_not_unstable():
+    """A double pole at s = 0 (no viscous friction) comes out of the eigenvalue solver split by ~sqrt(eps |A|)."""
+    j1, j2, k, c = 2e-5, 6e-5, 400.0, 0.005
+    a = [[0, 1, 0, 0], [-k / j1, -c / j1, k / j1, c / j1], [0, 0, 0, 1], [k / j2, c / j2, -k / j2, -c / j2]]
+    assert sb.LtiPlant(a=a, b=[0, 1 / j1, 0, 0], c=[1, 0, 0, 0]).stability == \
+        "marginal (2 poles on the imaginary axis)"
+    assert sb.LtiPlant.from_control(three_mass(b=(0.0, 0.0, 0.0))).stability.startswith("marginal (2")

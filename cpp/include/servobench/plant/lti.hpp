@@ -56,7 +56,7 @@ struct LtiPlantParams {
   // for a linear model. a: n x n, b: n x 1, c: 1 x n.
   void port_model(Eigen::MatrixXd& a_out, Eigen::MatrixXd& b_out, Eigen::MatrixXd& c_out) const;
   // "stable" (every pole in Re s < 0), "marginal (k poles at s = 0 or on the imaginary axis)" or
-  // "unstable (k poles in Re s > 0)"; poles within 1e-9 * max|pole| (and 1e-12 1/s) of the axis count as on it.
+  // "unstable (k poles in Re s > 0)"; poles within 1e-6 * max|pole| (and 1e-12 1/s) of the axis count as on it.
   std::string stability() const;
   // The high-frequency inertia 1 / (C A B) at the motor, kg*m^2; 0 when the relative degree is above 2.
   double inertia_kgm2() const;
