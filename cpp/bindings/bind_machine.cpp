@@ -46,7 +46,8 @@ double** trace_slot(machine::Trace& t, const std::string& name) {
 machine::PlantParams plant_from(const py::handle& p) {
   if (py::isinstance<plant::RigidPlantParams>(p)) return p.cast<plant::RigidPlantParams>();
   if (py::isinstance<plant::TwoMassPlantParams>(p)) return p.cast<plant::TwoMassPlantParams>();
-  throw py::type_error("plant must be a RigidPlant or a TwoMassPlant, got " + py::str(py::type::of(p)).cast<std::string>());
+  if (py::isinstance<plant::LtiPlantParams>(p)) return p.cast<plant::LtiPlantParams>();
+  throw py::type_error("plant must be a RigidPlant, a TwoMassPlant or an LtiPlant, got " + py::str(py::type::of(p)).cast<std::string>());
 }
 
 machine::DriveParams drive_from(const py::handle& d) {

@@ -23,6 +23,7 @@ from ._core import (
     Encoder,
     FloatBiquad,
     GtServoLaw,
+    LtiPlant,
     RigidPlant,
     ServoPositionDrive,
     StepperDrive,
@@ -50,6 +51,8 @@ from .validation import CascadePD, RigidModel, ValidationResult, simulate_rigid,
 from .identify_workflow import RigidIdentification, identify_rigid
 from .autotune import ModelTuneResult, RelayTuneResult, model_based_tune, relay_autotune
 from .frequency import FrequencyResponse, Margins, analytic_response, broadband_response, sine_sweep
+from . import interop  # python-control both ways, LtiPlant.from_control (issue 23.3-23.4)
+from .interop import lti_plant, to_control
 from . import motion
 from . import homing
 from . import gearing
@@ -255,6 +258,10 @@ __all__ = [
     "MoveMetrics",
     "RigidPlant",
     "DEFAULT_SIGNALS",
+    "LtiPlant",
+    "interop",
+    "lti_plant",
+    "to_control",
     "SIGNALS",
     "ServoPositionDrive",
     "StepperDrive",

@@ -15,7 +15,7 @@ import pytest
 
 DOCS = Path(__file__).resolve().parents[2] / "docs"
 PAGES = ["getting-started.md", "concepts.md", "howto-tune.md", "howto-bode.md", "howto-identify.md",
-         "howto-port.md", "identify-emps.md", "howto-batch.md"]
+         "howto-port.md", "identify-emps.md", "howto-batch.md", "lti-plant.md"]
 MAX_NOT_RUN = 3  # per page
 
 FENCE = re.compile(r"^(?P<indent> {0,3})(?P<fence>```+|~~~+)\s*(?P<lang>[^\s`]*)[^\n]*$")

@@ -261,7 +261,7 @@ def test_axis_substeps(substeps):
 def test_axis_rejects_a_part_of_the_wrong_kind():
     with pytest.raises(TypeError, match="law must be a GtServoLaw or an ApsServoLaw"):
         sb.Axis(law=sb.RigidPlant())
-    with pytest.raises(TypeError, match="plant must be a RigidPlant or a TwoMassPlant"):
+    with pytest.raises(TypeError, match="plant must be a RigidPlant, a TwoMassPlant or an LtiPlant"):
         sb.Axis(plant=sb.TorqueDrive())
     with pytest.raises(TypeError, match="drive must be a TorqueDrive, VelocityDrive, StepperDrive or ServoPositionDrive"):
         sb.Axis(drive=sb.RigidPlant())

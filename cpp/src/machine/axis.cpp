@@ -57,6 +57,7 @@ AxisConfig completed(AxisConfig c) {
 }
 plant::Mechanics make_mechanics(const PlantParams& p) {
   if (const auto* r = std::get_if<plant::RigidPlantParams>(&p)) return plant::rigid_mechanics(*r);
+  if (const auto* l = std::get_if<plant::LtiPlantParams>(&p)) return plant::lti_mechanics(*l);
   return plant::two_mass_mechanics(std::get<plant::TwoMassPlantParams>(p));
 }
 std::variant<control::GtServoLaw, control::ApsServoLaw> make_law(const LawParams& p) {

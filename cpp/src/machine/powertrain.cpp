@@ -160,8 +160,15 @@ PowerTrain::PowerTrain(const DriveParams& drive, const plant::Mechanics& mechani
 
 void PowerTrain::reset(double angle_rad) {
   x_.setZero();
-  x_[motor_angle_] = angle_rad;
-  x_[load_angle_] = angle_rad;
+  if (mech_.rest.size() > 0) {  // a user's linear plant (plant/lti.hpp): its own rest direction
+    if (angle_rad != 0.0 && !mech_.rest_anywhere)
+      throw_invalid("PowerTrain.reset", "angle_rad", angle_rad,
+                    "must be 0: this plant has no rest state away from angle 0 (no free integrator in its A)");
+    x_.segment(drive_states_, mech_.rest.size()) = angle_rad * mech_.rest;
+  } else {
+    x_[motor_angle_] = angle_rad;
+    x_[load_angle_] = angle_rad;
+  }
   for (auto& s : stuck_) s = 1;
   volts_ = 0.0;
   i_cmd_ = 0.0;

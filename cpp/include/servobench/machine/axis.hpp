@@ -20,6 +20,7 @@
 #include "servobench/machine/powertrain.hpp"
 #include "servobench/machine/trace.hpp"
 #include "servobench/plant/encoder.hpp"
+#include "servobench/plant/lti.hpp"
 #include "servobench/plant/rigid.hpp"
 #include "servobench/plant/switches.hpp"
 #include "servobench/plant/two_mass.hpp"
@@ -27,7 +28,7 @@
 namespace servobench::machine {
 
 using LawParams = std::variant<control::GtServoLawParams, control::ApsServoLawParams>;
-using PlantParams = std::variant<plant::RigidPlantParams, plant::TwoMassPlantParams>;
+using PlantParams = std::variant<plant::RigidPlantParams, plant::TwoMassPlantParams, plant::LtiPlantParams>;
 
 struct AxisConfig {
   LawParams law = control::GtServoLawParams{};

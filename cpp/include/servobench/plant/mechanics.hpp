@@ -46,6 +46,11 @@ struct Mechanics {
   std::vector<Body> bodies;  // bodies[0] is the motor; bodies.back() is the load (the same body when rigid)
   Disturbances disturbances;
   int motor_angle = 0, motor_speed = 1, load_angle = 0, load_speed = 1;
+  // The state at rest with the motor angle at 1 rad, scaled by the angle on a reset (plant/lti.hpp). Empty: the
+  // built-in plants' rest (motor and load angles equal, everything else 0). rest_anywhere false: the plant has no
+  // rest state away from angle 0 (no free integrator in A), so a reset can only put it at 0.
+  Eigen::VectorXd rest;
+  bool rest_anywhere = true;
   int states() const { return static_cast<int>(a.rows()); }
   bool rigid() const { return bodies.size() == 1; }
 };
