@@ -340,9 +340,10 @@ class Tuner:
         self.verdict = w.HTML()
         self.message = w.HTML()
 
-        fig = Figure(figsize=(8.0, 6.4), layout="constrained")
-        ax_step = fig.add_subplot(2, 1, 1)
-        ax_gain, ax_phase = fig.add_subplot(2, 2, 3), fig.add_subplot(2, 2, 4)
+        fig = Figure(figsize=(8.0, 6.4))
+        gs = fig.add_gridspec(2, 2, left=0.09, right=0.98, top=0.94, bottom=0.08, hspace=0.38, wspace=0.32)
+        ax_step = fig.add_subplot(gs[0, :])
+        ax_gain, ax_phase = fig.add_subplot(gs[1, 0]), fig.add_subplot(gs[1, 1])
         self.axes = {"step": ax_step, "gain": ax_gain, "phase": ax_phase}
         ln = {}
         ln["cmd"], = ax_step.plot([], [], "--", color="0.5", label="command")
