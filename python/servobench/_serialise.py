@@ -35,6 +35,7 @@ class _Encoder:
         self.complex: list[str] = []
         self.types: dict[str, str] = {}
         self.tuples: list[str] = []
+        self.shapes: dict[str, list[int]] = {}  # empty arrays (a nested list cannot show their shape)
 
     def _float(self, v: float, path: str):
         if math.isfinite(v):
@@ -74,6 +75,8 @@ class _Encoder:
                     "imag": self._float(float(v.imag), f"{path}/imag")}
         if isinstance(v, np.ndarray):
             self.arrays.append(path)
+            if v.size == 0 and v.ndim != 1:
+                self.shapes[path] = list(v.shape)
             if np.iscomplexobj(v):
                 self.complex.append(path)
                 return {"real": self._real_array(v.real, f"{path}/real"),
@@ -146,6 +149,8 @@ def to_json(obj, *, indent: int | None = None) -> str:
     doc = {"type": _qualname(obj), "format": FORMAT, "data": data, "nonfinite": enc.nonfinite,
            "arrays": enc.arrays, "complex": enc.complex, "types": {k: t for k, t in enc.types.items() if k},
            "tuples": enc.tuples}
+    if enc.shapes:
+        doc["shapes"] = enc.shapes
     return json.dumps(doc, indent=indent, allow_nan=False)
 
 
@@ -220,6 +225,8 @@ def from_json(text: str, cls=None):
                 t = types.get(path)
                 dtype = {"numpy:bool_": bool, "numpy:int64": np.int64, "numpy:object": object}.get(t, float)
                 v = _array(v, doc, path) if dtype is float else np.array(v, dtype=dtype)
+                if path in doc.get("shapes", {}):
+                    v = v.reshape(doc["shapes"][path])
         elif path in cplx:
             v = complex(v["real"], v["imag"])
         elif path in types:

@@ -176,3 +176,14 @@ def test_progress_is_tqdm_and_off_without_a_terminal(monkeypatch):
     assert mine[-1] == 3
     with pytest.raises(TypeError, match="progress"):
         sb.sine_sweep(sb.demo_axis(), points=3, progress="yes")
+
+
+def test_path_run():
+    g = sb.PathGenerator(sb.CoordSystem.identity(2))
+    g.line([1000, 500], vel=10, acc=1)
+    g.start()
+    run = sb.run_path(g)
+    df = run.to_dataframe()
+    assert len(df) == len(run) and {"t_ms", "pos_0", "pos_1", "speed"} <= set(df.columns)
+    np.testing.assert_array_equal(df["pos_1"].to_numpy(), run.pos[:, 1])
+    _round_trip(run)
