@@ -15,24 +15,24 @@ cells = [
        "revert it, and export the tuned axis as an axis file that `servobench simulate/bode/tune` read.\n\n"
        "In a live notebook, move the sliders. Everything the panel does is also a method, so this notebook drives it\n"
        "from code, which is how the static page below was made (and how the tests check it)."),
-    code("import servobench as sb\n\n"
+    code("from IPython.display import Image\nimport servobench as sb\n\n"
          "axis = sb.examples.resonant_axis()     # ADLINK law, velocity drive, a 400 Hz two-mass resonance\n"
          "panel = sb.widgets.tuner(axis)\n"
          "panel                                  # the live panel (sliders, buttons, plots)"),
     md("## The untuned axis\n"
        "The law starts at the card's power-on zeros; the verdict and margins update with every slider."),
-    code("print(panel.data['margins'])\npanel.figure"),
+    code("print(panel.data['margins'])\nImage(panel.png())   # the panel's plots now"),
     md("## The model-based tuner\n"
        "The button `model tune` designs from the axis's analytic plant (60° phase margin, a notch at the resonance\n"
        "when it helps) and moves the sliders to the result."),
     code("panel.buttons['model_tune'].click()      # what a click does\n"
-         "print(panel.status)\nprint(panel.law)\nprint(panel.data['margins'])\npanel.figure"),
+         "print(panel.status)\nprint(panel.law)\nprint(panel.data['margins'])\nImage(panel.png())   # the panel's plots now"),
     md("## By hand: a little less gain, the measured points\n"
        "`panel.set(...)` moves sliders by name; `measure Bode` runs the stepped-sine sweep on the simulated axis and\n"
        "draws its points over the model (hollow where a point failed its checks)."),
     code("panel.set(kp=int(panel.law.kp * 0.85))   # the ADLINK gains are 0..65535 counts\n"
          "panel.buttons['measure'].click()\n"
-         "print(panel.status)\nprint(panel.data['margins'])\npanel.figure"),
+         "print(panel.status)\nprint(panel.data['margins'])\nImage(panel.png())   # the panel's plots now"),
     md("## Apply, export, revert\n"
        "`apply to axis` writes the law and the filters to the axis; `export file` writes the tuned axis file;\n"
        "`revert` restores the axis as it was when the panel opened."),
