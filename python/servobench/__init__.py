@@ -123,6 +123,7 @@ from .motion import (
     jog_trajectory,
     move_trajectory,
 )
+from . import widgets  # the Jupyter tuning panel, sb.widgets.tuner(axis) (issue 23.2; needs ipywidgets)
 
 __version__ = "0.1.0"
 
@@ -276,4 +277,5 @@ __all__ = [
     "move_metrics",
     "plot",
     "trapezoid_move",
+    "widgets",
 ]

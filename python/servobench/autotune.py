@@ -15,13 +15,14 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import _checks
+from ._serialise import JsonResult, dataframe
 from . import _core
 
 __all__ = ["ModelTuneResult", "RelayTuneResult", "model_based_tune", "predicted_limit_cycle", "relay_autotune"]
 
 
 @dataclass(frozen=True)
-class RelayTuneResult:
+class RelayTuneResult(JsonResult):
     """The outcome of :func:`relay_autotune`.
 
     status, message
@@ -65,6 +66,24 @@ class RelayTuneResult:
     output_v: np.ndarray = field(repr=False)
     phase_margin_deg: float | None = None
     min_gain_margin_db: float = 6.0
+
+    def to_dataframe(self, which: str = "cycles"):
+        """A pandas DataFrame: ``"cycles"`` (default) one row per identified limit cycle (period_s, amplitude_pulse,
+        peak_pulse, center_pulse, gain_pulse_per_v, phase_deg and the gains kp, ki, kd of that cycle), or
+        ``"record"`` the experiment's record per servo tick (time_s, error_pulse, output_v).
+        ``df.attrs["units"]`` names each unit."""
+        if which == "cycles":
+            units = {"period_s": "s", "amplitude_pulse": "pulse", "peak_pulse": "pulse", "center_pulse": "pulse",
+                     "gain_pulse_per_v": "pulse/V", "phase_deg": "deg", "kp": "counts/pulse",
+                     "ki": "counts/(pulse*tick)", "kd": "counts*tick/pulse"}
+            df = dataframe(dict(self.cycles), units)
+            df.index.name = "cycle"
+            return df
+        if which == "record":
+            n = len(self.error_pulse)
+            return dataframe({"time_s": np.arange(n) * self.servo_period_s, "error_pulse": self.error_pulse,
+                              "output_v": self.output_v}, {"time_s": "s", "error_pulse": "pulse", "output_v": "V"})
+        raise ValueError(f"to_dataframe: which = {which!r} must be 'cycles' or 'record'")
 
     def gt_law(self, base=None):
         """The result as GT servo-filter gains (Kp, Ki with its /256, Kd; feed-forward 0), integers in 0..32767
@@ -125,7 +144,7 @@ def _law(res, kind, base):
 def relay_autotune(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 50.0, data_length: int = 200,
                    sampling_time_s: float = 500e-6, deviation_limit_pulse: float = 2000.0, max_spread: float = 0.10,
                    phase_margin_deg: float = 60.0, alpha: float = 4.0, settle_cycles: int = 3,
-                   max_cycle_s: float = 10.0, progress=None, min_gain_margin_db: float = 6.0) -> RelayTuneResult:
+                   max_cycle_s: float = 10.0, progress="auto", min_gain_margin_db: float = 6.0) -> RelayTuneResult:
     """Relay auto-tuning on a simulated axis, with the ADLINK card's parameters and defaults (L1842-1847).
 
     amplitude_v
@@ -146,7 +165,8 @@ def relay_autotune(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 
     settle_cycles
         first limit cycles discarded; max_cycle_s: give up when no cycle completes within this time, s.
     progress
-        None, True (text bar on stderr) or callable(done, total) -> bool (False: the user's Stop).
+        ``"auto"`` (default: a tqdm bar when stderr is a terminal), True (a bar: a widget in Jupyter), None/False
+        (none) or callable(done, total) -> bool (False: the user's Stop).
     min_gain_margin_db
         the gain-margin floor (dB, 0..60, default 6) :meth:`RelayTuneResult.apply` checks the tuned loop against.
 
@@ -297,7 +317,7 @@ def predicted_limit_cycle(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: f
 
 
 @dataclass(frozen=True)
-class ModelTuneResult:
+class ModelTuneResult(JsonResult):
     """The outcome of :func:`model_based_tune`; ``str(result)`` is its summary.
 
     kp, ki, kd
@@ -359,6 +379,17 @@ class ModelTuneResult:
 
     def __str__(self) -> str:
         return self.summary
+
+    def to_dataframe(self):
+        """The crossover scan as a pandas DataFrame, one row per candidate crossover (freq_hz, Hz; phase_margin_deg,
+        pm_freq_hz, gain_margin_db, ms, max_pole_radius, pid_lead_deg, feasible and the reason it was rejected);
+        ``df.attrs["units"]`` names each unit."""
+        units = {"freq_hz": "Hz", "phase_margin_deg": "deg", "pm_freq_hz": "Hz", "gain_margin_db": "dB", "ms": "1",
+                 "max_pole_radius": "1", "pid_lead_deg": "deg"}
+        n = max((len(v) for v in self.scan.values()), default=0)
+        cols = {k: (np.asarray(v, dtype=object) if k == "reason" else v) for k, v in self.scan.items()
+                if len(v) == n}
+        return dataframe(cols, units)
 
     def gt_law(self, base=None):
         """The gains as GT servo-filter gains (Kp, Ki with its /256, Kd; feed-forward 0), integers in 0..32767."""

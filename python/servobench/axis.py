@@ -9,6 +9,7 @@ from typing import Iterable, Mapping
 import numpy as np
 
 from . import _checks, _core
+from ._serialise import JsonResult, dataframe
 from .trajectory import Trajectory
 
 #: Names of the signals an axis records every tick, in order.
@@ -24,7 +25,7 @@ _SIGNAL_DOCS: dict[str, str] = {name: doc for name, _unit, doc in _core.TRACE_SI
 
 
 @dataclass(frozen=True)
-class AxisRun:
+class AxisRun(JsonResult):
     """What an axis recorded during :meth:`Axis.run`: one NumPy array per signal, one sample per tick.
 
     Signals (attribute names) and units:
@@ -103,6 +104,13 @@ class AxisRun:
     def to_dict(self) -> dict[str, np.ndarray]:
         """The recorded signals as a plain dict of arrays."""
         return dict(self.signals)
+
+    def to_dataframe(self):
+        """The recorded signals as a pandas DataFrame, one row per tick (index ``tick``), one column per signal;
+        ``df.attrs["units"]`` gives each column's unit. :meth:`to_json` writes the run as standard JSON."""
+        df = dataframe(dict(self.signals), self.units)
+        df.index.name = "tick"
+        return df
 
     def metrics(self, **kwargs):
         """Move metrics of this run; see :func:`servobench.move_metrics`."""

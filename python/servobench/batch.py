@@ -16,6 +16,7 @@ from typing import Callable, Iterable, Mapping, Sequence
 import numpy as np
 
 from . import _core
+from ._serialise import JsonResult, dataframe
 from .axis import Axis, SIGNALS, SIGNAL_UNITS
 from .trajectory import Trajectory
 
@@ -27,7 +28,7 @@ _PARTS = ("law", "drive", "plant", "encoder", "dac", "switches")
 
 
 @dataclass(frozen=True)
-class BatchResult:
+class BatchResult(JsonResult):
     """What :func:`simulate_many` returns.
 
     parameters
@@ -56,6 +57,23 @@ class BatchResult:
 
     def __len__(self) -> int:
         return len(self.parameters)
+
+    def to_dataframe(self, which: str = "metrics"):
+        """A pandas DataFrame: ``"metrics"`` (default) the per-plant table (parameters then move metrics; the
+        parameters alone when run with ``metrics=False``), or ``"signals"`` the recorded signals in long form,
+        one row per plant and tick (columns plant, tick, time_s (s), then one per signal)."""
+        if which == "metrics":
+            return (self.metrics if self.metrics is not None else self.parameters).copy()
+        if which == "signals":
+            if not self.signals:
+                raise ValueError("to_dataframe: no signal was recorded in this batch")
+            first = next(iter(self.signals.values()))
+            n, ticks = np.shape(first)
+            cols = {"plant": np.repeat(np.arange(n), ticks), "tick": np.tile(np.arange(ticks), n),
+                    "time_s": np.tile((np.arange(ticks) + 1) * self.servo_period_s, n)}
+            cols.update({k: np.asarray(v).reshape(-1) for k, v in self.signals.items()})
+            return dataframe(cols, {"time_s": "s", **dict(self.units)})
+        raise ValueError(f"to_dataframe: which = {which!r} must be 'metrics' or 'signals'")
 
     def __repr__(self) -> str:
         return (f"BatchResult({len(self)} plants, signals: {', '.join(self.signals) or 'none'}, "

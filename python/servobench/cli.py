@@ -13,12 +13,13 @@ from __future__ import annotations
 
 import argparse
 import contextlib
-import json
 import math
 import os
 import sys
 
 import numpy as np
+
+from . import _serialise
 
 EXIT_OK, EXIT_FAILED, EXIT_USAGE = 0, 1, 2
 
@@ -65,8 +66,7 @@ class Output:
     def json(self, what: str, obj: dict, doc: str) -> str:
         p = self.path(what, "json")
         with open(p, "w", encoding="utf-8") as f:
-            json.dump(_jsonable(obj), f, indent=2, allow_nan=False)
-            f.write("\n")
+            f.write(_serialise.dumps(obj, indent=2) + "\n")
         self.done(p, doc)
         return p
 
@@ -81,30 +81,6 @@ class Output:
         plt.close(fig)
         self.done(p, doc)
         return p
-
-
-def _jsonable(v):
-    """JSON-safe copy: NaN -> null, +-inf -> "inf"/"-inf", NumPy scalars and arrays -> Python."""
-    if isinstance(v, dict):
-        return {str(k): _jsonable(x) for k, x in v.items()}
-    if isinstance(v, (list, tuple)):
-        return [_jsonable(x) for x in v]
-    if isinstance(v, np.ndarray):
-        return [_jsonable(x) for x in v.tolist()]
-    if isinstance(v, (np.bool_, bool)):
-        return bool(v)
-    if isinstance(v, (np.integer,)):
-        return int(v)
-    if isinstance(v, (float, np.floating)):
-        v = float(v)
-        if math.isnan(v):
-            return None
-        if math.isinf(v):
-            return "inf" if v > 0 else "-inf"
-        return v
-    if hasattr(v, "to_dict"):
-        return _jsonable(v.to_dict())
-    return v
 
 
 def _margins_dict(m) -> dict:
@@ -144,14 +120,10 @@ def _progress(args):
 
 
 def _fit_progress(args):
-    if _progress(args) is None:
-        return None
+    """callback(iteration, cost) for the fit: a tqdm counter on stderr when wanted (L5, W7)."""
+    from ._progress import iterations
 
-    def cb(iteration, cost):
-        sys.stderr.write(f"\rIdentification: iteration {int(iteration):4d}, cost {float(cost):.6g}   ")
-        sys.stderr.flush()
-        return True
-    return cb
+    return iterations(_progress(args), "Identification")
 
 
 @contextlib.contextmanager
@@ -701,16 +673,17 @@ def cmd_identify(args) -> int:
     if not args.quiet:
         print(f"identify: {model} model from {source}; starting values: "
               + (", ".join(f"{k}={v:g}" for k, v in guess.items()) if guess else "the IDIM-LS answer"))
+    fit_progress = _fit_progress(args)
     try:
-        fit = fit_time(log, model, guess=guess or None, fixed=args.fixed or (), progress=_fit_progress(args),
+        fit = fit_time(log, model, guess=guess or None, fixed=args.fixed or (), progress=fit_progress,
                        dynamics_hz=args.dynamics_hz)
     except IdentificationError as e:
         raise WorkFailed(f"identification: {e}") from None
     except ValueError as e:
         raise UsageError(f"identify: {e}") from None
     finally:
-        if _fit_progress(args) is not None:
-            sys.stderr.write("\n")
+        if fit_progress is not None:
+            fit_progress.close()
     if not args.quiet:
         print(str(fit))
     report = {"source": source, "model": model, "converged": fit.converged, "iterations": fit.iterations,

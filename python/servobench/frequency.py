@@ -19,13 +19,13 @@ docs/decisions.md B1-B2 give the reasons.
 
 from __future__ import annotations
 
-import sys
 from dataclasses import dataclass, field
 from typing import Callable
 
 import numpy as np
 
 from . import _checks, _core
+from ._serialise import JsonResult, dataframe
 from .margins import Margins, _margins_from, analytic_margins, closed_loop_poles, margins
 
 __all__ = [
@@ -114,7 +114,7 @@ def resonances(freq_hz, response, *, min_prominence_db: float = 3.0, max_width_d
 # The response container
 # ----------------------------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
-class FrequencyResponse:
+class FrequencyResponse(JsonResult):
     """The three responses of one loop at a set of frequencies, measured or analytic.
 
     freq_hz
@@ -194,6 +194,29 @@ class FrequencyResponse:
             raise ValueError(f"{which} is only available from analytic data (servobench.frequency.analytic_response)")
         return h
 
+    def to_dataframe(self):
+        """One row per frequency (index ``freq_hz``, Hz): gain (``<which>_db``, dB) and phase (``<which>_deg``,
+        deg) of plant, open loop and closed loop (and loop gain, sensitivity for analytic data), then coherence,
+        distortion, the judge's flag and ``usable`` of a measurement. ``df.attrs["units"]`` names each unit;
+        :meth:`to_json` keeps the complex values exactly."""
+        cols: dict = {"freq_hz": self.freq_hz}
+        units = {"freq_hz": "Hz"}
+        for which in (*_RESPONSES, "loop_gain", "sensitivity"):
+            h = getattr(self, which)
+            if h is None:
+                continue
+            with np.errstate(divide="ignore"):
+                cols[f"{which}_db"] = 20 * np.log10(np.abs(h))
+            cols[f"{which}_deg"] = self.phase_deg(which)
+            units.update({f"{which}_db": "dB", f"{which}_deg": "deg"})
+        for name, unit in (("coherence", "1"), ("distortion", "1")):
+            if getattr(self, name) is not None:
+                cols[name], units[name] = np.asarray(getattr(self, name), dtype=float), unit
+        if self.flags is not None:
+            cols["flag"] = np.asarray(self.flags, dtype=object)
+        cols["usable"] = self.usable
+        return dataframe(cols, units, index="freq_hz")
+
     def gain_db(self, which: str = "open_loop") -> np.ndarray:
         """Gain of a response, dB."""
         return 20 * np.log10(np.abs(self.response(which)))
@@ -266,21 +289,10 @@ class FrequencyResponse:
 # Progress
 # ----------------------------------------------------------------------------------------------------------------
 def _progress_callback(progress, label: str) -> Callable[[int, int], bool] | None:
-    if progress is None or progress is False:
-        return None
-    if callable(progress):
-        return progress
-    if progress is True:
-        def bar(done: int, total: int) -> bool:
-            width = 30
-            filled = int(width * done / total)
-            sys.stderr.write(f"\r{label} [{'#' * filled}{'.' * (width - filled)}] {done}/{total}")
-            if done == total:
-                sys.stderr.write("\n")
-            sys.stderr.flush()
-            return True
-        return bar
-    raise TypeError("progress must be None, True (a text bar on stderr) or a callable(done, total) -> bool")
+    """callback(done, total) for the core from ``progress=``: a tqdm bar (servobench._progress, decision W7)."""
+    from ._progress import counter
+
+    return counter(progress, label, owner=label)
 
 
 def _core_axis(axis):
@@ -293,7 +305,7 @@ def _core_axis(axis):
 def sine_sweep(axis, *, start_hz: float = 10.0, end_hz: float = 100.0, amplitude_pulse: float | None = None,
                points: int = 100, update_s: float = 0.1, deviation_limit_pulse: float | str | None = "auto",
                feedforward: bool = False, filters: bool = True, settle_fraction: float = 0.25,
-               progress=None, min_coherence: float = 0.99, max_distortion: float = 0.05,
+               progress="auto", min_coherence: float = 0.99, max_distortion: float = 0.05,
                min_response_pulse: float = 4.0, min_dac_counts: float = 30.0, dac_fraction: float = 0.5,
                max_amplitude_pulse: float | None = None) -> FrequencyResponse:
     """The ADLINK Bode tool's stepped-sine measurement on a simulated axis (L1978-2045). Defaults are the manual's
@@ -329,8 +341,8 @@ def sine_sweep(axis, *, start_hz: float = 10.0, end_hz: float = 100.0, amplitude
     feedforward, filters
         feed-forward and biquads in the loop during the sweep (restored afterwards); see the module doc.
     progress
-        None, True (a text bar on stderr) or a callable(done, total) returning False to stop (status
-        ``"stopped"``).
+        ``"auto"`` (default: a tqdm bar when stderr is a terminal), True (a bar: a widget in Jupyter), None/False
+        (none) or a callable(done, total) returning False to stop (status ``"stopped"``).
 
     Releases the GIL while it runs; deterministic (no randomness unless the encoder has noise, seeded).
     """

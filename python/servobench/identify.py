@@ -26,6 +26,7 @@ import numpy as np
 
 from . import _checks, _core
 from .experiment import _whole, excitation, run_experiment, torque_per_volt  # noqa: F401 (re-exported)
+from ._serialise import JsonResult, dataframe
 from .idlog import IdentificationLog
 
 __all__ = [
@@ -53,7 +54,7 @@ def _model(model: str) -> str:
 # Spectral view of a log: the starting point of a two-mass fit
 # ----------------------------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
-class LogSpectrum:
+class LogSpectrum(JsonResult):
     """Torque-to-speed response of the mechanics estimated from a log (Welch, H1 = S_uv / S_uu).
 
     freq_hz: bin centres, Hz; response: speed over torque, (rad/s)/(N*m), complex, the known current loop divided
@@ -70,6 +71,16 @@ class LogSpectrum:
     def apparent_inertia_kgm2(self) -> np.ndarray:
         with np.errstate(divide="ignore"):
             return 1.0 / (np.abs(self.response) * 2 * np.pi * self.freq_hz)
+
+    def to_dataframe(self):
+        """One row per bin (index freq_hz, Hz): gain_db (dB re 1 (rad/s)/(N*m)), phase_deg, coherence,
+        apparent_inertia_kgm2."""
+        with np.errstate(divide="ignore"):
+            db = 20 * np.log10(np.abs(self.response))
+        return dataframe({"freq_hz": self.freq_hz, "gain_db": db, "phase_deg": np.degrees(np.angle(self.response)),
+                          "coherence": self.coherence, "apparent_inertia_kgm2": self.apparent_inertia_kgm2},
+                         {"freq_hz": "Hz", "gain_db": "dB", "phase_deg": "deg", "coherence": "1",
+                          "apparent_inertia_kgm2": "kg*m^2"}, index="freq_hz")
 
 
 def log_spectrum(log: IdentificationLog, *, segment_samples: int = 1024, instrument=None) -> LogSpectrum:
@@ -223,7 +234,7 @@ class IdentificationError(ValueError):
 
 
 @dataclass(frozen=True)
-class IdentifiedPlant:
+class IdentifiedPlant(JsonResult):
     """The outcome of :func:`fit_time` or :func:`fit_frequency`.
 
     model: 'rigid' or 'two_mass'; parameters: name -> :class:`Estimate`; nrmse: residual RMS over the measurement's
@@ -275,6 +286,36 @@ class IdentifiedPlant:
     def to_dict(self) -> dict:
         return {k: {"value": e.value, "std_error": e.std_error, "unit": e.unit, "fixed": e.fixed}
                 for k, e in self.parameters.items()}
+
+    def to_dataframe(self, which: str = "parameters"):
+        """A pandas DataFrame: ``"parameters"`` (default) one row per parameter (index ``name``: value, std_error,
+        relative_std_error, unit, initial, fixed, at_bound); ``"samples"`` the time-domain fit per sample (time_s,
+        measured, predicted, residual; NaN outside the segments used); ``"frequency"`` the frequency fit per point
+        (freq_hz; measured and predicted response as gain in dB and phase in deg)."""
+        if which == "parameters":
+            rows = list(self.parameters.values())
+            return dataframe({"name": [e.name for e in rows], "value": [e.value for e in rows],
+                              "std_error": [e.std_error for e in rows],
+                              "relative_std_error": [e.relative_std_error for e in rows],
+                              "unit": [e.unit for e in rows], "initial": [e.initial for e in rows],
+                              "fixed": [e.fixed for e in rows], "at_bound": [e.at_bound for e in rows]},
+                             index="name")
+        if which == "samples":
+            if self.time_s is None:
+                raise ValueError("to_dataframe: this is a frequency-domain fit: use which='frequency'")
+            return dataframe({"time_s": self.time_s, "measured": self.measured, "predicted": self.predicted,
+                              "residual": self.residual}, {"time_s": "s"})
+        if which == "frequency":
+            if self.freq_hz is None:
+                raise ValueError("to_dataframe: this is a time-domain fit: use which='samples'")
+            cols = {"freq_hz": self.freq_hz}
+            for name, h in (("measured", self.response), ("predicted", self.predicted_response)):
+                with np.errstate(divide="ignore"):
+                    cols[f"{name}_db"] = 20 * np.log10(np.abs(h))
+                cols[f"{name}_deg"] = np.degrees(np.angle(h))
+            return dataframe(cols, {"freq_hz": "Hz", "measured_db": "dB", "measured_deg": "deg",
+                                    "predicted_db": "dB", "predicted_deg": "deg"}, index="freq_hz")
+        raise ValueError(f"to_dataframe: which = {which!r} must be 'parameters', 'samples' or 'frequency'")
 
     def __str__(self) -> str:
         if self.linear:  # the axis's own units: m, N, kg

@@ -11,6 +11,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import _core
+from ._serialise import JsonResult, dataframe
 
 __all__ = ["Margins", "analytic_margins", "closed_loop_poles", "margins"]
 
@@ -20,7 +21,7 @@ def _core_axis(axis):
 
 
 @dataclass(frozen=True)
-class Margins:
+class Margins(JsonResult):
     """Stability first, then the margins and loop figures of merit (from :func:`margins`,
     :func:`analytic_margins` or :meth:`FrequencyResponse.margins`). ``str(m)`` starts with "UNSTABLE" for an
     unstable loop.

@@ -7,10 +7,11 @@ from dataclasses import dataclass, asdict
 import numpy as np
 
 from . import _checks
+from ._serialise import JsonResult, dataframe
 
 
 @dataclass(frozen=True)
-class MoveMetrics:
+class MoveMetrics(JsonResult):
     """Step/move figures of merit, read from a recorded run.
 
     rise_time_s

@@ -27,6 +27,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import _checks
+from ._serialise import JsonResult, dataframe
 from ._core import (
     AdlinkInterpolator,
     AdlinkInterpSetup,
@@ -53,7 +54,7 @@ __all__ = [
 
 
 @dataclass
-class PathRun:
+class PathRun(JsonResult):
     """A recorded path, one row per motion cycle.
 
     t_ms: time at the end of each cycle, ms. pos: coordinate positions (n, dim), unit. axis_pos: motor positions
@@ -80,6 +81,26 @@ class PathRun:
         dur = self.t_ms[-1] if len(self) else 0.0
         return (f"PathRun({len(self)} cycles, {dur:g} ms, {int(self.segments[-1]) if len(self) else 0} segments, "
                 f"peak speed {self.speed.max() if len(self) else 0:g} unit/ms)")
+
+    def to_dataframe(self):
+        """One row per motion cycle: t_ms (ms), pos_0.. (the coordinates, unit), axis_<n> (motor axis n, pulse),
+        speed (unit/ms), acc (unit/ms^2), segments, gpo, aux_<n> (outside axis n, pulse); units in
+        ``df.attrs["units"]``."""
+        cols = {"t_ms": self.t_ms}
+        units = {"t_ms": "ms", "speed": "unit/ms", "acc": "unit/ms^2"}
+        pos = np.asarray(self.pos).reshape(len(self), -1)
+        for i in range(pos.shape[1]):
+            cols[f"pos_{i}"], units[f"pos_{i}"] = pos[:, i], "unit"
+        ap = np.asarray(self.axis_pos).reshape(len(self), -1)
+        for i in range(ap.shape[1]):
+            name = f"axis_{self.axes[i]}" if i < len(self.axes) else f"axis_pos_{i}"
+            cols[name], units[name] = ap[:, i], "pulse"
+        cols.update({"speed": self.speed, "acc": self.acc, "segments": self.segments, "gpo": self.gpo})
+        aux = np.asarray(self.aux).reshape(len(self), -1)
+        for i in range(aux.shape[1]):
+            name = f"aux_{self.aux_axes[i]}" if i < len(self.aux_axes) else f"aux_{i}"
+            cols[name], units[name] = aux[:, i], "pulse"
+        return dataframe(cols, units)
 
     def aux_position(self, axis: int) -> np.ndarray:
         """Positions (pulse) of outside axis ``axis`` (1-based) per cycle."""
@@ -123,7 +144,7 @@ def run_path(gen, *, max_ticks: int = 10**7, ticks: int | None = None) -> PathRu
 
 
 @dataclass
-class AdlinkRun:
+class AdlinkRun(JsonResult):
     """A recorded ADLINK interpolation, one row per motion cycle: t_s (s), pos (n, len(axes)) axis positions in
     the axis-array order (pulse), speed (vector speed, pulse/s), moves_done (finished moves)."""
 
@@ -134,6 +155,17 @@ class AdlinkRun:
 
     def __len__(self) -> int:
         return len(self.t_s)
+
+    def to_dataframe(self):
+        """One row per motion cycle: t_s (s), pos_0.. (axis positions in the axis-array order, pulse), speed
+        (pulse/s), moves_done; units in ``df.attrs["units"]``."""
+        cols = {"t_s": self.t_s}
+        units = {"t_s": "s", "speed": "pulse/s"}
+        pos = np.asarray(self.pos).reshape(len(self), -1)
+        for i in range(pos.shape[1]):
+            cols[f"pos_{i}"], units[f"pos_{i}"] = pos[:, i], "pulse"
+        cols.update({"speed": self.speed, "moves_done": self.moves_done})
+        return dataframe(cols, units)
 
     def __repr__(self) -> str:
         dur = self.t_s[-1] if len(self) else 0.0

@@ -22,11 +22,12 @@ PAGES = [
     "decisions",
     "coverage", "validation", "benchmarks",
 ]
-API_PAGES = ["axis", "batch", "design", "motion", "paths", "frequency", "autotune", "identify", "card", "plot", "dialects",
+API_PAGES = ["axis", "batch", "design", "motion", "paths", "frequency", "autotune", "identify", "card", "plot", "widgets",
+             "dialects",
              "dialect-gt", "dialect-ge", "dialect-gts", "dialect-aps"]
 MODULES = ["servobench.batch", "servobench.frequency", "servobench.identify", "servobench.design", "servobench.plot", "servobench.card",
            "servobench.autotune", "servobench.motion", "servobench.homing", "servobench.gearing", "servobench.pvt",
-           "servobench.paths", "servobench.dialects", "servobench.dialects.gt", "servobench.dialects.ge",
+           "servobench.paths", "servobench.widgets", "servobench.dialects", "servobench.dialects.gt", "servobench.dialects.ge",
            "servobench.dialects.gts", "servobench.dialects.aps"]
 
 

@@ -1,4 +1,5 @@
-"""The guides' code runs: every fenced ```python block of the getting-started, concepts and how-to pages is executed,
+"""The docs' code runs: every fenced ```python block of every page of docs/ (getting started, concepts, the how-to
+guides and the reference pages: each page that has Python code, found by scanning docs/, issue 23.1) is executed,
 page by page (one namespace per page, blocks in order, in a fresh folder), so a page cannot show code that fails.
 
 A block that is meant to be read, not run (it needs a real card, a file the reader brings, or is a fragment),
@@ -14,8 +15,10 @@ from pathlib import Path
 import pytest
 
 DOCS = Path(__file__).resolve().parents[2] / "docs"
-PAGES = ["getting-started.md", "concepts.md", "howto-tune.md", "howto-bode.md", "howto-identify.md",
-         "howto-port.md", "identify-emps.md", "howto-batch.md", "lti-plant.md"]
+#: The pages known to carry Python code; every other page with a ```python block is found by the scan below.
+GUIDES = ["getting-started.md", "concepts.md", "howto-tune.md", "howto-bode.md", "howto-identify.md",
+          "howto-port.md", "identify-emps.md", "howto-batch.md", "card.md", "filters.md", "identify.md", "motion.md",
+          "paths.md", "widgets.md", "lti-plant.md"]
 MAX_NOT_RUN = 3  # per page
 
 FENCE = re.compile(r"^(?P<indent> {0,3})(?P<fence>```+|~~~+)\s*(?P<lang>[^\s`]*)[^\n]*$")
@@ -42,6 +45,21 @@ def python_blocks(text: str):
             out.append((start + 1, body, runs))
         i = j + 1
     return out
+
+
+def _pages_with_code() -> list[str]:
+    """Every docs page (docs/**/*.md) with at least one ```python block, relative to docs/."""
+    found = [p.relative_to(DOCS).as_posix() for p in sorted(DOCS.rglob("*.md"))
+             if "_build" not in p.parts and python_blocks(p.read_text(encoding="utf-8"))]
+    return sorted(set(found) | set(GUIDES), key=lambda p: (p not in GUIDES, GUIDES.index(p) if p in GUIDES else 0, p))
+
+
+PAGES = _pages_with_code()
+
+
+def test_every_page_with_code_is_run():
+    assert set(GUIDES) <= set(PAGES), "a guide lost its code or its file"
+    assert len(PAGES) >= len(GUIDES)
 
 
 @pytest.mark.parametrize("page", PAGES)
