@@ -63,22 +63,6 @@ def test_replan_duration_matches_ruckig_on_20000_random_states():
     assert braking.sum() > 2000
 
 
-def test_replan_through_the_generator_is_the_optimal_one():
-    # GT S-curve (GT L839-912): a target change while braking; the generator's remaining time equals Ruckig's.
-    g = sb.ProfileGenerator()
-    g.command(sb.GtSCurve(pos=-2000, vel=14.07, macc=0.25, jerk=0.0005))
-    g.run(300)
-    g.command(sb.GtSCurve(pos=200, vel=14.07, macc=0.25, jerk=0.0005))
-    g.run(700)  # past the braking onset of the new move
-    p, v, a, _ = g.state
-    assert v < 0 and a > 0  # moving towards -, braking
-    g.command(sb.GtSCurve(pos=-2600, vel=14.07, macc=0.25, jerk=0.0005))  # back past the stop
-    ref = ruckig_durations([p], [v], [a], [-2600.0], [14.07], [0.25], [0.0005])[0]
-    assert g.duration_ticks == pytest.approx(ref, rel=1e-9)
-    g.run_until_done()
-    assert g.reported_pos == -2600 and g.state[1] == 0
-
-
 def test_replan_from_outside_the_limits_brakes_first_and_ends_on_target():
     # Decision MO2: a state the limits do not reach (|a| > A, or v that would overshoot V) is braked at full
     # jerk back inside, then planned as above; the plan is finite and ends on its target.
