@@ -110,7 +110,7 @@ def time_servobench_moving(moves, repeats: int = 5):
     best, out = float("inf"), None
     for _ in range(repeats):
         t0 = time.perf_counter()
-        out = sb.motion.plan_s_curve_from_state_batch(*moves)
+        out = sb.motion.plan_s_curve_replan_batch(*moves)
         best = min(best, time.perf_counter() - t0)
     return best, out
 
@@ -184,7 +184,7 @@ def run(quick: bool = False, moves: int | None = None, ruckig_moves: int | None 
     moving = moving_moves(n_moves)
     t_sbm, dur_sbm = time_servobench_moving(moving, repeats=1 if quick else 5)
     us_sbm = t_sbm / n_moves * 1e6
-    moving_rows = [("servobench `plan_s_curve_from_state_batch` (C++, whole profile built)", n_moves, us_sbm, 1.0)]
+    moving_rows = [("servobench `plan_s_curve_replan_batch` (C++, whole profile built)", n_moves, us_sbm, 1.0)]
     moving_text = ""
     dur_ratio = None
     if ruckig is not None:

@@ -196,40 +196,37 @@ void bind_motion(py::module_& m) {
       "Plans rest-to-rest S-curves (pulse; limits pulse/tick, pulse/tick^2, pulse/tick^3, all > 0) and returns\n"
       "their minimal durations in ticks. The benchmark's batch entry point (GIL released while planning).");
   m.def(
-      "plan_s_curve_from_state_batch",
-      [](py::array_t<double, py::array::c_style | py::array::forcecast> pos0,
-         py::array_t<double, py::array::c_style | py::array::forcecast> vel0,
-         py::array_t<double, py::array::c_style | py::array::forcecast> acc0,
-         py::array_t<double, py::array::c_style | py::array::forcecast> target,
+      "plan_s_curve_replan_batch",
+      [](py::array_t<double, py::array::c_style | py::array::forcecast> pos,
          py::array_t<double, py::array::c_style | py::array::forcecast> vel,
          py::array_t<double, py::array::c_style | py::array::forcecast> acc,
-         py::array_t<double, py::array::c_style | py::array::forcecast> jerk) {
-        const auto n = pos0.size();
-        for (const auto* a : {&vel0, &acc0, &target, &vel, &acc, &jerk})
-          if (a->size() != n)
-            throw std::invalid_argument(
-                "plan_s_curve_from_state_batch: pos0, vel0, acc0, target, vel, acc and jerk must have equal lengths");
+         py::array_t<double, py::array::c_style | py::array::forcecast> target,
+         py::array_t<double, py::array::c_style | py::array::forcecast> vmax,
+         py::array_t<double, py::array::c_style | py::array::forcecast> amax,
+         py::array_t<double, py::array::c_style | py::array::forcecast> jmax) {
+        const auto n = pos.size();
+        if (vel.size() != n || acc.size() != n || target.size() != n || vmax.size() != n || amax.size() != n ||
+            jmax.size() != n)
+          throw std::invalid_argument(
+              "plan_s_curve_replan_batch: pos, vel, acc, target, vmax, amax and jmax must have equal lengths");
         for (py::ssize_t i = 0; i < n; ++i) {
-          SCurveLimits lim{vel.data()[i], acc.data()[i], jerk.data()[i]};
-          lim.validate();
-          if (!std::isfinite(pos0.data()[i]) || !std::isfinite(vel0.data()[i]) || !std::isfinite(target.data()[i]) ||
-              !(std::fabs(acc0.data()[i]) <= lim.acc))
-            throw std::invalid_argument("plan_s_curve_from_state_batch: pos0, vel0, target must be finite and |acc0| "
-                                        "<= acc (index " + std::to_string(i) + ")");
+          check_replan_input(MotionState{pos.data()[i], vel.data()[i], acc.data()[i], 0.0}, target.data()[i],
+                             SCurveLimits{vmax.data()[i], amax.data()[i], jmax.data()[i]});
         }
         py::array_t<double> out(n);
         {
           py::gil_scoped_release release;
-          plan_s_curve_from_state_batch(static_cast<std::size_t>(n), pos0.data(), vel0.data(), acc0.data(),
-                                        target.data(), vel.data(), acc.data(), jerk.data(), out.mutable_data());
+          plan_s_curve_replan_batch(static_cast<std::size_t>(n), pos.data(), vel.data(), acc.data(), target.data(),
+                                    vmax.data(), amax.data(), jmax.data(), out.mutable_data());
         }
         return out;
       },
-      py::arg("pos0"), py::arg("vel0"), py::arg("acc0"), py::arg("target"), py::arg("vel"), py::arg("acc"),
-      py::arg("jerk"),
-      "Plans S-curves from moving states (pulse, pulse/tick, pulse/tick^2; |acc0| <= acc) to rest at target (pulse;\n"
-      "limits pulse/tick, pulse/tick^2, pulse/tick^3, all > 0) and returns their durations in ticks. The benchmark's\n"
-      "entry point for the general problem (GIL released while planning).");
+      py::arg("pos"), py::arg("vel"), py::arg("acc"), py::arg("target"), py::arg("vmax"), py::arg("amax"),
+      py::arg("jmax"),
+      "Replans S-curves from moving states (pos pulse, vel pulse/tick, acc pulse/tick^2) to rest at target (pulse)\n"
+      "with limits vmax, amax, jmax (pulse/tick, /tick^2, /tick^3, > 0, finite); returns the durations in ticks.\n"
+      "A state outside its limits is first braked back inside (decision MO2). ValueError on bad input.\n"
+      "The replan benchmark's batch entry point (GIL released while planning).");
   m.def("s_curve_min_time", [](double distance, double vel, double acc, double jerk) {
         SCurveLimits lim{vel, acc, jerk};
         lim.validate();

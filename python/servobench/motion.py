@@ -32,7 +32,7 @@ from ._core import (
     MotionCommandRefused,
     ProfileGenerator,
     plan_s_curve_batch,
-    plan_s_curve_from_state_batch,
+    plan_s_curve_replan_batch,
     s_curve_min_time,
     t_curve_min_time,
 )
@@ -40,8 +40,8 @@ from .trajectory import Trajectory
 
 __all__ = [
     "AdlinkPtp", "ElectronicGear", "GtGear", "GeJog", "GeSCurve", "GeTCurve", "GtJog", "GtSCurve", "GtTCurve", "MotionCommandRefused",
-    "ProfileGenerator", "jog_trajectory", "move_trajectory", "plan_s_curve_batch",
-    "plan_s_curve_from_state_batch", "s_curve_min_time",
+    "ProfileGenerator", "jog_trajectory", "move_trajectory", "plan_s_curve_batch", "plan_s_curve_replan_batch",
+    "s_curve_min_time",
     "t_curve_min_time", "trajectory_from_samples",
 ]
 

@@ -160,6 +160,7 @@ TEST(MotionProperties, SCurveRetargetFromMotion) {
     if (std::fabs(sm::velocity_change_extent(v0, a0, 0, A, J).dist) > 1e8) continue;
     ++n;
     const auto p = sm::plan_s_curve(from, target, {V, A, J});
+    ASSERT_TRUE(bang_bang(p, V, A, J)) << i;  // time-optimal structure (MO1); durations vs Ruckig: Python test
     const auto s0 = p.at(0);
     ASSERT_EQ(s0.pos, p0);
     ASSERT_EQ(s0.vel, v0);
@@ -180,6 +181,48 @@ TEST(MotionProperties, SCurveRetargetFromMotion) {
   EXPECT_LE(w.acc, kRel);
   EXPECT_LE(w.jerk, kRel);
   EXPECT_LE(w.end, kGap);
+}
+
+// Replanning from a state the limits do not reach (decision MO2): |a| up to 3A, |v| up to 3V. A brake pre-phase at
+// full jerk brings the state inside (|a| <= A, |v + a|a|/2J| <= V); once also |v| <= V the limits hold to the end;
+// the plan ends at rest on the target.
+TEST(MotionProperties, SCurveReplanFromOutsideTheLimitsBrakesFirst) {
+  Rng r;
+  int n = 0, outside = 0;
+  double worst_end = 0;
+  for (int i = 0; n < 20000; ++i) {
+    const double V = r.log_uni(1e-1, 1e2), A = r.log_uni(1e-3, 1), J = r.log_uni(1e-3, 1e-1);
+    const double a0 = r.uni(-3, 3) * A, v0 = r.uni(-3, 3) * V;
+    const double p0 = r.uni(-1e6, 1e6), target = std::round(p0 + r.distance(1e6));
+    const auto p = sm::plan_s_curve({p0, v0, a0, 0}, target, {V, A, J});
+    ++n;
+    if (std::fabs(a0) > A || std::fabs(v0 + a0 * std::fabs(a0) / (2 * J)) > V) ++outside;
+    ASSERT_TRUE(std::isfinite(p.duration())) << i;
+    double t = 0, travel = std::fabs(p0) + std::fabs(target);
+    bool inside = false;
+    for (int k = 0; k < p.size(); ++k) {
+      const auto& s = p.segment(k);
+      ASSERT_LE(std::fabs(s.j), J * (1 + 1e-12)) << i;
+      const auto e = s.at(s.duration);
+      travel += std::fabs(s.v) * s.duration;
+      const bool in = std::fabs(s.a) <= A * (1 + 1e-9) && std::fabs(s.v) <= V * (1 + 1e-9) &&
+                      std::fabs(s.v + s.a * std::fabs(s.a) / (2 * J)) <= V * (1 + 1e-9) + 1e-12;
+      inside = inside || in;
+      if (inside) {  // once inside, never out again
+        ASSERT_LE(std::fabs(e.acc), A * (1 + 1e-9)) << i << " seg " << k;
+        ASSERT_LE(std::fabs(e.vel), V * (1 + 1e-9)) << i << " seg " << k;
+      }
+      t += s.duration;
+    }
+    const auto e = integrated_end_state(p);
+    ASSERT_LE(std::fabs(e.vel), 1e-8 * V) << i;
+    ASSERT_LE(std::fabs(e.acc), 1e-8 * A) << i;
+    worst_end = std::max(worst_end, std::fabs(e.pos - target) / travel);
+  }
+  std::printf("[S-curve replan from outside the limits] %d moves, %d outside: worst end gap %.3g of the travel\n", n,
+              outside, worst_end);
+  EXPECT_GT(outside, 10000);
+  EXPECT_LE(worst_end, 1e-9);  // measured 2e-10: double rounding over long brake + cruise chains
 }
 
 // On-the-fly target and velocity change of a T-curve: from a random velocity up to twice the new limit.
