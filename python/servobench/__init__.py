@@ -118,6 +118,8 @@ from .motion import (
     move_trajectory,
 )
 
+from ._public import limit_dir_to_all as _limit_dir_to_all
+
 __version__ = "0.1.0"
 
 __all__ = [
@@ -261,3 +263,5 @@ __all__ = [
     "plot",
     "trapezoid_move",
 ]
+
+_limit_dir_to_all(__name__)  # tab completion offers __all__, not np/sys/csv (servobench/_public.py)
