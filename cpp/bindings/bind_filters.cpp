@@ -56,10 +56,17 @@ py::tuple poles_of(const P& p) {
   return py::make_tuple(r.first, r.second);
 }
 
-template <class P>
-py::object plot_of(const py::object& self, const py::kwargs& kw) {
-  return py::module_::import("servobench.plot").attr("filter_response")(self, **kw);
+// filter.plot(...): servobench.plot.filter_response for this one filter, its keywords spelled out (not **kwargs).
+py::object plot_of(const py::object& self, const py::object& freq_hz, std::optional<double> sample_time_s,
+                   std::optional<std::string> title, const py::object& path, const py::object& ax) {
+  return py::module_::import("servobench.plot").attr("filter_response")(
+      self, py::arg("freq_hz") = freq_hz, py::arg("sample_time_s") = py::cast(sample_time_s),
+      py::arg("title") = py::cast(title), py::arg("path") = path, py::arg("ax") = ax);
 }
+
+#define SERVOBENCH_PLOT_ARGS                                                                                  \
+  py::kw_only(), py::arg("freq_hz") = py::none(), py::arg("sample_time_s") = py::none(),                       \
+      py::arg("title") = py::none(), py::arg("path") = py::none(), py::arg("ax") = py::none()
 
 constexpr const char* kResponseDoc =
     "Complex frequency response H(exp(j 2 pi f Ts)) at freq_hz (Hz; a number or an array, result of the same\n"
@@ -86,19 +93,15 @@ void bind_filters(py::module_& m) {
       .finish()
       .def("frequency_response", &response<FloatBiquadParams>, py::arg("freq_hz"),
            py::arg("sample_time_s") = py::none(), kResponseDoc)
-      .def("to_adlink", &control::quantize_adlink,
-           "The ADLINK integer biquad (AdlinkBiquad): DIV = trunc(32767/max ``|coef|``), the largest ``|coef|`` -> +-32767,\n"
-           "the others trunc(coef*DIV) (adlink.md §3.6; reproduces the manual's integers L1919, L1948). Raises\n"
-           "ValueError if the integers cannot hold the design (coefficient > 32767, numerator truncated to 0,\n"
-           "quantised poles on or outside the unit circle).")
       .def("filter", &filter_of<FloatBiquadParams>, py::arg("x"),
            "Runs the filter from rest over the samples x (1-D, one per tick) and returns its output, the same\n"
            "arithmetic the Axis uses every tick. Releases the GIL.")
       .def("poles", &poles_of<FloatBiquadParams>, "The two poles (complex z), roots of z^2 + a1 z + a2.")
       .def("is_stable", [](const FloatBiquadParams& p) { return control::is_stable(p); },
            "True if both poles are strictly inside the unit circle.")
-      .def("plot", &plot_of<FloatBiquadParams>,
-           "Bode plot (magnitude dB, phase deg, over Hz); see servobench.plot.filter_response. Returns the Figure.");
+      .def("plot", &plot_of, SERVOBENCH_PLOT_ARGS,
+           "Bode plot (magnitude dB, phase deg, over frequency in Hz); see servobench.plot.filter_response for\n"
+           "the keywords (freq_hz in Hz, sample_time_s in s). Returns what filter_response returns.");
 
   ParamClass<AdlinkBiquadParams>(m, "AdlinkBiquad",
       "The ADLINK PCI-8254/8258 integer biquad (PRA_BIQUADn_A1, A2, B0, B1, B2, DIV; manual L1873-1911)::\n"
@@ -127,8 +130,19 @@ void bind_filters(py::module_& m) {
       .def("poles", &poles_of<AdlinkBiquadParams>, "The two poles (complex z), roots of DIV z^2 - A1 z - A2.")
       .def("is_stable", [](const AdlinkBiquadParams& p) { return control::is_stable(p); },
            "True if both poles are strictly inside the unit circle (exact integer test).")
-      .def("plot", &plot_of<AdlinkBiquadParams>,
-           "Bode plot (magnitude dB, phase deg, over Hz); see servobench.plot.filter_response. Returns the Figure.");
+      .def("plot", &plot_of, SERVOBENCH_PLOT_ARGS,
+           "Bode plot (magnitude dB, phase deg, over frequency in Hz); see servobench.plot.filter_response for\n"
+           "the keywords (freq_hz in Hz, sample_time_s in s). Returns what filter_response returns.");
+
+#undef SERVOBENCH_PLOT_ARGS
+
+  // After AdlinkBiquad is registered, so that its signature names the Python type (stubs, help()).
+  auto float_biquad = py::reinterpret_borrow<py::class_<FloatBiquadParams>>(py::type::of<FloatBiquadParams>());
+  float_biquad.def("to_adlink", &control::quantize_adlink,
+           "The ADLINK integer biquad (AdlinkBiquad): DIV = trunc(32767/max ``|coef|``), the largest ``|coef|`` -> +-32767,\n"
+           "the others trunc(coef*DIV) (adlink.md §3.6; reproduces the manual's integers L1919, L1948). Raises\n"
+           "ValueError if the integers cannot hold the design (coefficient > 32767, numerator truncated to 0,\n"
+           "quantised poles on or outside the unit circle).");
 
   py::module_ d = m.def_submodule("design", "Filter design (C++). Use servobench.design.");
   d.def("lowpass", &control::lowpass, py::arg("cutoff_hz"), py::arg("sample_time_s"), py::arg("zeta"),

@@ -1,6 +1,11 @@
 // servobench._core: the pybind11 module. One bind_<layer>.cpp per layer; no logic here.
 #include <pybind11/pybind11.h>
 
+#include <cstdlib>
+#include <string>
+
+#include "signatures.hpp"
+
 namespace py = pybind11;
 
 namespace servobench::bindings {
@@ -41,4 +46,9 @@ PYBIND11_MODULE(_core, m) {
   servobench::bindings::bind_paths(m);
   servobench::bindings::bind_card(m);
   servobench::bindings::bind_batch(m);
+  // Last: every function's signature readable by inspect.signature() (help(), IPython completion; decision Y3).
+  // Not while pybind11-stubgen reads the module at build time (CMakeLists.txt sets SERVOBENCH_STUBGEN): it takes a
+  // text signature over the docstring's typed line, and the stubs need the types.
+  if (std::getenv("SERVOBENCH_STUBGEN") == nullptr)
+    servobench::bindings::add_text_signatures(m, py::str(m.attr("__name__")).cast<std::string>());
 }

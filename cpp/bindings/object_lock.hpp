@@ -99,11 +99,16 @@ template <class T, class... Extra>
 void serialise_methods(py::class_<T, Extra...>& cls, const std::vector<std::string>& except) {
   py::dict d = cls.attr("__dict__");
   const py::object property = py::module_::import("builtins").attr("property");
-  auto wrap = [](py::object f, const char* name, py::handle scope) -> py::object {
+  // The wrapper keeps the wrapped function's docstring, whose first line is its typed signature: help(), the
+  // stubs (pybind11-stubgen) and the text signature of signatures.hpp read it, so (*args, **kwargs) stays hidden.
+  // A method bound without a name (cls.attr(n) = cpp_function(...)) has a signature line without one: named here.
+  auto wrap = [](py::object f, const char* name, py::handle scope, bool method) -> py::object {
     if (f.is_none()) return f;
     py::options opts;
     opts.disable_function_signatures();
-    const py::object doc = py::getattr(f, "__doc__", py::none());
+    const py::object original_doc = py::getattr(f, "__doc__", py::none());
+    std::string doc = original_doc.is_none() ? "" : py::str(original_doc).cast<std::string>();
+    if (method && !doc.empty() && doc.front() == '(') doc = name + doc;
     return py::cpp_function(
         [f](py::args args, py::kwargs kw) -> py::object {
           std::unique_lock<std::recursive_mutex> lk;
@@ -113,8 +118,7 @@ void serialise_methods(py::class_<T, Extra...>& cls, const std::vector<std::stri
           }
           return f(*args, **kw);
         },
-        py::name(name), py::is_method(scope),
-        py::doc(doc.is_none() ? "" : py::str(doc).cast<std::string>().c_str()));
+        py::name(name), py::is_method(scope), py::doc(doc.c_str()));
   };
   std::vector<std::pair<std::string, py::object>> items;
   for (auto item : d) items.emplace_back(py::str(item.first).cast<std::string>(), py::reinterpret_borrow<py::object>(item.second));
@@ -125,10 +129,10 @@ void serialise_methods(py::class_<T, Extra...>& cls, const std::vector<std::stri
       py::object fget = value.attr("fget"), fset = value.attr("fset");
       py::object doc = value.attr("__doc__");
       py::setattr(cls, name.c_str(),
-                  property(wrap(fget, name.c_str(), cls), wrap(fset, name.c_str(), cls), py::none(), doc));
+                  property(wrap(fget, name.c_str(), cls, false), wrap(fset, name.c_str(), cls, false), py::none(), doc));
     } else if (PyInstanceMethod_Check(value.ptr())) {  // a bound C++ method (pybind11 wraps them so)
       py::object fn = py::reinterpret_borrow<py::object>(PyInstanceMethod_GET_FUNCTION(value.ptr()));
-      py::setattr(cls, name.c_str(), wrap(fn, name.c_str(), cls));
+      py::setattr(cls, name.c_str(), wrap(fn, name.c_str(), cls, true));
     }
   }
 }

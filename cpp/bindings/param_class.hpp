@@ -1,11 +1,17 @@
 // Binds a validated parameter struct as a small Python value type: keyword-only constructor, validated
 // properties, __repr__, __eq__, to_dict(), replace(**changes) and pickling. Logic stays in the C++ struct's
 // validate(); this header only translates.
+//
+// The constructor and replace() show every field as an explicit keyword argument, typed, with its default (the
+// C++ struct's default member initialisers, which are the manual's defaults): the signatures are written from the
+// same .field() list that binds the properties, so help(), IPython completion (kp=, kd=...) and the generated
+// .pyi stubs see them, and nothing is retyped per class (decision Y2).
 #pragma once
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <functional>
 #include <map>
 #include <memory>
@@ -25,6 +31,7 @@ class ParamClass {
   ParamClass(py::module_& m, const char* name, const char* doc)
       : cls_(m, name, doc), fields_(std::make_shared<Fields>()) {
     fields_->type_name = name;
+    fields_->qualified_name = py::str(m.attr("__name__")).cast<std::string>() + "." + name;
   }
 
   template <class T>
@@ -33,6 +40,8 @@ class ParamClass {
     const std::string owner = fields_->type_name;
     const std::string key = fname;
     Field f;
+    f.type = std::is_same_v<T, bool> ? "bool" : "float";
+    f.doc = doc;
     f.get = [member](const P& p) -> py::object { return py::cast(p.*member); };
     f.repr = [member](const P& p) -> std::string {
       if constexpr (std::is_same_v<T, bool>) {
@@ -71,20 +80,30 @@ class ParamClass {
   // Defines __init__ and the value-type protocol; call once, after the fields.
   py::class_<P>& finish() {
     auto fields = fields_;
-    cls_.def(py::init([fields](const py::kwargs& kw) {
-      P p;
-      apply(*fields, p, kw);
-      p.validate();
-      return p;
-    }));
+    {
+      // The docstrings carry the explicit signatures (pybind11's own would read "**kwargs").
+      py::options options;
+      options.disable_function_signatures();
+      const std::string init_doc = "__init__" + signature(*fields, true, "None") + "\n\n" + fields->type_name +
+                                   " from keyword arguments; each one omitted keeps the manual's default.\n\n" +
+                                   field_docs(*fields);
+      cls_.def(py::init([fields](const py::kwargs& kw) {
+        P p;
+        apply(*fields, p, kw);
+        p.validate();
+        return p;
+      }), init_doc.c_str());
+      const std::string replace_doc = "replace" + signature(*fields, false, fields->qualified_name) +
+                                      "\n\nA validated copy with the given fields changed (the others kept).";
+      cls_.def("replace", [fields](const P& p, const py::kwargs& kw) {
+        P copy = p;
+        apply(*fields, copy, kw);
+        copy.validate();
+        return copy;
+      }, replace_doc.c_str());
+    }
     cls_.def("to_dict", [fields](const P& p) { return to_dict(*fields, p); },
              "The parameters as a dict of plain Python values.");
-    cls_.def("replace", [fields](const P& p, const py::kwargs& kw) {
-      P copy = p;
-      apply(*fields, copy, kw);
-      copy.validate();
-      return copy;
-    }, "A validated copy with the given fields changed.");
     cls_.def("__repr__", [fields](const P& p) {
       std::string s = fields->type_name + "(";
       bool first = true;
@@ -114,15 +133,44 @@ class ParamClass {
 
  private:
   struct Field {
+    std::string type;  // the Python annotation: float or bool
+    std::string doc;
     std::function<py::object(const P&)> get;
     std::function<std::string(const P&)> repr;
     std::function<void(P&, py::handle)> set;
   };
   struct Fields {
     std::string type_name;
+    std::string qualified_name;  // servobench._core.<Name>, for annotations
     std::vector<std::string> order;
     std::map<std::string, Field> by_name;
   };
+
+  // "(self, *, kp: float = 0.0, ...) -> ret"; with_defaults false writes "= ..." (replace(): omitted = unchanged).
+  // An infinite default ("no limit") is spelled math.inf, which inspect.signature evaluates (a NaN one: ...).
+  static std::string signature(const Fields& fields, bool with_defaults, const std::string& ret) {
+    const P defaults{};
+    std::string s = "(self, *";
+    for (const auto& name : fields.order) {
+      const Field& f = fields.by_name.at(name);
+      std::string value = "...";
+      if (with_defaults) {
+        const py::object v = f.get(defaults);
+        if (py::isinstance<py::bool_>(v) || std::isfinite(v.cast<double>()))
+          value = py::repr(v).cast<std::string>();  // Python's own spelling: 0.0, 32767.0, True
+        else if (std::isinf(v.cast<double>()))
+          value = v.cast<double>() > 0 ? "math.inf" : "-math.inf";  // inspect.signature evaluates math.inf
+      }
+      s += ", " + name + ": " + f.type + " = " + value;
+    }
+    return s + ") -> " + ret;
+  }
+
+  static std::string field_docs(const Fields& fields) {
+    std::string s = "Parameters:\n";
+    for (const auto& name : fields.order) s += "    " + name + ": " + fields.by_name.at(name).doc + "\n";
+    return s;
+  }
 
   static double to_double(const std::string& owner, const std::string& key, py::handle value) {
     if (py::isinstance<py::bool_>(value) || !(py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value) ||

@@ -125,6 +125,8 @@ from .motion import (
 )
 from . import widgets  # the Jupyter tuning panel, sb.widgets.tuner(axis) (issue 23.2; needs ipywidgets)
 
+from ._public import limit_dir_to_all as _limit_dir_to_all
+
 __version__ = "0.1.0"
 
 __all__ = [
@@ -279,3 +281,5 @@ __all__ = [
     "trapezoid_move",
     "widgets",
 ]
+
+_limit_dir_to_all(__name__)  # tab completion offers __all__, not np/sys/csv (servobench/_public.py)

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["model_agreement"]
+__all__ = ["friction_level_nm", "model_agreement"]
 
 _FRICTION_FIELDS = ("coulomb_nm", "static_nm", "motor_coulomb_nm", "motor_static_nm", "load_coulomb_nm",
                     "load_static_nm")

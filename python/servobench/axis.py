@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+__all__ = ["Axis", "AxisRun", "SIGNALS", "SIGNAL_UNITS", "controller_signature"]
+
 import math
 from dataclasses import dataclass, field
 from typing import Iterable, Mapping

@@ -52,7 +52,8 @@ try:  # Python 3.11+
 except ModuleNotFoundError:  # pragma: no cover - Python 3.9/3.10: the tomli backport (a dependency there)
     import tomli as _toml
 
-__all__ = ["AxisFileError", "axis_from_dict", "axis_to_dict", "load_axis", "read_axis", "save_axis", "schema",
+__all__ = ["Key", "Table", "Variant", "dumps_toml",
+           "AxisFileError", "axis_from_dict", "axis_to_dict", "load_axis", "read_axis", "save_axis", "schema",
            "schema_markdown", "FORMATS"]
 
 #: File extensions and their format.

@@ -9,6 +9,8 @@ ran on: a Dask run (``client=``) returns exactly what the local run returns.
 
 from __future__ import annotations
 
+__all__ = ["BatchResult", "METRICS", "simulate_many", "monte_carlo", "sample_spread", "axis_spec", "parameter_names"]
+
 import os
 from dataclasses import dataclass, field
 from typing import Callable, Iterable, Mapping, Sequence

@@ -30,7 +30,8 @@ from . import _core
 from ._core import CardCommandRefused, CardLimits
 from .axis import SIGNAL_UNITS, Axis
 
-__all__ = ["Card", "CardCommandRefused", "CardLimits", "CardRun", "CARD_EVENTS", "events_named", "FiredEvent",
+__all__ = ["AxisSignals",
+           "Card", "CardCommandRefused", "CardLimits", "CardRun", "CARD_EVENTS", "events_named", "FiredEvent",
            "SAMPLE_SIGNALS", "ScopeData"]
 
 #: Names of the card's latched events, in bit order (bits 0-7 in the GT status-register order).

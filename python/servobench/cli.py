@@ -11,6 +11,9 @@ traceback: ``servobench: error: <file>: <key>: <message>``.
 
 from __future__ import annotations
 
+__all__ = ["main", "build_parser", "LOG_COLUMNS", "UsageError", "WorkFailed", "Output", "cmd_simulate", "cmd_bode",
+           "cmd_tune", "cmd_identify", "cmd_demo"]
+
 import argparse
 import contextlib
 import math

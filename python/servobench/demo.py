@@ -5,6 +5,8 @@ the identified model, apply it, and measure the tuned loop with the Bode sweep (
 
 from __future__ import annotations
 
+__all__ = ["run_demo", "main"]
+
 import argparse
 import os
 import time

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+__all__ = ["demo_axis", "velocity_axis", "resonant_axis", "GUC_HEXAGON_PULSE", "program_guc_hexagon", "EMPS_ENV",
+           "emps_path", "emps_log"]
+
 from . import _core
 from .axis import Axis
 

@@ -30,6 +30,7 @@ from ._serialise import JsonResult, dataframe
 from .idlog import IdentificationLog
 
 __all__ = [
+    "frequency_input",
     "IdentificationLog", "IdentifiedPlant", "Estimate", "excitation", "run_experiment", "fit_time", "fit_frequency",
     "model_parameters", "torque_per_volt", "log_spectrum", "LogSpectrum", "resonance_guess", "ResonanceGuess",
     "IdentificationError",

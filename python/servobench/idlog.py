@@ -30,7 +30,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["UNITS", "parse_header", "unit_factor", "check_time", "MAX_JITTER_PPM", "IdentificationLog", "motor_side"]
+__all__ = ["read_csv", "read_dataframe", "read_mat", "column_unit", "finite_column", "detect_count",
+           "UNITS", "parse_header", "unit_factor", "check_time", "MAX_JITTER_PPM", "IdentificationLog", "motor_side"]
 
 #: Steps of a real time vector may differ from the median step by this much (parts per million) and be accepted.
 MAX_JITTER_PPM = 100.0

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+__all__ = ["MoveMetrics", "move_metrics"]
+
 from dataclasses import dataclass, asdict
 
 import numpy as np

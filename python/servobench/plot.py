@@ -6,6 +6,8 @@ PNG/SVG."""
 
 from __future__ import annotations
 
+__all__ = ["Plot", "response", "bode", "nyquist", "plant_bode", "friction_curve", "filter_response", "scope"]
+
 from dataclasses import dataclass, field
 
 import numpy as np

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+__all__ = ["Trajectory", "trapezoid_move"]
+
 from dataclasses import dataclass
 from typing import Optional
 

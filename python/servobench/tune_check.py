@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["TuneCheck", "TuningRefused", "check_design"]
+__all__ = ["designed_axis", "TuneCheck", "TuningRefused", "check_design"]
 
 
 @dataclass(frozen=True)

@@ -4,6 +4,7 @@ ticks, and the module-level functions (the vendor's free functions) that call th
 from __future__ import annotations
 
 import functools
+import inspect
 import math
 
 from .._core import CardCommandRefused, MotionCommandRefused
@@ -124,6 +125,10 @@ def export_functions(namespace: dict, default: DialectController, prefix: str) -
 
         f.__name__ = f.__qualname__ = name
         f.__doc__ = getattr(cls, name).__doc__
+        try:  # help() and completion show the vendor's argument names, not (*args, **kwargs)
+            f.__signature__ = inspect.signature(getattr(default, name))  # type: ignore[attr-defined]
+        except (TypeError, ValueError):  # a callable without a readable signature keeps the generic one
+            pass
         return f
 
     names = tuple(n for n in dir(cls) if n.startswith(prefix))

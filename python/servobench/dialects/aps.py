@@ -1442,3 +1442,10 @@ APS_FUNCTIONS: tuple[str, ...] = export_functions(globals(), _default, "APS_")
 def Sleep(ms: float):
     """The examples' ``Sleep(ms)``: runs the open card ``ms`` milliseconds (rounded to whole servo ticks)."""
     return _default.Sleep(ms)
+
+
+# The vendor's names (return codes, PRA_* parameter numbers, the other header constants, the APS_* functions) and
+# the simulation helpers; numpy and the package internals stay out of ``from ... import *`` and completion.
+__all__ = ["ApsController", "APS_FUNCTIONS", "Sleep", "card", "controller", "run", "wait_until",
+           *sorted(n for n in dict(globals()) if n.split("_")[0] in ("ERR", "PRA", "MF", "STOP", "STR", "TGR")),
+           *APS_FUNCTIONS]
