@@ -12,6 +12,7 @@
 
 #include "arrays.hpp"
 #include "object_lock.hpp"
+#include "card_axis.hpp"
 #include "servobench/common/validate.hpp"
 #include "servobench/machine/card.hpp"
 #include "servobench/machine/card_scope.hpp"
@@ -25,11 +26,6 @@ using machine::Card;
 std::vector<const void*> card_keys(Card& card);  // bind_card.cpp: the card and its axes
 
 namespace {
-
-std::size_t axis_index(const Card& c, double i) {
-  check_integer("Card", "axis", i, 0, static_cast<double>(c.axis_count()) - 1);
-  return static_cast<std::size_t>(i);
-}
 
 machine::SampleTrigger trigger_from(const std::string& s) {
   if (s == "immediate") return machine::SampleTrigger::Immediate;
@@ -192,11 +188,11 @@ void bind_card_scope(py::module_& m, py::class_<Card>& c) {
         const std::size_t nch = k.scope().sampler().config().channels.size();
         return block_tuple(k.scope().sampler().snapshot(), nch);
       })
-      .def("set_watch", [](Card& k, double i, double events, double msts, double mio) {
+      .def("set_watch", [](Card& k, AxisIndex i, double events, double msts, double mio) {
              check_integer("Card", "events", events, 0, 4095);
              check_integer("Card", "msts", msts, 0, 4294967295.0);
              check_integer("Card", "mio", mio, 0, 4294967295.0);
-             k.scope().set_watch(axis_index(k, i), static_cast<std::uint32_t>(events), static_cast<std::uint32_t>(msts),
+             k.scope().set_watch(card_axis(k, i), static_cast<std::uint32_t>(events), static_cast<std::uint32_t>(msts),
                                  static_cast<std::uint32_t>(mio));
            }, py::arg("axis"), py::arg("events"), py::arg("msts") = 0.0, py::arg("mio") = 0.0)
       .def("set_system_watch", [](Card& k, double bits) {
@@ -213,11 +209,11 @@ void bind_card_scope(py::module_& m, py::class_<Card>& c) {
       .def("set_probe_position", [](Card& k, double axis, double pos) { k.scope().set_probe_position(axis, pos); },
            py::arg("axis"), py::arg("pos"))
       .def("clear_probe_position", [](Card& k) { if (k.has_scope()) k.scope().clear_probe_position(); })
-      .def("capture_armed", [](Card& k, double i) {
-             return std::string(machine::to_string(k.loop(axis_index(k, i)).capture().armed()));
+      .def("capture_armed", [](Card& k, AxisIndex i) {
+             return std::string(machine::to_string(k.loop(card_axis(k, i)).capture().armed()));
            }, py::arg("axis"))
-      .def("capture_source", [](Card& k, double i) {
-             return std::string(machine::to_string(k.loop(axis_index(k, i)).capture().source()));
+      .def("capture_source", [](Card& k, AxisIndex i) {
+             return std::string(machine::to_string(k.loop(card_axis(k, i)).capture().source()));
            }, py::arg("axis"))
       // position compare
       .def("compare_set_source", [](Card& k, double comp, double axis, bool command) {
