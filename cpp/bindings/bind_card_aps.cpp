@@ -98,18 +98,18 @@ void bind_card_aps(py::class_<Card>& c, py::module_& m) {
              d["pos"] = std::vector<double>(p.begin(), p.begin() + g->interp().dim());
              return d;
            }, "the ADLINK interpolation group: array, busy, waiting, blending, pending, moves_done, speed, pos");
-  c.def("set_gear_ramp", [](Card& k, AxisIndex i, AxisIndex master, double ratio, double rate_per_tick) {
+  c.def("set_gear_ramp", [](Card& k, double i, double master, double ratio, double rate_per_tick) {
          k.modes().set_gear_ramp(card_axis(k, i), card_axis(k, master), ratio, rate_per_tick);
        }, py::arg("axis"), py::arg("master"), py::arg("ratio"), py::arg("rate_per_tick"),
        "ADLINK APS_start_gear: gear on master's profile, the ratio ramped from 0 at rate_per_tick (ratio/tick)")
-      .def("gear_ramp_to", [](Card& k, AxisIndex i, double ratio, double rate_per_tick) {
+      .def("gear_ramp_to", [](Card& k, double i, double ratio, double rate_per_tick) {
              k.modes().gear_ramp_to(card_axis(k, i), ratio, rate_per_tick);
            }, py::arg("axis"), py::arg("ratio"), py::arg("rate_per_tick"), "on-the-fly ratio change, ramped")
-      .def("gear_ratio", [](Card& k, AxisIndex i) { return k.modes().gear_ratio(card_axis(k, i)); }, py::arg("axis"),
+      .def("gear_ratio", [](Card& k, double i) { return k.modes().gear_ratio(card_axis(k, i)); }, py::arg("axis"),
            "the gear ratio in effect now");
-  m.def("aps_group_motion_status", [](const Card& k, AxisIndex i) { return machine::aps_group_motion_status(k, card_axis(k, i)); },
+  m.def("aps_group_motion_status", [](const Card& k, double i) { return machine::aps_group_motion_status(k, card_axis(k, i)); },
         py::arg("card"), py::arg("axis"), "APS_motion_status with the interpolation group's view (WAIT, BLD, MDN)");
-  m.def("aps_group_stop_code", [](const Card& k, AxisIndex i) { return machine::aps_group_stop_code(k, card_axis(k, i)); },
+  m.def("aps_group_stop_code", [](const Card& k, double i) { return machine::aps_group_stop_code(k, card_axis(k, i)); },
         py::arg("card"), py::arg("axis"), "APS_get_stop_code with a group fault's code on every group axis");
 }
 

@@ -188,7 +188,7 @@ void bind_card_scope(py::module_& m, py::class_<Card>& c) {
         const std::size_t nch = k.scope().sampler().config().channels.size();
         return block_tuple(k.scope().sampler().snapshot(), nch);
       })
-      .def("set_watch", [](Card& k, AxisIndex i, double events, double msts, double mio) {
+      .def("set_watch", [](Card& k, double i, double events, double msts, double mio) {
              check_integer("Card", "events", events, 0, 4095);
              check_integer("Card", "msts", msts, 0, 4294967295.0);
              check_integer("Card", "mio", mio, 0, 4294967295.0);
@@ -209,10 +209,10 @@ void bind_card_scope(py::module_& m, py::class_<Card>& c) {
       .def("set_probe_position", [](Card& k, double axis, double pos) { k.scope().set_probe_position(axis, pos); },
            py::arg("axis"), py::arg("pos"))
       .def("clear_probe_position", [](Card& k) { if (k.has_scope()) k.scope().clear_probe_position(); })
-      .def("capture_armed", [](Card& k, AxisIndex i) {
+      .def("capture_armed", [](Card& k, double i) {
              return std::string(machine::to_string(k.loop(card_axis(k, i)).capture().armed()));
            }, py::arg("axis"))
-      .def("capture_source", [](Card& k, AxisIndex i) {
+      .def("capture_source", [](Card& k, double i) {
              return std::string(machine::to_string(k.loop(card_axis(k, i)).capture().source()));
            }, py::arg("axis"))
       // position compare
