@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "card_axis.hpp"
 #include "servobench/common/validate.hpp"
 #include "servobench/machine/card.hpp"
 #include "servobench/machine/card_group_adlink.hpp"
@@ -19,11 +20,6 @@ namespace py = pybind11;
 using machine::Card;
 
 namespace {
-
-std::size_t ax(const Card& c, double i) {
-  check_integer("Card", "axis", i, 0, static_cast<double>(c.axis_count()) - 1);
-  return static_cast<std::size_t>(i);
-}
 
 motion::SpacePoint point(const std::vector<double>& v, const char* name) {
   if (v.size() > static_cast<std::size_t>(motion::kSpaceMaxDim))
@@ -55,7 +51,7 @@ void bind_card_aps(py::class_<Card>& c, py::module_& m) {
                          double final_radius, Flag relative, motion::BlendMode mode, double blend, double vm,
                          const motion::AdlinkPtpParams* all, Flag wait) {
          machine::AdlinkGroupMove mv;
-         for (double a : array) mv.array.push_back(ax(k, a));
+         for (double a : array) mv.array.push_back(card_axis(k, a));
          mv.params = params;
          mv.spec.kind = kind_of(kind);
          mv.spec.relative = relative;
@@ -105,17 +101,17 @@ void bind_card_aps(py::class_<Card>& c, py::module_& m) {
              return d;
            }, "the ADLINK interpolation group: array, busy, waiting, blending, pending, moves_done, speed, pos");
   c.def("set_gear_ramp", [](Card& k, double i, double master, double ratio, double rate_per_tick) {
-         k.modes().set_gear_ramp(ax(k, i), ax(k, master), ratio, rate_per_tick);
+         k.modes().set_gear_ramp(card_axis(k, i), card_axis(k, master), ratio, rate_per_tick);
        }, py::arg("axis"), py::arg("master"), py::arg("ratio"), py::arg("rate_per_tick"),
        "ADLINK APS_start_gear: gear on master's profile, the ratio ramped from 0 at rate_per_tick (ratio/tick)")
       .def("gear_ramp_to", [](Card& k, double i, double ratio, double rate_per_tick) {
-             k.modes().gear_ramp_to(ax(k, i), ratio, rate_per_tick);
+             k.modes().gear_ramp_to(card_axis(k, i), ratio, rate_per_tick);
            }, py::arg("axis"), py::arg("ratio"), py::arg("rate_per_tick"), "on-the-fly ratio change, ramped")
-      .def("gear_ratio", [](Card& k, double i) { return k.modes().gear_ratio(ax(k, i)); }, py::arg("axis"),
+      .def("gear_ratio", [](Card& k, double i) { return k.modes().gear_ratio(card_axis(k, i)); }, py::arg("axis"),
            "the gear ratio in effect now");
-  m.def("aps_group_motion_status", [](const Card& k, double i) { return machine::aps_group_motion_status(k, ax(k, i)); },
+  m.def("aps_group_motion_status", [](const Card& k, double i) { return machine::aps_group_motion_status(k, card_axis(k, i)); },
         py::arg("card"), py::arg("axis"), "APS_motion_status with the interpolation group's view (WAIT, BLD, MDN)");
-  m.def("aps_group_stop_code", [](const Card& k, double i) { return machine::aps_group_stop_code(k, ax(k, i)); },
+  m.def("aps_group_stop_code", [](const Card& k, double i) { return machine::aps_group_stop_code(k, card_axis(k, i)); },
         py::arg("card"), py::arg("axis"), "APS_get_stop_code with a group fault's code on every group axis");
 }
 

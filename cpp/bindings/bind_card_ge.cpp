@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "card_axis.hpp"
 #include "servobench/common/validate.hpp"
 #include "servobench/machine/card.hpp"
 #include "servobench/machine/ge_status.hpp"
@@ -17,11 +18,6 @@ namespace py = pybind11;
 using machine::Card;
 
 namespace {
-
-std::size_t ge_idx(const Card& c, double i) {
-  check_integer("Card", "axis", i, 0, static_cast<double>(c.axis_count()) - 1);
-  return static_cast<std::size_t>(i);
-}
 
 machine::GeVariant variant_from(const std::string& s) {
   if (s == "PX") return machine::GeVariant::PX;
@@ -34,28 +30,28 @@ machine::GeVariant variant_from(const std::string& s) {
 void bind_card_ge(py::module_& m) {
   py::object cls = m.attr("Card");
   cls.attr("smooth_stop") = py::cpp_function(
-      [](Card& k, double i) { k.smooth_stop(ge_idx(k, i)); }, py::is_method(cls), py::arg("axis"),
+      [](Card& k, double i) { k.smooth_stop(card_axis(k, i)); }, py::is_method(cls), py::arg("axis"),
       "GE GT_SmthStp: immediate smooth stop at the mode's limits (GE L1310-1312); no-op at rest.");
   cls.attr("arm_probe") = py::cpp_function(
       [](Card& k) { k.arm_probe(); }, py::is_method(cls),
       "GE GT_CaptProb: arms every axis's capture on the probe input EXI0, one shot (GE L3828-3862).");
   cls.attr("set_encoder_fault") = py::cpp_function(
-      [](Card& k, double i, Flag on) { k.set_encoder_fault(ge_idx(k, i), on); }, py::is_method(cls),
+      [](Card& k, double i, Flag on) { k.set_encoder_fault(card_axis(k, i), on); }, py::is_method(cls),
       py::arg("axis"), py::arg("on"), "The encoder-abnormal input of an axis (GE PX status bit 27).");
   cls.attr("synch_pos_now") = py::cpp_function(
-      [](Card& k, double i) { k.synch_pos_now(ge_idx(k, i)); }, py::is_method(cls), py::arg("axis"),
+      [](Card& k, double i) { k.synch_pos_now(card_axis(k, i)); }, py::is_method(cls), py::arg("axis"),
       "GE GT_AxisOn's synchronisation: target = profile = actual position, at once, at rest only (GE L3716-3720).");
   cls.attr("encoder_fault") = py::cpp_function(
-      [](const Card& k, double i) { return k.state(ge_idx(k, i)).encoder_fault; }, py::is_method(cls),
+      [](const Card& k, double i) { return k.state(card_axis(k, i)).encoder_fault; }, py::is_method(cls),
       py::arg("axis"), "The encoder-abnormal input of an axis.");
 
   m.def("ge_axis_status", [](const Card& k, double i, const std::string& variant) -> std::uint32_t {
-          const std::size_t a = ge_idx(k, i);
+          const std::size_t a = card_axis(k, i);
           return variant_from(variant) == machine::GeVariant::PX ? machine::ge_px_axis_status(k, a)
                                                                   : machine::ge_sx_axis_status(k, a);
         }, py::arg("card"), py::arg("axis"), py::arg("variant"),
         "GE axis status register of a card axis (0-based): PX 32 bits (Table 4-3), SX 16 bits (Table 4-2).");
-  m.def("ge_mode_register", [](const Card& k, double i) { return machine::ge_mode_register(k, ge_idx(k, i)); },
+  m.def("ge_mode_register", [](const Card& k, double i) { return machine::ge_mode_register(k, card_axis(k, i)); },
         py::arg("card"), py::arg("axis"), "GE PX axis mode register (Table 4-4) of a card axis (0-based).");
   m.def("ge_command_status", [](const Card& k, const std::string& variant) {
           return machine::ge_command_status(variant_from(variant), k);

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "card_axis.hpp"
 #include "servobench/common/validate.hpp"
 #include "servobench/machine/card.hpp"
 #include "servobench/machine/card_modes.hpp"
@@ -24,11 +25,6 @@ using machine::Card;
 using machine::CardModes;
 
 namespace {
-
-std::size_t ax(const Card& c, double i) {
-  check_integer("Card", "axis", i, 0, static_cast<double>(c.axis_count()) - 1);
-  return static_cast<std::size_t>(i);
-}
 
 std::uint32_t mask_of(double m, const char* name) {
   check_integer("Card", name, m, 0, 4294967295.0);
@@ -110,10 +106,10 @@ machine::CrdStatusInputs inputs_from(const py::kwargs& kw) {
 
 void bind_card_modes(py::class_<Card>& c, py::module_& m) {
   // -- electronic gear
-  c.def("set_gear", [](Card& k, double i, double master) { k.modes().set_gear(ax(k, i), ax(k, master)); },
+  c.def("set_gear", [](Card& k, double i, double master) { k.modes().set_gear(card_axis(k, i), card_axis(k, master)); },
         py::arg("axis"), py::arg("master"), "GT_PrflG: axis follows master's profile position with the active ratio")
-      .def("gear_master", [](Card& k, double i) { return k.modes().gear_master(ax(k, i)); }, py::arg("axis"))
-      .def("gear_halted", [](Card& k, double i) { return k.modes().gear_halted(ax(k, i)); }, py::arg("axis"))
+      .def("gear_master", [](Card& k, double i) { return k.modes().gear_master(card_axis(k, i)); }, py::arg("axis"))
+      .def("gear_halted", [](Card& k, double i) { return k.modes().gear_halted(card_axis(k, i)); }, py::arg("axis"))
       // -- PVT
       .def("pvt_download", [](Card& k, double table, const motion::PvtCurve& curve) {
              check_integer("Card", "table_id", table, 1, 32, "GUC L1304");
@@ -124,37 +120,37 @@ void bind_card_modes(py::class_<Card>& c, py::module_& m) {
              const motion::PvtCurve* t = k.modes().pvt_tables().table(static_cast<int>(table));
              return t ? py::cast(*t) : py::none();
            }, py::arg("table_id"))
-      .def("set_pvt", [](Card& k, double i) { k.modes().set_pvt(ax(k, i)); }, py::arg("axis"), "GT_PrfPvt")
+      .def("set_pvt", [](Card& k, double i) { k.modes().set_pvt(card_axis(k, i)); }, py::arg("axis"), "GT_PrfPvt")
       .def("pvt_select", [](Card& k, double i, double table) {
              check_integer("Card", "table_id", table, 1, 32, "GUC L1304");
-             k.modes().pvt_select(ax(k, i), static_cast<int>(table));
+             k.modes().pvt_select(card_axis(k, i), static_cast<int>(table));
            }, py::arg("axis"), py::arg("table_id"))
-      .def("pvt_loop", [](Card& k, double i, double loop) { k.modes().pvt_loop(ax(k, i), loop); },
+      .def("pvt_loop", [](Card& k, double i, double loop) { k.modes().pvt_loop(card_axis(k, i), loop); },
            py::arg("axis"), py::arg("loop"))
       .def("pvt_start", [](Card& k, double mask) { k.modes().pvt_start(mask_of(mask, "mask")); }, py::arg("mask"))
       .def("pvt_status", [](Card& k, double i) {
-             const motion::PvtAxis& a = k.modes().pvt(ax(k, i));
+             const motion::PvtAxis& a = k.modes().pvt(card_axis(k, i));
              return py::make_tuple(a.table_id(), a.time_ms());
            }, py::arg("axis"), "(table id, PVT time ms) (GT_PvtStatus)")
       .def("pvt_loop_status", [](Card& k, double i) {
-             const motion::PvtAxis& a = k.modes().pvt(ax(k, i));
+             const motion::PvtAxis& a = k.modes().pvt(card_axis(k, i));
              return py::make_tuple(a.loop_count(), a.loop());
            }, py::arg("axis"), "(passes done, loop setting) (GT_GetPvtLoop)")
       // -- FollowEx
       .def("set_follow", [](Card& k, double i, const motion::FollowExSetup& s, double master) {
-             k.modes().set_follow(ax(k, i), s, machine::FollowMaster{ax(k, master)});
+             k.modes().set_follow(card_axis(k, i), s, machine::FollowMaster{card_axis(k, master)});
            }, py::arg("axis"), py::arg("setup"), py::arg("master"), "GT_PrfFollowEx + GT_SetFollowMasterEx")
       .def("follow_configure", [](Card& k, double i, const motion::FollowExSetup& s) {
-             k.modes().follow_configure(ax(k, i), s);
+             k.modes().follow_configure(card_axis(k, i), s);
            }, py::arg("axis"), py::arg("setup"))
       .def("follow_set_master", [](Card& k, double i, double master) {
-             k.modes().follow_master(ax(k, i), machine::FollowMaster{ax(k, master)});
+             k.modes().follow_master(card_axis(k, i), machine::FollowMaster{card_axis(k, master)});
            }, py::arg("axis"), py::arg("master"))
-      .def("follow_master", [](Card& k, double i) { return k.modes().follow_master_of(ax(k, i)).master; },
+      .def("follow_master", [](Card& k, double i) { return k.modes().follow_master_of(card_axis(k, i)).master; },
            py::arg("axis"))
       .def("follow", [](py::object self, double i) {
              Card& k = self.cast<Card&>();
-             auto f = k.modes().follow_shared(ax(k, i));
+             auto f = k.modes().follow_shared(card_axis(k, i));
              return view(f.get(), f, self);
            }, py::arg("axis"), "the axis's FollowEx (data, FIFOs, loop count); start through follow_start")
       .def("follow_start", [](Card& k, double mask, double option) {
@@ -163,7 +159,7 @@ void bind_card_modes(py::class_<Card>& c, py::module_& m) {
       .def("follow_switch", [](Card& k, double mask) { k.modes().follow_switch(mask_of(mask, "mask")); },
            py::arg("mask"))
       .def("follow_master_pos", [](Card& k, double i) {
-             const std::size_t a = ax(k, i);
+             const std::size_t a = card_axis(k, i);
              k.modes().follow(a);
              return k.modes().follow_master_pos(a);
            }, py::arg("axis"))
@@ -219,7 +215,7 @@ void bind_card_modes(py::class_<Card>& c, py::module_& m) {
              check_integer("Card", "slot", slot, 0, static_cast<double>(machine::kGroupSlots) - 1);
              return hosted_dict(k.modes().hosted(static_cast<std::size_t>(slot)));
            }, py::arg("slot"), "the hosted group in slot (crd c: slot c-1; GT map: slot 2)")
-      .def("group_of", [](Card& k, double i) { return k.modes().group_of(ax(k, i)); }, py::arg("axis"))
+      .def("group_of", [](Card& k, double i) { return k.modes().group_of(card_axis(k, i)); }, py::arg("axis"))
       .def("gt_map_axis", [](Card& k, double axis, const std::vector<double>& cnt) {
              if (cnt.size() != 5) throw std::invalid_argument("GT_MapAxis: map_count has 5 values {Cx, Cy, Cz, Ca, C}");
              check_integer("GT_MapAxis", "axis", axis, 1, static_cast<double>(k.axis_count()), "GT L1533");

@@ -13,6 +13,7 @@
 #include "arrays.hpp"
 #include "flag.hpp"
 #include "object_lock.hpp"
+#include "card_axis.hpp"
 #include "servobench/common/validate.hpp"
 #include "servobench/machine/card.hpp"
 #include "servobench/machine/card_scope.hpp"
@@ -26,11 +27,6 @@ using machine::Card;
 std::vector<const void*> card_keys(Card& card);  // bind_card.cpp: the card and its axes
 
 namespace {
-
-std::size_t axis_index(const Card& c, double i) {
-  check_integer("Card", "axis", i, 0, static_cast<double>(c.axis_count()) - 1);
-  return static_cast<std::size_t>(i);
-}
 
 machine::SampleTrigger trigger_from(const std::string& s) {
   if (s == "immediate") return machine::SampleTrigger::Immediate;
@@ -197,7 +193,7 @@ void bind_card_scope(py::module_& m, py::class_<Card>& c) {
              check_integer("Card", "events", events, 0, 4095);
              check_integer("Card", "msts", msts, 0, 4294967295.0);
              check_integer("Card", "mio", mio, 0, 4294967295.0);
-             k.scope().set_watch(axis_index(k, i), static_cast<std::uint32_t>(events), static_cast<std::uint32_t>(msts),
+             k.scope().set_watch(card_axis(k, i), static_cast<std::uint32_t>(events), static_cast<std::uint32_t>(msts),
                                  static_cast<std::uint32_t>(mio));
            }, py::arg("axis"), py::arg("events"), py::arg("msts") = 0.0, py::arg("mio") = 0.0)
       .def("set_system_watch", [](Card& k, double bits) {
@@ -215,10 +211,10 @@ void bind_card_scope(py::module_& m, py::class_<Card>& c) {
            py::arg("axis"), py::arg("pos"))
       .def("clear_probe_position", [](Card& k) { if (k.has_scope()) k.scope().clear_probe_position(); })
       .def("capture_armed", [](Card& k, double i) {
-             return std::string(machine::to_string(k.loop(axis_index(k, i)).capture().armed()));
+             return std::string(machine::to_string(k.loop(card_axis(k, i)).capture().armed()));
            }, py::arg("axis"))
       .def("capture_source", [](Card& k, double i) {
-             return std::string(machine::to_string(k.loop(axis_index(k, i)).capture().source()));
+             return std::string(machine::to_string(k.loop(card_axis(k, i)).capture().source()));
            }, py::arg("axis"))
       // position compare
       .def("compare_set_source", [](Card& k, double comp, double axis, Flag command) {

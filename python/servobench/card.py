@@ -141,6 +141,12 @@ class Card:
                     raise TypeError(f"axes must be servobench.Axis objects, got {type(a).__name__}")
         self._card = _core.Card([a._axis for a in self.axes], float(motion_cycle_ticks), float(host_cycle_ticks))
 
+    @property
+    def kernel(self):
+        """The C++ card kernel (``servobench._core.Card``, 0-based axes, card units) this wrapper drives: what the
+        vendor status words and the dialects read (``_core.gt_axis_status(card.kernel, 0)``)."""
+        return object.__getattribute__(self, "_card")
+
     def __getattr__(self, name):
         return getattr(object.__getattribute__(self, "_card"), name)
 

@@ -190,6 +190,7 @@ RunOutcome Axis::run_with(Law& law, const CommandInput& command, const Trace& tr
 
     const double enc_angle = encoder_angle();
     const double y = encoder_.read(enc_angle);
+    outcome.last_error_pulse = r - y;
     bool trip = false;
     if (guarded) {
       if (guard.error_limit_pulse > 0.0 && servo_on_ && !(std::fabs(r - y) <= guard.error_limit_pulse)) {  // NaN trips

@@ -110,10 +110,9 @@ void LimitConfig::validate() const {
 
 // -- construction -------------------------------------------------------------------------------------------
 
-Card::Card(double axes, const AxisConfig& axis_config, const CardCycles& cycles) {
-  check_integer("Card", "axes", axes, 4, 8);
+Card::Card(int axes, const AxisConfig& axis_config, const CardCycles& cycles) {
   if (axes != 4 && axes != 8) throw_invalid("Card", "axes", axes, "must be 4 or 8 (the cards' axis counts)");
-  for (int i = 0; i < static_cast<int>(axes); ++i) {
+  for (int i = 0; i < axes; ++i) {
     owned_.push_back(std::make_unique<Axis>(axis_config));
     loops_.push_back(std::make_unique<MotionLoop>(*owned_.back()));
   }
@@ -138,11 +137,44 @@ Card::Card(const std::vector<Axis*>& axes, const CardCycles& cycles) {
 
 Card::~Card() = default;
 
-// [modes] the driven modes live in CardModes (machine/card_modes.cpp), created on first use.
+// [modes] the driven modes live in CardModes (machine/card_modes.cpp), created on first use and attached as a module.
 CardModes& Card::modes() {
-  if (!modes_) modes_ = std::make_unique<CardModes>(*this);
+  if (!modes_) {
+    modes_ = std::make_unique<CardModes>(*this);
+    attach(*modes_);
+  }
   return *modes_;
 }
+
+void Card::attach(CardHooks& module) {
+  for (CardHooks* h : hooks_)
+    if (h == &module) return;
+  if (hooks_.size() >= 16) throw_invalid("Card.attach", "module", static_cast<double>(hooks_.size() + 1),
+                                         "is one module too many: a card takes at most 16");
+  hooks_.push_back(&module);
+}
+
+void Card::detach(CardHooks& module) {
+  for (auto it = hooks_.begin(); it != hooks_.end(); ++it)
+    if (*it == &module) {
+      hooks_.erase(it);
+      return;
+    }
+}
+
+bool Card::limit_enabled(std::size_t i, bool positive) const {
+  for (const CardHooks* h : hooks_)
+    if (!h->limit_enabled(i, positive)) return false;
+  return true;
+}
+
+void Card::check_axis(std::size_t i) const {
+  if (i >= st_.size()) throw_invalid("Card", "axis", static_cast<double>(i), "is not an axis of this card");
+}
+
+void Card::set_driven_mode(std::size_t i, AxisMode mode) { at(i).mode = mode; }
+
+void Card::set_stop_cause(std::size_t i, StopCause cause) { at(i).stop_cause = cause; }
 
 void Card::init(const CardCycles& cycles) {
   cycles.validate();
@@ -174,7 +206,7 @@ CardAxisState& Card::at(std::size_t i) {
 }
 
 void Card::reset() {
-  if (modes_) modes_->reset();  // [modes] no gear, PVT, cam or mapping after a reset (GT HardRst [17])
+  for (CardHooks* h : hooks_) h->reset();  // [modes] no gear, PVT, cam or mapping after a reset (GT HardRst [17])
   estop_ = false;
   last_fault_ = CommandFault::None;
   for (std::size_t i = 0; i < loops_.size(); ++i) {
@@ -363,7 +395,9 @@ CommandFault Card::check_commit(std::size_t i, const AxisRegisters& r, std::uint
         return fail(CommandFault::InvalidInMode, std::string("no profile registers in ") + to_string(s.mode) + " mode");
     }
     if (!(d & kStagedSmoothStop)) {
-      if (modes_ && modes_->gear_inhibits(i, dir))  // [modes] a geared slave's latched limit (GT L2213)
+      bool by_module = false;  // [modes] a geared slave's latched limit (GT L2213)
+      for (const CardHooks* h : hooks_) by_module = by_module || h->inhibits_move(i, dir);
+      if (by_module)
         return fail(CommandFault::DirectionInhibited,
                     "a gear slave of this axis is at a limit in the direction this move would drive it (GT L2213)");
       if (dir > 0.0 && inhibited_pos(i))
@@ -429,7 +463,7 @@ void Card::commit(std::size_t i, const AxisRegisters& r, std::uint32_t d) {
   }
   if (d & kStagedRatio) {
     s.active.ratio = r.ratio;
-    if (modes_) modes_->on_ratio(i, r.ratio);  // [modes] a geared slave takes the ratio from this tick
+    for (CardHooks* h : hooks_) h->on_ratio(i, r.ratio);  // [modes] a geared slave takes the ratio from this tick
   }
   try {
     if (d & kStagedSynchPos) {
@@ -470,7 +504,7 @@ void Card::set_mode(std::size_t i, AxisMode mode) {
   if (moving(i) && s.mode != AxisMode::Gear)
     refuse(static_cast<int>(i), CommandFault::ModeChangeInMotion,
            "the motion mode can change only when the motion has ended (GT L837, L464)");
-  if (modes_) modes_->leave(i);  // [modes] leaving gear / PVT / cam / a coordinate system
+  for (CardHooks* h : hooks_) h->leave(i);  // [modes] leaving gear / PVT / cam / a coordinate system
   s.mode = mode;
 }
 
@@ -482,7 +516,7 @@ void Card::stop_profile(std::size_t i) {
 
 void Card::abrupt_stop(std::size_t i) {
   at(i);
-  if (modes_) modes_->on_abrupt_stop(i);  // [modes] halts the gear / PVT / cam / the axis's coordinate system
+  for (CardHooks* h : hooks_) h->on_abrupt_stop(i);  // [modes] halts the gear / PVT / cam / the coordinate system
   stop_profile(i);
 }
 
@@ -846,8 +880,8 @@ void Card::synch_pos_now(std::size_t i) {
 
 bool Card::moving(std::size_t i) const {
   const MotionLoop& l = loop(i);
-  if (modes_)  // [modes] a halted gear / a PVT or cam axis: the mode says
-    if (const std::optional<bool> m = modes_->moving(i)) return *m || l.generator().moving();
+  for (const CardHooks* h : hooks_)  // [modes] a halted gear / a PVT or cam axis: the mode says
+    if (const std::optional<bool> m = h->moving(i)) return *m || l.generator().moving();
   return state(i).mode == AxisMode::Gear || l.generator().moving() || l.sequence_active();
 }
 
@@ -879,7 +913,7 @@ bool Card::inhibited_neg(std::size_t i) const {
 
 void Card::fault_stop(std::size_t i, StopCause cause, bool servo_off) {
   CardAxisState& s = st_[i];
-  if (modes_) modes_->on_fault(i, cause);  // [modes] the gear master / the coordinate system stops too
+  for (CardHooks* h : hooks_) h->on_fault(i, cause);  // [modes] the gear master / the coordinate system stops too
   if (loops_[i]->generator().moving() || loops_[i]->sequence_active()) {
     loops_[i]->cancel_sequence();
     stop_profile(i);
@@ -911,8 +945,8 @@ void Card::safety_before(std::size_t i) {
   s.alarm_prev = alarm;
   // Hard limits (GT L2196-2213): latch the event while triggered; stop motion toward the limit.
   if (s.limits.enabled) {  // [modes] a GUC crd's BufLmtsOff hides the limit from its place in the FIFO on (V129)
-    if (pos_limit_input(i) && (!modes_ || modes_->limit_enabled(i, true))) s.events |= event_bit(CardEvent::PosLimit);
-    if (neg_limit_input(i) && (!modes_ || modes_->limit_enabled(i, false))) s.events |= event_bit(CardEvent::NegLimit);
+    if (pos_limit_input(i) && limit_enabled(i, true)) s.events |= event_bit(CardEvent::PosLimit);
+    if (neg_limit_input(i) && limit_enabled(i, false)) s.events |= event_bit(CardEvent::NegLimit);
   }
   const double act = l.actual_pos();
   if (s.limits.soft_pos_enabled && act >= s.limits.soft_pos_pulse) s.events |= event_bit(CardEvent::SoftPosLimit);
@@ -929,9 +963,16 @@ void Card::safety_before(std::size_t i) {
   }
 }
 
-void Card::after_tick(std::size_t i, double error) {
+void Card::after_tick(std::size_t i, const LoopTick& r) {
   CardAxisState& s = st_[i];
   MotionLoop& l = *loops_[i];
+  if (r.breakpoint_fired && s.auto_update) {
+    // GT L1263: the auto-update commits everything staged; effective from the next tick.
+    const std::uint32_t d = s.dirty;
+    s.dirty = 0;
+    commit(i, s.staged, d);
+  }
+  const double error = r.error_pulse;
   s.error_pulse = error;
   // Following error (GT L2154-2178): every sample, closed loop, drive enabled.
   // An encoder fault (GE status bit 27) counts as a following error: the feedback can no longer be trusted, and the
@@ -985,50 +1026,37 @@ void Card::tick_once(const std::vector<CardTrace>& traces, std::size_t k) {
       }
   // 2. safety on this instant's inputs
   for (std::size_t i = 0; i < n; ++i) safety_before(i);
-  // 3. the loops; 4. the checks after the law
-  if (modes_ && modes_->active()) {  // [modes] driven axes get their command first, in axis order
-    modes_->begin_tick(tick_);
-    for (std::size_t i = 0; i < n; ++i) {
-      modes_->feed(i);
-      tick_axis(i, traces, k);
+  // 3. the loops, two calls deep: Card -> MotionLoop::step -> Axis::run; 4. the checks after the law, on what the
+  // step returned. Driven axes ([modes]) get their command first, in axis order.
+  std::uint32_t driven = 0;  // bit m: module m is active this tick (decided once, before any axis runs)
+  for (std::size_t m = 0; m < hooks_.size(); ++m)
+    if (hooks_[m]->active()) {
+      driven |= 1u << m;
+      hooks_[m]->begin_tick(tick_);
     }
-  } else {
-    for (std::size_t i = 0; i < n; ++i) tick_axis(i, traces, k);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t m = 0; driven >> m; ++m)
+      if (driven & (1u << m)) hooks_[m]->feed(i);
+    Trace tr;
+    LoopTrace lt;
+    if (!traces.empty()) {
+      tr = shifted(traces[i].axis, k);
+      lt = shifted(traces[i].loop, k);
+    }
+    if (scope_ && scope_->needs_signals(i)) scope_->bind_signals(i, tr, lt);  // scope hook (issue 10.3)
+    const LoopTick r = loops_[i]->step(tr, lt);
+    after_tick(i, r);
+    if (!traces.empty()) record(i, traces[i], k);
   }
   if (scope_) scope_tick();  // scope hook (issue 10.3)
   ++tick_;
 }
 
-void Card::tick_axis(std::size_t i, const std::vector<CardTrace>& traces, std::size_t k) {
-  MotionLoop& l = *loops_[i];
-  double error = 0.0;
-  Trace tr;
-  LoopTrace lt;
-  if (!traces.empty()) {
-    tr = shifted(traces[i].axis, k);
-    lt = shifted(traces[i].loop, k);
-  }
-  double* user_error = tr.error;
-  tr.error = &error;
-  if (scope_ && scope_->needs_signals(i)) scope_->bind_signals(i, tr, lt);  // scope hook (issue 10.3)
-  const bool armed = l.breakpoint().armed() != motion::BreakKind::None;
-  l.run(1, tr, lt);
-  if (user_error) *user_error = error;
-  if (armed && l.breakpoint().armed() == motion::BreakKind::None && st_[i].auto_update) {
-    // GT L1263: the auto-update commits everything staged; effective from the next tick.
-    CardAxisState& s = st_[i];
-    const std::uint32_t d = s.dirty;
-    s.dirty = 0;
-    commit(i, s.staged, d);
-  }
-  after_tick(i, error);
-  if (!traces.empty()) {
-    const CardTrace& ct = traces[i];
-    if (ct.events) ct.events[k] = static_cast<double>(st_[i].events);
-    if (ct.moving) ct.moving[k] = moving(i) ? 1.0 : 0.0;
-    if (ct.servo_on) ct.servo_on[k] = st_[i].enabled ? 1.0 : 0.0;
-    if (ct.prf_vel) ct.prf_vel[k] = l.generator().state().vel;
-  }
+void Card::record(std::size_t i, const CardTrace& ct, std::size_t k) const {
+  if (ct.events) ct.events[k] = static_cast<double>(st_[i].events);
+  if (ct.moving) ct.moving[k] = moving(i) ? 1.0 : 0.0;
+  if (ct.servo_on) ct.servo_on[k] = st_[i].enabled ? 1.0 : 0.0;
+  if (ct.prf_vel) ct.prf_vel[k] = loops_[i]->generator().state().vel;
 }
 
 void Card::run(std::size_t n, const std::vector<CardTrace>& traces) {

@@ -39,8 +39,8 @@ CardModes::CardModes(Card& card)
 // -- common ------------------------------------------------------------------------------------------------
 
 void CardModes::check_at_rest(std::size_t i, const char* what) {
-  card_.at(i);
-  const CardAxisState& s = card_.st_[i];
+  card_.check_axis(i);
+  const CardAxisState& s = card_.state(i);
   if (card_.moving(i) && s.mode != AxisMode::Gear)
     card_.refuse(static_cast<int>(i), CommandFault::ModeChangeInMotion,
                  std::string(what) + ": the axis must be at rest (GT L837; GUC L743; iDEABOX L7168)");
@@ -53,11 +53,11 @@ void CardModes::set_kind(std::size_t i, Kind k) {
   kind_[i] = k;
 }
 
-long long CardModes::master_profile(std::size_t m) const { return card_.loops_[m]->generator().reported_pos(); }
+long long CardModes::master_profile(std::size_t m) const { return card_.loop(m).generator().reported_pos(); }
 
 std::vector<double> CardModes::profile_positions() const {
   std::vector<double> p(n_);
-  for (std::size_t k = 0; k < n_; ++k) p[k] = static_cast<double>(card_.loops_[k]->generator().reported_pos());
+  for (std::size_t k = 0; k < n_; ++k) p[k] = static_cast<double>(card_.loop(k).generator().reported_pos());
   return p;
 }
 
@@ -76,7 +76,7 @@ void CardModes::leave(std::size_t i) {
       const std::vector<std::size_t> axes = groups_[g].group->axes();
       remove_group(g);
       for (std::size_t a : axes)
-        if (a != i) card_.st_[a].mode = AxisMode::TCurve;
+        if (a != i) card_.set_driven_mode(a, AxisMode::TCurve);
       return;
     }
     case Kind::None: break;
@@ -105,7 +105,7 @@ std::optional<bool> CardModes::moving(std::size_t i) const {
 // -- electronic gear -----------------------------------------------------------------------------------------
 
 void CardModes::set_gear(std::size_t slave, std::size_t master) {
-  card_.at(slave);
+  card_.check_axis(slave);
   if (master >= n_)
     card_.refuse(static_cast<int>(slave), CommandFault::IllegalControlParam,
                  "GT_PrflG: the master " + std::to_string(master + 1) + " is not an axis of this card");
@@ -114,12 +114,12 @@ void CardModes::set_gear(std::size_t slave, std::size_t master) {
                  "GT_PrflG: an axis cannot be its own master");
   check_at_rest(slave, "GT_PrflG");
   if (kind_[slave] != Kind::Gear) leave(slave);
-  CardAxisState& s = card_.st_[slave];
+  const CardAxisState& s = card_.state(slave);
   GearSlave& g = gear_[slave];
   g.master = master;
   g.halted = false;
-  g.gear.emplace(s.active.ratio, master_profile(master), card_.loops_[slave]->generator().state().pos);
-  s.mode = AxisMode::Gear;
+  g.gear.emplace(s.active.ratio, master_profile(master), card_.loop(slave).generator().state().pos);
+  card_.set_driven_mode(slave, AxisMode::Gear);
   set_kind(slave, Kind::Gear);
 }
 
@@ -173,7 +173,7 @@ void CardModes::on_ratio(std::size_t i, double ratio) {
   if (kind_[i] != Kind::Gear) return;
   GearSlave& g = gear_[i];
   if (g.halted) {  // re-engage where the slave stands (V53)
-    g.gear.emplace(ratio, master_profile(g.master), card_.loops_[i]->generator().state().pos);
+    g.gear.emplace(ratio, master_profile(g.master), card_.loop(i).generator().state().pos);
     g.halted = false;
   } else {
     g.gear->set_ratio(ratio, master_profile(g.master));
@@ -193,13 +193,13 @@ void CardModes::pvt_download(int table_id, const motion::PvtCurve& curve) {
 void CardModes::set_pvt(std::size_t i) {
   check_at_rest(i, "GT_PrfPvt");
   leave(i);
-  pvt_[i] = std::make_unique<motion::PvtAxis>(tables_, card_.loops_[i]->generator().state().pos, card_.period_s_);
-  card_.st_[i].mode = AxisMode::Pvt;
+  pvt_[i] = std::make_unique<motion::PvtAxis>(tables_, card_.loop(i).generator().state().pos, card_.servo_period_s());
+  card_.set_driven_mode(i, AxisMode::Pvt);
   set_kind(i, Kind::Pvt);
 }
 
 motion::PvtAxis& CardModes::pvt(std::size_t i) {
-  card_.at(i);
+  card_.check_axis(i);
   if (kind_[i] != Kind::Pvt)
     card_.refuse(static_cast<int>(i), CommandFault::InvalidInMode, "the axis is not in PVT mode (GT_PrfPvt first)");
   return *pvt_[i];
@@ -228,7 +228,7 @@ void CardModes::pvt_start(std::uint32_t mask) {
   for (std::size_t i = 0; i < n_; ++i)
     if (mask & (1u << i)) axes.push_back(&pvt(i));
   if (axes.empty()) card_.refuse(-1, CommandFault::NoAxisInMask, "GT_PvtStart: no axis of this card in the mask");
-  if (card_.estop_) card_.refuse(-1, CommandFault::EmergencyStopActive, "GT_PvtStart refused while the e-stop is active");
+  if (card_.emergency_stop()) card_.refuse(-1, CommandFault::EmergencyStopActive, "GT_PvtStart refused while the e-stop is active");
   for (std::size_t i = 0; i < n_; ++i)
     if ((mask & (1u << i)) && card_.alarm_active(i))
       card_.refuse(static_cast<int>(i), CommandFault::DriveAlarmActive, "GT_PvtStart refused while the alarm is active");
@@ -239,10 +239,10 @@ void CardModes::pvt_start(std::uint32_t mask) {
     card_.refuse(-1, CommandFault::ChangeInMotion, e.what());
   }
   for (std::size_t i = 0; i < n_; ++i)
-    if (mask & (1u << i)) card_.st_[i].stop_cause = StopCause::None;
+    if (mask & (1u << i)) card_.set_stop_cause(i, StopCause::None);
 }
 
-void CardModes::note_refused_start(std::size_t axis, StopCause cause) { card_.st_.at(axis).stop_cause = cause; }
+void CardModes::note_refused_start(std::size_t axis, StopCause cause) { card_.set_stop_cause(axis, cause); }
 
 bool CardModes::limit_enabled(std::size_t axis, bool positive) const {
   for (const HostedGroup& h : groups_)
@@ -268,18 +268,18 @@ void CardModes::feed_inputs(CardGroup& g) const {
 // -- FollowEx -----------------------------------------------------------------------------------------------------
 
 void CardModes::set_follow(std::size_t i, const motion::FollowExSetup& setup, const FollowMaster& master) {
-  card_.at(i);
+  card_.check_axis(i);
   checked(card_, i, CommandFault::IllegalControlParam, [&] { setup.validate(); });
   check_at_rest(i, "GT_PrfFollowEx");
   leave(i);
-  follow_[i] = std::make_shared<motion::FollowEx>(setup, card_.loops_[i]->generator().state().pos);
-  card_.st_[i].mode = AxisMode::Follow;
+  follow_[i] = std::make_shared<motion::FollowEx>(setup, card_.loop(i).generator().state().pos);
+  card_.set_driven_mode(i, AxisMode::Follow);
   set_kind(i, Kind::Follow);
   follow_master(i, master);
 }
 
 motion::FollowEx& CardModes::follow(std::size_t i) {
-  card_.at(i);
+  card_.check_axis(i);
   if (kind_[i] != Kind::Follow)
     card_.refuse(static_cast<int>(i), CommandFault::InvalidInMode, "the axis is not in FollowEx mode (GT_PrfFollowEx first)");
   return *follow_[i];
@@ -321,7 +321,7 @@ const FollowMaster& CardModes::follow_master_of(std::size_t i) const {
 double CardModes::follow_master_pos(std::size_t i) const {
   // GT_SetFollowMasterEx (iDEABOX L7345-7363): type 1 encoder, 2 planned profile, 3 axis with item 0 planned /
   // 1 encoder; the type and item are the FollowEx setup's, the master axis is follow_master_[i].
-  const MotionLoop& l = *card_.loops_[follow_master_[i].master];
+  const MotionLoop& l = card_.loop(follow_master_[i].master);
   const motion::FollowExSetup& s = follow_[i]->setup();
   const bool encoder = s.master_type == 1 || (s.master_type == 3 && s.master_item == 1);
   return encoder ? std::nearbyint(l.actual_pos()) : static_cast<double>(l.generator().reported_pos());
@@ -339,14 +339,14 @@ void CardModes::follow_start(std::uint32_t mask, std::uint32_t option) {
       axes.push_back(i);
     }
   if (axes.empty()) card_.refuse(-1, CommandFault::NoAxisInMask, "GT_FollowStartEx: no axis of this card in the mask");
-  if (card_.estop_) card_.refuse(-1, CommandFault::EmergencyStopActive, "GT_FollowStartEx refused while the e-stop is active");
+  if (card_.emergency_stop()) card_.refuse(-1, CommandFault::EmergencyStopActive, "GT_FollowStartEx refused while the e-stop is active");
   for (std::size_t i : axes) {
     try {
       follow_[i]->start(follow_master_pos(i), (option >> i) & 1u ? 1 : 0);
     } catch (const motion::MotionCommandRefused& e) {
       card_.refuse(static_cast<int>(i), CommandFault::ChangeInMotion, e.what());
     }
-    card_.st_[i].stop_cause = StopCause::None;
+    card_.set_stop_cause(i, StopCause::None);
   }
 }
 
@@ -389,12 +389,12 @@ void CardModes::add_group(std::size_t s, std::unique_ptr<CardGroup> g) {
   }
   const std::vector<std::size_t> old = h.group ? h.group->axes() : std::vector<std::size_t>{};
   remove_group(s);
-  for (std::size_t a : old) card_.st_[a].mode = AxisMode::TCurve;
+  for (std::size_t a : old) card_.set_driven_mode(a, AxisMode::TCurve);
   for (std::size_t a : g->axes()) {
     leave(a);
     group_of_[a] = static_cast<int>(s);
     set_kind(a, Kind::Group);
-    card_.st_[a].mode = AxisMode::Coordinated;
+    card_.set_driven_mode(a, AxisMode::Coordinated);
   }
   h = HostedGroup{};
   h.group = std::move(g);
@@ -420,7 +420,7 @@ void CardModes::remove_group(std::size_t s) {
 void CardModes::before_group_start(std::size_t s) {
   HostedGroup& h = slot(s);
   if (!h.group) card_.refuse(-1, CommandFault::InvalidInMode, "the coordinate system is not set up");
-  if (card_.estop_) card_.refuse(-1, CommandFault::EmergencyStopActive, "the path cannot start while the e-stop is active");
+  if (card_.emergency_stop()) card_.refuse(-1, CommandFault::EmergencyStopActive, "the path cannot start while the e-stop is active");
   for (std::size_t a : h.group->axes())
     if (card_.alarm_active(a))
       card_.refuse(static_cast<int>(a), CommandFault::DriveAlarmActive, "the path cannot start while the drive alarm is active");
@@ -430,7 +430,7 @@ void CardModes::before_group_start(std::size_t s) {
   h.group->set_outside_positions(profile_positions());
   h.group->aux_positions(h.aux_cur);
   h.aux_prev = h.aux_cur;
-  for (std::size_t a : h.group->axes()) card_.st_[a].stop_cause = StopCause::None;
+  for (std::size_t a : h.group->axes()) card_.set_stop_cause(a, StopCause::None);
 }
 
 void CardModes::stop_group(std::size_t s, bool abrupt) {
@@ -452,7 +452,7 @@ void CardModes::set_crd_prm(int crd, const motion::CrdPrm& prm) {
       throw_invalid("CrdPrm", "profile[k]", static_cast<double>(k + 1), "maps an axis this card does not have");
   const motion::CoordSystem cs = motion::CoordSystem::crd_prm(prm, pp);
   motion::PathSetup setup;
-  setup.cycle_ms = cycle_ticks_ * card_.period_s_ * 1e3;
+  setup.cycle_ms = cycle_ticks_ * card_.servo_period_s() * 1e3;
   setup.syn_vel_max = prm.syn_vel_max;
   setup.syn_acc_max = prm.syn_acc_max;
   setup.even_time_ms = prm.even_time_ms;
@@ -577,7 +577,7 @@ void CardModes::begin_tick(long long tick) {
 }
 
 void CardModes::feed(std::size_t i) {
-  motion::ProfileGenerator& gen = card_.loops_[i]->generator();
+  motion::ProfileGenerator& gen = card_.loop(i).generator();
   switch (kind_[i]) {
     case Kind::None:
       if (aux_fed_[i]) gen.follow(cmd_[i]);
@@ -618,9 +618,9 @@ void CardModes::on_fault(std::size_t i, StopCause cause) {
       g.halted = true;
       const std::size_t m = g.master;
       if (g.keep_master) return;  // [aps] ADLINK: the master is not affected (L3321-3324)
-      if (card_.st_[m].closed_loop) {
+      if (card_.state(m).closed_loop) {
         on_abrupt_stop(m);
-        if (card_.loops_[m]->generator().moving()) card_.stop_profile(m);
+        if (card_.loop(m).generator().moving()) card_.stop_profile(m);
       }
       return;
     }

@@ -20,7 +20,7 @@ void to_card(motion::SignalEvent& e, double offset) { e.edge_pos -= offset; }
 }  // namespace
 
 MotionLoop::MotionLoop(Axis& axis)
-    : axis_(axis), sensing_(axis.config()), gen_(axis.feedback_pulse(), axis.servo_period_s()) {
+    : axis_(axis), sensing_(axis), gen_(axis.feedback_pulse(), axis.servo_period_s()) {
   inputs_ = sensing_.levels(sample_mechanism(axis_));
 }
 
@@ -83,7 +83,8 @@ double MotionLoop::phase_code() const {
   return -1.0;
 }
 
-void MotionLoop::tick(const Trace& tr, const LoopTrace& lt, std::size_t k) {
+LoopTick MotionLoop::step(const Trace& tr, const LoopTrace& lt, std::size_t k) {
+  LoopTick out;
   // 1. the sequences react to the previous tick's events
   if (homing_ && !homing_->finished()) {
     const motion::HomeAction act = homing_->step(inputs_, gen_);
@@ -104,7 +105,7 @@ void MotionLoop::tick(const Trace& tr, const LoopTrace& lt, std::size_t k) {
   in.acc = &acc;
   if (add_on_) in.volts_add = &add_volts_;
   in.n = 1;
-  axis_.run(in, shifted(tr, k));
+  out.error_pulse = axis_.run(in, shifted(tr, k)).last_error_pulse;
   const MechSample after = sample_mechanism(axis_);
   // 4. sensing, capture, breakpoint
   TickSense ts = sensing_.between(before, after, h);
@@ -123,6 +124,7 @@ void MotionLoop::tick(const Trace& tr, const LoopTrace& lt, std::size_t k) {
   capture_.update(inputs_.org, inputs_.ez, probe, probe_pos);
   const bool home_captured = capture_.captured() && capture_.source() == CaptureTrigger::Home;
   if (brk_.check(inputs_.actual_pos, !gen_.moving(), home_captured)) {
+    out.breakpoint_fired = true;
     brk_flag_ = true;
     if (auto_update_) update();
   }
@@ -132,10 +134,11 @@ void MotionLoop::tick(const Trace& tr, const LoopTrace& lt, std::size_t k) {
   if (lt.phase) lt.phase[k] = phase_code();
   if (lt.captured) lt.captured[k] = capture_.captured() ? 1.0 : 0.0;
   if (lt.breakpoint) lt.breakpoint[k] = brk_flag_ ? 1.0 : 0.0;
+  return out;
 }
 
 void MotionLoop::run(std::size_t n, const Trace& tr, const LoopTrace& lt) {
-  for (std::size_t k = 0; k < n; ++k) tick(tr, lt, k);
+  for (std::size_t k = 0; k < n; ++k) step(tr, lt, k);
 }
 
 std::size_t MotionLoop::run_until_done(std::size_t max_ticks, const Trace& tr, const LoopTrace& lt) {
@@ -143,7 +146,7 @@ std::size_t MotionLoop::run_until_done(std::size_t max_ticks, const Trace& tr, c
   const bool with_sequence = sequence_active();
   for (; k < max_ticks; ++k) {
     if (with_sequence ? !sequence_active() : !gen_.moving()) break;
-    tick(tr, lt, k);
+    step(tr, lt, k);
   }
   return k;
 }

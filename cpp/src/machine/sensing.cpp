@@ -34,7 +34,7 @@ double crossing_fraction(double x0, double v0, double x1, double v1, double h, d
   return 0.5 * (lo + hi);
 }
 
-Sensing::Sensing(const AxisConfig& config) : sw_(config.switches), enc_(config.encoder) {}
+Sensing::Sensing(const Axis& axis) : sw_(axis.config().switches), enc_(axis.encoder()) {}
 
 motion::HomeInputs Sensing::levels(const MechSample& now) const {
   motion::HomeInputs in;

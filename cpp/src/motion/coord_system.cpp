@@ -63,12 +63,14 @@ CoordSystem CoordSystem::gt_map(const std::vector<GtAxisMap>& rows) {
     const auto& r = sorted[i];
     check_integer(o, "axis", r.axis, 1, 4, "GT L1533");
     if (i > 0 && sorted[i - 1].axis == r.axis)
-      throw_invalid(o, "axis", r.axis, "is mapped twice (GT_MapAxis return code 6, GT L408)");
+      throw PathGeometryError(6, std::string(o) + ".axis = " + format_value(r.axis) +
+                                     " is mapped twice (GT_MapAxis return code 6, GT L408)");
     const std::array<double, 5> row{r.cx, r.cy, r.cz, r.ca, r.c};
     for (double v : row)
       if (!std::isfinite(v)) throw_invalid(o, "coefficient", v, "is not a finite number");
     if (row[0] == 0 && row[1] == 0 && row[2] == 0 && row[3] == 0)
-      throw_invalid(o, "axis", r.axis, "maps to no coordinate (all of Cx, Cy, Cz, Ca zero; return code 6, GT L408)");
+      throw PathGeometryError(6, std::string(o) + ".axis = " + format_value(r.axis) +
+                                     " maps to no coordinate (all of Cx, Cy, Cz, Ca zero; return code 6, GT L408)");
     cs.axes_.push_back(r.axis);
     cs.rows_.push_back(row);
   }

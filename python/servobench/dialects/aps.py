@@ -913,17 +913,17 @@ class ApsController(DialectController):
     def APS_motion_status(self, Axis_ID) -> int:
         """``I32 APS_motion_status(Axis_ID)``: the motion status word (MTS_* bits) or a negative error code."""
         i = self._axis(Axis_ID)
-        return self._bad() if i is None else int(_core.aps_group_motion_status(self._card._card, i))
+        return self._bad() if i is None else int(_core.aps_group_motion_status(self._card.kernel, i))
 
     def APS_motion_io_status(self, Axis_ID) -> int:
         """``I32 APS_motion_io_status(Axis_ID)``: the motion I/O word (MIO_* bits) or a negative error code."""
         i = self._axis(Axis_ID)
-        return self._bad() if i is None else int(_core.aps_motion_io_status(self._card._card, i))
+        return self._bad() if i is None else int(_core.aps_motion_io_status(self._card.kernel, i))
 
     def APS_get_stop_code(self, Axis_ID):
         """``APS_get_stop_code(Axis_ID, &Code)`` -> ``(rtn, STOP_* code)`` of the last abnormal stop (0 none)."""
         i = self._axis(Axis_ID)
-        return (self._bad(), 0) if i is None else (ERR_NoError, int(_core.aps_group_stop_code(self._card._card, i)))
+        return (self._bad(), 0) if i is None else (ERR_NoError, int(_core.aps_group_stop_code(self._card.kernel, i)))
 
 
 # -- sampling, position compare trigger, host interrupts (issue 10 point 3; decisions V71-V85) -------------------
@@ -1144,7 +1144,7 @@ class _ApsScope:
         """``APS_stop_wait_sampling(Board_ID)``: stops the sampling; DataArr keeps what was copied."""
         if not self._board(Board_ID):
             return self._bad()
-        self._card._card.sampler_stop()
+        self._card.kernel.sampler_stop()
         return ERR_NoError
 
     # -- position compare trigger (L3348-3435) ------------------------------------------------------------------

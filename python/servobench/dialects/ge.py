@@ -29,7 +29,7 @@ import math
 import threading
 
 from .. import _core
-from .._core import CardCommandRefused, MotionCommandRefused
+from .._core import CardCommandRefused, MotionCommandRefused, PathGeometryError
 from ..card import Card
 from . import _ge_watch
 
@@ -454,7 +454,7 @@ class GeController(DialectController):
             if (self.variant == "SX" and path is not None and path.cmd_bit is not None
                     and self._card.last_fault == "crd_state_error"):
                 return 1 << path.cmd_bit
-            return _core.ge_command_status(self._card._card, self.variant)
+            return _core.ge_command_status(self._card.kernel, self.variant)
 
         return self._get(word)
 
@@ -718,7 +718,7 @@ class GeController(DialectController):
 
     def GT_GetMode(self, axis):
         """(rtn, mode register) (Table 4-4 L938-945): bit 7 auto-stop; bits 13..11 000 T, 001 V, 010 S."""
-        return self._read(axis, lambda a: _core.ge_mode_register(self._card._card, a))
+        return self._read(axis, lambda a: _core.ge_mode_register(self._card.kernel, a))
 
     # -- 7.4 position, velocity and error feedback --------------------------------------------------------------
     def GT_ZeroPos(self, axis) -> int:
@@ -851,7 +851,7 @@ class GeController(DialectController):
     # -- 7.6 status -------------------------------------------------------------------------------------------
     def GT_GetSts(self, axis):
         """(rtn, axis status): PX 32 bits (Table 4-3 L902-932), SX 16 bits (Table 4-2 L879-900)."""
-        return self._read(axis, lambda a: _core.ge_axis_status(self._card._card, a, self.variant))
+        return self._read(axis, lambda a: _core.ge_axis_status(self._card.kernel, a, self.variant))
 
     def GT_ClrSts(self, axis) -> int:
         """Clears status bits 0-7 (bit 4 stays while the error persists) (L3895-3899)."""
@@ -1008,10 +1008,9 @@ class GeController(DialectController):
         """(segment, 0) or (None, return code 2/3/5/7) for a geometry the path layer refuses."""
         try:
             return make(), RTN_SUCCESS
-        except ValueError as e:
-            for c in (2, 3, 5):
-                if f"return code {c}" in str(e):
-                    return None, c
+        except PathGeometryError as e:
+            return None, e.gt_code  # the SX geometry codes 2/3/5 (Table 2-2 L272-283)
+        except ValueError:
             return None, RTN_PARAMETER_ERROR
 
     def _path_cmd(self, dim, make, g0=False) -> int:
@@ -1680,9 +1679,8 @@ class GeController(DialectController):
             seg = make([v / c for v in tail], c)
         except ValueError as e:
             msg.error, msg.mtnNum, msg.num = 8, int(number), 0
-            for code in (2, 3, 5):
-                if f"return code {code}" in str(e):
-                    return 1 if code == 3 and "zero" in str(e) else code
+            if isinstance(e, PathGeometryError):
+                return int(_core.ge_geometry_code(e.gt_code))  # a zero-length line is a duplicate point: 1 (L3374)
             return RTN_PARAMETER_ERROR
         if seg is None:
             msg.error, msg.mtnNum, msg.num = 1, int(number), 0   # the point equals the previous one (L3374)

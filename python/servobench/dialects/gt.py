@@ -19,7 +19,7 @@ from __future__ import annotations
 import math
 
 from .. import _core
-from .._core import CardCommandRefused, GtHome, MotionCommandRefused, PathSegment
+from .._core import CardCommandRefused, GtHome, MotionCommandRefused, PathGeometryError, PathSegment
 from ..card import Card
 from ._controller import DialectController, export_functions, register32, wrap32  # noqa: F401
 
@@ -144,7 +144,7 @@ class GtController(DialectController):
             st = getattr(self, "_crd_state", None)
             if st is not None and self._card.last_fault == "crd_state_error":
                 return 1 << st["cmd_bit"]  # 12, 13 or 15: which coordinated command failed (V127)
-            return _core.gt_command_status(self._card._card)
+            return _core.gt_command_status(self._card.kernel)
 
         return self._get(word)
 
@@ -494,7 +494,7 @@ class GtController(DialectController):
     # -- 8.6 status and mode ----------------------------------------------------------------------------------
     def GT_GetSts(self):
         """(rtn, axis status register) (Table 4-14, L4080-4104)."""
-        return self._get(lambda: _core.gt_axis_status(self._card._card, self._axis))
+        return self._get(lambda: _core.gt_axis_status(self._card.kernel, self._axis))
 
     def GT_ClrSts(self) -> int:
         """Clears status bits 0-7 (bit 4 only once out of error) (L3138-3161)."""
@@ -508,7 +508,7 @@ class GtController(DialectController):
 
     def GT_GetMode(self):
         """(rtn, axis mode register) (Table 4-15, L3954-3978)."""
-        return self._get(lambda: _core.gt_mode_register(self._card._card, self._axis))
+        return self._get(lambda: _core.gt_mode_register(self._card.kernel, self._axis))
 
     # -- 8.7 capture / homing ---------------------------------------------------------------------------------
     def GT_CaptHome(self) -> int:
@@ -593,8 +593,10 @@ class GtController(DialectController):
             self._card.gt_map_axis(int(axis_num), [float(c) for c in map_count])
         except (CardCommandRefused, MotionCommandRefused):
             return self._crd_refuse()
-        except ValueError as e:
-            return 6 if "return code 6" in str(e) else RTN_PARAMETER_ERROR
+        except PathGeometryError as e:
+            return int(_core.gt_geometry_code(e.gt_code))  # a map that determines no coordinate: 6 (L408)
+        except ValueError:
+            return RTN_PARAMETER_ERROR
         return RTN_SUCCESS
 
     def GT_SetSynVel(self, vel) -> int:
@@ -632,11 +634,7 @@ class GtController(DialectController):
             seg = make_segment(list(path.tail))
         except ValueError as e:
             st["error"] = True
-            code = getattr(e, "gt_code", None)
-            for c in (2, 3, 5):
-                if f"return code {c}" in str(e):
-                    code = c
-            return code or RTN_PARAMETER_ERROR
+            return int(_core.gt_geometry_code(e.gt_code)) if isinstance(e, PathGeometryError) else RTN_PARAMETER_ERROR
         if st["buffer"] and st["open"]:
             return self._crd_do(lambda: path.push_segment(seg, st["vel"], st["acc"], auto_end=True))
         if st["buffer"] and path.breakpoint is not None:
@@ -1024,7 +1022,7 @@ class _GtInterrupts:
             if st["mode"] == "timer":
                 return 0
             k = st["axis"] if st["pending"] else self._axis
-            return _core.gt_axis_status(self._card._card, k)
+            return _core.gt_axis_status(self._card.kernel, k)
 
         return self._get(status)
 

@@ -208,7 +208,7 @@ class GtsController(DialectController):
         only bit the GUC seed uses, L2643-2645; decision V60)."""
         if not self._axis_ok(axis):
             return self._bad(), 0
-        return self._get(lambda: _core.gt_axis_status(self._card._card, int(axis) - 1))
+        return self._get(lambda: _core.gt_axis_status(self._card.kernel, int(axis) - 1))
 
     def GT_GetPrfPos(self, profile, count=1):
         """(rtn, profile position, pulse)."""

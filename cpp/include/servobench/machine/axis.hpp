@@ -80,6 +80,7 @@ struct RunOutcome {
   std::size_t ticks = 0;  // ticks actually run (== n unless a guard tripped; the tripping tick included)
   RunStop stop = RunStop::kCompleted;
   double error_pulse = 0.0;  // the following error at the tick that tripped, pulse
+  double last_error_pulse = 0.0;  // the law's error E = command - encoder read of the last tick run, pulse
 };
 
 class Axis {
@@ -132,6 +133,8 @@ class Axis {
   // The drive's reset input (the card's GT_DrvRst): clears a tripped alarm and cancels a scheduled one.
   void clear_drive_alarm() { power_.clear_alarm(); }
   const PowerTrain& power_train() const { return power_; }
+  // The axis's encoder (its resolution, index angle and noise-free reading); the card senses with it.
+  const plant::Encoder& encoder() const { return encoder_; }
 
   // The fused tick (decision P16) is on by default; false makes run() take the general loop everywhere. The two give
   // the same doubles (tests/cpp/test_fused_tick.cpp compares them signal by signal); this switch exists for that test.

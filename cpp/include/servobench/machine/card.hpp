@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "servobench/machine/axis.hpp"
+#include "servobench/machine/card_hooks.hpp"
 #include "servobench/machine/motion_loop.hpp"
 #include "servobench/motion/generator.hpp"
 
@@ -205,7 +206,7 @@ struct CardTrace {
 class Card {
  public:
   // A card that owns `axes` (4 or 8) axes built from `axis_config`.
-  Card(double axes, const AxisConfig& axis_config, const CardCycles& cycles = {});
+  Card(int axes, const AxisConfig& axis_config, const CardCycles& cycles = {});
   // A card around the given axes (kept by pointer; they must outlive the card): 4 or 8 of them, one servo period.
   explicit Card(const std::vector<Axis*>& axes, const CardCycles& cycles = {});
   Card(const Card&) = delete;
@@ -333,6 +334,27 @@ class Card {
   CardModes& modes();
   const CardModes* modes_if_any() const { return modes_.get(); }
 
+  // -- modules (machine/card_hooks.hpp): what the neutral kernel does not know plugs in here ----------------------
+  // Attaches a module (kept by reference; it must outlive the card or be detached). Its hooks run after those
+  // attached before it.
+  void attach(CardHooks& module);
+  void detach(CardHooks& module);
+
+  // -- kernel services: what a module may use (docs/architecture.md "The hook interface") ---------------------------
+  // The one axis-index check: ValueError (std::invalid_argument) naming the axis unless i < axis_count().
+  void check_axis(std::size_t i) const;
+  // Records the refusal (command-error event and register, last_fault) and throws CardCommandRefused.
+  [[noreturn]] void refuse(int axis, CommandFault fault, const std::string& what);
+  // A module's driven mode (gear, PVT, cam, coordinated) takes axis i, or gives it back (AxisMode::TCurve).
+  void set_driven_mode(std::size_t i, AxisMode mode);
+  // The stop cause of axis i (ADLINK stop code): a refused group start records it, a group start clears it.
+  void set_stop_cause(std::size_t i, StopCause cause);
+  // Abrupt stop of axis i's own profile, motion-complete event (no hooks called).
+  void stop_profile(std::size_t i);
+  bool alarm_active(std::size_t i) const;  // the drive-alarm input of axis i, as the card reacts to it
+  bool inhibited_pos(std::size_t i) const;  // motion toward + is inhibited (a latched hard or soft limit)
+  bool inhibited_neg(std::size_t i) const;
+
   // -- running ----------------------------------------------------------------------------------------------
   // Runs n ticks. traces: empty, or one per axis whose non-null buffers hold n doubles each.
   void run(std::size_t n, const std::vector<CardTrace>& traces = {});
@@ -352,15 +374,11 @@ class Card {
  private:
   void init(const CardCycles& cycles);
   CardAxisState& at(std::size_t i);
-  [[noreturn]] void refuse(int axis, CommandFault fault, const std::string& what);
   void touch(std::size_t i, std::uint32_t bits);
   template <class F>
   void checked(std::size_t i, CommandFault fault, F&& check);
   void apply_output(std::size_t i);
-  void stop_profile(std::size_t i);
   void fault_stop(std::size_t i, StopCause cause, bool servo_off);
-  bool inhibited_pos(std::size_t i) const;
-  bool inhibited_neg(std::size_t i) const;
   // What committing registers r with changes d on axis i would refuse now (None = fine); `why` gets the message.
   CommandFault check_commit(std::size_t i, const AxisRegisters& r, std::uint32_t d, std::string* why) const;
   void commit(std::size_t i, const AxisRegisters& r, std::uint32_t d);
@@ -368,15 +386,15 @@ class Card {
   // Before an immediate move of direction dir on axis i: refuses (recording the ignored command's stop cause)
   // while the e-stop, the alarm input or a latched limit toward dir is active.
   void check_move_allowed(std::size_t i, double dir);
-  bool alarm_active(std::size_t i) const;
   void safety_before(std::size_t i);
-  void after_tick(std::size_t i, double error);
+  void after_tick(std::size_t i, const LoopTick& r);
+  void record(std::size_t i, const CardTrace& ct, std::size_t k) const;
   void limit_stop(std::size_t i, StopCause cause);
   void start_ptp(std::size_t i, const motion::AdlinkPtpParams& p);
-  void tick_axis(std::size_t i, const std::vector<CardTrace>& traces, std::size_t k);
-  // [modes]
-  friend class CardModes;
+  // [modes] owned, and attached as a module like any other
   std::unique_ptr<CardModes> modes_;
+  std::vector<CardHooks*> hooks_;  // attached modules, in attach order
+  bool limit_enabled(std::size_t i, bool positive) const;
 
   std::vector<std::unique_ptr<Axis>> owned_;
   std::vector<std::unique_ptr<MotionLoop>> loops_;

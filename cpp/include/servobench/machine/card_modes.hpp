@@ -48,7 +48,7 @@ struct FollowMaster {
   std::size_t master = 0;  // card axis, 0-based
 };
 
-class CardModes {
+class CardModes : public CardHooks {
  public:
   explicit CardModes(Card& card);
   CardModes(const CardModes&) = delete;
@@ -58,7 +58,7 @@ class CardModes {
   // single-axis Update does (ADLINK L3931-3936: the command is ignored, the stop code reads EMG).
   void note_refused_start(std::size_t axis, StopCause cause);
   // Whether every hosted group lets the card see this hard limit of `axis` (GUC BufLmtsOn/Off, V129).
-  bool limit_enabled(std::size_t axis, bool positive) const;
+  bool limit_enabled(std::size_t axis, bool positive) const override;
 
   // -- electronic gear (GT L1029-1090, L4407-4437) ---------------------------------------------------------
   // GT_PrflG(master): axis `slave` follows the profile position of axis `master` with the active ratio (the
@@ -144,18 +144,19 @@ class CardModes {
   void gt_map_axis(const motion::GtAxisMap& row);
   motion::PathGenerator& gt_path();
 
-  // -- hooks the Card calls ------------------------------------------------------------------------------
-  bool active() const { return n_driven_ > 0 || n_groups_ > 0; }
-  void begin_tick(long long tick);
-  void feed(std::size_t i);
-  void on_fault(std::size_t i, StopCause cause);
-  void on_abrupt_stop(std::size_t i);
-  void on_ratio(std::size_t i, double ratio);
+  // -- hooks the Card calls (machine/card_hooks.hpp) --------------------------------------------------------
+  bool active() const override { return n_driven_ > 0 || n_groups_ > 0; }
+  void begin_tick(long long tick) override;
+  void feed(std::size_t i) override;
+  void on_fault(std::size_t i, StopCause cause) override;
+  void on_abrupt_stop(std::size_t i) override;
+  void on_ratio(std::size_t i, double ratio) override;
+  bool inhibits_move(std::size_t i, double dir) const override { return gear_inhibits(i, dir); }
   // The axis leaves its driven mode (a mode select, or a reset when all = true).
-  void leave(std::size_t i);
-  void reset();
+  void leave(std::size_t i) override;
+  void reset() override;
   // The driven modes' notion of "moving" (GT status bit 10) for axis i; nullopt = the card's own.
-  std::optional<bool> moving(std::size_t i) const;
+  std::optional<bool> moving(std::size_t i) const override;
 
  private:
   void feed_inputs(CardGroup& g) const;

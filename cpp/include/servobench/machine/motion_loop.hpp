@@ -47,6 +47,12 @@ struct LoopTrace {
 #undef SERVOBENCH_LOOP_FIELD
 };
 
+// What one step of the loop returns: every signal the card's checks after the law need (machine/card.hpp).
+struct LoopTick {
+  double error_pulse = 0.0;       // the law's error E_n of this tick: command - encoder read, pulse
+  bool breakpoint_fired = false;  // the armed breakpoint fired in this tick (it is disarmed now)
+};
+
 class MotionLoop {
  public:
   using Staged = std::function<void(motion::ProfileGenerator&)>;
@@ -107,6 +113,9 @@ class MotionLoop {
     add_volts_ = volts;
   }
 
+  // One tick (steps 1-4 above): fills entry k of the non-null buffers of both traces and returns what the card
+  // checks after the law. The card's tick calls this directly: Card -> MotionLoop::step -> Axis::run.
+  LoopTick step(const Trace& axis_trace, const LoopTrace& loop_trace, std::size_t k = 0);
   // Runs n ticks; fills the non-null buffers of both traces (n doubles each).
   void run(std::size_t n, const Trace& axis_trace, const LoopTrace& loop_trace);
   // Runs until the active sequence ends (or, with none, the generator stops), at most max_ticks; returns
@@ -114,7 +123,6 @@ class MotionLoop {
   std::size_t run_until_done(std::size_t max_ticks, const Trace& axis_trace, const LoopTrace& loop_trace);
 
  private:
-  void tick(const Trace& axis_trace, const LoopTrace& loop_trace, std::size_t k);
   double phase_code() const;
 
   Axis& axis_;

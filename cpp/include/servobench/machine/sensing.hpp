@@ -35,7 +35,8 @@ struct TickSense {
 
 class Sensing {
  public:
-  explicit Sensing(const AxisConfig& config);
+  // Senses with the axis's own switches and encoder (kept by reference: the axis must outlive this).
+  explicit Sensing(const Axis& axis);
   // Levels only (no edges), at one instant.
   motion::HomeInputs levels(const MechSample& now) const;
   // Events between two successive tick instants `h` seconds apart.
@@ -47,7 +48,7 @@ class Sensing {
   void switch_event(motion::SignalEvent& e, bool was, bool is, double bound_lo, double bound_hi,
                     const MechSample& b, const MechSample& a, double h, double* tau_out) const;
   plant::SwitchParams sw_;
-  plant::Encoder enc_;
+  const plant::Encoder& enc_;  // the Axis's own encoder (one encoder per axis)
 };
 
 }  // namespace servobench::machine
