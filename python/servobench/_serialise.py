@@ -94,7 +94,7 @@ class _Encoder:
         if dataclasses.is_dataclass(v) and not isinstance(v, type):
             self.types[path] = _qualname(v)
             return {f.name: self.encode(getattr(v, f.name), f"{path}/{f.name}") for f in dataclasses.fields(v)
-                    if f.init}
+                    if f.init and not _private_with_default(f)}
         if type(v).__module__.startswith("pandas"):
             import pandas as pd
 
@@ -140,6 +140,13 @@ def dumps(obj, *, indent: int | None = None) -> str:
     if isinstance(data, dict) and nonfinite:
         data = {**data, "nonfinite": nonfinite}
     return json.dumps(data, indent=indent, allow_nan=False)
+
+
+def _private_with_default(f) -> bool:
+    """A private dataclass field with a default (e.g. AxisRun's lazy replay of the signals it did not record): a
+    live object, not data; left out of the document and rebuilt as its default."""
+    return f.name.startswith("_") and (f.default is not dataclasses.MISSING or
+                                       f.default_factory is not dataclasses.MISSING)
 
 
 def to_json(obj, *, indent: int | None = None) -> str:

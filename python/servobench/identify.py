@@ -576,8 +576,10 @@ def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None
     notes.append(f"Starts: {len(fits)}, converged {len(converged)}" +
                  (("; DISAGREE beyond their error bars: " + "; ".join(disagree[:3])) if disagree else
                   ", agreeing within their error bars") + ".")
+    conv_ids = {id(f) for f in converged}
+    best_scaled = dataclasses.replace(best, parameters=params)  # error bars with the correlated-residual factor
     alone = best.converged and len(fits) > 1 and not any(
-        _same_point(best, f, k) for f in converged if f is not best)
+        _same_point(best_scaled, g, 1.0) for f, g in zip(fits, inflated) if id(f) in conv_ids and f is not best)
     if alone:  # the solver stopped, but no other start confirms the point (decision J43)
         notes.append("NOT CONVERGED: no other start ends at the best start's point (within 2 standard errors or "
                      "5 %): the answer depends on where the fit starts (a local minimum). Give a better guess or a "

@@ -31,7 +31,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 __all__ = ["idim_ls", "idim_iv", "IdimResult", "hac_covariance", "observation_matrix", "FRICTION_MODELS",
-           "filtered_derivatives", "dynamics_frequency"]
+           "filtered_derivatives", "dynamics_frequency", "long_run_covariance"]
 
 FRICTION_MODELS = ("symmetric", "asymmetric")
 

@@ -31,7 +31,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 __all__ = ["read_csv", "read_dataframe", "read_mat", "column_unit", "finite_column", "detect_count",
-           "UNITS", "parse_header", "unit_factor", "check_time", "MAX_JITTER_PPM", "IdentificationLog", "motor_side"]
+           "UNITS", "parse_header", "unit_factor", "check_time", "MAX_JITTER_PPM", "IdentificationLog", "motor_side", "motor_side_line"]
 
 #: Steps of a real time vector may differ from the median step by this much (parts per million) and be accepted.
 MAX_JITTER_PPM = 100.0

@@ -36,7 +36,7 @@ from dataclasses import dataclass
 import numpy as np
 
 __all__ = ["segment_length", "start_from_idim", "perturbed_starts", "long_run_variance_ratio", "disagreements",
-           "segment_sandwich", "SegmentSandwich", "run_starts"]
+           "segment_sandwich", "SegmentSandwich", "run_starts", "shooting_options"]
 
 MIN_SEGMENT, MAX_SEGMENT = 50, 1000
 
