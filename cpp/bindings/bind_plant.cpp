@@ -290,28 +290,13 @@ void bind_plant(py::module_& m) {
            "(A, B, C) from motor torque (N*m) to encoder angle (rad): B and C scaled by 2 pi / lead for a linear model.")
       .def("to_dict", &lti_dict, "The parameters as a dict (a, b, c as arrays, the rest numbers).")
       .def("replace",
-           [](const LtiPlantParams& p, const py::object& a, const py::object& b, const py::object& c,
-              const py::object& d, const py::object& lead, const py::object& coulomb, const py::object& stat,
-              const py::object& ws, const py::object& delta, const py::object& asym, const py::object& load) {
-             py::dict kw;  // only the fields given (None: keep)
-             const std::pair<const char*, const py::object*> given[] = {
-                 {"a", &a}, {"b", &b}, {"c", &c}, {"d", &d}, {"lead_m_per_rev", &lead}, {"coulomb_nm", &coulomb},
-                 {"static_nm", &stat}, {"stribeck_speed_rad_s", &ws}, {"stribeck_exponent", &delta},
-                 {"coulomb_asym_nm", &asym}, {"load_nm", &load}};
-             for (const auto& [name, value] : given)
-               if (!value->is_none()) kw[name] = *value;
+           [](const LtiPlantParams& p, const py::kwargs& kw) {
              LtiPlantParams q = p;
              lti_apply(q, kw);
              q.validate();
              return q;
            },
-           py::kw_only(), py::arg("a") = py::none(), py::arg("b") = py::none(), py::arg("c") = py::none(),
-           py::arg("d") = py::none(), py::arg("lead_m_per_rev") = py::none(), py::arg("coulomb_nm") = py::none(),
-           py::arg("static_nm") = py::none(), py::arg("stribeck_speed_rad_s") = py::none(),
-           py::arg("stribeck_exponent") = py::none(), py::arg("coulomb_asym_nm") = py::none(),
-           py::arg("load_nm") = py::none(),
-           "A validated copy with the given fields changed (None: unchanged; a, b, c arrays, the rest numbers in the\n"
-           "units of the constructor).")
+           "A validated copy with the given fields changed.")
       .def("__repr__",
            [](const LtiPlantParams& p) {
              std::string s = "LtiPlant(states=" + std::to_string(p.states()) + ", " + p.stability();
