@@ -184,6 +184,7 @@ void bind_identify(py::module_& m) {
         d["residual"] = to_array(r.residual);
         d["segment_start"] = to_array(r.segment_start);
         d["segment_count"] = to_array(r.segment_count);
+        d["segment_states"] = to_array(r.segment_states);
         return d;
       },
       py::arg("torque_nm"), py::arg("measured"), py::kw_only(), py::arg("sample_period_s"),

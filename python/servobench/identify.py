@@ -242,7 +242,9 @@ class IdentifiedPlant(JsonResult):
     standard deviation (time) or relative complex error (frequency); residual_rms in the measurement's unit (rad, or
     rad/s; nepers/radians for a frequency fit); summary: Ceres-style report; not_identifiable: what the data could not
     determine; time-domain fits keep predicted/residual per sample (NaN outside the segments used); warnings: what the
-    data say against the model (:attr:`misfit`).
+    data say against the model (:attr:`misfit`); segment_states: a time fit's fitted start state of every shooting
+    segment (segments x state size: angle rad and speed rad/s of each mass, the fit's internal layout), where its
+    error bars are evaluated.
     """
 
     model: str
@@ -270,6 +272,7 @@ class IdentifiedPlant(JsonResult):
     warnings: list = field(default_factory=list)
     asymmetry_p_value: float = math.nan
     lead_m_per_rev: float | None = None
+    segment_states: np.ndarray | None = field(default=None, repr=False, compare=False)
 
     @property
     def misfit(self) -> bool:
@@ -607,10 +610,17 @@ def _correlated_errors(best: IdentifiedPlant, log: IdentificationLog, model: str
     free = {n for n, e in best.parameters.items() if not e.fixed and math.isfinite(e.std_error)}
     if options.get("loss", "none") == "none" and free:
         try:
-            sw = oefit.segment_sandwich(log, model, best.values(), free, segment_samples, options)
+            sw = oefit.segment_sandwich(log, model, best.values(), free, segment_samples, options,
+                                        states=best.segment_states)
         except (ValueError, IndexError, np.linalg.LinAlgError) as err:
             sw, why = None, str(err)
         else:
+            fit_rms = best.residual_rms / (log.count_rad if not log.measured_is_speed
+                                           else log.count_rad / log.sample_period_s)
+            if not sw.residual_rms <= 1.05 * fit_rms + 1e-12:  # the sandwich must stand where the fit ended (J46)
+                sw, why = None, (f"its segment states give a residual RMS of {sw.residual_rms:.4g} counts, the fit's "
+                                 f"{fit_rms:.4g}")
+        if sw is not None:
             cov = sw.covariance
             names = sw.names
             se = {n: math.sqrt(max(cov[i, i], 0.0)) for i, n in enumerate(names)}
@@ -704,7 +714,8 @@ def _fit_once(log: IdentificationLog, model: str = "rigid", *, guess: dict, fixe
                                   "these parameters (fixed=...)")
     return IdentifiedPlant(model, _estimates(r["parameters"]), s["nrmse"], s["residual_rms"], s["converged"],
                            s["iterations"], s["seconds"], s["report"] + start_note, list(s["not_identifiable"]),
-                           stribeck_exponent, log.time_s, log.measured, r["predicted"], r["residual"])
+                           stribeck_exponent, log.time_s, log.measured, r["predicted"], r["residual"],
+                           segment_states=np.asarray(r["segment_states"], float).reshape(len(r["segment_start"]), -1))
 
 
 from .frequency_fit import MechanicsIO, fit_frequency, frequency_input  # noqa: E402,F401 (re-exported)

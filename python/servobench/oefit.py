@@ -206,11 +206,17 @@ def shooting_options(log, segment_samples: int, options: dict) -> dict:
 
 
 def segment_sandwich(log, model: str, values: dict, free, segment_samples: int, options: dict | None = None,
-                     *, max_state_iterations: int = 8) -> SegmentSandwich:
+                     *, states=None, max_state_iterations: int = 8) -> SegmentSandwich:
     """The sandwich covariance of the fit's free parameters at `values` (SI, external names), clustered by
-    shooting segment (see the module's text). The segment start states are re-solved with the parameters held
-    (Gauss-Newton per segment, at most `max_state_iterations`, stopping when the residual stops falling by 0.1 %).
-    Costs a few residual-and-Jacobian evaluations (about 0.05 s for 25,000 samples)."""
+    shooting segment (see the module's text).
+
+    states: the fit's own segment start states (``fit.segment_states``, one row per segment, the final stage's
+    layout), from which the Gauss-Newton refinement below starts. Without them (or when their number does not match
+    the layout) the states start from the data (a line through each segment's first samples) and are re-solved
+    with the parameters held (Gauss-Newton per segment, at most `max_state_iterations`, stopping when the residual
+    stops falling by 0.1 %). Re-solving from the data can fail where a segment starts in stick-slip: compare
+    ``residual_rms`` with the fit's (decision J46). Costs a few residual-and-Jacobian evaluations (about 0.05 s for
+    25,000 samples)."""
     from . import _core
 
     kw = shooting_options(log, segment_samples, options or {})
@@ -219,6 +225,10 @@ def segment_sandwich(log, model: str, values: dict, free, segment_samples: int, 
     starts, counts = sp["starts"].astype(int), sp["counts"].astype(int)
     ns = int(sp["state_size"])
     x = np.array(sp["states"], float)
+    if states is not None:
+        given = np.asarray(states, float).ravel()
+        if given.shape == x.shape and np.all(np.isfinite(given)):
+            x = given.copy()
     p = np.array([values[n] for n in names], float)
     si = names.index("static_nm" if model == "rigid" else "motor_static_nm")
     ci = names.index("coulomb_nm" if model == "rigid" else "motor_coulomb_nm")
@@ -258,6 +268,7 @@ def segment_sandwich(log, model: str, values: dict, free, segment_samples: int, 
     if ss > prev:  # the last step did not help: back to the previous states
         x = x_old
         r, jp, jx = evaluate()
+        ss = float(r @ r)
         ai = np.linalg.pinv(by_segment(jx[:, :, None] * jx[:, None, :]))
     # each segment's state directions projected out of its parameter columns and residual (Schur complement)
     coef = ai @ by_segment(jx[:, :, None] * jp[:, None, :])

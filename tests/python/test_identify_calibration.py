@@ -82,7 +82,9 @@ def test_fit_time_standard_errors_cover_the_truth_on_coloured_records():
         for k, v in TRUE.items():
             e = fit.parameters[OE_NAMES[k]]
             inside.append(abs(e.value - v) <= 2 * e.std_error)
-        sw = sb.oefit.segment_sandwich(log, "rigid", fit.values(), set(OE_NAMES.values()), fit.segment_samples)
+        sw = sb.oefit.segment_sandwich(log, "rigid", fit.values(), set(OE_NAMES.values()), fit.segment_samples,
+                                       states=fit.segment_states)
+        assert sw.residual_rms == pytest.approx(fit.residual_rms / log.count_rad, rel=1e-3)  # where the fit ended
         for i, name in enumerate(sw.names):
             k = next(a for a, b in OE_NAMES.items() if b == name)
             inside_iid.append(abs(fit[name] - TRUE[k]) <= 2 * np.sqrt(sw.covariance_iid[i, i]))

@@ -528,6 +528,7 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
     if (!std::isnan(result.predicted[k])) var += (y[k] - mean) * (y[k] - mean);
   result.segment_start = starts;
   result.segment_count = counts;
+  result.segment_states = st.shooting.states;
 
   // Standard errors: the Jacobian at the solution, segment states eliminated.
   ceres::Problem::EvaluateOptions eopt;

@@ -81,6 +81,7 @@ struct TimeFitResult {
   std::vector<double> residual;   // measured - predicted
   std::vector<int> segment_start; // first sample of each segment
   std::vector<int> segment_count; // its length; samples outside every segment have NaN predicted/residual
+  std::vector<double> segment_states;  // the fitted start state of every segment, concatenated (state_size each)
 };
 
 // Fits the plant. Throws std::invalid_argument for bad input (lengths, non-finite values, a log shorter than two
