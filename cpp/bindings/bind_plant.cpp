@@ -119,6 +119,19 @@ void lti_apply(LtiPlantParams& p, const py::dict& kw) {
   }
 }
 
+// replace()'s docstring, its first line the signature with every field as a keyword (omitted = unchanged), as
+// ParamClass writes it (decision Y2): help(), completion and the stubs see the fields; unknown ones still get
+// lti_apply's "unknown parameter" error naming the fields.
+const std::string& lti_replace_doc() {
+  static const std::string doc = [] {
+    std::string s = "replace(self, *, a: numpy.typing.ArrayLike = ..., b: numpy.typing.ArrayLike = ..., "
+                    "c: numpy.typing.ArrayLike = ...";
+    for (const auto& [name, member] : lti_fields()) s += std::string(", ") + name + ": float = ...";
+    return s + ") -> servobench._core.LtiPlant\n\nA validated copy with the given fields changed (the others kept).";
+  }();
+  return doc;
+}
+
 py::dict lti_dict(const LtiPlantParams& p) {
   py::dict d;
   d["a"] = matrix_to(p.a);
@@ -289,14 +302,6 @@ void bind_plant(py::module_& m) {
            },
            "(A, B, C) from motor torque (N*m) to encoder angle (rad): B and C scaled by 2 pi / lead for a linear model.")
       .def("to_dict", &lti_dict, "The parameters as a dict (a, b, c as arrays, the rest numbers).")
-      .def("replace",
-           [](const LtiPlantParams& p, const py::kwargs& kw) {
-             LtiPlantParams q = p;
-             lti_apply(q, kw);
-             q.validate();
-             return q;
-           },
-           "A validated copy with the given fields changed.")
       .def("__repr__",
            [](const LtiPlantParams& p) {
              std::string s = "LtiPlant(states=" + std::to_string(p.states()) + ", " + p.stability();
@@ -329,6 +334,19 @@ void bind_plant(py::module_& m) {
       .def("friction_torque", [](const LtiPlantParams& p, const py::handle& s) { return friction_curve(p.friction(), s); },
            py::arg("speed_rad_s"),
            "Steady dry friction torque (N*m) opposing motion at each speed (rad/s); 0 at rest (viscous terms are in A).");
+  {  // replace(): its signature is its docstring's first line (lti_replace_doc), as ParamClass does
+    py::options options;
+    options.disable_function_signatures();
+    py::object cls = m.attr("LtiPlant");
+    cls.attr("replace") = py::cpp_function(
+        [](const LtiPlantParams& p, const py::kwargs& kw) {
+          LtiPlantParams q = p;
+          lti_apply(q, kw);
+          q.validate();
+          return q;
+        },
+        py::name("replace"), py::is_method(cls), lti_replace_doc().c_str());
+  }
   m.attr("LtiPlant").attr("__hash__") = py::none();
   m.attr("LtiPlant").attr("FIELDS") = py::make_tuple("a", "b", "c", "d", "lead_m_per_rev", "coulomb_nm", "static_nm",
                                                      "stribeck_speed_rad_s", "stribeck_exponent", "coulomb_asym_nm",

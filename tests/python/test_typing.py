@@ -37,7 +37,8 @@ KWARGS_ALLOWED = {"gt_crd_status", "ge_crd_status", "identify_time", "identify_s
 
 
 def _param_classes() -> list[type]:
-    return [c for c in vars(_core).values() if isinstance(c, type) and hasattr(c, "FIELDS")]
+    """The value types whose every field has a default (LtiPlant's matrices are required: its own test below)."""
+    return [c for c in vars(_core).values() if isinstance(c, type) and hasattr(c, "FIELDS") and c is not _core.LtiPlant]
 
 
 def _stub_tree() -> ast.Module:
@@ -220,3 +221,27 @@ def test_mypy_passes_on_examples_and_the_typed_usage(tmp_path):
         run = subprocess.run([sys.executable, str(script)], cwd=tmp_path, capture_output=True, text=True,
                              timeout=300)
         assert run.returncode == 0, f"{script}: {run.stdout}{run.stderr}"
+
+
+def test_lti_plant_signature_shows_its_fields():
+    """LtiPlant: the matrices a, b, c are required keywords, every other field a keyword with the constructor's real
+    default; replace() shows the same fields, each optional, and still names the fields on an unknown one."""
+    sig = inspect.signature(_core.LtiPlant)
+    params = list(sig.parameters.values())
+    assert [p.name for p in params] == list(_core.LtiPlant.FIELDS)
+    assert all(p.kind is inspect.Parameter.KEYWORD_ONLY for p in params)
+    required = [p.name for p in params if p.default is inspect.Parameter.empty]
+    assert required == ["a", "b", "c"]
+    made = _core.LtiPlant(a=[[0.0, 1.0], [0.0, -1.0]], b=[0.0, 1.0], c=[1.0, 0.0]).to_dict()
+    for p in params[3:]:
+        assert p.default == made[p.name], p.name
+    rp = inspect.signature(_core.LtiPlant.replace).parameters
+    assert list(rp)[1:] == list(_core.LtiPlant.FIELDS)
+    assert all(rp[n].kind is inspect.Parameter.KEYWORD_ONLY for n in _core.LtiPlant.FIELDS)
+    node = next(n for n in _stub_tree().body if isinstance(n, ast.ClassDef) and n.name == "LtiPlant")
+    init = next(n for n in node.body if isinstance(n, ast.FunctionDef) and n.name == "__init__")
+    assert [a.arg for a in init.args.kwonlyargs] == list(_core.LtiPlant.FIELDS)
+    rep = next(n for n in node.body if isinstance(n, ast.FunctionDef) and n.name == "replace")
+    assert [a.arg for a in rep.args.kwonlyargs] == list(_core.LtiPlant.FIELDS) and rep.args.kwarg is None
+    with pytest.raises(TypeError, match="unknown parameter 'inertia'.*the parameters are a, b, c, d"):
+        _core.LtiPlant(a=[[0.0, 1.0], [0.0, -1.0]], b=[0.0, 1.0], c=[1.0, 0.0]).replace(inertia=1)
