@@ -42,7 +42,7 @@ from .axisfile import AxisFileError, load_axis, save_axis  # axis description fi
 from . import frequency
 from . import autotune
 from . import identify
-from .identify import IdentificationLog, IdentifiedPlant, fit_frequency, fit_time, run_experiment
+from .identify import IdentificationError, IdentificationLog, IdentifiedPlant, fit_frequency, fit_time, run_experiment
 from . import experiment, frequency_fit
 from .frequency_fit import MechanicsIO
 from . import idim, idlog, oefit, validation
@@ -162,6 +162,7 @@ __all__ = [
     "ModelTuneResult",
     "autotune",
     "identify",
+    "IdentificationError",
     "IdentificationLog",
     "IdentifiedPlant",
     "fit_frequency",
