@@ -261,7 +261,7 @@ class CardClock:
     @contextlib.contextmanager
     def hold(self):
         """Holds the card still (realtime: no tick runs) for a group of calls a program wants to see at one tick
-        (``with clock.hold(): pos = GT_GetPrfPos(); sts = GT_GetSts()``). The calls inside still cost their time
+        (``with clock.hold(): pos = GT_GetAtlPos(); sts = GT_GetSts()``). The calls inside still cost their time
         in program mode."""
         with self._held():
             yield self
