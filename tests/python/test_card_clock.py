@@ -19,6 +19,7 @@ from servobench.card_clock import VENDOR_CALL_COST_US, CardClock, ClockOptions
 from servobench.dialects.aps import MTS_MDN, ApsController
 from servobench.dialects.ge import GeController
 from servobench.dialects.gt import GtController
+from servobench.dialects.gts import GtsController
 
 LAW = sb.GtServoLaw(kp=38, ki=60, kd=830, kaff=12870)
 APS_LAW = sb.ApsServoLaw(kp=38 * 1024, kd=830 * 32)      # tests/python/test_card_aps.py's tuned axis
@@ -208,6 +209,24 @@ def test_program_mode_aps_sleep_polling_loop_ends():
     while not a.APS_motion_status(0) >> MTS_MDN & 1:
         a.Sleep(1)                                       # the examples' loop: poll, Sleep(1 ms)
     assert a.APS_get_command(0)[1] == 5000
+
+
+def test_program_mode_guc_polling_loop_ends_and_nested_calls_cost_once():
+    # GUC-ECAT / iDEABOX: GT_GetSts bit 10 = the profile moves (GUC L2643-2645), 1 ms servo period
+    g = GtsController()
+    assert g.GT_Open(sb.Card(8, law=LAW, servo_period_s=1e-3)) == 0
+    clock = g.card.set_clock("program")                  # 20 us per call: 50 calls = 1 tick
+    assert g.GT_AxisOn(1) == 0 and g.GT_PrfTrap(1) == 0
+    calls = clock.stats().calls
+    assert g.GT_SetJogPrm(1, 0.1) == 0                   # calls GT_SetTrapPrm inside: one call, one cost
+    assert clock.stats().calls == calls + 1 and clock.pending_us == pytest.approx(20.0 * (calls + 1) % 1000)
+    assert [g.GT_SetVel(1, 10), g.GT_SetPos(1, 2000), g.GT_Update(1)] == [0, 0, 0]
+    t0 = g.card.tick
+    while g.GT_GetSts(1)[1] & 0x400:
+        pass
+    assert g.GT_GetPrfPos(1)[1] == 2000
+    # 2000 pulse at 10 pulse/ms, 0.1 pulse/ms^2: 100 ms up, 100 ms at speed, 100 ms down = 300 ticks of 1 ms
+    assert 299 <= g.card.tick - t0 <= 303
 
 
 # -- realtime mode ------------------------------------------------------------------------------------------------------
