@@ -279,7 +279,7 @@ class CardClock:
                 self._advance_ps(int(round(ms * _PS_PER_MS)))
         elif self.mode == "realtime":
             n = int(round(ms * 1e-3 / self._ts_s))
-            with self._meta:
+            with self._held(), self._meta:  # the count of the ticks run so far, not of a chunk in flight
                 target = self._ticks + n
             self.wait_until(lambda: False, max_ticks=n, _target=target)
         else:
@@ -293,7 +293,7 @@ class CardClock:
             raise ValueError(f"wait_until.max_ticks = {max_ticks!r} is outside the allowed range 0..1e12 (whole ticks)")
         if self.mode != "realtime":
             return self.card.run_until(lambda _c: predicate(), max_ticks, 1)
-        with self._meta:
+        with self._held(), self._meta:
             start = self._ticks
         target = start + int(max_ticks) if _target is None else _target
         while True:
@@ -401,11 +401,11 @@ class CardClock:
                     if self._stop.is_set():
                         break
                     self.card.step(n)
-                ran += n
-                with self._meta:
-                    self._ticks += n
-                    self._max_lag = max(self._max_lag, due - ran)
-                    self._meta.notify_all()
+                    ran += n
+                    with self._meta:  # counted before the lock is released: a caller holding it sees the count
+                        self._ticks += n
+                        self._max_lag = max(self._max_lag, due - ran)
+                        self._meta.notify_all()
                 if due - ran <= 0:
                     self._stop.wait(period)
         except BaseException as exc:  # noqa: BLE001 -- handed to the program thread (close/wait raise it)
