@@ -199,6 +199,8 @@ class CardClock:
         self._wall_s = 0.0
         self._max_lag = 0
         self._closed = False
+        self._step, self._program = options.mode == "step", options.mode == "program"
+        self._cost_ps: dict = {}             # (vendor, call name) -> ps, filled on first use
         if options.mode == "realtime":
             self._start()
 
@@ -256,6 +258,32 @@ class CardClock:
                         self._advance_ps(int(round(self.options.cost_us(vendor, name) * _PS_PER_US)))
             finally:
                 self._local.depth = depth
+                self._lock.release()
+
+    def run_call(self, vendor: str, name: str, call, args=(), kwargs=None):
+        """``call(*args, **kwargs)`` as one vendor call (what :meth:`vendor_call` does, without a context manager's
+        cost: the dialects' wrapper calls this for every ``GT_*``/``APS_*`` function)."""
+        if self._step:
+            return call(*args, **(kwargs or {}))
+        if not self._lock.acquire(blocking=False):
+            self._acquire()
+        local = self._local
+        depth = getattr(local, "depth", 0)
+        local.depth = depth + 1
+        try:
+            return call(*args, **(kwargs or {}))
+        finally:
+            try:
+                if depth == 0:
+                    self._calls += 1
+                    if self._program:
+                        key = (vendor, name)
+                        ps = self._cost_ps.get(key)
+                        if ps is None:
+                            ps = self._cost_ps[key] = int(round(self.options.cost_us(vendor, name) * _PS_PER_US))
+                        self._advance_ps(ps)
+            finally:
+                local.depth = depth
                 self._lock.release()
 
     @contextlib.contextmanager

@@ -32,7 +32,7 @@ def gt_card(**axis_parts):
 
 
 def gt_start_move(g, pos=20000, vel=2.0, acc=0.02):
-    """GT L1900-1920 style: T-curve on axis 1 (pulse, pulse/ST, pulse/ST^2), returns the update's code."""
+    """GT Example 4-2 style (L935-951): T-curve on axis 1 (pulse, pulse/ST, pulse/ST^2), returns the update's code."""
     assert g.GT_Axis(1) == 0 and g.GT_ClrSts() == 0 and g.GT_AxisOn() == 0
     assert g.GT_PrflT() == 0 and g.GT_SetAcc(acc) == 0 and g.GT_SetVel(vel) == 0 and g.GT_SetPos(pos) == 0
     return g.GT_Update()
@@ -94,8 +94,8 @@ def test_step_mode_keeps_explicit_time():
 
 # -- program mode ------------------------------------------------------------------------------------------------------
 def gt_polling_program(seed=0):
-    """The GT manual's TMotion loop (L1900-1920: ``do GT_GetSts(&s); while (s & 0x400);``) in program mode, on a
-    card whose encoder has seeded noise; returns what the program saw."""
+    """The GT manual's T-curve (Example 4-2, L935-951) and its status loop (``while (status & 0x400)``, L3038) in
+    program mode, on a card whose encoder has seeded noise; returns what the program saw."""
     g = gt_card(encoder=sb.Encoder(counts_per_rev=10000, noise_counts=0.7, seed=seed))
     clock = g.card.set_clock("program")
     assert gt_start_move(g) == 0
@@ -121,6 +121,18 @@ def test_program_mode_polling_loop_ends_at_the_manuals_position():
     assert 10100 <= g.card.tick <= 10103                 # ends within the poll that sees the bit clear
     ticks = [t for t, _s, _p in seen]
     assert ticks == sorted(ticks) and ticks[-1] - ticks[0] >= 10000
+
+
+def test_program_mode_tv8_tmotion_loop_as_written():
+    # GT Example 4-2 TMotion (L935-951) with the manual's figures: SetAcc(0.01), SetVel(1), SetPos(80000), Update, then
+    # "while (status & 0x400) GT_GetSts(&status)" (L3037-3040): TV8 (gt.md §9) gives 80100 ST and position 80000.
+    g = gt_card()
+    clock = g.card.set_clock("program")
+    assert gt_start_move(g, pos=80000, vel=1, acc=0.01) == 0
+    while g.GT_GetSts()[1] & 0x400:
+        pass
+    assert g.card.profile_pos(0) == 80000 and g.GT_GetPos() == (0, 80000)
+    assert 80100 <= g.card.tick <= 80102 and clock.stats().ticks == g.card.tick
 
 
 def test_program_mode_same_program_same_seed_same_result_bit_for_bit():
@@ -186,7 +198,7 @@ def test_program_mode_refused_and_failing_calls_still_cost_and_return_codes():
 
 
 def test_program_mode_ge_polling_loop_ends():
-    # GE Example 5-1 (L1012-1019, AxisRunT) with its loop "do GT_GetSts(...); while (sts & 0x400)" (L2238-2300)
+    # GE Example 5-1 (L1012-1019, AxisRunT) polled with GT_GetSts as the manual's examples do (L2238-2300), bit 10 = moving
     c = GeController("PX", 4)
     assert c.GT_Open(sb.Card(4, drive=sb.VelocityDrive(), law=sb.GtServoLaw(fractional_gains=True))) == 0
     c.card.set_clock("program")

@@ -58,8 +58,7 @@ def _vendor_call(fn, parameter_error: int, command_error: int, returns_code: boo
         clock = getattr(card, "_clock", None) if card is not None else None
         if clock is None:
             return guarded(args, kwargs)
-        with clock.vendor_call(type(args[0])._CLOCK_VENDOR, name):
-            return guarded(args, kwargs)
+        return clock.run_call(type(args[0])._CLOCK_VENDOR, name, guarded, (args, kwargs))
 
     call.__wrapped_vendor__ = True
     return call
