@@ -198,7 +198,7 @@ def test_program_mode_refused_and_failing_calls_still_cost_and_return_codes():
 
 
 def test_program_mode_ge_polling_loop_ends():
-    # GE Example 5-1 (L1012-1019, AxisRunT) polled with GT_GetSts as the manual's examples do (L2238-2300), bit 10 = moving
+    # GE Example 5-1 (L1012-1019, AxisRunT), polled with GT_GetSts as the manual's examples do (L2238-2300)
     c = GeController("PX", 4)
     assert c.GT_Open(sb.Card(4, drive=sb.VelocityDrive(), law=sb.GtServoLaw(fractional_gains=True))) == 0
     c.card.set_clock("program")
