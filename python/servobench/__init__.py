@@ -107,6 +107,8 @@ from .tune_robust import RobustTuneResult, tune_robust  # tuning for the worst p
 from . import card
 from .card import CARD_EVENTS, Card, CardCommandRefused, CardLimits, CardRun, events_named
 from .card import SAMPLE_SIGNALS, FiredEvent, ScopeData  # the card's scope and event callbacks (issue 10.3)
+from . import card_clock
+from .card_clock import CardClock, ClockOptions, ClockStats  # time modes: step, program, realtime (issue 25.1)
 from . import dialects
 from .motion import (
     AdlinkPtp,
@@ -143,6 +145,10 @@ __all__ = [
     "CardCommandRefused",
     "CardLimits",
     "CardRun",
+    "CardClock",
+    "ClockOptions",
+    "ClockStats",
+    "card_clock",
     "FiredEvent",
     "SAMPLE_SIGNALS",
     "ScopeData",

@@ -172,6 +172,37 @@ class Card:
         rec = self._card.run(ticks, None if signals is None else list(signals))
         return CardRun(axes=[AxisSignals(signals=d) for d in rec], servo_period_s=self._card.servo_period_s)
 
+    # -- time modes (issue 25.1; docs/card.md "Time on the card"; servobench.card_clock) ---------------------------
+    _clock = None  # the attached CardClock (None: step mode, nothing attached)
+
+    @property
+    def clock(self):
+        """The :class:`~servobench.card_clock.CardClock` attached by :meth:`set_clock` (None: none attached, the
+        step mode)."""
+        return self._clock
+
+    def set_clock(self, mode="step", **options):
+        """Sets how time flows while a program talks to the card and returns the attached
+        :class:`~servobench.card_clock.CardClock` (a context manager: leaving the block closes it). ``mode``:
+        ``"step"`` (explicit :meth:`run`/:meth:`step`, the default), ``"program"`` (each vendor call advances the
+        card by its bus time, a ``delay``/``Sleep`` by its argument), ``"realtime"`` (a background thread ticks the
+        card at ``speed`` x real time), or a :class:`~servobench.card_clock.ClockOptions`; ``options`` are the
+        ClockOptions fields (``call_cost_us``, ``call_costs_us``, ``speed``, ``period_ms``). A clock already
+        attached is closed first (its thread joined)."""
+        from .card_clock import CardClock, ClockOptions
+
+        if isinstance(mode, ClockOptions):
+            if options:
+                raise TypeError("Card.set_clock: give a ClockOptions or the option keywords, not both")
+            opts = mode
+        else:
+            opts = ClockOptions(mode=mode, **options)
+        if self._clock is not None:
+            self._clock.close()
+        clock = CardClock(self, opts)
+        object.__setattr__(self, "_clock", clock)
+        return clock
+
     def step(self, n: int = 1) -> int:
         """Advances ``n`` servo ticks of every axis recording nothing, and returns the card's tick count: the step
         API for a program in the loop, which reads and writes the card (its registers, positions, the dialects)

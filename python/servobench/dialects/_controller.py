@@ -9,6 +9,7 @@ import math
 
 from .._core import CardCommandRefused, MotionCommandRefused
 from ..card import Card
+from ..card_clock import VENDOR_CALL_COST_US
 
 # The Googol return codes the GT and GUC-ECAT/iDEABOX libraries share (GT Table 2-1 L393-408, GUC Tab 2-1 L165-180).
 GOOGOL_SUCCESS, GOOGOL_COMMAND_ERROR, GOOGOL_PARAMETER_ERROR, GOOGOL_COMM_ERROR = 0, 1, 7, -1
@@ -39,8 +40,9 @@ def _vendor_call(fn, parameter_error: int, command_error: int, returns_code: boo
     of the wrong type or out of range that slipped past the function's own checks) gives `parameter_error`. Read
     functions (not annotated ``-> int``) return ``(code, 0)``, their outputs untouched as in C."""
 
-    @functools.wraps(fn)
-    def call(*args, **kwargs):
+    name = fn.__name__
+
+    def guarded(args, kwargs):
         try:
             return fn(*args, **kwargs)
         except (CardCommandRefused, MotionCommandRefused):
@@ -48,6 +50,15 @@ def _vendor_call(fn, parameter_error: int, command_error: int, returns_code: boo
         except Exception:  # noqa: BLE001 -- the vendor contract: an error code, never an exception
             code = parameter_error
         return code if returns_code else (code, 0)
+
+    @functools.wraps(fn)
+    def call(*args, **kwargs):
+        # the card's clock (issue 25.1): program mode charges the call's bus time, realtime holds the card still
+        card = getattr(args[0], "_card", None) if args else None
+        clock = getattr(card, "_clock", None) if card is not None else None
+        if clock is None:
+            return guarded(args, kwargs)
+        return clock.run_call(type(args[0])._CLOCK_VENDOR, name, guarded, (args, kwargs))
 
     call.__wrapped_vendor__ = True
     return call
@@ -73,9 +84,14 @@ class DialectController:
 
     _PARAMETER_ERROR = GOOGOL_PARAMETER_ERROR
     _COMMAND_ERROR = GOOGOL_COMMAND_ERROR
+    #: the dialect's key in :data:`~servobench.card_clock.VENDOR_CALL_COST_US` (its module's name: gt, ge, gts, aps)
+    _CLOCK_VENDOR = "gt"
 
     def __init_subclass__(cls, **kwargs):
         super().__init_subclass__(**kwargs)
+        module = cls.__module__.rsplit(".", 1)[-1]
+        if "_CLOCK_VENDOR" not in cls.__dict__ and module in VENDOR_CALL_COST_US:
+            cls._CLOCK_VENDOR = module
         _wrap_vendor_methods(cls)
 
     def __init__(self):
@@ -86,12 +102,28 @@ class DialectController:
         """The open card (None before the dialect's open call / after its close call)."""
         return self._card
 
+    def _timed_clock(self):
+        """The card's clock when it is in program or realtime mode, else None (issue 25.1)."""
+        clock = getattr(self._card, "_clock", None) if self._card is not None else None
+        return clock if clock is not None and clock.mode != "step" else None
+
     def run(self, ticks: int):
-        """Runs the card ``ticks`` servo ticks; returns the :class:`~servobench.card.CardRun`."""
+        """Runs the card ``ticks`` servo ticks; returns the :class:`~servobench.card.CardRun`. Not in realtime
+        mode (the clock's thread runs the card; wait with ``delay``/``Sleep``/``wait_until``)."""
+        clock = self._timed_clock()
+        if clock is not None and clock.mode == "realtime":
+            raise RuntimeError("run(ticks): the card ticks in real time (Card.set_clock('realtime')); wait with "
+                               "delay/Sleep or wait_until instead")
         return self._card.run(int(ticks))
 
     def run_ms(self, ms: float):
-        """Runs the card ``ms`` milliseconds (rounded to whole servo ticks)."""
+        """Lets ``ms`` milliseconds pass on the card. Step mode (no clock): runs the nearest whole number of servo
+        ticks and returns the :class:`~servobench.card.CardRun`; program mode: advances the card by exactly
+        ``ms`` (fractions of a tick carried), realtime mode: waits until the card has run ``ms``; both return
+        None (:meth:`~servobench.card_clock.CardClock.advance_ms`)."""
+        clock = self._timed_clock()
+        if clock is not None:
+            return clock.advance_ms(ms)
         return self._card.run(int(round(ms * 1e-3 / self._card.servo_period_s)))
 
     def _googol_do(self, fn, *args) -> int:
@@ -108,7 +140,12 @@ class DialectController:
         return GOOGOL_SUCCESS
 
     def wait_until(self, predicate, max_ticks: int = 10**7, chunk: int = 1) -> int:
-        """Runs ``chunk`` ticks at a time until ``predicate()`` is true, at most ``max_ticks``; returns the ticks."""
+        """Runs ``chunk`` ticks at a time until ``predicate()`` is true, at most ``max_ticks``; returns the ticks.
+        Realtime mode: waits (the clock's thread runs the card) until ``predicate()`` holds or the card ran
+        ``max_ticks`` more ticks (:meth:`~servobench.card_clock.CardClock.wait_until`)."""
+        clock = self._timed_clock()
+        if clock is not None and clock.mode == "realtime":
+            return clock.wait_until(predicate, max_ticks)
         return self._card.run_until(lambda _c: predicate(), max_ticks, chunk)
 
 
