@@ -1,7 +1,7 @@
 """How far the ADLINK card's 16-bit biquad integers depart from the floating-point design (issue 25 point 4).
 
 ``FloatBiquad.to_adlink()`` quantises a design to the card's integers (ADLINK seed 004 L1869-1968; adlink.md §3.6:
-the largest |coefficient| becomes +-32767, ``DIV = trunc(32767/max|coef|)``, the others ``trunc(coef*DIV)``).
+the largest ``|coefficient|`` becomes +-32767, ``DIV = trunc(32767/max|coef|)``, the others ``trunc(coef*DIV)``).
 Poles near z = 1 (a cutoff or a narrow notch far below the sample rate) need more than 16 bits, and the integers
 then filter something else than the design: the manual's own 100 Hz notch nulls at 98.61 Hz (docs/filters.md).
 :func:`adlink_quantisation` measures the departure and ``to_adlink()`` warns with
@@ -28,7 +28,7 @@ from scipy.optimize import brentq
 
 from . import _core
 
-__all__ = ["AdlinkQuantisation", "AdlinkQuantisationWarning", "adlink_quantisation",
+__all__ = ["AdlinkQuantisation", "AdlinkQuantisationWarning", "adlink_quantisation", "to_adlink",
            "MAX_PASSBAND_DB", "MAX_NULL_SHIFT"]
 
 #: The passband bound, dB (issue 25 point 4).
@@ -54,10 +54,10 @@ class AdlinkQuantisation:
     """The measured departure of an :class:`~servobench.AdlinkBiquad` from the :class:`~servobench.FloatBiquad` it
     was quantised from. Frequencies in Hz (cycles per sample for an unbound filter), gains in dB.
 
-    passband_db: largest |dB difference| over the float design's passband (within 3 dB of its peak);
+    passband_db: largest absolute dB difference over the float design's passband (within 3 dB of its peak);
     worst_hz: where it occurs; passband_hz: (lowest, highest) passband frequency examined;
     null_hz / null_int_hz: the float design's and the integers' null (None: the design has no notch null);
-    bandwidth_hz: the float notch's -3 dB bandwidth; null_shift: |null_int_hz - null_hz| / bandwidth_hz;
+    bandwidth_hz: the float notch's -3 dB bandwidth; null_shift: ``abs(null_int_hz - null_hz) / bandwidth_hz``;
     sample_time_s: the sample time the frequencies refer to.
     """
 
