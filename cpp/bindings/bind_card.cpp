@@ -251,6 +251,10 @@ void bind_card(py::module_& m) {
       .def("staged_changes", [](const Card& k, double i) { return k.state(card_axis(k, i)).dirty; }, py::arg("axis"))
       .def("abrupt_stop", [](Card& k, double i) { k.abrupt_stop(card_axis(k, i)); }, py::arg("axis"))
       .def("zero_pos", [](Card& k, double i) { k.zero_pos(card_axis(k, i)); }, py::arg("axis"))
+      .def("zero_pos_range", [](Card& k, double first, double count) { k.zero_pos_range(card_axis(k, first), count); },
+           py::arg("first"), py::arg("count"),
+           "GTS GT_ZeroPos(axis, count): actual = target = profile = 0 on `count` axes from `first` (0-based), all or "
+           "none: refused (CardCommandRefused) with nothing changed if any of them moves or is in gear/crd mode.")
       .def("set_actual_pos", [](Card& k, double i, double p) { k.set_actual_pos(card_axis(k, i), p); }, py::arg("axis"), py::arg("pos"))
       .def("axis_on", [](Card& k, double i) { k.axis_on(card_axis(k, i)); }, py::arg("axis"))
       .def("axis_off", [](Card& k, double i) { k.axis_off(card_axis(k, i)); }, py::arg("axis"))

@@ -138,15 +138,22 @@ void bind_filters(py::module_& m) {
 
   // After AdlinkBiquad is registered, so that its signature names the Python type (stubs, help()).
   auto float_biquad = py::reinterpret_borrow<py::class_<FloatBiquadParams>>(py::type::of<FloatBiquadParams>());
-  float_biquad.def("to_adlink", &control::quantize_adlink,
+  float_biquad.def("to_adlink",
+           [](const py::object& self) {
+             return py::module_::import("servobench.quantisation").attr("to_adlink")(self).cast<AdlinkBiquadParams>();
+           },
            "The ADLINK integer biquad (AdlinkBiquad): DIV = trunc(32767/max ``|coef|``), the largest ``|coef|`` -> +-32767,\n"
            "the others trunc(coef*DIV) (adlink.md §3.6; reproduces the manual's integers L1919, L1948). Raises\n"
            "ValueError if the integers cannot hold the design (coefficient > 32767, numerator truncated to 0,\n"
-           "quantised poles on or outside the unit circle).");
+           "quantised poles on or outside the unit circle). Warns (servobench.quantisation.AdlinkQuantisationWarning,\n"
+           "naming the figures) when the integers depart from the design by > 0.5 dB in its passband or move its\n"
+           "notch null by > 10 % of the notch bandwidth (servobench.design.adlink_quantisation measures both).");
 
   py::module_ d = m.def_submodule("design", "Filter design (C++). Use servobench.design.");
   d.def("lowpass", &control::lowpass, py::arg("cutoff_hz"), py::arg("sample_time_s"), py::arg("zeta"),
         py::arg("prewarp"));
+  d.def("quantize_adlink", &control::quantize_adlink, py::arg("design"),
+        "FloatBiquad.to_adlink without the departure check (servobench.quantisation).");
   d.def("notch", &control::notch, py::arg("center_hz"), py::arg("q"), py::arg("sample_time_s"), py::arg("prewarp"));
   d.def("notch_band", &control::notch_band, py::arg("center_hz"), py::arg("low_hz"), py::arg("high_hz"),
         py::arg("sample_time_s"), py::arg("prewarp"));

@@ -113,7 +113,13 @@ void bind_paths(py::module_& m) {
       .field("stop_dec_smooth", &PathSetup::stop_dec_smooth, "smooth-stop deceleration, unit/ms^2; 0 = segment's")
       .field("stop_dec_abrupt", &PathSetup::stop_dec_abrupt, "abrupt-stop deceleration, unit/ms^2; 0 = at once")
       .field("corner_axis_acc", &PathSetup::corner_axis_acc,
-             "GT per-axis corner acceleration limit (AccLmt), pulse/ms^2; 0 = off")
+             "GT AccLmt for every motor axis of the coordinate system, pulse/ms^2; 0 = off (axis_acc_k override it)")
+      .field("axis_acc_1", &PathSetup::axis_acc_1,
+             "acceleration limit of the 1st motor axis, pulse/ms^2 (GT_SetAccLmt, L1956); 0 = corner_axis_acc. Any\n"
+             "limit set: that axis's position second difference per motion cycle stays <= it, corners included")
+      .field("axis_acc_2", &PathSetup::axis_acc_2, "as axis_acc_1, 2nd motor axis, pulse/ms^2")
+      .field("axis_acc_3", &PathSetup::axis_acc_3, "as axis_acc_1, 3rd motor axis, pulse/ms^2")
+      .field("axis_acc_4", &PathSetup::axis_acc_4, "as axis_acc_1, 4th motor axis, pulse/ms^2")
       .field("return_to_stop_point", &PathSetup::return_to_stop_point,
              "resume away from the breakpoint returns to it (GT/GE) instead of being refused (GUC/iDEABOX)")
       .field("start_vel", &PathSetup::start_vel,

@@ -23,10 +23,12 @@ import numpy as np
 
 from . import _checks
 from . import _core
+from .quantisation import AdlinkQuantisation, AdlinkQuantisationWarning, adlink_quantisation
 
 _d = _core.design
 
-__all__ = ["lowpass", "notch", "notch_q", "lead_lag", "from_s"]
+__all__ = ["lowpass", "notch", "notch_q", "lead_lag", "from_s", "adlink_quantisation", "AdlinkQuantisation",
+           "AdlinkQuantisationWarning"]
 
 
 def _num(owner: str, name: str, value) -> float:

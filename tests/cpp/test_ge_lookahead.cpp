@@ -32,7 +32,7 @@ TEST(GeLookAheadA, MmUnitsMatchThePulsePlanner) {
     pts.push_back(y * 2000);
   }
   EXPECT_EQ(ge.add(1, 17, 0, 150, 0, 0, 50, 0, 0, 9999, false), 1);  // same point as the last (L3392-3394)
-  sm::LookAheadParams q{2.0, 500 * 2000 / 1e6, 200};
+  sm::LookAheadParams q{2.0, 500 * 2000 / 1e6, 200, {}};
   // Reference: the look-ahead at acc_run (the polyline helper takes one acc for ramps, here acc_run).
   std::vector<sm::LookAheadSegment> segs;
   for (std::size_t i = 1; i < pts.size() / 2; ++i) {

@@ -171,3 +171,24 @@ TEST(LookAheadProperties, WindowsOf200AndMoreAndThePlanningRate) {
   EXPECT_GT(200000 / s, 2e5);  // loose here; the benchmark (bench/bench_paths.py) measures the 1 M/s goal
   EXPECT_EQ(v.size(), 200000u);
 }
+
+TEST(AxisAccLimits, CornerCapLeavesEachAxisItsBudget) {
+  // VF9: v_c <= min_k (A_k - max(d_out_k, d_in_k)) h / |du_k|; a 90 deg corner X -> Y, ramps 0.2 on each side.
+  sm::AxisAccLimits lim;
+  lim.acc = {1.0, 0.5, 0.0, 0.0};
+  lim.cycle_ms = 2.0;
+  sm::AxisDemand out, in;
+  out.u_out = {1, 0, 0, 0};
+  out.acc = {0.2, 0, 0, 0};
+  in.u_in = {0, 1, 0, 0};
+  in.acc = {0, 0.2, 0, 0};
+  // X: (1 - 0.2) * 2 / 1 = 1.6; Y: (0.5 - 0.2) * 2 / 1 = 0.6
+  EXPECT_DOUBLE_EQ(sm::axis_corner_speed_limit(out, in, lim), 0.6);
+  // a budget used up by the ramp: the corner is taken at rest
+  in.acc[1] = 0.5;
+  EXPECT_EQ(sm::axis_corner_speed_limit(out, in, lim), 0.0);
+  // collinear, or no limits: no cap
+  in.u_in = out.u_out;
+  EXPECT_TRUE(std::isinf(sm::axis_corner_speed_limit(out, in, lim)));
+  EXPECT_TRUE(std::isinf(sm::axis_corner_speed_limit(out, in, sm::AxisAccLimits{})));
+}

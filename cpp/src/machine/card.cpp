@@ -520,18 +520,32 @@ void Card::abrupt_stop(std::size_t i) {
   stop_profile(i);
 }
 
-void Card::set_actual_pos(std::size_t i, double pos) {
-  CardAxisState& s = at(i);
-  checked(i, CommandFault::MotionParamOverflow,
-          [&] { check_integer("Card", "pos", pos, -2147483648.0, 2147483647.0, "whole pulses, the 32-bit register"); });
+void Card::check_position_set(std::size_t i) {
+  const CardAxisState& s = at(i);
   if (s.mode == AxisMode::Gear)
     refuse(static_cast<int>(i), CommandFault::InvalidInMode, "ZeroPos/SetAtlPos are invalid in gear mode (GT L1421-1429)");
   if (s.mode == AxisMode::Coordinated)  // [modes] the coordinate system owns the position (V55)
     refuse(static_cast<int>(i), CommandFault::InvalidInMode, "ZeroPos/SetAtlPos are invalid in a coordinate system (GT L1659)");
   if (moving(i) || loops_[i]->sequence_active())
     refuse(static_cast<int>(i), CommandFault::ChangeInMotion, "ZeroPos/SetAtlPos only at rest (GT L1421, L4617)");
-  loops_[i]->set_position(pos);
-  s.staged.pos = s.active.pos = pos;
+}
+
+void Card::set_actual_pos(std::size_t i, double pos) {
+  CardAxisState& s = at(i);
+  checked(i, CommandFault::MotionParamOverflow,
+          [&] { check_integer("Card", "pos", pos, -2147483648.0, 2147483647.0, "whole pulses, the 32-bit register"); });
+  check_position_set(i);
+  loops_[i]->set_actual_position(pos);  // actual = profile = pos (GT L4613-4622)
+  s.staged.pos = s.active.pos = pos;  // target
+}
+
+void Card::zero_pos_range(std::size_t first, double count) {
+  at(first);
+  check_integer("Card", "count", count, 1.0, static_cast<double>(loops_.size() - first),
+                "axes from `first` to the card's last");
+  const std::size_t last = first + static_cast<std::size_t>(count);
+  for (std::size_t i = first; i < last; ++i) check_position_set(i);  // all or nothing
+  for (std::size_t i = first; i < last; ++i) set_actual_pos(i, 0.0);
 }
 
 void Card::apply_output(std::size_t i) {

@@ -66,6 +66,18 @@ void MotionLoop::set_position(double pos) {
   capture_.shift(-delta);
 }
 
+void MotionLoop::set_actual_position(double pos) {
+  if (!std::isfinite(pos)) throw_invalid("MotionLoop", "pos", pos, "must be a finite number");
+  // GT L4613-4622, L5196-5202, GE L5457-5463, L5907-5913: the actual (encoder) position, the target and the
+  // profile position all become `pos`; the offset absorbs the encoder's distance from `pos`, so a following
+  // error left at rest is dropped (profile = actual afterwards), not carried into the new coordinates (VF1).
+  const double delta = inputs_.actual_pos - pos;
+  gen_.set_position(pos);  // refuses while moving
+  offset_ += delta;
+  inputs_.actual_pos = pos;
+  capture_.shift(-delta);
+}
+
 void MotionLoop::clear_status() {
   brk_flag_ = false;
   capture_.clear();

@@ -15,6 +15,8 @@ void LookAheadParams::validate() const {
   check_range(o, "acc_max", acc_max, 0, 32767, "pulse/ms^2; GUC L969-971");
   if (!(acc_max > 0)) throw_invalid(o, "acc_max", acc_max, "is outside the allowed range 0..32767 (0 excluded; pulse/ms^2, GUC L969-971)");
   check_integer(o, "n", n, 0, 32766, "segments, [0, 32767); iDEABOX L5871");
+  for (double a : axis_limits.acc) check_range(o, "axis_limits.acc", a, 0, 1e9, "unit/ms^2 per axis, 0 = none");
+  check_range(o, "axis_limits.cycle_ms", axis_limits.cycle_ms, 0.01, 100, "motion cycle, ms");
 }
 
 LookAheadSegment lookahead_segment(const PathSegmentGeometry& g, double vmax, double acc, bool stop_before,
@@ -39,6 +41,25 @@ double corner_speed_limit(const CrdPoint& u_out, const CrdPoint& u_in, double t,
   return acc_max * t / d;
 }
 
+bool AxisAccLimits::any() const {
+  for (double a : acc)
+    if (a > 0) return true;
+  return false;
+}
+
+double axis_corner_speed_limit(const AxisDemand& out, const AxisDemand& in, const AxisAccLimits& lim) {
+  double v = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < lim.acc.size(); ++k) {
+    if (!(lim.acc[k] > 0)) continue;
+    const double d = std::fabs(in.u_in[k] - out.u_out[k]);
+    if (d < 1e-12) continue;
+    const double budget = lim.acc[k] - std::max(out.acc[k], in.acc[k]);
+    if (!(budget > 0)) return 0.0;
+    v = std::min(v, budget * lim.cycle_ms / d);
+  }
+  return v;
+}
+
 LookAhead::LookAhead(const LookAheadParams& p) : p_(p) { p_.validate(); }
 
 void LookAhead::reset(double entry_speed) {
@@ -56,14 +77,16 @@ bool LookAhead::push(const LookAheadSegment& s) {
     Entry& last = q_.back();
     if (std::isnan(last.cap_end))
       last.cap_end = s.stop_before ? 0.0
-                                   : std::min({last.vmax, vmax, corner_speed_limit(last.u_out, s.u_in, p_.t_ms, p_.acc_max)});
+                                   : std::min({last.vmax, vmax, corner_speed_limit(last.u_out, s.u_in, p_.t_ms, p_.acc_max),
+                                               axis_corner_speed_limit(last.axes, s.axes, p_.axis_limits)});
     // The previous last is closed now: its key joins the suffix minima.
     const Key k{front_index_ + q_.size() - 1, last.cap_end * last.cap_end + last.w_end};
     while (!mins_.empty() && mins_.back().key >= k.key) mins_.pop_back();
     mins_.push_back(k);
   }
   w_total_ += 2.0 * acc * s.length;
-  q_.push_back(Entry{s.length, acc, vmax, w_total_, s.stop_after ? 0.0 : std::numeric_limits<double>::quiet_NaN(), s.u_out});
+  q_.push_back(Entry{s.length, acc, vmax, w_total_, s.stop_after ? 0.0 : std::numeric_limits<double>::quiet_NaN(), s.u_out,
+                     s.axes});
   return q_.size() > window();
 }
 

@@ -37,6 +37,10 @@ void PathSetup::validate() const {
   check_range(o, "stop_dec_smooth", stop_dec_smooth, 0, 32767, "unit/ms^2, 0 = segment acceleration; GUC L704-709");
   check_range(o, "stop_dec_abrupt", stop_dec_abrupt, 0, 32767, "unit/ms^2, 0 = at once; GUC L704-709");
   check_range(o, "corner_axis_acc", corner_axis_acc, 0, 1e9, "pulse/ms^2, 0 = off; GT L1956");
+  check_range(o, "axis_acc_1", axis_acc_1, 0, 1e9, "pulse/ms^2, 0 = corner_axis_acc; GT L1956");
+  check_range(o, "axis_acc_2", axis_acc_2, 0, 1e9, "pulse/ms^2, 0 = corner_axis_acc; GT L1956");
+  check_range(o, "axis_acc_3", axis_acc_3, 0, 1e9, "pulse/ms^2, 0 = corner_axis_acc; GT L1956");
+  check_range(o, "axis_acc_4", axis_acc_4, 0, 1e9, "pulse/ms^2, 0 = corner_axis_acc; GT L1956");
   check_range(o, "start_vel", start_vel, 0, 32767, "unit/ms, 0 = from rest; GE GT_SetStrtVel L1395-1399, L5748-5756");
   check_range(o, "resume_tolerance", resume_tolerance, 0, 1e6, "unit per coordinate; GUC L1005, iDEABOX L1648-1653");
 }
@@ -78,7 +82,9 @@ void PathGenerator::init_lookahead(const LookAheadParams& p) {
     throw std::invalid_argument(
         "PathGenerator.init_lookahead: look-ahead supports at most 3 axes; this coordinate system has 4 "
         "(buffered commands would return 7, GUC L985, iDEABOX L2012-2014)");
-  la_ = std::make_unique<LookAhead>(p);
+  LookAheadParams q = p;
+  q.axis_limits = axis_limits();
+  la_ = std::make_unique<LookAhead>(q);
 }
 
 void PathGenerator::set_override(double ratio) {
@@ -171,7 +177,8 @@ void PathGenerator::enqueue(PathCommand c) {
       refuse("PathGenerator: the look-ahead window and the FIFO are full, send the command again later");
   }
   if (motion) {
-    const auto s = lookahead_segment(c.geom, cap_of(c), acc_of(c), c.g0 || tail_stop_next_, c.g0 || c.stop_at_end);
+    auto s = lookahead_segment(c.geom, cap_of(c), acc_of(c), c.g0 || tail_stop_next_, c.g0 || c.stop_at_end);
+    s.axes = demand_of(c);
     window_.push_back(std::move(c));
     ++window_motion_;
     if (la_->push(s)) release_window(false);
@@ -234,9 +241,21 @@ void PathGenerator::push_segment(const PathSegmentGeometry& g, double vel, doubl
   c.g0 = g0;
   c.auto_end = auto_end;
   c.stop_at_end = stop_at_end;
+  if (axis_limits().any() && tail_u_valid_ && g.length() > 0) {
+    // VF8: a segment that starts with a corner lasts >= 2 motion cycles, so one cycle's second difference never
+    // holds two corners.
+    const CrdPoint a = to_axes_dir(tail_u_), b = to_axes_dir(g.tangent_at(0.0));
+    double d = 0.0;
+    for (std::size_t k = 0; k < a.size(); ++k) d = std::max(d, std::fabs(b[k] - a[k]));
+    if (d >= 1e-12) c.axis_cap = g.length() / (2.0 * setup_.cycle_ms);
+  }
   enqueue(std::move(c));
   tail_ = g.end();
   tail_stop_next_ = false;
+  if (g.length() > 0) {
+    tail_u_ = g.tangent_at(g.length());
+    tail_u_valid_ = true;
+  }
 }
 
 void PathGenerator::line(const CrdPoint& end, double vel, double acc, double vel_end, bool g0) {
@@ -377,7 +396,10 @@ void PathGenerator::relocate(const CrdPoint& pos) {
     if (!std::isfinite(v)) throw_invalid("PathGenerator", "position", v, "is not a finite coordinate");
   if (busy()) refuse("PathGenerator.relocate: the path is moving");
   st_.pos = pos;
-  if (fifo_.empty() && window_.empty() && !cur_valid_ && !has_brk_) tail_ = pos;
+  if (fifo_.empty() && window_.empty() && !cur_valid_ && !has_brk_) {
+    tail_ = pos;
+    tail_u_valid_ = false;
+  }
 }
 
 void PathGenerator::check_stop_inputs() {
@@ -527,6 +549,7 @@ void PathGenerator::clear() {
   st_.segments_done = 0;
   tail_ = st_.pos;
   tail_stop_next_ = false;
+  tail_u_valid_ = false;
 }
 
 void PathGenerator::move_immediate(const CrdPoint& end, double vel, double acc) {
@@ -540,20 +563,93 @@ void PathGenerator::move_immediate(const CrdPoint& end, double vel, double acc) 
   feed_ = FeedProfile(aux_line_.length(), vs, vs, cap, std::min(acc, setup_.syn_acc_max), 0.0);
   t_in_ = 0.0;
   act_ = Act::Immediate;
-  if (!has_brk_ && fifo_.empty() && window_.empty() && !cur_valid_) tail_ = end;
+  if (!has_brk_ && fifo_.empty() && window_.empty() && !cur_valid_) {
+    tail_ = end;
+    tail_u_valid_ = false;
+  }
 }
 
 // --- execution -------------------------------------------------------------------------------------------------
 
+AxisAccLimits PathGenerator::axis_limits() const {
+  AxisAccLimits lim;
+  lim.cycle_ms = setup_.cycle_ms;
+  const double own[4] = {setup_.axis_acc_1, setup_.axis_acc_2, setup_.axis_acc_3, setup_.axis_acc_4};
+  bool any = setup_.corner_axis_acc > 0;
+  for (double a : own) any = any || a > 0;
+  if (!any) return lim;  // no per-axis limit: the rules of C9-C11 alone
+  const std::size_t n = std::min<std::size_t>(coords_.axes().size(), 4);
+  for (std::size_t k = 0; k < n; ++k) lim.acc[k] = own[k] > 0 ? own[k] : setup_.corner_axis_acc;
+  return lim;
+}
+
+CrdPoint PathGenerator::to_axes_dir(const CrdPoint& v) const {
+  std::vector<double> m(coords_.axes().size());
+  coords_.map_vector(v, m.data());
+  CrdPoint out{};
+  for (std::size_t k = 0; k < std::min<std::size_t>(m.size(), out.size()); ++k) out[k] = m[k];
+  return out;
+}
+
+namespace {
+// Per motor axis k, the largest |(M w)_k| over unit coordinate vectors w: the row norm of the map (arcs).
+CrdPoint row_norms(const CoordSystem& cs) {
+  CrdPoint sq{};
+  std::vector<double> col(cs.axes().size());
+  for (int j = 0; j < cs.dim(); ++j) {
+    CrdPoint e{};
+    e[static_cast<std::size_t>(j)] = 1.0;
+    cs.map_vector(e, col.data());
+    for (std::size_t k = 0; k < std::min<std::size_t>(col.size(), sq.size()); ++k) sq[k] += col[k] * col[k];
+  }
+  for (double& x : sq) x = std::sqrt(x);
+  return sq;
+}
+}  // namespace
+
 double PathGenerator::cap_of(const PathCommand& c) const {
-  const double v = std::min(c.vel * (c.g0 ? g0_override_ : override_), setup_.syn_vel_max);
-  if (la_) return std::min(v, std::sqrt(la_->params().acc_max * c.geom.curvature_radius()));
+  double v = std::min(c.vel * (c.g0 ? g0_override_ : override_), setup_.syn_vel_max);
+  if (la_) v = std::min(v, std::sqrt(la_->params().acc_max * c.geom.curvature_radius()));
+  if (c.axis_cap > 0) v = std::min(v, c.axis_cap);
+  const AxisAccLimits lim = axis_limits();
+  if (lim.any() && std::isfinite(c.geom.curvature_radius())) {
+    // VF7: on an arc or helix the centripetal part gets half of every axis's limit.
+    const CrdPoint r = row_norms(coords_);
+    for (std::size_t k = 0; k < lim.acc.size(); ++k)
+      if (lim.acc[k] > 0 && r[k] > 0) v = std::min(v, std::sqrt(0.5 * lim.acc[k] / r[k] * c.geom.curvature_radius()));
+  }
   return v;
 }
 
 double PathGenerator::acc_of(const PathCommand& c) const {
-  const double a = std::min(c.acc, setup_.syn_acc_max);
-  return la_ ? std::min(a, la_->params().acc_max) : a;
+  double a = std::min(c.acc, setup_.syn_acc_max);
+  if (la_) a = std::min(a, la_->params().acc_max);
+  const AxisAccLimits lim = axis_limits();
+  if (!lim.any()) return a;
+  // VF6: the ramp along the path asks axis k for a |u_k| (lines; u through the map) or up to a |M_k| (arcs, with
+  // half of the limit left for the centripetal part).
+  const bool arc = std::isfinite(c.geom.curvature_radius());
+  const CrdPoint u = arc ? row_norms(coords_) : to_axes_dir(c.geom.tangent_at(0.0));
+  for (std::size_t k = 0; k < lim.acc.size(); ++k) {
+    const double uk = std::fabs(u[k]);
+    if (lim.acc[k] > 0 && uk > 1e-15) a = std::min(a, (arc ? 0.5 : 1.0) * lim.acc[k] / uk);
+  }
+  return a;
+}
+
+AxisDemand PathGenerator::demand_of(const PathCommand& c) const {
+  AxisDemand d;
+  d.u_in = to_axes_dir(c.geom.tangent_at(0.0));
+  d.u_out = to_axes_dir(c.geom.tangent_at(c.geom.length()));
+  const double a = acc_of(c);
+  if (std::isfinite(c.geom.curvature_radius())) {
+    const CrdPoint r = row_norms(coords_);
+    const double v = cap_of(c);
+    for (std::size_t k = 0; k < d.acc.size(); ++k) d.acc[k] = (a + v * v / c.geom.curvature_radius()) * r[k];
+  } else {
+    for (std::size_t k = 0; k < d.acc.size(); ++k) d.acc[k] = a * std::fabs(d.u_in[k]);
+  }
+  return d;
 }
 
 double PathGenerator::exit_speed() const {
@@ -573,17 +669,14 @@ double PathGenerator::exit_speed() const {
   if (cur_.planned) return std::min({cur_.planned_end, cap_next, cap_of(cur_)});
   double v = std::min({cap_of(cur_), cap_next, stop_next});
   if (cur_.auto_end) {
-    if (setup_.corner_axis_acc > 0) {
-      const CrdPoint u0 = cur_.geom.tangent_at(cur_.geom.length()), u1 = next->geom.tangent_at(0.0);
-      CrdPoint du{};
-      for (std::size_t k = 0; k < du.size(); ++k) du[k] = u1[k] - u0[k];
-      std::vector<double> dax(coords_.axes().size());
-      coords_.map_vector(du, dax.data());
-      for (double d : dax)
-        if (std::fabs(d) > 1e-15) v = std::min(v, setup_.corner_axis_acc * setup_.cycle_ms / std::fabs(d));
-    }
+    // GT one-joint rule with per-axis AccLmt (C9, VF5): no motor axis's second difference above its limit.
+    const AxisAccLimits lim = axis_limits();
+    if (lim.any()) v = std::min(v, axis_corner_speed_limit(demand_of(cur_), demand_of(*next), lim));
     return v;
   }
+  // VF9: the user's velEnd (look-ahead off), lowered where it would ask an axis for more than its limit.
+  const AxisAccLimits lim = axis_limits();
+  if (lim.any()) v = std::min(v, axis_corner_speed_limit(demand_of(cur_), demand_of(*next), lim));
   return std::min(v, cur_.vel_end);
 }
 

@@ -198,10 +198,13 @@ class GtsController(DialectController):
         return self._do(lambda: [self._card.clear_events(a, 0xFFF) for a in range(int(axis) - 1, int(axis) - 1 + int(count))])
 
     def GT_ZeroPos(self, axis, count=1) -> int:
-        """Zeroes the positions of ``count`` axes from ``axis`` (at rest only)."""
+        """Actual (encoder) = target = profile position = 0 on ``count`` axes from ``axis`` (pulse), the mechanism
+        unmoved. iDEABOX L647/L848 only call it (``GT_ZeroPos(axis, 1)``); the meaning is the Googol one (GT
+        L5196-5206, GE L5907-5913; decision VF3): at rest only. Returns 0; 1 with nothing changed if any of the
+        axes moves, runs a sequence, or is in gear or a coordinate system; 7 for a bad axis or count."""
         if not self._axis_ok(axis) or not _int_in(count, 1, len(self._card) - int(axis) + 1):
             return self._bad()
-        return self._do(lambda: [self._card.zero_pos(a) for a in range(int(axis) - 1, int(axis) - 1 + int(count))])
+        return self._do(self._card.zero_pos_range, int(axis) - 1, int(count))
 
     def GT_GetSts(self, axis, count=1):
         """(rtn, status) of ``axis``: the card's status word (GT layout; bit 10 = 0x400 the profile moves, the

@@ -248,7 +248,14 @@ class Card {
   void set_mode(std::size_t i, AxisMode mode);  // GT_PrflT/S/V; refused while moving (GT L837)
   void abrupt_stop(std::size_t i);              // GT_AbptStp: velocity 0 at once, motion complete
   void zero_pos(std::size_t i) { set_actual_pos(i, 0.0); }  // GT_ZeroPos
-  void set_actual_pos(std::size_t i, double pos);  // GT_SetAtlPos: actual = target = profile = pos, at rest
+  // GT_SetAtlPos: actual (encoder) = target = profile = pos, at rest (GT L4613-4622, GE L5457-5463); the
+  // mechanism does not move, a following error left at rest is dropped.
+  void set_actual_pos(std::size_t i, double pos);
+  // GTS GT_ZeroPos(axis, count): zeroes `count` axes from `first`, all or none (every axis is checked first).
+  void zero_pos_range(std::size_t first, double count);
+  // Refuses (CardCommandRefused) unless ZeroPos/SetAtlPos may act on axis i now: not in gear mode, not in a
+  // coordinate system, at rest (GT L1421-1429, L4617, L5200; GE L5461, L5909).
+  void check_position_set(std::size_t i);
   void axis_on(std::size_t i);                   // GT_AxisOn: refused with the alarm latched; motion complete
   void axis_off(std::size_t i);                  // GT_AxisOff
   void drive_reset(std::size_t i);               // GT_DrvRst: only with the drive disabled

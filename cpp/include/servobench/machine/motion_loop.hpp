@@ -92,8 +92,13 @@ class MotionLoop {
 
   // The probe input (EXI0) fires at time t_s (s, the axis's clock); NaN: never.
   void set_probe_time(double t_s) { probe_time_s_ = t_s; }
-  // Redefines the present position as `pos` (pulse; at rest): GT_SetAtlPos / GT_ZeroPos, ADLINK HOME_POS.
+  // Shifts the card's coordinates so that the profile position becomes `pos` (pulse; at rest); the actual
+  // position moves by the same amount. The homing sequences' position reset (the GT examples' ZeroPos after the
+  // axis settled, ADLINK HOME_POS), taken when the profile ends: once the axis settles it stands at `pos` (VF1).
   void set_position(double pos);
+  // GT_SetAtlPos / GT_ZeroPos (GT L4613-4622, GE L5457-5463): the actual (encoder) and the profile position both
+  // become `pos` (pulse; at rest); a following error left at rest is dropped, the mechanism does not move.
+  void set_actual_position(double pos);
   double offset() const { return offset_; }
   // Actual position in the card's coordinates (encoder count now minus the offset), pulse.
   double actual_pos() const { return inputs_.actual_pos; }

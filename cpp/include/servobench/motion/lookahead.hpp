@@ -18,8 +18,19 @@
 //     then by the forward pass v_i = min(backward_i, sqrt(v_{i-1}^2 + 2 a_i L_i)).
 // Every pair of consecutive end speeds is then reachable within the segment at a_i <= accMax, so a trapezoid
 // feed (path_feed.hpp) never exceeds accMax along the path. Units: coordinate unit and ms.
+//
+// Per-axis limits (issue 25 point 4; GT AccLmt L1956-1963, decisions VF5-VF10), when the path generator sets
+// them (PathSetup axis_acc_1..4 / corner_axis_acc): axis k's acceleration, as the second difference of its
+// position over one motion cycle h, stays <= A_k. The second difference is the integral of the axis's
+// acceleration against a hat of width 2h and area h^2; a corner is a velocity step v_c |du_k| under it (weight
+// <= h), the ramps around it contribute <= max(side_out_k, side_in_k) h^2 (side = what the segment asks of the
+// axis: a |u_k| on lines, plus v_max^2/R on arcs). Hence the cap 6. below, and a segment that starts with a
+// corner runs at <= L/(2h) so that two corners are never inside one hat (the path generator's cap):
+//  6. v_c <= min_k (A_k - max(side_out_k, side_in_k)) h / |du_k| (0 when a budget is <= 0), with du and u taken
+//     through the coordinate map in motor-axis units. The path-level cap 2. (T) still applies (GUC L967).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <deque>
 #include <vector>
@@ -28,11 +39,31 @@
 
 namespace servobench::motion {
 
+// Per-axis acceleration limits (issue 25 point 4; GT AccLmt L1956): acc[k] > 0 bounds motor axis k's
+// acceleration, unit/ms^2, as the second difference of its position over one motion cycle of cycle_ms; 0 = none.
+struct AxisAccLimits {
+  std::array<double, 4> acc{};
+  double cycle_ms = 1.0;
+  bool any() const;
+};
+
+// What a segment asks of each motor axis: the unit tangents at both ends through the coordinate map, and the bound
+// on each axis's acceleration anywhere inside the segment (ramp and centripetal), unit/ms^2.
+struct AxisDemand {
+  CrdPoint u_in{}, u_out{};
+  CrdPoint acc{};
+};
+
+// Corner cap (rule 6.): min over limited axes of (A_k - max(out.acc_k, in.acc_k)) * cycle / |in.u_in_k - out.u_out_k|,
+// 0 if a budget is <= 0 on an axis whose velocity direction changes; inf without limits or without a change.
+double axis_corner_speed_limit(const AxisDemand& out, const AxisDemand& in, const AxisAccLimits& lim);
+
 // GT_InitLookAhead(crd, fifo, T, accMax, n, buf) (GUC L725-732; iDEABOX L5848-5879).
 struct LookAheadParams {
   double t_ms = 5.0;       // corner time T, ms (0 < T <= 1000; the manuals' empirical range is 1-10 ms)
   double acc_max = 1.0;    // maximum acceleration, coordinate unit/ms^2 (0 < accMax < 32767)
   double n = 200.0;        // window, segments (0..32766; 0 = look-ahead off; GE requires >= 200)
+  AxisAccLimits axis_limits;  // set by the path generator from its PathSetup (not a GT_InitLookAhead argument)
   void validate() const;
 };
 
@@ -45,6 +76,7 @@ struct LookAheadSegment {
   double curvature_radius = 0.0;  // inf for lines
   bool stop_before = false;       // the previous segment must end at 0 (G0 here, delay or modal move before)
   bool stop_after = false;        // this segment must end at 0 (G0, dccFlag / velEndZero)
+  AxisDemand axes{};              // per-axis demand (used when the params carry axis limits)
 };
 
 LookAheadSegment lookahead_segment(const PathSegmentGeometry& g, double vmax, double acc, bool stop_before = false,
@@ -75,6 +107,7 @@ class LookAhead {
   struct Entry {
     double length, acc, vmax, w_end, cap_end;  // cap_end NaN while the segment is the window's last
     CrdPoint u_out;
+    AxisDemand axes;
   };
   struct Key {
     std::uint64_t index;

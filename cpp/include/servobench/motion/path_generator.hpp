@@ -60,6 +60,10 @@ struct PathSetup {
   double stop_dec_smooth = 0;         // unit/ms^2; 0 = the running segment's acceleration (GT StpMtn)
   double stop_dec_abrupt = 0;         // unit/ms^2; 0 = speed 0 at once (GT EStpMtn L3336)
   double corner_axis_acc = 0;         // pulse/ms^2 per motor axis at a corner (GT AccLmt L1956); 0 = off
+  // Per-axis acceleration limits of the coordinate system's 1st..4th motor axis, pulse/ms^2 (GT_SetAccLmt is one
+  // per axis, L1956); 0 = corner_axis_acc. With any limit set, every motor axis's position second difference
+  // over a motion cycle stays <= its limit, at corners too, with and without look-ahead (issue 25.4; VF5-VF10).
+  double axis_acc_1 = 0, axis_acc_2 = 0, axis_acc_3 = 0, axis_acc_4 = 0;
   bool return_to_stop_point = true;   // GT/GE resume; false: GUC/iDEABOX (resume only at the breakpoint)
   double start_vel = 0;               // unit/ms: GE GT_SetStrtVel (GE default 0.5 pulse/ms); 0 = from rest
   double resume_tolerance = 0;        // unit, per coordinate: a resume this close to the breakpoint is accepted
@@ -87,6 +91,7 @@ struct PathCommand {
   bool g0 = false;          // rapid (G0): starts and ends at rest, scaled by the G0 override
   bool auto_end = false;    // GT/GE: end speed by the one-joint rule instead of vel_end
   bool stop_at_end = false; // forced stop at the end (dccFlag / velEndZero)
+  double axis_cap = 0.0;    // per-axis limits: speed cap L/(2 cycle) of a segment that starts with a corner (0 = none)
   double planned_end = 0.0; // end speed fixed by the look-ahead
   bool planned = false;
   // Io: type 0 GPO, 1 drive enable, 2 alarm clear (GUC doType); bits where mask is 1 take value's bits.
@@ -223,6 +228,9 @@ class PathGenerator {
   double exit_speed() const;
   double cap_of(const PathCommand& c) const;
   double acc_of(const PathCommand& c) const;
+  AxisAccLimits axis_limits() const;
+  CrdPoint to_axes_dir(const CrdPoint& v) const;  // a coordinate vector through the map, per motor axis
+  AxisDemand demand_of(const PathCommand& c) const;
   void finish_motion();
   void execute_instant(const PathCommand& c);
   void start_stop_ramp(double dec);
@@ -243,6 +251,8 @@ class PathGenerator {
   std::unique_ptr<LookAhead> la_;
   CrdPoint tail_{};
   bool tail_stop_next_ = false;  // a delay / modal move was buffered since the last segment
+  CrdPoint tail_u_{};            // end tangent of the last buffered segment (per-axis corner caps)
+  bool tail_u_valid_ = false;
 
   Act act_ = Act::None;
   PathCommand cur_;
