@@ -139,6 +139,12 @@ class HomingResult:
     run: LoopRun
     loop: MotionLoop
 
+    def to_dataframe(self):
+        """The recorded run as a pandas DataFrame (:meth:`LoopRun.to_dataframe`: one row per tick, units in
+        ``df.attrs["units"]``). The outcome's figures are fields; :meth:`LoopRun.to_json` writes the run (the live
+        ``loop`` is not data, decision W24)."""
+        return self.run.to_dataframe()
+
 
 def home(axis: Axis, params, *, max_ticks: int = 10**7, signals=None) -> HomingResult:
     """Homes ``axis`` with :class:`AdlinkHome` (ADLINK modes 0/1/2) or :class:`GtHome` (GT_Home/GT_Index) and
