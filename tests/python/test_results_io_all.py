@@ -108,17 +108,15 @@ TABLES = {
                                             spread={"plant.inertia_kgm2": (0.8e-4, 1.2e-4)}, n=2, seed=1),
     "PathRun": lambda r: _path_run(),
     "AdlinkRun": lambda r: _adlink_run(),
+    "HomingResult": lambda r: sb.home(make_axis(), sb.GtHome(pos=20000, vel=4, acc=1), max_ticks=300000),
 }
 
 #: Results with a table but no JSON of their own, and why.
 TABLE_ONLY = {
-    "HomingResult": "holds the live MotionLoop to continue homing from (an object, not data); its data is the run, "
-                    "a LoopRun with to_json/from_json, and its figures are plain fields (W24)",
     "PvtCurve": "a compiled table built by the PVT description functions; its description (the function and its "
                 "arguments) is what to store, its points are to_dataframe() (W25)",
 }
 TABLE_ONLY_FACTORIES = {
-    "HomingResult": lambda r: sb.home(make_axis(), sb.GtHome(pos=20000, vel=4, acc=1), max_ticks=300000),
     "PvtCurve": lambda r: sb.pvt_table(time_ms=[0, 10, 20], pos=[0, 500, 1000], vel=[0, 50, 0]),
 }
 
@@ -281,3 +279,13 @@ def test_trajectory_margins_robust_tables():
     assert "worst_pm_deg" in robust.to_dataframe("candidates").columns
     with pytest.raises(ValueError, match="which"):
         robust.to_dataframe("nominal")
+
+
+def test_homing_json_leaves_the_live_loop_out():
+    res = TABLES["HomingResult"](None)
+    assert res.done and res.loop is not None
+    doc, back = _round_trip(res)
+    assert "loop" not in doc["data"] and back.loop is None
+    assert back.reference_pulse == res.reference_pulse and back.offset_pulse == res.offset_pulse
+    np.testing.assert_array_equal(back.run.actual_pos, res.run.actual_pos)
+    assert back.run.units == res.run.units
