@@ -143,10 +143,11 @@ def dumps(obj, *, indent: int | None = None) -> str:
 
 
 def _private_with_default(f) -> bool:
-    """A private dataclass field with a default (e.g. AxisRun's lazy replay of the signals it did not record): a
-    live object, not data; left out of the document and rebuilt as its default."""
-    return f.name.startswith("_") and (f.default is not dataclasses.MISSING or
-                                       f.default_factory is not dataclasses.MISSING)
+    """A dataclass field that is a live object, not data, and has a default: private (e.g. AxisRun's lazy replay of
+    the signals it did not record) or marked ``metadata={"json": False}`` (HomingResult's motion loop); left out of
+    the document and rebuilt as its default."""
+    has_default = f.default is not dataclasses.MISSING or f.default_factory is not dataclasses.MISSING
+    return has_default and (f.name.startswith("_") or f.metadata.get("json", True) is False)
 
 
 def to_json(obj, *, indent: int | None = None) -> str:

@@ -28,6 +28,7 @@ import numpy as np
 from . import _checks
 from . import _core
 from ._core import CardCommandRefused, CardLimits
+from ._serialise import JsonResult, dataframe
 from .axis import SIGNAL_UNITS, Axis
 
 __all__ = ["AxisSignals",
@@ -46,8 +47,15 @@ def events_named(bits: int) -> list[str]:
     return [name for k, name in enumerate(CARD_EVENTS) if bits & (1 << k)]
 
 
+def _signal_unit(signal: str) -> str:
+    """Unit of a signal a card run records (the Axis trace's, the motion loop's, the card's own); "" if unknown."""
+    from .homing import LOOP_SIGNAL_UNITS
+
+    return SIGNAL_UNITS.get(signal) or LOOP_SIGNAL_UNITS.get(signal) or _CARD_UNITS.get(signal, "")
+
+
 @dataclass(frozen=True)
-class AxisSignals:
+class AxisSignals(JsonResult):
     """The signals of one card axis over a run: one NumPy array per signal (see :data:`Card.SIGNALS`)."""
 
     signals: Mapping[str, np.ndarray]
@@ -64,9 +72,16 @@ class AxisSignals:
     def __len__(self) -> int:
         return len(next(iter(self.signals.values()))) if self.signals else 0
 
+    def to_dataframe(self):
+        """The signals as a pandas DataFrame, one row per tick (index ``tick``), one column per signal named as
+        recorded (``actual_pos``, ``volts``, ...); ``df.attrs["units"]`` gives each column's unit (pulse, V, ...)."""
+        df = dataframe(dict(self.signals), {k: _signal_unit(k) for k in self.signals})
+        df.index.name = "tick"
+        return df
+
 
 @dataclass(frozen=True)
-class CardRun:
+class CardRun(JsonResult):
     """What a :meth:`Card.run` recorded: ``run[i]`` is axis i's :class:`AxisSignals` (0-based)."""
 
     axes: Sequence[AxisSignals]
@@ -86,6 +101,24 @@ class CardRun:
     def to_array(self, signal: str) -> np.ndarray:
         """One signal of every axis as a 2-D array, shape (axes, ticks)."""
         return np.vstack([a[signal] for a in self.axes])
+
+    def to_dataframe(self):
+        """Every axis's signals in long form: one row per (axis, tick), columns ``axis`` (0-based), ``tick``,
+        ``time_s`` (tick x servo period, s) and one per signal named as recorded; ``df.attrs["units"]`` gives each
+        column's unit. ``df[df.axis == 1]`` is axis 1's run; ``df.pivot(index="tick", columns="axis",
+        values="actual_pos")`` puts the axes side by side. :meth:`to_json` writes the run as standard JSON."""
+        import pandas as pd
+
+        n = len(self)
+        ticks = np.arange(n)
+        frames = []
+        for k, a in enumerate(self.axes):
+            frames.append(dataframe({"axis": np.full(n, k), "tick": ticks, "time_s": ticks * self.servo_period_s,
+                                     **{s: np.asarray(v) for s, v in a.signals.items()}}))
+        df = pd.concat(frames, ignore_index=True) if frames else dataframe({"axis": [], "tick": [], "time_s": []})
+        names = list(self.axes[0].signals) if self.axes else []
+        df.attrs["units"] = {"axis": "", "tick": "servo tick", "time_s": "s", **{k: _signal_unit(k) for k in names}}
+        return df
 
 
 class Card:
@@ -454,7 +487,7 @@ class _Subscription:
 
 
 @dataclass(frozen=True)
-class FiredEvent:
+class FiredEvent(JsonResult):
     """An event a :meth:`Card.on_event` callback receives: it fired during tick ``tick`` (the card's ``tick`` is
     ``tick + 1`` in the callback) on ``axis`` (-1 card-wide), in ``word`` (``"events"``, ``"msts"``, ``"mio"``,
     ``"system"``, ``"timer"``); ``bits`` those that turned on and this callback asked for."""
@@ -476,7 +509,7 @@ class FiredEvent:
 
 
 @dataclass(frozen=True)
-class ScopeData:
+class ScopeData(JsonResult):
     """One block of the card's sampler: ``ticks`` (the card tick of each sample; the values are those after that
     tick), ``values`` (samples x channels), ``channels`` ((axis, signal) each), ``trigger_tick`` (-1: immediate).
     ``data["actual_pos"]`` (one channel of that signal), ``data[1, "volts"]`` (axis 1's) or ``data[2]`` (the
@@ -528,6 +561,13 @@ class ScopeData:
         out = {"time_s": self.time_s, "tick": self.ticks}
         out.update({n: self.values[:, k] for k, n in enumerate(self.names)})
         return out
+
+    def to_dataframe(self):
+        """The block as a pandas DataFrame, one row per sample: ``tick`` (card tick), ``time_s`` (s) and one column
+        per channel labelled ``signal[axis]``; ``df.attrs["units"]`` gives each column's unit."""
+        units = {"tick": "servo tick", "time_s": "s", **dict(zip(self.names, self.units))}
+        return dataframe({"tick": self.ticks, "time_s": self.time_s,
+                          **{n: self.values[:, k] for k, n in enumerate(self.names)}}, units)
 
     def plot(self, *, path: str | None = None, title: str | None = None):
         """One panel per unit (:func:`servobench.plot.scope`); returns the Figure, writes ``path`` if given."""

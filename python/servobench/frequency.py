@@ -51,7 +51,7 @@ _RESPONSES = ("plant", "open_loop", "closed_loop")
 # Figures of merit
 # ----------------------------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
-class Peak:
+class Peak(JsonResult):
     """A resonance (``kind = "resonance"``, a peak) or anti-resonance (``"antiresonance"``, a dip) of a response:
     its frequency (Hz), gain (dB) and prominence above/below the response's trend (dB)."""
 

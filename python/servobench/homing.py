@@ -20,12 +20,13 @@ with ``Encoder(index_angle_rad=...)``; :func:`pulse_to_rad` converts positions.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
 from . import _core
 from ._core import AdlinkHome, AdlinkJog, GtHome
+from ._serialise import JsonResult
 from .axis import SIGNAL_UNITS, Axis, AxisRun
 
 __all__ = ["AdlinkHome", "AdlinkJog", "GtHome", "HomingResult", "LOOP_SIGNAL_UNITS", "LoopRun", "MotionLoop",
@@ -125,11 +126,12 @@ class MotionLoop:
 
 
 @dataclass(frozen=True)
-class HomingResult:
+class HomingResult(JsonResult):
     """The outcome of :func:`home`: ``done`` (bool), ``error_code`` (ADLINK stop code 4 PEL / 5 MEL, GT example
     return 1 no home / 2 no index, else 0), ``reference_pulse`` (the captured edge or index, pulse, in the
     coordinates before the reset), ``offset_pulse`` (raw encoder count - card position after homing),
-    ``ticks`` and the recorded ``run`` (:class:`LoopRun`); ``loop`` to continue from there."""
+    ``ticks`` and the recorded ``run`` (:class:`LoopRun`); ``loop`` to continue from there (None in a result read
+    back by :meth:`from_json`: the live loop is not data)."""
 
     done: bool
     error_code: int
@@ -137,7 +139,13 @@ class HomingResult:
     offset_pulse: float
     ticks: int
     run: LoopRun
-    loop: MotionLoop
+    loop: MotionLoop | None = field(default=None, repr=False, compare=False, metadata={"json": False})
+
+    def to_dataframe(self):
+        """The recorded run as a pandas DataFrame (:meth:`LoopRun.to_dataframe`: one row per tick, units in
+        ``df.attrs["units"]``). The outcome's figures are fields; :meth:`to_json` writes them and the run, not the
+        live ``loop`` (decision W24)."""
+        return self.run.to_dataframe()
 
 
 def home(axis: Axis, params, *, max_ticks: int = 10**7, signals=None) -> HomingResult:

@@ -134,7 +134,7 @@ def log_spectrum(log: IdentificationLog, *, segment_samples: int = 1024, instrum
 
 
 @dataclass(frozen=True)
-class ResonanceGuess:
+class ResonanceGuess(JsonResult):
     """Two-mass inertias and stiffness read off a motor-side log's spectrum: total inertia J from the low band,
     anti-resonance fa = sqrt(k/jl)/2pi and resonance fr = sqrt(k (jm + jl)/(jm jl))/2pi from the apparent inertia's
     peak and dip; then jm = J (fa/fr)^2, jl = J - jm, k = jl (2 pi fa)^2."""
@@ -207,7 +207,7 @@ def resonance_guess(log: IdentificationLog, *, min_coherence: float = 0.3,
 # Results
 # ----------------------------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
-class Estimate:
+class Estimate(JsonResult):
     """One parameter: value and standard error in `unit`; fixed ones were held at their initial value."""
 
     name: str

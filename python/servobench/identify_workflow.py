@@ -20,11 +20,15 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+import numpy as np
+
+from ._serialise import JsonResult, dataframe
+
 __all__ = ["identify_rigid", "RigidIdentification"]
 
 
 @dataclass(frozen=True)
-class RigidIdentification:
+class RigidIdentification(JsonResult):
     """The outcome of :func:`identify_rigid`.
 
     model: the :class:`~servobench.validation.RigidModel` to use (asymmetric friction when the data reject symmetry);
@@ -38,6 +42,21 @@ class RigidIdentification:
     idim_iv: object | None
     output_error: object | None
     notes: list = field(default_factory=list)
+
+    def to_dataframe(self):
+        """Every estimator's parameters side by side, in long form: one row per (``estimator``, ``name``) with
+        ``value``, ``std_error`` and ``unit`` (the axis's units: kg, N*s/m, N on a linear axis; kg*m^2, N*m*s/rad,
+        N*m on a rotary one); estimators ``idim``, ``idim_asymmetric``, ``idim_iv`` and ``output_error`` when
+        present. ``df.pivot(index="name", columns="estimator", values="value")`` compares them."""
+        rows = {"estimator": [], "name": [], "value": [], "std_error": [], "unit": []}
+        for est in ("idim", "idim_asymmetric", "idim_iv", "output_error"):
+            res = getattr(self, est)
+            for e in ([] if res is None else res.parameters.values()):
+                for k, v in (("estimator", est), ("name", e.name), ("value", e.value), ("std_error", e.std_error),
+                             ("unit", e.unit)):
+                    rows[k].append(v)
+        return dataframe({k: np.asarray(v, dtype=object if k in ("estimator", "name", "unit") else float)
+                          for k, v in rows.items()})
 
     def values(self) -> dict:
         """The symmetric IDIM-LS estimates: M, Fv, Fc, offset."""

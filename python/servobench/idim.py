@@ -30,6 +30,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ._serialise import JsonResult, dataframe
+
 __all__ = ["idim_ls", "idim_iv", "IdimResult", "hac_covariance", "observation_matrix", "FRICTION_MODELS",
            "filtered_derivatives", "dynamics_frequency", "long_run_covariance"]
 
@@ -180,7 +182,7 @@ def filtered_derivatives(q, ts: float, cutoff_hz: float, order: int = 4):
 
 
 @dataclass(frozen=True)
-class IdimResult:
+class IdimResult(JsonResult):
     """An IDIM estimate that explains itself.
 
     parameters: name -> :class:`servobench.identify.Estimate` (HAC standard errors); std_error_iid: the textbook
@@ -224,6 +226,30 @@ class IdimResult:
     def residual(self) -> np.ndarray:
         """measured - predicted effort per decimated sample, N or N*m."""
         return self.measured - self.predicted
+
+    def to_dataframe(self, which: str = "parameters"):
+        """A pandas DataFrame: ``"parameters"`` (default) one row per parameter (index ``name``: ``value``,
+        ``std_error`` (HAC), ``std_error_iid``, ``relative_std_error``, ``unit``, ``not_identified``);
+        ``"samples"`` the decimated samples the estimate used: ``time_s`` (s) and the effort measured, predicted by
+        the model and their difference, ``measured_n``/``predicted_n``/``residual_n`` on a linear axis (N),
+        ``..._nm`` on a rotary one (N*m). ``df.attrs["units"]`` gives the units."""
+        if which == "parameters":
+            rows = list(self.parameters.values())
+            return dataframe({"name": [e.name for e in rows], "value": [e.value for e in rows],
+                              "std_error": [e.std_error for e in rows],
+                              "std_error_iid": [self.std_error_iid.get(e.name, math.nan) for e in rows],
+                              "relative_std_error": [e.relative_std_error for e in rows],
+                              "unit": [e.unit for e in rows],
+                              "not_identified": [e.name in self.not_identified for e in rows]},
+                             {"relative_std_error": "1"}, index="name")
+        if which == "samples":
+            if self.time_s is None or self.measured is None or self.predicted is None:
+                raise ValueError("to_dataframe: this IdimResult kept no samples (time_s/measured/predicted are None)")
+            u, unit = ("n", "N") if self.linear else ("nm", "N*m")
+            return dataframe({"time_s": self.time_s, f"measured_{u}": self.measured, f"predicted_{u}": self.predicted,
+                              f"residual_{u}": self.residual},
+                             {"time_s": "s", f"measured_{u}": unit, f"predicted_{u}": unit, f"residual_{u}": unit})
+        raise ValueError(f"to_dataframe: which = {which!r} must be 'parameters' or 'samples'")
 
     @property
     def misfit(self) -> bool:

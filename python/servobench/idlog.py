@@ -30,6 +30,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ._serialise import JsonResult, dataframe
+
 __all__ = ["read_csv", "read_dataframe", "read_mat", "column_unit", "finite_column", "detect_count",
            "UNITS", "parse_header", "unit_factor", "check_time", "MAX_JITTER_PPM", "IdentificationLog", "motor_side", "motor_side_line"]
 
@@ -253,7 +255,7 @@ def read_mat(path: str) -> dict:
 # The log
 # ----------------------------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
-class IdentificationLog:
+class IdentificationLog(JsonResult):
     """One identification experiment, sample k at t = k Ts.
 
     torque_nm
@@ -349,6 +351,22 @@ class IdentificationLog:
 
     def __len__(self) -> int:
         return len(self.measured)
+
+    def to_dataframe(self):
+        """The log as a pandas DataFrame in the house column names :meth:`from_dataframe` reads: ``time_s`` (s),
+        ``torque_nm`` (N*m; ``force_n``, N, on a linear axis), the measured signal as ``position_rad`` /
+        ``speed_rad_s`` (``position_m`` / ``speed_m_s`` on a linear axis) and, when the log has one,
+        ``reference_rad`` (``reference_m``); ``df.attrs["units"]`` gives each column's unit. The other fields
+        (encoder resolution, current-loop bandwidth, ...) are :meth:`to_json`'s."""
+        length = "m" if self.linear else "rad"
+        effort = ("force_n", "N") if self.linear else ("torque_nm", "N*m")
+        meas = (f"speed_{length}_s", f"{length}/s") if self.measured_is_speed else (f"position_{length}", length)
+        cols = {"time_s": self.time_s, effort[0]: self.torque_nm, meas[0]: self.measured}
+        units = {"time_s": "s", effort[0]: effort[1], meas[0]: meas[1]}
+        if self.reference is not None:
+            ref = f"reference_{length}" if not self.measured_is_speed else f"reference_{length}_s"
+            cols[ref], units[ref] = self.reference, meas[1]
+        return dataframe(cols, units)
 
     def _replace(self, **kw) -> "IdentificationLog":
         d = {f: getattr(self, f) for f in self.__dataclass_fields__}

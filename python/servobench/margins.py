@@ -72,6 +72,28 @@ class Margins(JsonResult):
     source: str = ""
     note: str = ""
 
+    def to_dataframe(self):
+        """Every crossing of the loop (MATLAB's allmargin) as a pandas DataFrame, by frequency: ``crossing``
+        ("gain": ``|L|`` = 1, or "phase": angle L = -180 deg), ``freq_hz`` (Hz), ``phase_margin_deg`` (deg, at a gain
+        crossing; NaN at a phase crossing), ``gain_margin_db`` (dB, at a phase crossing; NaN at a gain crossing) and
+        ``kind`` ("upper"/"lower" at a phase crossing); ``df.attrs["units"]`` gives the units. The single-figure
+        margins are fields (:meth:`to_json` writes them all)."""
+        g, p = self.gain_crossovers, self.phase_crossovers
+        fg = np.asarray(g.get("freq_hz", []), dtype=float)
+        fp = np.asarray(p.get("freq_hz", []), dtype=float)
+        cols = {"crossing": np.array(["gain"] * len(fg) + ["phase"] * len(fp), dtype=object),
+                "freq_hz": np.concatenate([fg, fp]),
+                "phase_margin_deg": np.concatenate([np.asarray(g.get("phase_margin_deg", np.full(len(fg), np.nan)),
+                                                               dtype=float), np.full(len(fp), np.nan)]),
+                "gain_margin_db": np.concatenate([np.full(len(fg), np.nan),
+                                                  np.asarray(p.get("gain_margin_db", np.full(len(fp), np.nan)),
+                                                             dtype=float)]),
+                "kind": np.array([""] * len(fg) + [str(k) for k in p.get("kind", [""] * len(fp))], dtype=object)}
+        order = np.argsort(cols["freq_hz"], kind="stable")
+        df = dataframe({k: v[order] for k, v in cols.items()},
+                       {"freq_hz": "Hz", "phase_margin_deg": "deg", "gain_margin_db": "dB"})
+        return df
+
     @property
     def verdict(self) -> str:
         """"stable", "UNSTABLE" or "UNDECIDED"."""

@@ -35,6 +35,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ._serialise import JsonResult
+
 __all__ = ["segment_length", "start_from_idim", "perturbed_starts", "long_run_variance_ratio", "disagreements",
            "segment_sandwich", "SegmentSandwich", "run_starts", "shooting_options"]
 
@@ -171,7 +173,7 @@ def disagreements(fits: list) -> list[str]:
 
 
 @dataclass(frozen=True)
-class SegmentSandwich:
+class SegmentSandwich(JsonResult):
     """The segment-clustered sandwich covariance of an output-error fit (:func:`segment_sandwich`).
 
     names: the free parameters (SI, the fit's internal order; the Stribeck entry is the excess Fs - Fc);
@@ -186,6 +188,15 @@ class SegmentSandwich:
     residual_rms: float
     asymmetry_p_value: float = 1.0
     asymmetry_viscous: float = 0.0
+
+    def to_dataframe(self, which: str = "covariance"):
+        """A covariance matrix as a pandas DataFrame labelled by the parameter names on both axes (SI units, the
+        fit's internal order): ``"covariance"`` (default, the sandwich) or ``"covariance_iid"`` (s^2 H^-1)."""
+        import pandas as pd
+
+        if which not in ("covariance", "covariance_iid"):
+            raise ValueError(f"to_dataframe: which = {which!r} must be 'covariance' or 'covariance_iid'")
+        return pd.DataFrame(np.asarray(getattr(self, which)), index=list(self.names), columns=list(self.names))
 
     def std_error(self, name: str) -> float:
         i = self.names.index(name)

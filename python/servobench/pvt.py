@@ -43,6 +43,7 @@ from ._core import (
     pvt_table_ex,
     pvt_table_percent,
 )
+from ._serialise import dataframe
 from .trajectory import Trajectory
 
 __all__ = [
@@ -51,6 +52,17 @@ __all__ = [
     "pvt_percent_calculate", "pvt_start", "pvt_table", "pvt_table_complete", "pvt_table_continuous",
     "pvt_table_continuous_ex", "pvt_table_ex", "pvt_table_percent", "pvt_trajectory",
 ]
+
+
+def _pvt_curve_dataframe(self):
+    """The table's points as a pandas DataFrame, one row per point: ``time_ms`` (ms), ``pos_pulse`` (pulse) and
+    ``vel_pulse_per_ms`` (pulse/ms), as the manual's tables give them; ``df.attrs["units"]`` repeats the units. The
+    cubic pieces between the points are :meth:`evaluate`'s (decision W25)."""
+    return dataframe({"time_ms": self.time_ms, "pos_pulse": self.pos, "vel_pulse_per_ms": self.vel},
+                     {"time_ms": "ms", "pos_pulse": "pulse", "vel_pulse_per_ms": "pulse/ms"})
+
+
+PvtCurve.to_dataframe = _pvt_curve_dataframe  # a compiled result: the table lives here, not in the binding
 
 
 def pvt_trajectory(table, *, period_s: float = 1e-3, table_id: int = 1, loop: int = 1, start_pos: float = 0.0,

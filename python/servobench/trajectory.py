@@ -10,10 +10,11 @@ from typing import Optional
 import numpy as np
 
 from . import _core
+from ._serialise import JsonResult, dataframe
 
 
 @dataclass(frozen=True)
-class Trajectory:
+class Trajectory(JsonResult):
     """A command sampled once per servo tick: position (pulse), velocity (pulse/tick), acceleration
     (pulse/tick^2), as NumPy arrays of equal length; optionally the jerk (pulse/tick^3) for the motion
     generators' trajectories."""
@@ -31,6 +32,18 @@ class Trajectory:
 
     def __len__(self) -> int:
         return len(self.pos)
+
+    def to_dataframe(self):
+        """The command as a pandas DataFrame, one row per servo tick (index ``tick``): ``pos_pulse``,
+        ``vel_pulse_per_tick``, ``acc_pulse_per_tick2`` and, when present, ``jerk_pulse_per_tick3``;
+        ``df.attrs["units"]`` repeats the units."""
+        cols = {"pos_pulse": self.pos, "vel_pulse_per_tick": self.vel, "acc_pulse_per_tick2": self.acc}
+        if self.jerk is not None:
+            cols["jerk_pulse_per_tick3"] = self.jerk
+        df = dataframe(cols, {"pos_pulse": "pulse", "vel_pulse_per_tick": "pulse/tick",
+                              "acc_pulse_per_tick2": "pulse/tick^2", "jerk_pulse_per_tick3": "pulse/tick^3"})
+        df.index.name = "tick"
+        return df
 
     def __repr__(self) -> str:
         return (f"Trajectory({len(self)} ticks, {self.pos[0]:.6g} -> {self.pos[-1]:.6g} pulse, "

@@ -21,11 +21,13 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ._serialise import JsonResult
+
 __all__ = ["designed_axis", "TuneCheck", "TuningRefused", "check_design"]
 
 
 @dataclass(frozen=True)
-class TuneCheck:
+class TuneCheck(JsonResult):
     """The outcome of :func:`check_design`: ``accepted``, the ``failures`` (empty when accepted), the model's and
     the verification sweep's margins (``model``, ``measured``: :class:`servobench.frequency.Margins`; measured None
     when not swept or no margin could be read, with ``measured_note``), and the bounds checked."""

@@ -19,6 +19,7 @@ from typing import Callable, Mapping
 import numpy as np
 
 from . import _core
+from ._serialise import JsonResult
 from .axis import Axis
 
 __all__ = ["RobustTuneResult", "tune_robust"]
@@ -27,7 +28,7 @@ _OBJECTIVES = ("phase_margin", "overshoot")
 
 
 @dataclass(frozen=True)
-class RobustTuneResult:
+class RobustTuneResult(JsonResult):
     """What :func:`tune_robust` returns.
 
     law, filters
@@ -75,6 +76,14 @@ class RobustTuneResult:
         axis.set_law(self.law)
         axis.set_filters(self.filters)
         axis.set_servo_on(True)
+
+    def to_dataframe(self, which: str = "after"):
+        """One of the result's tables (pandas DataFrames, units in the column names: deg, %, s, Hz):
+        ``"after"`` (default; one row per drawn plant with the robust design), ``"before"`` (the same plants with
+        the nominal design) or ``"candidates"`` (one row per candidate design)."""
+        if which not in ("after", "before", "candidates"):
+            raise ValueError(f"to_dataframe: which = {which!r} must be 'after', 'before' or 'candidates'")
+        return getattr(self, which).copy()
 
     def plot(self, *, ax=None, bins: int = 20) -> dict:
         """Histograms of the phase margin (deg) and the overshoot (%) over the drawn plants, before and after.

@@ -19,6 +19,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ._serialise import JsonResult, dataframe
+
 __all__ = ["RigidModel", "CascadePD", "simulate_rigid", "validate", "ValidationResult"]
 
 
@@ -31,7 +33,7 @@ def _finite(owner, name, v, lo=-math.inf, lo_open=False):
 
 
 @dataclass(frozen=True)
-class RigidModel:
+class RigidModel(JsonResult):
     """A rigid axis: mass_kg (kg; kg*m^2 on a rotary axis), viscous friction per direction fv_pos / fv_neg
     (N*s/m or N*m*s/rad), Coulomb friction per direction fc_pos / fc_neg (N or N*m, >= 0; fv_neg, fc_neg default to
     the positive side's), a constant offset (N or N*m: M a = F - offset - friction) and an optional Stribeck peak
@@ -240,7 +242,7 @@ def _simulate_scalar(m, ts, src, closed, ctrl, q, v, substeps):
 
 
 @dataclass(frozen=True)
-class ValidationResult:
+class ValidationResult(JsonResult):
     """Measured vs simulated position of one record: rms (m or rad), nrmse (rms over the measured position's
     standard deviation), r2 (1 - SSE/SST) of the open-loop simulation; closed_loop: the same three for the
     closed-loop simulation (None without a known controller); series: the arrays drawn; lead_m_per_rev: the log's
@@ -270,6 +272,18 @@ class ValidationResult:
             c = self.closed_loop
             s += f"\nclosed loop: {self._rms(c['rms'])}, NRMSE {c['nrmse']:.4g}, R^2 {c['r2']:.6f}"
         return s
+
+    def to_dataframe(self):
+        """The series drawn by :meth:`plot` as a pandas DataFrame, one row per sample: ``time_s`` (s), the
+        measured position and the open-loop (and, when simulated, closed-loop) simulation, named with their unit:
+        ``measured_rad``, ``open_loop_rad``, ``closed_loop_rad`` (``_m`` on a linear axis); ``df.attrs["units"]``
+        gives the units."""
+        u = "m" if self.linear else "rad"
+        cols, units = {}, {}
+        for k, v in self.series.items():
+            name = k if k == "time_s" else f"{k}_{u}"
+            cols[name], units[name] = v, ("s" if k == "time_s" else u)
+        return dataframe(cols, units)
 
     def plot(self, *, ax=None, path: str | None = None):
         """Measured vs simulated position (top) and the residual (bottom), units on every axis. `ax`: two axes.

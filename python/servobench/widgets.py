@@ -297,8 +297,8 @@ class Tuner:
         w = _widgets()
         from matplotlib.figure import Figure
 
-        style = {"description_width": "110px"}
-        layout = w.Layout(width="360px")
+        style = {"description_width": "150px"}
+        layout = w.Layout(width="400px")
         c: dict[str, Any] = {}
         limit = _GAIN_LIMIT[type(self.law)]
         for g in _GAINS:
@@ -379,9 +379,13 @@ class Tuner:
         drv_box = box(f"drive ({type(self.drive).__name__})", tuple(_DRIVE_KNOBS[type(self.drive)]))
         buttons = w.HBox([b["measure"], b["model_tune"], b["relay_tune"], b["apply"], b["revert"], b["export"],
                           self.export_path], layout=w.Layout(flex_flow="row wrap"))
-        left = w.VBox([law_box, flt_box, drv_box])
+        # The slider column must not shrink: a widget box has overflow:auto (so min-width 0 in a flex row) and the
+        # plot's output area asks for the whole row, so a shrinkable column collapsed to 1 px in Voila/JupyterLab
+        # (decision W20); the plots take what is left.
+        left = w.VBox([law_box, flt_box, drv_box], layout=w.Layout(flex="0 0 auto", min_width="410px"))
         plot = self._canvas_widget if self._canvas_widget is not None else self._out
-        self.widget = w.VBox([buttons, w.HBox([left, w.VBox([self.verdict, plot])]), self.message])
+        right = w.VBox([self.verdict, plot], layout=w.Layout(flex="1 1 auto"))
+        self.widget = w.VBox([buttons, w.HBox([left, right]), self.message])
 
     def _safely(self, action) -> None:
         """A button's action: a refusal or failure becomes the status line, never a traceback in the panel."""

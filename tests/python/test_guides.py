@@ -18,7 +18,7 @@ DOCS = Path(__file__).resolve().parents[2] / "docs"
 #: The pages known to carry Python code; every other page with a ```python block is found by the scan below.
 GUIDES = ["getting-started.md", "concepts.md", "howto-tune.md", "howto-bode.md", "howto-identify.md",
           "howto-port.md", "identify-emps.md", "howto-batch.md", "card.md", "filters.md", "identify.md", "motion.md",
-          "paths.md", "widgets.md", "lti-plant.md"]
+          "paths.md", "widgets.md", "lti-plant.md", "results-io.md"]
 MAX_NOT_RUN = 3  # per page
 
 FENCE = re.compile(r"^(?P<indent> {0,3})(?P<fence>```+|~~~+)\s*(?P<lang>[^\s`]*)[^\n]*$")

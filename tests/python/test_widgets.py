@@ -132,3 +132,46 @@ def test_bad_input_names_the_parameter():
     stepper = sb.Axis(drive=sb.StepperDrive())
     with pytest.raises(ValueError, match="voltage-output"):
         widgets.tuner(stepper)
+
+
+#: SHA-256 of the earlier docs picture, taken while the slider column collapsed to 1 px (it showed no sliders).
+_OLD_SCREENSHOT_SHA256 = "648a95e2deded9a0c9ae55b5853f4dea2e4fd05f47e1a19ac96c3fe2fca57d8a"
+
+
+def test_slider_column_cannot_collapse():
+    """In a flex row a widget box may shrink to nothing (its overflow is auto): the slider column keeps its width,
+    the plots take the rest (decision W20)."""
+    panel = widgets.tuner(examples.resonant_axis())
+    left, right = panel.widget.children[1].children
+    assert left.layout.flex == "0 0 auto" and int(left.layout.min_width.rstrip("px")) >= 400
+    assert right.layout.flex == "1 1 auto"
+    sliders = [c for c in panel.controls.values() if "Slider" in type(c).__name__]
+    assert all(int(s.layout.width.rstrip("px")) <= int(left.layout.min_width.rstrip("px")) for s in sliders)
+
+
+def test_docs_screenshot_is_the_real_panel():
+    """docs/img/widgets_tuner.png is made by docs/make_widgets_screenshot.py (Voila + headless Chromium); its record
+    says every slider was visible on the page, and the picture shows the slider tracks in the left column."""
+    import hashlib
+    import json
+    from pathlib import Path
+
+    import matplotlib.image as mpimg
+
+    img_dir = Path(__file__).resolve().parents[2] / "docs" / "img"
+    png = (img_dir / "widgets_tuner.png").read_bytes()
+    record = json.loads((img_dir / "widgets_tuner.json").read_text())
+    digest = hashlib.sha256(png).hexdigest()
+    assert digest != _OLD_SCREENSHOT_SHA256, "the old picture without sliders"
+    assert digest == record["png_sha256"], "the picture is the one the script measured"
+    panel = widgets.tuner(examples.resonant_axis())  # the notebook's axis
+    n_sliders = sum("Slider" in type(c).__name__ for c in panel.controls.values())
+    assert record["sliders"] == record["visible_sliders"] == n_sliders == 12
+    assert all(w >= 300 and h >= 20 for w, h in record["slider_px"])
+    rgb = (mpimg.imread(img_dir / "widgets_tuner.png")[..., :3] * 255).round()
+    height, width = rgb.shape[:2]
+    assert width >= 1100 and height >= 600
+    # a slider track: a row where most of the column x = 170..320 px is the track's grey (189, 189, 189)
+    track = (np.abs(rgb[:, 170:320] - 189.0) <= 4).all(axis=2).mean(axis=1) >= 0.6
+    runs = np.count_nonzero(np.diff(track.astype(int)) == 1)
+    assert runs >= n_sliders - 2, f"{runs} slider tracks seen in the picture's left column"
