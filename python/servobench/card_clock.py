@@ -43,6 +43,8 @@ import weakref
 from dataclasses import dataclass, field
 from typing import Mapping
 
+from ._serialise import JsonResult
+
 __all__ = ["CLOCK_MODES", "CardClock", "ClockOptions", "ClockStats", "VENDOR_CALL_COST_US"]
 
 #: The clock modes (see the module docstring).
@@ -127,7 +129,7 @@ class ClockOptions:
 
 
 @dataclass(frozen=True)
-class ClockStats:
+class ClockStats(JsonResult):
     """What a clock did: ``calls`` vendor calls charged, ``ticks`` servo ticks the clock ran (pulse units untouched),
     ``simulated_s`` = ticks x Ts; realtime also ``wall_s`` (s the thread ran), ``speed_measured`` =
     simulated_s / wall_s, ``max_lag_ticks`` (the most ticks the card was ever behind its wall-clock schedule) and

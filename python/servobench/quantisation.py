@@ -27,6 +27,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from . import _core
+from ._serialise import JsonResult
 
 __all__ = ["AdlinkQuantisation", "AdlinkQuantisationWarning", "adlink_quantisation", "to_adlink",
            "MAX_PASSBAND_DB", "MAX_NULL_SHIFT"]
@@ -50,7 +51,7 @@ class AdlinkQuantisationWarning(UserWarning):
 
 
 @dataclass(frozen=True)
-class AdlinkQuantisation:
+class AdlinkQuantisation(JsonResult):
     """The measured departure of an :class:`~servobench.AdlinkBiquad` from the :class:`~servobench.FloatBiquad` it
     was quantised from. Frequencies in Hz (cycles per sample for an unbound filter), gains in dB.
 

@@ -112,6 +112,14 @@ TABLES = {
 }
 
 #: Results with a table but no JSON of their own, and why.
+def _clock_stats():
+    card = sb.Card(4)
+    clock = card.set_clock("program", call_cost_us=100)
+    with clock.vendor_call("gt", "GT_GetSts"):
+        pass
+    return clock.stats()
+
+
 TABLE_ONLY = {
     "PvtCurve": "a compiled table built by the PVT description functions; its description (the function and its "
                 "arguments) is what to store, its points are to_dataframe() (W25)",
@@ -135,6 +143,9 @@ JSON_ONLY = {
     "Peak": (lambda r: sb.frequency.Peak("resonance", 400.0, 12.0, 9.0), "one peak: four scalars"),
     "FiredEvent": (lambda r: sb.FiredEvent(tick=5, axis=0, word="events", bits=3), "one event: four integers"),
     "RigidModel": (lambda r: sb.RigidModel(95.0, 160.0, 20.0, 240.0, 21.0), "a model's few parameters"),
+    "AdlinkQuantisation": (lambda r: sb.design.adlink_quantisation(sb.design.notch(100.0, 1e-4, q=30.0)),
+                           "one filter's departure: a few scalars"),
+    "ClockStats": (lambda r: _clock_stats(), "what a clock did: counts and times"),
 }
 
 #: Public classes that are not results, and why.
@@ -149,7 +160,8 @@ NOT_RESULTS = {
     "CascadePD": "an input (the known controller of a record)", "MechanicsIO": "an input (what surrounds the "
     "mechanics in a measured response)", "Key": "the axis-file schema", "Table": "the axis-file schema",
     "Variant": "the axis-file schema", "Plot": "a drawn figure; its data are the result's own table",
-    "GtController": "a vendor-dialect controller (live)",
+    "GtController": "a vendor-dialect controller (live)", "CardClock": "a card's live clock",
+    "ClockOptions": "an input (how a card's time flows)",
     "GeController": "a vendor-dialect controller (live)", "GtsController": "a vendor-dialect controller (live)",
     "ApsController": "a vendor-dialect controller (live)", "TAxis": "a vendor struct (input)",
     "TWatchBuffer": "a vendor struct", "TLookAheadMsg": "a vendor struct", "TCrdPrm": "a vendor struct (input)",
