@@ -78,7 +78,8 @@ nb_merge_streams = True
 # -- HTML -------------------------------------------------------------------------------------------------------
 html_theme = "furo"
 html_title = f"servobench {release}"
-html_static_path: list[str] = []
+html_static_path = ["_static"]
+html_css_files = ["wrap.css"]  # long code lines wrap (issue 23.7)
 html_show_sourcelink = False
 
 

@@ -95,3 +95,12 @@ def test_api_reference_documents_the_dialect_commands(site):
                                       (aps, "ApsController", aps.APS_FUNCTIONS)]:
         missing = [n for n in names if f"{module.__name__}.{controller}.{n}" not in ids]
         assert not missing, (module.__name__, missing[:10])
+
+
+def test_long_code_lines_wrap(site):
+    """Issue 23.7: the site's code blocks and notebook cells wrap long lines (docs/_static/wrap.css, linked from
+    every page) instead of scrolling sideways."""
+    css = (site.html / "_static" / "wrap.css").read_text()
+    assert "white-space: pre-wrap" in css and ".highlight pre" in css
+    for page in ("index.html", "identify.html", "tour/11_identify_real_machine.html"):
+        assert "_static/wrap.css" in (site.html / page).read_text(encoding="utf-8"), page

@@ -18,6 +18,16 @@ def test_there_are_notebooks():
 
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
+def test_notebook_title_is_numbered_like_its_file(path):
+    """Issue 23.7: every title reads "# NN Title", NN the file's own number (01_quickstart.ipynb -> "# 01 ...")."""
+    nb = nbformat.read(path, as_version=4)
+    title = next(c for c in nb.cells if c.cell_type == "markdown").source.splitlines()[0]
+    number = path.name.split("_")[0]
+    assert number.isdigit() and len(number) == 2, path.name
+    assert title.startswith(f"# {number} ") and title[len(number) + 3:][:1].isupper(), title
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
 def test_notebook_runs(path, docs_site):
     executed = docs_site.executed / "tour" / path.name
     assert executed.exists(), f"the docs build did not execute {path.name}:\n{docs_site.log[-4000:]}"
