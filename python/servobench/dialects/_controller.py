@@ -96,6 +96,26 @@ class DialectController:
 
     def __init__(self):
         self._card: Card | None = None
+        self._machine = None
+
+    def use_machine(self, machine) -> None:
+        """The simulated machine a vendor program runs against (issue 25.2): a :class:`~servobench.Card`, or a
+        callable returning one, that the dialect's open call (``GT_Open()``, ``APS_initial(...)``) opens when the
+        program passes no card, so a manual's program calls it exactly as printed. ``None`` forgets it."""
+        if machine is not None and not (isinstance(machine, Card) or callable(machine)):
+            raise TypeError(f"machine must be a servobench.Card or a callable returning one, not "
+                            f"{type(machine).__name__}")
+        self._machine = machine
+
+    def _machine_card(self) -> Card | None:
+        """The card :meth:`use_machine` set (built now if it is a factory), or None."""
+        m = self._machine
+        if m is None or isinstance(m, Card):
+            return m
+        card = m()
+        if not isinstance(card, Card):
+            raise TypeError(f"the machine factory returned {type(card).__name__}, not a servobench.Card")
+        return card
 
     @property
     def card(self) -> Card | None:
@@ -169,7 +189,7 @@ def export_functions(namespace: dict, default: DialectController, prefix: str) -
         return f
 
     names = tuple(n for n in dir(cls) if n.startswith(prefix))
-    for n in names + ("run", "wait_until"):
+    for n in names + ("run", "wait_until", "use_machine"):
         namespace[n] = bind(n)
 
     def controller():
