@@ -615,8 +615,7 @@ def _correlated_errors(best: IdentifiedPlant, log: IdentificationLog, model: str
         except (ValueError, IndexError, np.linalg.LinAlgError) as err:
             sw, why = None, str(err)
         else:
-            fit_rms = best.residual_rms / (log.count_rad if not log.measured_is_speed
-                                           else log.count_rad / log.sample_period_s)
+            fit_rms = best.residual_rms / log.measurement_count
             if not sw.residual_rms <= 1.05 * fit_rms + 1e-12:  # the sandwich must stand where the fit ended (J46)
                 sw, why = None, (f"its segment states give a residual RMS of {sw.residual_rms:.4g} counts, the fit's "
                                  f"{fit_rms:.4g}")
@@ -696,7 +695,7 @@ def _fit_once(log: IdentificationLog, model: str = "rigid", *, guess: dict, fixe
     names, initial, hold, lower, upper = _setup(model, guess, fixed, bounds)
     if all(hold):
         raise ValueError("guess: no parameter to estimate")
-    scale = log.count_rad if not log.measured_is_speed else log.count_rad / log.sample_period_s
+    scale = log.measurement_count
     r = _core.identify_time(
         log.torque_nm, log.measured, sample_period_s=log.sample_period_s, measured_is_speed=log.measured_is_speed,
         measured_on_load=log.measured_on_load, model=model, initial=initial, fixed=hold, lower=lower, upper=upper,

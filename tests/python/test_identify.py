@@ -225,6 +225,15 @@ def test_log_from_dac_volts():
         IdentificationLog.from_arrays(log.time_s, log.torque_nm, log.measured, command_unit="A")
 
 
+def test_measurement_count_is_one_count_in_the_logs_unit():
+    # One place says how big a count is in the unit of `measured` (the fits' residuals are reported in counts).
+    t = np.arange(100) * 1e-3
+    pos = IdentificationLog.from_arrays(t, np.zeros(100), np.zeros(100), counts_per_rev=10000)
+    assert pos.measurement_count == pytest.approx(2 * np.pi / 10000, rel=1e-15)
+    spd = IdentificationLog.from_arrays(t, np.zeros(100), np.zeros(100), counts_per_rev=10000, measured_unit="rad/s")
+    assert spd.measurement_count == pytest.approx(2 * np.pi / 10000 / 1e-3, rel=1e-15)
+
+
 def test_bad_logs_are_refused():
     n = 1000
     t = np.arange(n) * TS
