@@ -464,7 +464,9 @@ def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None
     n_starts, seed
         the fit runs from the start and n_starts - 1 seeded perturbations of it (each free parameter x 1/1.5..1.5);
         the result is the converged start with the lowest residual, ``starts`` lists them all and
-        ``disagreement`` says when converged starts differ beyond 2 combined standard errors.
+        ``disagreement`` says when converged starts differ beyond 2 combined standard errors. ``converged`` needs a
+        second converged start at the best one's point (decision J43), unless the best start is at the encoder's
+        resolution floor (:data:`RESOLUTION_FLOOR_COUNTS`) and every other start ended at least 2x worse (J47).
     dynamics_hz
         the closed loop's dynamics frequency for the IDIM (see :func:`servobench.idim_ls`); None: from the log.
     loss
@@ -581,8 +583,16 @@ def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None
                   ", agreeing within their error bars") + ".")
     conv_ids = {id(f) for f in converged}
     best_scaled = dataclasses.replace(best, parameters=params)  # error bars with the correlated-residual factor
-    alone = best.converged and len(fits) > 1 and not any(
-        _same_point(best_scaled, g, 1.0) for f, g in zip(fits, inflated) if id(f) in conv_ids and f is not best)
+    confirmed = any(_same_point(best_scaled, g, 1.0) for f, g in zip(fits, inflated)
+                    if id(f) in conv_ids and f is not best)
+    # A best start at the encoder's resolution floor needs no second start to confirm it when every other start
+    # ended in a distinct, clearly worse minimum (decision J47): no other point can explain the log better.
+    at_floor = best.residual_rms / log.measurement_count <= RESOLUTION_FLOOR_COUNTS
+    others_worse = all(f.residual_rms >= 2.0 * best.residual_rms for f in fits if f is not best)
+    alone = best.converged and len(fits) > 1 and not confirmed and not (at_floor and others_worse)
+    if best.converged and len(fits) > 1 and not confirmed and not alone:
+        notes.append(f"The best start is at the resolution floor ({best.residual_rms / log.measurement_count:.3g} "
+                     f"count RMS) and every other start ended at least 2x worse: the point is the log's best.")
     if alone:  # the solver stopped, but no other start confirms the point (decision J43)
         notes.append("NOT CONVERGED: no other start ends at the best start's point (within 2 standard errors or "
                      "5 %): the answer depends on where the fit starts (a local minimum). Give a better guess or a "
@@ -593,6 +603,11 @@ def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None
                                start_guess=dict(guess), warnings=warnings,
                                lead_m_per_rev=log.lead_m_per_rev if log.linear else None,
                                asymmetry_p_value=sw.asymmetry_p_value if sw is not None else math.nan)
+
+
+#: A residual RMS at or below this, in counts, is the encoder's quantisation floor (1/sqrt(12) = 0.289 count) plus
+#: 20 %: nothing left for another minimum to explain (decision J47).
+RESOLUTION_FLOOR_COUNTS = 1.2 / math.sqrt(12.0)
 
 
 def _scaled(e: Estimate, factor: dict) -> float:
@@ -615,8 +630,7 @@ def _correlated_errors(best: IdentifiedPlant, log: IdentificationLog, model: str
         except (ValueError, IndexError, np.linalg.LinAlgError) as err:
             sw, why = None, str(err)
         else:
-            fit_rms = best.residual_rms / (log.count_rad if not log.measured_is_speed
-                                           else log.count_rad / log.sample_period_s)
+            fit_rms = best.residual_rms / log.measurement_count
             if not sw.residual_rms <= 1.05 * fit_rms + 1e-12:  # the sandwich must stand where the fit ended (J46)
                 sw, why = None, (f"its segment states give a residual RMS of {sw.residual_rms:.4g} counts, the fit's "
                                  f"{fit_rms:.4g}")
@@ -696,7 +710,7 @@ def _fit_once(log: IdentificationLog, model: str = "rigid", *, guess: dict, fixe
     names, initial, hold, lower, upper = _setup(model, guess, fixed, bounds)
     if all(hold):
         raise ValueError("guess: no parameter to estimate")
-    scale = log.count_rad if not log.measured_is_speed else log.count_rad / log.sample_period_s
+    scale = log.measurement_count
     r = _core.identify_time(
         log.torque_nm, log.measured, sample_period_s=log.sample_period_s, measured_is_speed=log.measured_is_speed,
         measured_on_load=log.measured_on_load, model=model, initial=initial, fixed=hold, lower=lower, upper=upper,

@@ -338,6 +338,12 @@ class IdentificationLog(JsonResult):
         return 2 * np.pi / self.counts_per_rev
 
     @property
+    def measurement_count(self) -> float:
+        """One encoder count in the unit of `measured`: :attr:`count_rad` (rad or m) for a position log, one count
+        per sample period (rad/s or m/s) for a speed log. The scale the fits report their residuals in, in counts."""
+        return self.count_rad / self.sample_period_s if self.measured_is_speed else self.count_rad
+
+    @property
     def force_n(self) -> np.ndarray:
         """The effort on a linear axis, N (the same array as torque_nm)."""
         return self.torque_nm

@@ -206,7 +206,7 @@ class SegmentSandwich(JsonResult):
 def shooting_options(log, segment_samples: int, options: dict) -> dict:
     """The keyword arguments of ``_core.identify_shooting_problem`` / ``identify_shooting_residual`` that describe
     the final stage of a :func:`servobench.fit_time` call with these options."""
-    scale = log.count_rad if not log.measured_is_speed else log.count_rad / log.sample_period_s
+    scale = log.measurement_count
     return dict(sample_period_s=log.sample_period_s, measured_is_speed=log.measured_is_speed,
                 measured_on_load=log.measured_on_load, segment_samples=int(segment_samples),
                 min_segment_samples=min(20, int(segment_samples)), edge_samples=options.get("edge_samples", 3),
