@@ -87,4 +87,3 @@ def machine():
 if __name__ == "__main__":
     use_machine(machine)
     main()
-    print("home:", APS_get_command(0), APS_get_position(0), hex(APS_motion_status(0)), APS_get_stop_code(0))

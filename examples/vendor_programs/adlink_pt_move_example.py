@@ -66,5 +66,3 @@ def machine():
 if __name__ == "__main__":
     use_machine(machine)
     main()
-    Sleep(1000)
-    print("pt:", APS_get_command(0), APS_get_command(1), APS_get_pt_status(0, 0))

@@ -48,6 +48,4 @@ def machine():
 
 if __name__ == "__main__":
     use_machine(machine)
-    print("trigger:", main())
-    Sleep(1000)
-    print("positions:", APS_get_command(0), APS_get_command(1))
+    main()

@@ -57,5 +57,3 @@ def machine():
 if __name__ == "__main__":
     use_machine(machine)
     main()
-    Sleep(500)
-    print("velocity: command", APS_get_command(0), "status", hex(APS_motion_status(0)))

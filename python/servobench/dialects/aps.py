@@ -1466,6 +1466,12 @@ def Sleep(ms: float):
     return _default.Sleep(ms)
 
 
+def use_machine(machine) -> None:
+    """The simulated machine a vendor program's ``APS_initial`` opens (a Card or a factory; None forgets it):
+    :meth:`~servobench.dialects._controller.DialectController.use_machine` of the default controller."""
+    _default.use_machine(machine)
+
+
 def vao_output(ctrl: int) -> dict:
     """Simulation helper: what PWM ``ctrl`` (0..1) of the open card outputs now (:meth:`ApsController.vao_output`)."""
     return _default.vao_output(ctrl)
