@@ -38,8 +38,9 @@ motion::AdlinkMoveSpec::Kind kind_of(const std::string& kind) {
   if (kind == "arc3_ce") return K::Arc3Ce;
   if (kind == "spiral_ca") return K::SpiralCa;
   if (kind == "spiral_ce") return K::SpiralCe;
+  if (kind == "dwell") return K::Dwell;
   throw std::invalid_argument("kind = '" + kind + "' is not one of line, arc2_ca, arc2_ce, arc3_ca, arc3_ce, "
-                              "spiral_ca, spiral_ce");
+                              "spiral_ca, spiral_ce, dwell");
 }
 
 }  // namespace
@@ -49,7 +50,8 @@ void bind_card_aps(py::class_<Card>& c, py::module_& m) {
                          const std::string& kind, const std::vector<double>& target, const std::vector<double>& center,
                          const std::vector<double>& normal, double angle_deg, int dir, double height,
                          double final_radius, Flag relative, motion::BlendMode mode, double blend, double vm,
-                         const motion::AdlinkPtpParams* all, Flag wait) {
+                         const motion::AdlinkPtpParams* all, Flag wait, double dwell_s, double buffer_size,
+                         Flag point_table) {
          machine::AdlinkGroupMove mv;
          for (double a : array) mv.array.push_back(card_axis(k, a));
          mv.params = params;
@@ -70,15 +72,21 @@ void bind_card_aps(py::class_<Card>& c, py::module_& m) {
          mv.vm = vm;
          if (all != nullptr) mv.all = *all;
          mv.wait = wait;
+         mv.spec.dwell_s = dwell_s;
+         check_range("Card.aps_interp", "buffer_size", buffer_size, 1, 1e6, "pending moves");
+         mv.buffer_size = buffer_size;
+         mv.point_table = point_table;
          machine::adlink_group_move(k, mv);
        }, py::arg("array"), py::arg("params"), py::arg("kind"), py::kw_only(),
        py::arg("target") = std::vector<double>{}, py::arg("center") = std::vector<double>{},
        py::arg("normal") = std::vector<double>{}, py::arg("angle_deg") = 0.0, py::arg("dir") = 0,
        py::arg("height") = 0.0, py::arg("final_radius") = 0.0, py::arg("relative") = false,
        py::arg("mode") = motion::BlendMode::AbortBlend, py::arg("blend") = 0.0, py::arg("vm") = 0.0,
-       py::arg("all") = nullptr, py::arg("wait") = false,
-       "an ADLINK interpolation (APS_line / arc / spiral) of the axis array (0-based, first = reference axis) in "
-       "group slot 3: hosted at rest, buffered with its transition mode while the same array moves")
+       py::arg("all") = nullptr, py::arg("wait") = false, py::arg("dwell_s") = 0.0, py::arg("buffer_size") = 10.0,
+       py::arg("point_table") = false,
+       "an ADLINK interpolation (APS_line / arc / spiral, or a point-table dwell of dwell_s s) of the axis array "
+       "(0-based, first = reference axis) in group slot 3: hosted at rest (with buffer_size pending moves; "
+       "point_table: an APS_pt_* table, MTS PTB), buffered with its transition mode while the same array moves")
       .def("aps_interp_trigger", [](Card& k, double mask) {
              check_integer("Card", "mask", mask, 0, 4294967295.0);
              return machine::adlink_group_trigger(k, static_cast<std::uint32_t>(mask));
@@ -93,6 +101,8 @@ void bind_card_aps(py::class_<Card>& c, py::module_& m) {
              d["busy"] = g->busy();
              d["waiting"] = g->waiting();
              d["blending"] = g->blending();
+             d["point_table"] = g->point_table();
+             d["running"] = g->interp().running_moves();
              d["pending"] = g->interp().pending();
              d["moves_done"] = g->interp().state().moves_done;
              d["speed"] = g->interp().state().speed;  // vector speed, pulse/s

@@ -3,6 +3,7 @@
 // §4.8, L2813-3150; digest adlink.md §6.7 and test vectors T19-T21. Units: pulse, pulse/s, 1 ms motion cycle.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -309,4 +310,31 @@ TEST(AdlinkInterpolation, BufferSizeAndArcsAndSpiralsAlongThePath) {
   EXPECT_NEAR(r.back().pos[1], 2000, 1e-6);
   EXPECT_NEAR(r.back().pos[2], 500, 1e-9);
   for (const auto& k : r) EXPECT_LE(k.speed, 2 * 20000 + 1e-6);
+}
+
+TEST(AdlinkInterpolation, DwellHoldsThePositionBetweenMoves) {
+  // APS_pt_dwell (L3838, decision AF12): a Dwell holds the position dwell_s after the moves before it have
+  // ended, whatever the next move's mode; the next move starts when it ends.
+  sm::AdlinkInterpolator g({0, 1});  // 1 ms motion cycle
+  g.set_axis_params(0, params(10000, 1e5));
+  g.push(line_to({1000, 0}));
+  Spec dw;
+  dw.kind = Spec::Kind::Dwell;
+  dw.dwell_s = 0.05;
+  g.push(dw, Mode::BlendPercent, 50.0);  // a dwell is always buffered
+  g.push(line_to({1000, 1000}), Mode::BlendDistance, 500.0);
+  const auto r = run(g);
+  int held = 0, longest = 0;
+  for (std::size_t k = 1; k < r.size(); ++k) {
+    const bool still = r[k].pos == r[k - 1].pos && r[k].pos[0] == 1000 && r[k].pos[1] == 0;
+    held = still ? held + 1 : 0;
+    longest = std::max(longest, held);
+    EXPECT_FALSE(r[k].pos[1] > 0 && r[k].pos[0] < 1000) << "the second line started before the first ended";
+  }
+  EXPECT_GE(longest, 49);  // 50 motion cycles, less the fraction of a cycle at either end
+  EXPECT_LE(longest, 51);
+  EXPECT_NEAR(r.back().pos[1], 1000, 1e-9);
+  Spec bad = dw;
+  bad.dwell_s = 0;
+  EXPECT_THROW(g.push(bad), std::invalid_argument);
 }

@@ -267,11 +267,12 @@ def test_adlink_linear_and_table_compare_with_the_manuals_numbers(a):
     assert a.card.compare_level(1)                   # toggled three times from low
     assert a.APS_set_trigger_manual(0, 1) == 0 and a.APS_get_trigger_count(0, 1) == (0, 4)
     assert a.APS_set_trigger_manual(0, 0) == 0 and a.APS_get_trigger_count(0, 0) == (0, 3)  # no manual source
-    # PCI-8254: TRG0-1 only; bad values; the timer is not simulated
+    # PCI-8254: TRG0-1 only; bad values; the timer counts servo ticks (AF15; tests/python/test_aps_functions_more.py)
     assert a.APS_get_trigger_count(0, 2)[0] == aps.ERR_ParametersInvalid
     assert a.APS_set_trigger_param(0, aps.TGR_TRG2_SRC, 1) == aps.ERR_ParametersInvalid
     assert a.APS_set_trigger_param(0, aps.TGR_TCMP0_DIR, 3) == aps.ERR_ParametersInvalid
-    assert a.APS_set_trigger_param(0, aps.TIMR_EN, 1) == aps.ERR_FunctionNotAvailable
+    assert a.APS_set_trigger_param(0, aps.TIMR_EN, 1) == 0 and a.APS_get_trigger_param(0, aps.TIMR_EN) == (0, 1)
+    assert a.APS_set_trigger_param(0, aps.TIMR_EN, 2) == aps.ERR_ParametersInvalid
     assert a.APS_set_trigger_linear(0, 0, 0, 3, 0) == aps.ERR_ParametersInvalid
     assert a.APS_set_trigger_linear(0, 2, 0, 3, 5) == aps.ERR_ParametersInvalid
 

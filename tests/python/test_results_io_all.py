@@ -165,6 +165,8 @@ NOT_RESULTS = {
     "GeController": "a vendor-dialect controller (live)", "GtsController": "a vendor-dialect controller (live)",
     "ApsController": "a vendor-dialect controller (live)", "TAxis": "a vendor struct (input)",
     "TWatchBuffer": "a vendor struct", "TLookAheadMsg": "a vendor struct", "TCrdPrm": "a vendor struct (input)",
+    **{n: "an ADLINK point-table struct (input)" for n in ("PTLINE", "PTA2CA", "PTA2CE", "PTHCA", "PTHCE", "PTDWL")},
+    "PTSTS": "an ADLINK point-table status struct (one reading, APS_get_pt_status)",
 }
 
 

@@ -23,7 +23,7 @@ std::uint32_t aps_motion_status(const Card& card, std::size_t axis) {
     else if (v != 0.0) w |= bit(ApsMsts::VM);
   }
   if (s.dir_positive) w |= bit(ApsMsts::DIR);
-  if (!card.moving(axis)) w |= bit(ApsMsts::MDN);
+  w |= card.moving(axis) ? bit(ApsMsts::NSTP) : bit(ApsMsts::MDN);
   if (l.homing() && !l.homing()->finished()) w |= bit(ApsMsts::HMV);
   if (s.wait_trigger) w |= bit(ApsMsts::WAIT);
   if (card.jogging(axis)) w |= bit(ApsMsts::JOG);

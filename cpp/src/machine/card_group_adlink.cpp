@@ -35,12 +35,14 @@ std::vector<std::size_t> AdlinkGroup::sorted(std::vector<std::size_t> a) {
   return a;
 }
 
-AdlinkGroup::AdlinkGroup(const std::vector<std::size_t>& array, double period_s, const std::vector<double>& start)
+AdlinkGroup::AdlinkGroup(const std::vector<std::size_t>& array, double period_s, const std::vector<double>& start,
+                         double buffer_size, bool point_table)
     : CardGroup(sorted(array)), array_(array), interp_(ids(array), [&] {
         motion::AdlinkInterpSetup s;
         s.period_s = period_s;
+        s.buffer_size = buffer_size;
         return s;
-      }(), start) {
+      }(), start), point_table_(point_table) {
   for (std::size_t a : axes())
     slot_of_.push_back(static_cast<std::size_t>(std::find(array_.begin(), array_.end(), a) - array_.begin()));
 }
@@ -86,7 +88,7 @@ void adlink_group_move(Card& card, const AdlinkGroupMove& m) {
   AdlinkGroup* g = adlink_group(card);
   const int ref = static_cast<int>(m.array[0]);
   if (g != nullptr && g->busy()) {
-    if (g->array() != m.array)
+    if (g->array() != m.array || g->point_table() != m.point_table)
       refuse(card, ref, CommandFault::ChangeInMotion,
              "another axis array interpolates; a continuous interpolation keeps its axes (ADLINK L3077-3079)");
     for (std::size_t k = 0; k < m.array.size(); ++k) g->interp().set_axis_params(static_cast<int>(m.array[k]), m.params[k]);
@@ -113,7 +115,7 @@ void adlink_group_move(Card& card, const AdlinkGroupMove& m) {
   }
   std::vector<double> start;
   for (std::size_t a : m.array) start.push_back(static_cast<double>(card.profile_pos(a)));
-  auto ng = std::make_unique<AdlinkGroup>(m.array, cycle_s(card), start);
+  auto ng = std::make_unique<AdlinkGroup>(m.array, cycle_s(card), start, m.buffer_size, m.point_table);
   for (std::size_t k = 0; k < m.array.size(); ++k) ng->interp().set_axis_params(static_cast<int>(m.array[k]), m.params[k]);
   try {
     ng->interp().push(m.spec, m.mode, m.blend, m.vm, all);  // bad geometry throws here: nothing changed yet
@@ -145,12 +147,15 @@ std::uint32_t aps_group_motion_status(const Card& card, std::size_t axis) {
   if (g == nullptr || !in(g->axes(), axis)) return w;
   const HostedGroup& h = modes->hosted(kAdlinkGroupSlot);  // a group exists, so the modes do
   const bool moving = g->busy() && !g->waiting();
-  w &= ~(mbit(ApsMsts::CSTP) | mbit(ApsMsts::MDN) | mbit(ApsMsts::WAIT) | mbit(ApsMsts::BLD));
+  w &= ~(mbit(ApsMsts::CSTP) | mbit(ApsMsts::MDN) | mbit(ApsMsts::NSTP) | mbit(ApsMsts::WAIT) | mbit(ApsMsts::BLD));
   if (!moving) w |= mbit(ApsMsts::CSTP);
-  if (!g->busy() && !h.feeding) w |= mbit(ApsMsts::MDN);
+  const bool done = !g->busy() && !h.feeding;
+  if (moving && g->point_table()) w |= mbit(ApsMsts::PTB);  // point buffer moving: MDN and ASTP clear (L3656)
+  else w |= done ? mbit(ApsMsts::MDN) : mbit(ApsMsts::NSTP);
   if (g->waiting()) w |= mbit(ApsMsts::WAIT);
   if (moving && g->blending()) w |= mbit(ApsMsts::BLD);
-  if (h.fault_stopped) w |= mbit(ApsMsts::ASTP);
+  if (h.fault_stopped && !(w & mbit(ApsMsts::PTB))) w |= mbit(ApsMsts::ASTP);
+  if (w & mbit(ApsMsts::PTB)) w = (w & ~mbit(ApsMsts::ASTP)) | mbit(ApsMsts::NSTP);
   return w;
 }
 

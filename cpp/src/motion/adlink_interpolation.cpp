@@ -50,6 +50,7 @@ SpaceSegment AdlinkMoveSpec::build(const SpacePoint& start, const SpacePoint& re
     case Kind::Arc3Ce: return SpaceSegment::arc3_ce(start, ctr, tgt, dir);
     case Kind::SpiralCa: return SpaceSegment::spiral_ca(start, ctr, normal, angle_deg, height, final_radius);
     case Kind::SpiralCe: return SpaceSegment::spiral_ce(start, ctr, normal, tgt, dir);
+    case Kind::Dwell: return SpaceSegment::hold(start, dim);
   }
   throw std::invalid_argument("AdlinkMoveSpec: unknown kind");
 }
@@ -163,11 +164,21 @@ void AdlinkInterpolator::push(const AdlinkMoveSpec& spec, BlendMode mode, double
   double sd = 0.0;
   AdlinkLimits lim = limits_for(vm, all, &sd);
   const int d = dim();
+  if (spec.kind == AdlinkMoveSpec::Kind::Dwell) {  // always buffered (APS_pt_dwell, L3838)
+    check_range(o, "dwell_s", spec.dwell_s, 0.0, 1e6, "s, the dwell time");
+    if (!(spec.dwell_s > 0.0)) throw_invalid(o, "dwell_s", spec.dwell_s, "must be > 0 (s)");
+    if (static_cast<double>(queue_.size()) >= setup_.buffer_size)
+      throw MotionCommandRefused("AdlinkInterpolator: the interpolation buffer is full (return code: buffer full)");
+    Pending p{spec, spec.build(tail_, tail_, d), true, BlendMode::Buffered, 0.0, lim, t_, tail_,
+              std::max(1.0, std::round(spec.dwell_s / setup_.period_s))};
+    queue_.push_back(std::move(p));
+    return;
+  }
   const bool abort = m <= 3;
   if (!abort) {
     if (static_cast<double>(queue_.size()) >= setup_.buffer_size)
       throw MotionCommandRefused("AdlinkInterpolator: the interpolation buffer is full (return code: buffer full)");
-    Pending p{spec, spec.build(tail_, tail_, d), true, mode, blend, lim, t_, tail_};
+    Pending p{spec, spec.build(tail_, tail_, d), true, mode, blend, lim, t_, tail_, 0.0};
     plan_adlink_ptp(0.0, p.geom.length(), lim);  // refuses a VS -> VE ramp longer than the move (decision M9)
     tail_ = p.geom.end();
     queue_.push_back(std::move(p));
@@ -184,7 +195,7 @@ void AdlinkInterpolator::push(const AdlinkMoveSpec& spec, BlendMode mode, double
     queue_.clear();
     run_.clear();
     base_ = P;
-    run_.push_back({g, prof, t_, lim});
+    run_.push_back({g, prof, t_, lim, false});
     tail_ = g.end();
     return;
   }
@@ -204,9 +215,9 @@ void AdlinkInterpolator::push(const AdlinkMoveSpec& spec, BlendMode mode, double
     queue_.clear();
     tail_ = g.end();
     if (mode == BlendMode::AbortBlend) {
-      run_.push_back({g, prof, t_, lim});
+      run_.push_back({g, prof, t_, lim, false});
     } else {
-      queue_.push_back(Pending{spec, g, true, mode, 0.0, lim, t_stop, P});
+      queue_.push_back(Pending{spec, g, true, mode, 0.0, lim, t_stop, P, 0.0});
     }
   } catch (...) {
     run_ = std::move(saved);
@@ -246,6 +257,11 @@ double AdlinkInterpolator::trigger_time(const Pending& p) const {
     return t;
   }
   const Running& b = run_.back();
+  if (b.dwell || p.dwell_ticks > 0.0) {  // a dwell follows, and is followed by, the end of the moves before it
+    double t = 0.0;
+    for (const auto& r : run_) t = std::max(t, r.t0 + r.prof.duration());
+    return t;
+  }
   const double L = b.geom.length();
   switch (p.mode) {
     case BlendMode::BlendDecel: return b.t0 + decel_start(b.prof);
@@ -279,7 +295,10 @@ const AdlinkInterpState& AdlinkInterpolator::step() {
     if (t0 > t_) break;
     Pending p = std::move(queue_.front());
     queue_.pop_front();
-    run_.push_back({p.geom, plan_adlink_ptp(0.0, p.geom.length(), p.lim), t0, p.lim});
+    if (p.dwell_ticks > 0.0)
+      run_.push_back({p.geom, Profile(MotionState{}).push(p.dwell_ticks, 0.0), t0, p.lim, true});
+    else
+      run_.push_back({p.geom, plan_adlink_ptp(0.0, p.geom.length(), p.lim), t0, p.lim, false});
   }
   settle();
   SpacePoint V;

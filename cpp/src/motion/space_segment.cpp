@@ -82,6 +82,18 @@ SpaceSegment SpaceSegment::line(const SpacePoint& start, const SpacePoint& end, 
   return g;
 }
 
+SpaceSegment SpaceSegment::hold(const SpacePoint& start, int dim) {
+  check_integer("AdlinkDwell", "dim", dim, 2, 6, "axes; ADLINK L2817, L2829");
+  check_point("AdlinkDwell", "start", start, dim);
+  SpaceSegment g;
+  g.kind_ = Kind::Line;
+  g.dim_ = dim;
+  g.start_ = start;
+  g.end_ = start;
+  g.length_ = 0.0;  // dir_ stays 0: point_at = start, tangent_at = 0
+  return g;
+}
+
 SpaceSegment SpaceSegment::make_curve(const SpacePoint& start, int dim, const Vec3& c, const Vec3& n, double sweep,
                                       double r1, double height, const SpacePoint* exact_end) {
   SpaceSegment g;

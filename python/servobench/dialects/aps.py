@@ -25,6 +25,12 @@ import numpy as np
 from .. import _core
 from .._core import AdlinkHome, AdlinkJog, AdlinkPtp, ApsServoLaw, BlendMode, CardCommandRefused, MotionCommandRefused
 from ..card import Card
+from ._aps_more import (PRB_EMG_LOGIC, PRB_PWM0_MAP_DO, PRB_PWM1_MAP_DO, PRB_PWM2_MAP_DO,  # noqa: F401
+                        PRB_PWM3_MAP_DO, PRS_EMG_LOGIC, VAO_TABLE_INPUT_TYPE, VAO_TABLE_OUTPUT_TYPE,
+                        VAO_TABLE_PWM_CONFIG, VAO_TABLE_PWM_Config, VAO_TABLE_SRC, WDT_ACTION_DO_OFF,
+                        WDT_ACTION_PWM_OFF, WDT_ACTION_SERVO_OFF, _ApsMore)
+from ._aps_pt import (MAX_PT_DIM, PT_BUFFER_POINTS, PT_TABLES, PTA2CA, PTA2CE, PTB_EMPTY, PTB_FULL,  # noqa: F401
+                      PTB_WORKING, PTDWL, PTHCA, PTHCE, PTLINE, PTSTS, _ApsPointTable)
 from ._controller import DialectController, export_functions, register32, wrap32  # noqa: F401
 
 # -- return codes (APS library ErrorCodeDef.h; the manual uses ERR_NoError, L2309) -------------------------------
@@ -99,6 +105,10 @@ PRA_INTEGRAL_LIMIT = 0x12B
 
 # -- status bits (L3164-3206, L3611-3631) and stop codes (L3922-4023) ---------------------------------------------
 MTS_CSTP, MTS_VM, MTS_ACC, MTS_DEC, MTS_DIR, MTS_MDN, MTS_HMV = 0, 1, 2, 3, 4, 5, 6
+# "Not stopped": 1 while the axis moves, the complement of MDN. The home example waits `do {...} while (((msts >>
+# MTS_NSTP) & 1) == 1)` for the "motion done bit" (L2313-2317) but the status table (L3170-3180) has no such bit:
+# the card sets it in the first reserved bit (L3174 "7~9 Reserved"), so the loop ends when homing has ended (AF1).
+MTS_NSTP = 7
 MTS_WAIT, MTS_PTB, MTS_JOG, MTS_ASTP, MTS_BLD, MTS_PRED, MTS_POSTD, MTS_GER = 10, 11, 15, 16, 17, 18, 19, 28
 MIO_ALM, MIO_PEL, MIO_MEL, MIO_ORG, MIO_EMG, MIO_EZ, MIO_INP, MIO_SVON = 0, 1, 2, 3, 4, 5, 6, 7
 MIO_SPEL, MIO_SMEL = 11, 12
@@ -213,6 +223,8 @@ class ApsController(DialectController):
         ERR_DeviceAlreadyInitialed while a card is open."""
         if self._card is not None:
             return ERR_DeviceAlreadyInitialed, 0
+        if card is None and not axis_parts:
+            card = self._machine_card()  # the machine a vendor program runs against (use_machine, issue 25.2)
         if card is None:
             axis_parts.setdefault("law", ApsServoLaw())
             axis_parts.setdefault("servo_period_s", 250e-6)
@@ -226,6 +238,8 @@ class ApsController(DialectController):
         self._el_mode = [0] * len(card)
         self._scope_init()  # sampling, trigger, interrupts (issue 10.3)
         self._gear = [dict(_GEAR_DEFAULTS) for _ in range(len(card))]
+        self._pt_init()     # point tables (AF5-AF12)
+        self._more_init()   # counters, watchdog, VAO, board parameters (AF13-AF21)
         return ERR_NoError, 1
 
     def APS_close(self) -> int:
@@ -234,6 +248,7 @@ class ApsController(DialectController):
             return ERR_DeviceNotInitial
         for sid in getattr(self, "_int_subs", []):  # the interrupt watches go with the card (issue 10.3)
             self._card.remove_event(sid)
+        self._more_close()  # the watchdog's timer goes with the card
         self._card = None
         return ERR_NoError
 
@@ -1168,15 +1183,15 @@ class _ApsScope:
         """``APS_set_trigger_param(Board_ID, Param_No, Param_Val)``: TGR_LCMPx_SRC / TGR_TCMPx_SRC (axis n = its
         encoder, TGR_SRC_COMMAND + n its command position; V76), TGR_TCMPx_DIR (0 negative, 1 positive, 2 both),
         TGR_TRG_EN (bit x: TRGx on), TGR_TRGx_SRC (TRG_SRC_* bits, V77), TGR_TRGx_PWD (x 100 ns, 1..10^7),
-        TGR_TRGx_LOGIC (0 active high, 1 active low), TGR_TRGx_TGL (0 pulse, 1 level toggle). The timer (TIMR_*)
-        is not simulated (ERR_FunctionNotAvailable). PCI-8254 (4 axes): TRG0-1 only."""
+        TGR_TRGx_LOGIC (0 active high, 1 active low), TGR_TRGx_TGL (0 pulse, 1 level toggle), the timer TIMR_ITV /
+        TIMR_DIR / TIMR_RING_EN / TIMR_EN (APS_get_timer_counter, AF15). PCI-8254 (4 axes): TRG0-1 only."""
         if not self._board(Board_ID):
             return self._bad()
         p, v = _num(Param_No), _num(Param_Val)
-        if p in (TIMR_ITV, TIMR_DIR, TIMR_RING_EN, TIMR_EN):
-            return ERR_FunctionNotAvailable
         if p not in self._tgr or v is None or v != int(v):
             return ERR_ParametersInvalid
+        if p in (TIMR_ITV, TIMR_DIR, TIMR_RING_EN, TIMR_EN):
+            return self._timer_param(int(p), int(v))
         p, v = int(p), int(v)
         n_trg = 2 if len(self._card) == 4 else 4
         if p <= TGR_TCMP1_SRC:
@@ -1430,9 +1445,16 @@ class _ApsScope:
         return ERR_NoError
 
 
-for _name, _fn in list(vars(_ApsScope).items()):  # the block's functions are ApsController methods
-    if callable(_fn) and not _name.startswith("__"):
-        setattr(ApsController, _name, _fn)
+for _mixin in (_ApsScope, _ApsPointTable, _ApsMore):  # the blocks' functions are ApsController methods
+    for _name, _fn in list(vars(_mixin).items()):
+        if callable(_fn) and not _name.startswith("__"):
+            setattr(ApsController, _name, _fn)
+
+#: Functions the simulation cannot carry out: they return the vendor's error code (issue 25.3).
+UNSUPPORTED = {
+    "APS_pt_set_trans_inp": "the card's interpolation has no in-position transition (its seven modes, L3085-3143): "
+                            "ERR_FunctionNotAvailable, the table keeps its mode (AF8)",
+}
 
 
 _default = ApsController()
@@ -1444,8 +1466,22 @@ def Sleep(ms: float):
     return _default.Sleep(ms)
 
 
+def use_machine(machine) -> None:
+    """The simulated machine a vendor program's ``APS_initial`` opens (a Card or a factory; None forgets it):
+    :meth:`~servobench.dialects._controller.DialectController.use_machine` of the default controller."""
+    _default.use_machine(machine)
+
+
+def vao_output(ctrl: int) -> dict:
+    """Simulation helper: what PWM ``ctrl`` (0..1) of the open card outputs now (:meth:`ApsController.vao_output`)."""
+    return _default.vao_output(ctrl)
+
+
 # The vendor's names (return codes, PRA_* parameter numbers, the other header constants, the APS_* functions) and
 # the simulation helpers; numpy and the package internals stay out of ``from ... import *`` and completion.
-__all__ = ["ApsController", "APS_FUNCTIONS", "Sleep", "card", "controller", "run", "wait_until",
-           *sorted(n for n in dict(globals()) if n.split("_")[0] in ("ERR", "PRA", "MF", "STOP", "STR", "TGR")),
+__all__ = ["ApsController", "APS_FUNCTIONS", "Sleep", "card", "controller", "run", "wait_until", "use_machine",
+           "vao_output", "UNSUPPORTED", "PTSTS", "PTLINE", "PTA2CA", "PTA2CE", "PTHCA", "PTHCE", "PTDWL",
+           *sorted(n for n in dict(globals()) if n.split("_")[0] in (
+               "ERR", "PRA", "MF", "STOP", "STR", "TGR", "TIMR", "TRG", "MTS", "MIO", "PRB", "PRS", "VAO", "WDT",
+               "ITP", "SAMP", "PT", "PTB")),
            *APS_FUNCTIONS]

@@ -8,12 +8,15 @@
 //   bit 4 DIR   1 positive / 0 negative, the last motion's direction kept after the stop (L3218)
 //   bit 5 MDN   motion done: no profile and no homing sequence (also after an abnormal stop, L3229-3231)
 //   bit 6 HMV   a homing sequence runs
+//   bit 7 NSTP  not stopped: the complement of MDN, in the first reserved bit (L3174); the manual's home example
+//               waits `while ((msts >> MTS_NSTP) & 1)` for "motion done" (L2313-2317) but its status table
+//               has no such bit (decision AF1)
 //   bit 10 WAIT a move issued with MF_WAIT waits for APS_move_trigger (L3669-3720)
 //   bit 15 JOG  a jog sequence runs (JOG-ON on, or its step/delay/stop still running)
 //   bit 16 ASTP abnormal stop: the card recorded a stop cause; cleared when the next motion starts (L3652)
 //   bit 18 PRED / 19 POSTD  pre-/post-distance event of the point-to-point move (L3284-3292, cleared at the next start)
 //   bit 28 GER  slave of a gear (the card's gear mode)
-//   PTB (11) and BLD (17) are 0: point tables and blending are not simulated (V43).
+//   PTB (11) and BLD (17): set by the interpolation group's view (card_group_adlink.hpp; AF4, V118).
 // Motion I/O status APS_motion_io_status (MIO, L3611-3631):
 //   bit 0 ALM, 1 PEL, 2 MEL (inputs as triggered, polarity applied), 3 ORG (home switch), 4 EMG (card-wide),
 //   5 EZ (0: the index mark is an instant, not a level; V44), 6 INP (servo on, at rest, |E| <= the band; V46),
@@ -31,7 +34,7 @@
 namespace servobench::machine {
 
 // Bit numbers of the motion status word (MSTS).
-enum class ApsMsts : int { CSTP = 0, VM = 1, ACC = 2, DEC = 3, DIR = 4, MDN = 5, HMV = 6, WAIT = 10, PTB = 11,
+enum class ApsMsts : int { CSTP = 0, VM = 1, ACC = 2, DEC = 3, DIR = 4, MDN = 5, HMV = 6, NSTP = 7, WAIT = 10, PTB = 11,
                            JOG = 15, ASTP = 16, BLD = 17, PRED = 18, POSTD = 19, GER = 28 };
 // Bit numbers of the motion I/O status word (MIO).
 enum class ApsMio : int { ALM = 0, PEL = 1, MEL = 2, ORG = 3, EMG = 4, EZ = 5, INP = 6, SVON = 7, SPEL = 11,

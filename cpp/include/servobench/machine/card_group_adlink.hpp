@@ -30,7 +30,9 @@ class AdlinkGroup final : public CardGroup {
  public:
   // array: the axis array (card axes, 0-based; the first is the reference axis); start: their profile positions
   // (pulse); period_s: the card's motion cycle, s.
-  AdlinkGroup(const std::vector<std::size_t>& array, double period_s, const std::vector<double>& start);
+  // buffer_size: pending moves (10, decision C40; a point table: 50, L3796); point_table: MTS PTB while it moves.
+  AdlinkGroup(const std::vector<std::size_t>& array, double period_s, const std::vector<double>& start,
+              double buffer_size = 10, bool point_table = false);
   motion::AdlinkInterpolator& interp() { return interp_; }
   const motion::AdlinkInterpolator& interp() const { return interp_; }
   const std::vector<std::size_t>& array() const { return array_; }
@@ -45,6 +47,7 @@ class AdlinkGroup final : public CardGroup {
   void set_waiting(bool w) { waiting_ = w; }
   // More than one move runs now (a blend or an abort-blend transition): MTS BLD (V118).
   bool blending() const { return interp_.running_moves() > 1; }
+  bool point_table() const { return point_table_; }  // an APS_pt_* table: MTS PTB, not MDN, while it runs (L3656)
 
  private:
   static std::vector<std::size_t> sorted(std::vector<std::size_t> a);
@@ -52,6 +55,7 @@ class AdlinkGroup final : public CardGroup {
   std::vector<std::size_t> slot_of_;  // axes() index k -> array index
   motion::AdlinkInterpolator interp_;
   bool waiting_ = false;
+  bool point_table_ = false;
 };
 
 // One APS interpolation command (APS_line, APS_arc2_ca, ...).
@@ -64,6 +68,8 @@ struct AdlinkGroupMove {
   double vm = 0.0;                               // the _v form's Vm (0 = PRA_VM)
   std::optional<motion::AdlinkPtpParams> all;    // the _all form's speeds
   bool wait = false;                             // Option bit 8 (MF_WAIT)
+  double buffer_size = 10;                       // pending moves of a group this move hosts (point table: 50)
+  bool point_table = false;                      // hosted for an APS_pt_* point table (MTS PTB)
 };
 
 // Starts or buffers an interpolation on the card. Refused (CardCommandRefused, nothing changed) when an axis of

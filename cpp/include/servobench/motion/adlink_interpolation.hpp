@@ -19,6 +19,8 @@
 //    In 5-7 the previous move finishes its own profile while the new one runs: the position is the sum of both
 //    displacements (decision C42), so the path is smoothed and the end point exact. Modes 1-3 flush the pending
 //    moves (L3087).
+//  - Dwell (point table, APS_pt_dwell L3838): a move of Kind::Dwell holds the position dwell_s seconds; it is
+//    always buffered (starts when the previous moves have ended) and the next move starts when it ends.
 //  - stop_move (decelerate at the reference SD_DEC, flush) and emg_stop (halt at once, flush), L2570-2580.
 // Units: the manual's, pulse (UF = 1), pulse/s, pulse/s^2; one step() = one motion cycle (1 ms, L1633-1647).
 #pragma once
@@ -46,7 +48,7 @@ enum class BlendMode {
 // What a move describes; resolved into a SpaceSegment from its start point when it starts (relative
 // coordinates from the reference point: its start, or in an abort mode the position at the abort).
 struct AdlinkMoveSpec {
-  enum class Kind { Line, Arc2Ca, Arc2Ce, Arc3Ca, Arc3Ce, SpiralCa, SpiralCe };
+  enum class Kind { Line, Arc2Ca, Arc2Ce, Arc3Ca, Arc3Ce, SpiralCa, SpiralCe, Dwell };
   Kind kind = Kind::Line;
   bool relative = false;   // target and centre relative to the reference point
   SpacePoint target{};     // line / ce end point
@@ -55,6 +57,7 @@ struct AdlinkMoveSpec {
   double angle_deg = 0.0;  // ca forms
   int dir = 0;             // ce forms
   double height = 0.0, final_radius = 0.0;  // spiral_ca
+  double dwell_s = 0.0;    // Dwell: how long the position is held, s (> 0)
   SpaceSegment build(const SpacePoint& start, const SpacePoint& ref, int dim) const;
 };
 
@@ -104,6 +107,7 @@ class AdlinkInterpolator {
     Profile prof;     // path length s (pulse) over ticks
     double t0;        // start, ticks
     AdlinkLimits lim; // per tick
+    bool dwell = false;
   };
   struct Pending {
     AdlinkMoveSpec spec;
@@ -114,6 +118,7 @@ class AdlinkInterpolator {
     AdlinkLimits lim;
     double arrival;     // ticks
     SpacePoint ref{};   // AbortStop: the position at the abort
+    double dwell_ticks = 0.0;  // > 0: a dwell
   };
   double trigger_time(const Pending& p) const;
   void start_pending(double t0);

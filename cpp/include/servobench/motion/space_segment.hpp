@@ -34,6 +34,8 @@ class SpaceSegment {
 
   // A line from start to end in the first `dim` axes (2..6).
   static SpaceSegment line(const SpacePoint& start, const SpacePoint& end, int dim);
+  // A segment of zero length that stays at `start` (a point-table dwell, ADLINK APS_pt_dwell L3838).
+  static SpaceSegment hold(const SpacePoint& start, int dim);
   // 2-D arcs (dim 2): centre absolute; angle in degrees (non-zero, |angle| <= 360000), + = CCW.
   static SpaceSegment arc2_ca(const SpacePoint& start, const SpacePoint& center, double angle_deg);
   static SpaceSegment arc2_ce(const SpacePoint& start, const SpacePoint& center, const SpacePoint& end, int dir);

@@ -1,0 +1,428 @@
+"""More ADLINK functions of :class:`~servobench.dialects.aps.ApsController` (mixed in; issue 25.3, decisions
+AF13-AF24): the ``*_multi`` stops and ``APS_vel_all`` (L2566-2584), the position and counter reads (L2056-2099),
+the compare timer counter (L3363-3378), the watchdog (L4025-4084), the VAO (velocity -> PWM power) tables
+(L3436-3542), the board parameters and the drive control mode (L1498, L1623, L3520-3533), and the digital
+outputs the point table and the watchdog write (APS_read_d_output / APS_write_d_output of the APS library).
+
+Units: pulse, pulse/s, pulse/s^2; the watchdog's time-out in 100 ms (L4070); VAO powers in the table's unit
+(mode 1: duty in 0.05 %, modes 2-3: Hz; L3489-3495).
+"""
+
+from __future__ import annotations
+
+import math
+
+ERR_NoError, ERR_DeviceNotInitial, ERR_ParametersInvalid, ERR_FunctionNotAvailable = 0, -4, -10, -13
+
+# Board parameters (L1623, Table 4-4 L3527-3533).
+PRS_EMG_LOGIC = 0x00          # EMG input logic, 0 not inverse / 1 inverse (L1623)
+PRB_EMG_LOGIC = PRS_EMG_LOGIC
+PRB_PWM0_MAP_DO, PRB_PWM1_MAP_DO, PRB_PWM2_MAP_DO, PRB_PWM3_MAP_DO = 0x110, 0x111, 0x112, 0x113
+# VAO parameters (L3504-3512): N = table 0..7.
+VAO_TABLE_OUTPUT_TYPE, VAO_TABLE_INPUT_TYPE, VAO_TABLE_PWM_CONFIG, VAO_TABLE_SRC = 0x00, 0x01, 0x10, 0x20
+VAO_TABLE_PWM_Config = VAO_TABLE_PWM_CONFIG  # the manual's spelling (L3462)
+# Watchdog action bits (L4072-4074).
+WDT_ACTION_SERVO_OFF, WDT_ACTION_DO_OFF, WDT_ACTION_PWM_OFF = 0x1, 0x2, 0x4
+_WDT_UNIT_S = 0.1             # time_out unit, s ("10*100 ms = 1 sec", L4070)
+_VAO_LIMITS = {1: (0, 2000), 2: (3, 50e6), 3: (3, 50e6)}          # power range per output type (L3489-3495)
+_VAO_CONFIG = {1: (3, 50e6), 2: (20, 335544320), 3: (1, 2000)}    # VAO_TABLE_PWM_Config (L3462-3474, L3508)
+
+
+def _num(v):
+    try:
+        x = float(v)
+    except (TypeError, ValueError):
+        return None
+    return x if math.isfinite(x) else None
+
+
+def _int(v):
+    x = _num(v)
+    return int(x) if x is not None and x == int(x) else None
+
+
+class _ApsMore:
+    """The functions of this module's docstring (mixed into ApsController)."""
+
+    def _more_init(self):
+        self._board_prm = {PRS_EMG_LOGIC: 0, **{p: -1 for p in range(PRB_PWM0_MAP_DO, PRB_PWM3_MAP_DO + 1)}}
+        self._do_word = 0
+        self._timer = {"value": 0, "since": self._card.tick}
+        self._wdt = {"period": 0, "action": 0, "deadline": None, "sub": None, "fired": False}
+        self._vao_prm = {}
+        for n in range(8):
+            self._vao_prm.update({VAO_TABLE_OUTPUT_TYPE + 2 * n: 1, VAO_TABLE_INPUT_TYPE + 2 * n: 0,
+                                  VAO_TABLE_PWM_CONFIG + n: 100, VAO_TABLE_SRC + n: 0x01})
+        self._vao_tables: dict[int, tuple] = {}
+        self._vao_table_of = [0, 0]      # active table of VAO controllers 0..1
+        self._vao_on = [False, False]    # APS_start_vao
+        self._tgr.update({0x20: 1, 0x21: 0, 0x22: 0, 0x23: 0})   # TIMR_ITV, TIMR_DIR, TIMR_RING_EN, TIMR_EN
+
+    def _more_close(self):
+        sub = self._wdt["sub"] if hasattr(self, "_wdt") else None
+        if sub is not None:
+            self._card.remove_event(sub)
+
+    # -- stops and velocity (L2566-2584) ---------------------------------------------------------------------
+    def _multi(self, Dimension, Axis_ID_Array, stop) -> int:
+        if self._card is None:
+            return ERR_DeviceNotInitial
+        d = _int(Dimension)
+        try:
+            ids = [self._axis(a) for a in list(Axis_ID_Array)[: d or 0]]
+        except TypeError:
+            return ERR_ParametersInvalid
+        if d is None or not 1 <= d <= len(self._card) or len(ids) != d or None in ids:
+            return ERR_ParametersInvalid
+        rtn = ERR_NoError
+        for i in ids:                    # one call: no card time passes between the axes (the same tick)
+            r = stop(i)
+            rtn = rtn if r == ERR_NoError else r
+        return rtn
+
+    def APS_stop_move_multi(self, Dimension, Axis_ID_Array) -> int:
+        """``APS_stop_move_multi(I32 Dimension, I32 *Axis_ID_Array)`` (L2578): :func:`APS_stop_move` on the first
+        Dimension axes in the same servo tick (each decelerates at its PRA_SD_DEC)."""
+        return self._multi(Dimension, Axis_ID_Array, self.APS_stop_move)
+
+    def APS_emg_stop_multi(self, Dimension, Axis_ID_Array) -> int:
+        """``APS_emg_stop_multi(I32 Dimension, I32 *Axis_ID_Array)`` (L2580): :func:`APS_emg_stop` (immediate) on
+        the first Dimension axes in the same servo tick."""
+        return self._multi(Dimension, Axis_ID_Array, self.APS_emg_stop)
+
+    def APS_vel_all(self, Axis_ID, Option, Vs, Vm, Ve, Acc, Dec, SFac, Wait=None) -> int:
+        """``APS_vel_all(Axis_ID, Option, F64 Vs, F64 Vm, F64 Ve, F64 Acc, F64 Dec, F64 SFac, ASYNCALL *Wait)``
+        (L2572): a velocity move at ``Vm`` pulse/s (Option 0 positive, 1 negative, as APS_vel, V50) from ``Vs``
+        with ``Acc``/``Dec`` pulse/s^2 and S-factor ``SFac``; the axis parameters are not changed. ``Ve`` (the end
+        speed of a move that never ends) is checked (0..1e9) and unused (AF13)."""
+        i = self._axis(Axis_ID)
+        vals = [_num(x) for x in (Vs, Vm, Ve, Acc, Dec, SFac)]
+        if i is None or None in vals or Option not in (0, 1) or Wait not in (None, 0):
+            return self._bad()
+        vs, vm, ve, acc, dec, sf = vals
+        if not 0 < vm <= 1e9 or not 0 <= vs <= vm or not 0 <= ve <= 1e9 or not 0 < acc <= 1e12 \
+                or not 0 < dec <= 1e12 or not 0 <= sf <= 1:
+            return ERR_ParametersInvalid
+        self._release_limits(i)
+        return self._do(self._card.move_velocity, i, -vm if Option else vm,
+                        self._params(i, vs=vs, vm=vm, acc=acc, dec=dec, sf=sf))
+
+    # -- positions and counters (L2056-2099; unit factor 1: coordinates = motor pulses, AF14) -------------------
+    def APS_get_command_f(self, Axis_ID):
+        """``APS_get_command_f(I32 Axis_ID, F64 *Command)`` -> ``(rtn, command position)``, pulse, F64 (L2066)."""
+        i = self._axis(Axis_ID)
+        return (self._bad(), 0.0) if i is None else (ERR_NoError, float(self._card.profile_pos(i)))
+
+    def APS_set_command(self, Axis_ID, Command) -> int:
+        """``APS_set_command(I32 Axis_ID, I32 Command)`` (L2084): sets the command position, at rest only; the
+        feedback position moves with it so the following error is kept (closed loop, AF14)."""
+        i = self._axis(Axis_ID)
+        p = _num(Command)
+        if i is None or p is None or p != int(p) or abs(p) > 2147483647:
+            return self._bad()
+        c = self._card
+        self._release_modes(i)
+        return self._do(c.set_actual_pos, i, float(c.actual_pos(i)) + (p - float(c.profile_pos(i))))
+
+    def APS_get_encoder(self, Axis_ID):
+        """``APS_get_encoder(I32 Axis_ID, I32 *Encoder)`` -> ``(rtn, encoder counter)`` (L2094): the feedback
+        counter in motor pulses, 32-bit (= APS_get_position with unit factor 1, AF14)."""
+        i = self._axis(Axis_ID)
+        return (self._bad(), 0) if i is None else (ERR_NoError, _reg32(self._card.actual_pos(i)))
+
+    def APS_get_command_counter(self, Axis_ID):
+        """``APS_get_command_counter(I32 Axis_ID, I32 *Counter)`` -> ``(rtn, command counter)`` (L2095): the
+        command output in motor pulses, 32-bit (= APS_get_command with unit factor 1, AF14)."""
+        i = self._axis(Axis_ID)
+        return (self._bad(), 0) if i is None else (ERR_NoError, _reg32(self._card.profile_pos(i)))
+
+    # -- compare timer (L3363-3378; TIMR_* of APS_set_trigger_param) ---------------------------------------------
+    def _timer_now(self) -> int:
+        """The timer counter now: while TIMR_EN, +-1 every TIMR_ITV servo ticks (TIMR_DIR 0 up, 1 down; AF15),
+        wrapping at 32 bits with TIMR_RING_EN, else held at the I32 limits."""
+        t, g = self._timer, self._tgr
+        if not g.get(0x23, 0):
+            return t["value"]
+        n = (self._card.tick - t["since"]) // max(1, g.get(0x20, 1))
+        v = t["value"] + (-n if g.get(0x21, 0) else n)
+        if g.get(0x22, 0):
+            return _reg32(v)
+        return max(-2**31, min(2**31 - 1, v))
+
+    def _timer_param(self, p: int, v: int) -> int:
+        """APS_set_trigger_param for TIMR_ITV (0x20, servo ticks 1..2^31-1), TIMR_DIR (0x21, 0 up / 1 down),
+        TIMR_RING_EN (0x22, 0/1), TIMR_EN (0x23, 0/1)."""
+        ok = 1 <= v <= 2**31 - 1 if p == 0x20 else v in (0, 1)
+        if not ok:
+            return ERR_ParametersInvalid
+        self._timer = {"value": self._timer_now(), "since": self._card.tick}
+        self._tgr[p] = v
+        return ERR_NoError
+
+    def APS_get_timer_counter(self, Board_ID, TmrCh):
+        """``APS_get_timer_counter(I32 Board_ID, I32 TmrCh, I32 *Cnt)`` -> ``(rtn, Cnt)`` (L3376): the compare
+        timer (TmrCh 0, the card's one timer)."""
+        if not self._board(Board_ID):
+            return self._bad(), 0
+        return (ERR_NoError, self._timer_now()) if _num(TmrCh) == 0 else (ERR_ParametersInvalid, 0)
+
+    def APS_set_timer_counter(self, Board_ID, TmrCh, Cnt) -> int:
+        """``APS_set_timer_counter(I32 Board_ID, I32 TmrCh, I32 Cnt)`` (L3378): sets the timer counter (I32)."""
+        if not self._board(Board_ID):
+            return self._bad()
+        v = _int(Cnt)
+        if _num(TmrCh) != 0 or v is None or not -2**31 <= v < 2**31:
+            return ERR_ParametersInvalid
+        self._timer = {"value": v, "since": self._card.tick}
+        return ERR_NoError
+
+    # -- watchdog (L4025-4084) ----------------------------------------------------------------------------------
+    def _wdt_ok(self, Board_ID, TimerNo):
+        if not self._board(Board_ID):
+            return self._bad()
+        return None if _num(TimerNo) == 0 else ERR_ParametersInvalid  # "Only timer 0" (L4069)
+
+    def _wdt_arm(self):
+        c, w = self._card, self._wdt
+        if w["sub"] is not None:
+            c.remove_event(w["sub"])
+            w["sub"] = None
+        if w["period"] > 0:
+            w["deadline"] = c.tick + int(round(w["period"] * _WDT_UNIT_S / c.servo_period_s))
+            ticks_ms = max(1, int(round(1e-3 / c.servo_period_s)))   # checked every motion cycle (1 ms, AF16)
+            w["sub"] = c.on_event(self._wdt_check, timer_ticks=ticks_ms)
+        else:
+            w["deadline"] = None
+
+    def _wdt_check(self, card, _fired):
+        w = self._wdt
+        if w["deadline"] is None or card.tick < w["deadline"]:
+            return
+        w["deadline"], w["fired"] = None, True
+        sub, w["sub"] = w["sub"], None
+        card.remove_event(sub)
+        act = w["action"]
+        if act & WDT_ACTION_SERVO_OFF:
+            for i in range(len(card)):
+                self._stop_modes(i, abrupt=True)
+                if card.servo_on(i):
+                    card.axis_off(i)
+        if act & WDT_ACTION_DO_OFF:
+            self._do_word = 0
+        if act & WDT_ACTION_PWM_OFF:
+            self._vao_on = [False, False]
+
+    def APS_wdt_set_action_event(self, Board_ID, TimerNo, EventByBit) -> int:
+        """``APS_wdt_set_action_event(board_id, timer_no, EventByBit)`` (L4037, L4071-4074): what the time-out
+        does, bit 0 servo off (every axis), bit 1 digital outputs off, bit 2 PWM (VAO) outputs off."""
+        bad = self._wdt_ok(Board_ID, TimerNo)
+        v = _int(EventByBit)
+        if bad is not None or v is None or not 0 <= v <= 7:
+            return bad if bad is not None else ERR_ParametersInvalid
+        self._wdt["action"] = v
+        return ERR_NoError
+
+    def APS_wdt_get_action_event(self, Board_ID, TimerNo):
+        """``APS_wdt_get_action_event(board_id, timer_no, &EventByBit)`` -> ``(rtn, EventByBit)`` (L4051)."""
+        bad = self._wdt_ok(Board_ID, TimerNo)
+        return (bad, 0) if bad is not None else (ERR_NoError, self._wdt["action"])
+
+    def APS_wdt_start(self, Board_ID, TimerNo, TimeOut) -> int:
+        """``APS_wdt_start(board_id, timer_no, time_out)`` (L4041, L4053): starts the watchdog with a time-out of
+        ``time_out`` x 100 ms of card time (10 -> 1 s, L4070); 0 disables it. If the program does not call
+        APS_wdt_reset_counter within the time-out, the action event is carried out once (checked every 1 ms of
+        card time, AF16) and the watchdog stops."""
+        bad = self._wdt_ok(Board_ID, TimerNo)
+        v = _int(TimeOut)
+        if bad is not None or v is None or not 0 <= v <= 2**31 - 1:
+            return bad if bad is not None else ERR_ParametersInvalid
+        self._wdt["period"], self._wdt["fired"] = v, False
+        self._wdt_arm()
+        return ERR_NoError
+
+    def APS_wdt_get_timeout_period(self, Board_ID, TimerNo):
+        """``APS_wdt_get_timeout_period(board_id, timer_no, &time_out)`` -> ``(rtn, time_out)`` x 100 ms (L4043)."""
+        bad = self._wdt_ok(Board_ID, TimerNo)
+        return (bad, 0) if bad is not None else (ERR_NoError, self._wdt["period"])
+
+    def APS_wdt_reset_counter(self, Board_ID, TimerNo) -> int:
+        """``APS_wdt_reset_counter(board_id, timer_no)`` (L4045, L4058): restarts the time-out from now (a
+        watchdog that has fired or is off: ERR_FunctionNotAvailable)."""
+        bad = self._wdt_ok(Board_ID, TimerNo)
+        if bad is not None:
+            return bad
+        if self._wdt["deadline"] is None:
+            return ERR_FunctionNotAvailable
+        self._wdt["deadline"] = self._card.tick + int(round(self._wdt["period"] * _WDT_UNIT_S /
+                                                           self._card.servo_period_s))
+        return ERR_NoError
+
+    # -- digital outputs (APS library; what the point table and the watchdog write) ------------------------------
+    def _set_do_bit(self, ch: int, on: int) -> None:
+        self._do_word = (self._do_word | (1 << ch)) if on else (self._do_word & ~(1 << ch))
+
+    def APS_write_d_output(self, Board_ID, DO_Group, DO_Data) -> int:
+        """``APS_write_d_output(Board_ID, DO_Group, DO_Data)`` (APS library): the digital outputs DO0..7 (group 0)
+        as bits."""
+        if not self._board(Board_ID):
+            return self._bad()
+        v = _int(DO_Data)
+        if _num(DO_Group) != 0 or v is None or not 0 <= v <= 0xFF:
+            return ERR_ParametersInvalid
+        self._do_word = v
+        return ERR_NoError
+
+    def APS_read_d_output(self, Board_ID, DO_Group):
+        """``APS_read_d_output(Board_ID, DO_Group, &DO_Data)`` -> ``(rtn, DO0..7 as bits)`` (APS library), with the
+        point tables' instruction commands of the moves started so far carried out."""
+        if not self._board(Board_ID):
+            return self._bad(), 0
+        if _num(DO_Group) != 0:
+            return ERR_ParametersInvalid, 0
+        for t in self._pt.values():
+            self._pt_sync(t)
+        return ERR_NoError, self._do_word
+
+    # -- board parameters and drive mode (L1498, L1623, L3520-3533) ---------------------------------------------
+    def APS_set_board_param(self, Board_ID, BOD_Param_No, BOD_Param) -> int:
+        """``APS_set_board_param(Board_ID, BOD_Param_No, BOD_Param)`` (L3520): PRB_PWMx_MAP_DO (110h-113h): -1 no
+        mapping, else bits 0-7 the DO channel and bit 8 the logic (1: DO on enables PWMx, 0: DO on disables it,
+        L3530); PRS_EMG_LOGIC (00h, L1623): only 0 (the simulated EMG input is the active state; inverting its
+        wiring is not simulated, AF17)."""
+        if not self._board(Board_ID):
+            return self._bad()
+        p, v = _int(BOD_Param_No), _int(BOD_Param)
+        if p not in self._board_prm or v is None:
+            return ERR_ParametersInvalid
+        if p == PRS_EMG_LOGIC:
+            return ERR_NoError if v == 0 else (ERR_FunctionNotAvailable if v == 1 else ERR_ParametersInvalid)
+        if v != -1 and not (0 <= v <= 0x1FF and (v & 0xFF) <= 7):
+            return ERR_ParametersInvalid
+        self._board_prm[p] = v
+        return ERR_NoError
+
+    def APS_get_board_param(self, Board_ID, BOD_Param_No):
+        """``APS_get_board_param(Board_ID, BOD_Param_No, &BOD_Param)`` -> ``(rtn, BOD_Param)`` (APS library)."""
+        if not self._board(Board_ID):
+            return self._bad(), 0
+        p = _int(BOD_Param_No)
+        return (ERR_NoError, self._board_prm[p]) if p in self._board_prm else (ERR_ParametersInvalid, 0)
+
+    def APS_get_eep_curr_drv_ctrl_mode(self, Board_ID):
+        """``APS_get_eep_curr_drv_ctrl_mode(Board_ID, &ModeInBit)`` -> ``(rtn, ModeInBit)`` (L1498): bit k = 1:
+        axis k is driven by the analog (+-10 V) command, 0: by pulses (L1493-1498). The simulated axes are driven
+        by the servo law's voltage: every bit 1 (AF18)."""
+        if not self._board(Board_ID):
+            return self._bad(), 0
+        return ERR_NoError, (1 << len(self._card)) - 1
+
+    # -- VAO: velocity -> PWM power tables (L3436-3542) ----------------------------------------------------------
+    def APS_set_vao_param(self, Board_ID, Param_No, Param_Val) -> int:
+        """``APS_set_vao_param(Board_ID, Param_No, Param_Val)`` (L3461, L3504-3512) for table N = 0..7:
+        VAO_TABLE_OUTPUT_TYPE + 2N (1 PWM duty, 2 frequency at fixed width, 3 frequency at fixed duty),
+        VAO_TABLE_INPUT_TYPE + 2N (0 feedback speed: not simulated, ERR_FunctionNotAvailable, AF19; 1 command
+        speed; set it to 1 as the manual's examples do, L3537-3539), VAO_TABLE_PWM_Config + N (mode 1: Hz
+        3..50e6; 2: ns 20..335544320; 3: duty x 0.05 %, 1..2000),
+        VAO_TABLE_SRC + N (axis bits)."""
+        if not self._board(Board_ID):
+            return self._bad()
+        p, v = _int(Param_No), _int(Param_Val)
+        if p not in self._vao_prm or v is None:
+            return ERR_ParametersInvalid
+        if p < 0x10:
+            if p % 2 == 0:
+                ok = v in (1, 2, 3)
+            else:
+                if v == 0:
+                    return ERR_FunctionNotAvailable
+                ok = v == 1
+        elif p < 0x20:
+            lo, hi = _VAO_CONFIG[self._vao_prm[VAO_TABLE_OUTPUT_TYPE + 2 * (p - 0x10)]]
+            ok = lo <= v <= hi
+        else:
+            ok = 1 <= v < (1 << len(self._card))
+        if not ok:
+            return ERR_ParametersInvalid
+        self._vao_prm[p] = v
+        return ERR_NoError
+
+    def APS_set_vao_table(self, Board_ID, Table_No, MinVelocity, VelInterval, TotalPoints, MappingDataArray) -> int:
+        """``APS_set_vao_table(Board_ID, Table_No, I32 MinVelocity, I32 VelInterval, I32 TotalPoints, I32
+        *MappingDataArray)`` (L3540; arguments of the APS library, AF20): table 0..7 of 1..32 points, point k at
+        the composite speed MinVelocity + k * VelInterval pulse/s with power MappingDataArray[k] (the output type's
+        unit and range, L3489-3495)."""
+        if not self._board(Board_ID):
+            return self._bad()
+        n, vmin, dv, cnt = _int(Table_No), _int(MinVelocity), _int(VelInterval), _int(TotalPoints)
+        if n not in range(8) or vmin is None or dv is None or cnt is None or vmin < 0 or dv <= 0 \
+                or not 1 <= cnt <= 32:
+            return ERR_ParametersInvalid
+        try:
+            powers = [_num(x) for x in list(MappingDataArray)[:cnt]]
+        except TypeError:
+            return ERR_ParametersInvalid
+        lo, hi = _VAO_LIMITS[self._vao_prm[VAO_TABLE_OUTPUT_TYPE + 2 * n]]
+        if len(powers) != cnt or None in powers or any(not lo <= x <= hi for x in powers):
+            return ERR_ParametersInvalid
+        self._vao_tables[n] = (float(vmin), float(dv), powers)
+        return ERR_NoError
+
+    def _vao_select(self, ctrl: int, table: int) -> None:
+        self._vao_table_of[ctrl] = table
+
+    def APS_switch_vao_table(self, Board_ID, Table_No) -> int:
+        """``APS_switch_vao_table(Board_ID, Table_No)`` (L3540): VAO controller 0 uses table 0..7 from now (the
+        library call names no controller; controller 1 switches through APS_pt_ext_set_table_no, AF21)."""
+        if not self._board(Board_ID):
+            return self._bad()
+        n = _int(Table_No)
+        if n not in range(8):
+            return ERR_ParametersInvalid
+        self._vao_select(0, n)
+        return ERR_NoError
+
+    def APS_start_vao(self, Board_ID, Output_Ch, Enable) -> int:
+        """``APS_start_vao(Board_ID, Output_Ch, Enable)`` (L3501): turns the PWM output of VAO controller
+        ``Output_Ch`` (0..1 = PWM0..1, AF21) on (1) or off (0); its active table must be set
+        (ERR_FunctionNotAvailable otherwise)."""
+        if not self._board(Board_ID):
+            return self._bad()
+        ch, en = _int(Output_Ch), _int(Enable)
+        if ch not in (0, 1) or en not in (0, 1):
+            return ERR_ParametersInvalid
+        n = self._vao_table_of[ch]
+        if en and (n not in self._vao_tables or self._vao_prm[VAO_TABLE_INPUT_TYPE + 2 * n] != 1):
+            return ERR_FunctionNotAvailable  # no table, or a table on the feedback speed (AF19)
+        self._vao_on[ch] = bool(en)
+        return ERR_NoError
+
+    def vao_output(self, ctrl: int) -> dict:
+        """Simulation helper (not in the manual): what PWM ``ctrl`` (0..1) outputs now: ``on`` (APS_start_vao,
+        not switched off by the watchdog, and its PRB_PWMx_MAP_DO digital output in the enabling state),
+        ``table``, ``speed`` (the composite command speed of the table's VAO_TABLE_SRC axes, pulse/s) and
+        ``power`` interpolated linearly between the table's points (L3489), held at its first/last point outside
+        them, in the output type's unit (``unit``: "0.05 %" or "Hz"); ``power`` is 0 when off."""
+        if ctrl not in (0, 1):
+            raise ValueError(f"vao_output.ctrl = {ctrl!r} must be 0 or 1 (the VAO controllers)")
+        for t in self._pt.values():
+            self._pt_sync(t)
+        n = self._vao_table_of[ctrl]
+        c = self._card
+        src = self._vao_prm[VAO_TABLE_SRC + n]
+        speed = math.sqrt(sum((c.profile_vel(a) / c.servo_period_s) ** 2 for a in range(len(c)) if src >> a & 1))
+        m = self._board_prm[PRB_PWM0_MAP_DO + ctrl]
+        do_ok = m == -1 or (bool(self._do_word >> (m & 0xFF) & 1) == bool(m >> 8 & 1))
+        on = self._vao_on[ctrl] and do_ok and n in self._vao_tables and self._vao_prm[VAO_TABLE_INPUT_TYPE + 2 * n] == 1
+        power = 0.0
+        if on:
+            vmin, dv, pw = self._vao_tables[n]
+            x = (speed - vmin) / dv
+            k = min(max(int(math.floor(x)), 0), len(pw) - 1)
+            power = pw[-1] if k >= len(pw) - 1 else pw[k] + (pw[k + 1] - pw[k]) * min(max(x - k, 0.0), 1.0)
+        unit = "0.05 %" if self._vao_prm[VAO_TABLE_OUTPUT_TYPE + 2 * n] == 1 else "Hz"
+        return {"on": on, "table": n, "speed": speed, "power": power, "unit": unit}
+
+
+def _reg32(v: float) -> int:
+    x = int(round(v))
+    return ((x + 2**31) % 2**32) - 2**31
