@@ -271,7 +271,8 @@ class GtsConfigMixin:
         self._card.stage_acc(a, dec[1 if abrupt else 0] * self._ms ** 2)
         self._card.stage_smooth_stop(a)
         self._card.update(1 << a)
-        self._card.stage_acc(a, acc)  # the move's acc again for the next move (staged, committed by its update)
+        if acc > 0:  # the move's acc again for the next move (staged, committed by its update)
+            self._card.stage_acc(a, acc)
 
     def _stop_io_hook(self, card) -> None:
         st = self._cfg()
