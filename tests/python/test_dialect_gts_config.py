@@ -143,6 +143,11 @@ def test_get_trap_prm_and_get_jog_prm_read_what_was_set(gts):
     rtn, trap = gts.GT_GetTrapPrm(1)
     assert rtn == 0 and (trap.acc, trap.dec, trap.velStart, trap.smoothTime) == (pytest.approx(0.5),
                                                                                  pytest.approx(0.5), 0, 0)
+    # GUC L2898-2908 (the combined-motion example): GT_GetTrapPrm, change acc and dec, GT_SetTrapPrm with the struct
+    trap.acc, trap.dec = 0.25, 0.25
+    assert gts.GT_SetTrapPrm(1, trap) == 0 and gts.GT_GetTrapPrm(1)[1].acc == pytest.approx(0.25)
+    trap.velStart = 1
+    assert gts.GT_SetTrapPrm(1, trap) == 7                                  # velStart not simulated (V61)
     # iDEABOX Ex 4-1 L726-730: GT_GetJogPrm, change acc, GT_SetJogPrm with the struct
     assert gts.GT_PrfJog(2) == 0
     rtn, prm = gts.GT_GetJogPrm(2)

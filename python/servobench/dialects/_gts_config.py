@@ -308,7 +308,7 @@ class GtsConfigMixin:
     # -- read-backs of the profile parameters ------------------------------------------------------------------
     def GT_GetTrapPrm(self, profile):
         """(rtn, TTrapPrm): acc = dec = the staged acceleration (pulse/ms^2; one acceleration for both ramps,
-        decision V61), velStart 0, smoothTime 0 (GUC basic library; named L2040)."""
+        decision V61), velStart 0, smoothTime 0 (GUC basic library; the combined-motion example L2900 reads it)."""
         if not self._ok_axis(profile):
             return self._code(), None
         a = int(profile) - 1

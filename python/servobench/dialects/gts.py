@@ -253,8 +253,11 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
         return self._do(self._card.set_mode, int(profile) - 1, "t_curve")
 
     def GT_SetTrapPrm(self, profile, acc, dec=None, velStart=0, smoothTime=0) -> int:
-        """TTrapPrm acc (and dec), pulse/ms^2 > 0. The card's T-curve has one acceleration for both ramps:
-        dec is taken equal to acc (decision V61); velStart and smoothTime must be 0."""
+        """TTrapPrm acc (and dec), pulse/ms^2 > 0, as scalars or a :class:`TTrapPrm` as ``acc`` (GUC L2898-2908
+        reads it with GT_GetTrapPrm, changes acc/dec and writes it back). The card's T-curve has one acceleration
+        for both ramps: dec is taken equal to acc (decision V61); velStart and smoothTime must be 0."""
+        if isinstance(acc, TTrapPrm):
+            acc, dec, velStart, smoothTime = acc.acc, acc.dec, acc.velStart, acc.smoothTime
         if not self._axis_ok(profile):
             return self._bad()
         if not _open_in(acc, 0, math.inf) or (dec is not None and not _open_in(dec, 0, math.inf)) \
