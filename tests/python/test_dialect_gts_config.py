@@ -1,6 +1,6 @@
 """GUC-ECAT system configuration (seed 002 §3.1 L185-305), the iDEABOX velocity filters (seed 003 §4.5 L3773-3801),
 the read-backs, the EtherCAT / configuration-file calls of the iDEABOX examples and the ``...Mx`` forms, each
-checked against the manuals (``Lnnn`` lines of ../shared/seeds/00[23]_*.txt; decisions GS1-GS15). Units pulse, ms,
+checked against the manuals (``Lnnn`` lines of ../shared/seeds/00[23]_*.txt; decisions GS1-GS18). Units pulse, ms,
 pulse/ms, pulse/ms^2; servo period 200 us (test_card_modes.TS)."""
 
 import numpy as np

@@ -6,7 +6,7 @@ EtherCAT / configuration-file calls of the iDEABOX examples (L611, L625) and the
 Behaviour stays the Card's (alarm enable, limit enable and polarity, stops); what the card does not hold (stop
 decelerations, stop inputs, the filter windows, the GPI polarity) is kept here per controller and applied at the
 reads and at ``GT_Stop``, through a per-tick hook (:meth:`_tick_hook`) only while something needs it. Units:
-pulse, ms, pulse/ms, pulse/ms^2; axes from 1. Decisions GS1-GS15 (docs/decisions.md, Session 10)."""
+pulse, ms, pulse/ms, pulse/ms^2; axes from 1. Decisions GS1-GS18 (docs/decisions.md, Session 10)."""
 
 from __future__ import annotations
 

@@ -10,7 +10,9 @@ already open. A read call returns a tuple ``(rtn, value...)``.
 
 This module only translates: the behaviour (the FIFOs, look-ahead, PVT and cam engines, safety) is the Card's
 (``Card.set_crd_prm``, ``Card.crd``, ``Card.set_pvt``, ``Card.set_follow``, ...). The card's servo tick is the
-controller's clock; times in ms are converted with its servo period.
+controller's clock; times in ms are converted with its servo period. The system configuration, velocity filters, read-backs and
+``...Mx`` forms are in ``_gts_config.py``, the GUC motion program (threads on the card) in ``_gts_program.py``
+(mixins of :class:`GtsController`); :data:`UNSUPPORTED` names the calls the simulation cannot carry out.
 
 Quick use (GUC L802-843, the hexagon)::
 
