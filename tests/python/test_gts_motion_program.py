@@ -163,3 +163,16 @@ def test_reset_stops_the_threads_and_keeps_the_program(prog):
     prog.run(3)
     assert prog.GT_Reset() == 0
     assert prog.GT_GetThreadSts(0)[1].run == 0 and prog.GT_GetFunId("waiter") == (0, 2)
+
+
+def test_motion_program_calls_cost_no_bus_time_in_program_mode(prog):
+    # GS13: a motion program runs on the controller (L2109: "without communication with PC"): its GT calls are
+    # not vendor calls over the bus, so in program mode they neither advance the card nor count as calls
+    clock = prog.card.set_clock("program")
+    _, axis = prog.GT_GetVarId("mover", "axis")
+    assert prog.GT_Bind(0, 1, 0) == 0 and prog.GT_SetVarValue(0, axis, [2, 500], 2) == 0
+    assert prog.GT_RunThread(0) == 0
+    calls, tick = clock.stats().calls, prog.card.tick
+    prog.run_ms(100)                                     # the thread polls GT_GetSts every tick meanwhile
+    assert clock.stats().calls == calls and prog.card.tick == tick + tick_of_ms(100)
+    assert prog.GT_GetThreadSts(0)[1].run == 0 and prog.GT_GetPrfPos(2) == (0, 500.0)
