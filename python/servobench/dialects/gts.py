@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -890,6 +891,13 @@ UNSUPPORTED: dict[str, str] = {**UNSUPPORTED_CONFIG, **UNSUPPORTED_PROGRAM}
 
 _default = GtsController()
 GTS_FUNCTIONS: tuple[str, ...] = export_functions(globals(), _default, "GT_")
+
+
+def __getattr__(name: str) -> Any:
+    """Only for type checkers (PEP 562): the ``GT_*`` functions, ``use_machine`` ... are generated into this module
+    by :func:`export_functions`, so mypy cannot list them; a program's ``from servobench.dialects.gts import
+    GT_Open`` type-checks through this hook. At run time a missing name is an AttributeError as usual."""
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def set_inputs(bits: int) -> None:
