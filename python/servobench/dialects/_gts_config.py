@@ -17,9 +17,9 @@ from dataclasses import dataclass
 from .._core import CardCommandRefused
 from ._controller import GOOGOL_COMMAND_ERROR, GOOGOL_COMM_ERROR, GOOGOL_PARAMETER_ERROR, GOOGOL_SUCCESS
 
-# Digital input types of GT_GetDi / GT_SetStopIo (GUC L253-266, gts.h): MC_GPI 4, MC_ARRIVE 5 (GTS-400-PX).
+# Digital input types of GT_GetDi / GT_SetStopIo (GUC L253-266): MC_GPI 4, MC_ARRIVE 5 (GTS-400-PX, L259).
 MC_LIMIT_POSITIVE, MC_LIMIT_NEGATIVE, MC_ALARM, MC_HOME, MC_GPI, MC_ARRIVE = 0, 1, 2, 3, 4, 5
-# GT_FollowSwitchNowEx methods (iDEABOX L5421-5425).
+# GT_FollowSwitchNowEx methods (iDEABOX L5427-5429).
 FOLLOW_SWITCH_SEGMENT, FOLLOW_SWITCH_TABLE = 1, 2
 _FILTER_EXP_MAX = 7  # window 2^n, n 0..7 (iDEABOX L3795-3797, L5462)
 
