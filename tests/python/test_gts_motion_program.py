@@ -20,7 +20,7 @@ def mover(axis, target):
     GT_SetTrapPrm(axis, 1)
     GT_SetVel(axis, 10)
     GT_SetPos(axis, target)
-    GT_Update(1 << (axis - 1))
+    GT_UpdateMx(1, 1 << (axis - 1))
     while True:
         rtn, sts = GT_GetSts(axis)
         if not sts & 0x400:

@@ -109,29 +109,23 @@ class GtsProgramMixin:
 
     # -- the program's namespace: the GT library on the card --------------------------------------------------
     def _library(self) -> dict:
+        """The GT functions as the program calls them: the controller's, recording each return code as the calling
+        thread's ``error``. They run inside a servo tick (:meth:`_step_threads`), so they cost no bus time."""
         lib = {}
-        cls = type(self)
-        for name in dir(cls):
-            if not name.startswith("GT_") or name in ("GT_Open", "GT_Close"):
-                continue
-            fn = getattr(cls, name)
-            raw = getattr(fn, "__wrapped__", fn)
-            returns_code = getattr(raw, "__annotations__", {}).get("return") in ("int", int)
-            lib[name] = self._on_card(raw, returns_code)
+        for name in dir(type(self)):
+            if name.startswith("GT_") and name not in ("GT_Open", "GT_Close"):
+                lib[name] = self._on_card(name)
         return lib
 
-    def _on_card(self, raw, returns_code):
+    def _on_card(self, name):
         def call(*args, **kwargs):
-            try:
-                out = raw(self, *args, **kwargs)
-            except Exception:  # noqa: BLE001 -- the vendor contract: a code, never an exception
-                out = GOOGOL_PARAMETER_ERROR if returns_code else (GOOGOL_PARAMETER_ERROR, 0)
+            out = getattr(self, name)(*args, **kwargs)  # the vendor wrapper: a code, never an exception
             th = self._mp()["current"]
             if th is not None:
-                th.sts.error = int(out if returns_code else out[0])
+                th.sts.error = int(out if isinstance(out, int) else out[0])
             return out
 
-        call.__name__ = raw.__name__
+        call.__name__ = name
         return call
 
     # -- compile and download ----------------------------------------------------------------------------------
@@ -261,7 +255,19 @@ class GtsProgramMixin:
         return GOOGOL_SUCCESS
 
     def _step_threads(self, _card) -> None:
-        """One servo tick of the running threads, in thread order (the card's scheduler)."""
+        """One servo tick of the running threads, in thread order (the card's scheduler). Their GT calls count as
+        made inside the tick (the clock's nesting depth, as calls from an event callback): no bus time (GS13)."""
+        local = getattr(getattr(self._card, "_clock", None), "_local", None)
+        depth = getattr(local, "depth", 0)
+        if local is not None:
+            local.depth = depth + 1
+        try:
+            self._step_each()
+        finally:
+            if local is not None:
+                local.depth = depth
+
+    def _step_each(self) -> None:
         st = self._mp()
         for th in st["threads"]:
             if th.gen is None or th.paused:
