@@ -165,6 +165,9 @@ NOT_RESULTS = {
     "GeController": "a vendor-dialect controller (live)", "GtsController": "a vendor-dialect controller (live)",
     "ApsController": "a vendor-dialect controller (live)", "TAxis": "a vendor struct (input)",
     "TWatchBuffer": "a vendor struct", "TLookAheadMsg": "a vendor struct", "TCrdPrm": "a vendor struct (input)",
+    "TTrapPrm": "a vendor struct (input / read-back)", "TJogPrmExt": "a vendor struct (input / read-back)",
+    "TVarInfo": "a vendor struct (motion-program variable id)", "TThreadSts": "a vendor struct (thread status)",
+    "TCompileInfo": "a vendor struct (compile result)",
 }
 
 
