@@ -167,6 +167,9 @@ NOT_RESULTS = {
     "TWatchBuffer": "a vendor struct", "TLookAheadMsg": "a vendor struct", "TCrdPrm": "a vendor struct (input)",
     **{n: "an ADLINK point-table struct (input)" for n in ("PTLINE", "PTA2CA", "PTA2CE", "PTHCA", "PTHCE", "PTDWL")},
     "PTSTS": "an ADLINK point-table status struct (one reading, APS_get_pt_status)",
+    "TTrapPrm": "a vendor struct (input / read-back)", "TJogPrmExt": "a vendor struct (input / read-back)",
+    "TVarInfo": "a vendor struct (motion-program variable id)", "TThreadSts": "a vendor struct (thread status)",
+    "TCompileInfo": "a vendor struct (compile result)",
 }
 
 

@@ -10,7 +10,9 @@ already open. A read call returns a tuple ``(rtn, value...)``.
 
 This module only translates: the behaviour (the FIFOs, look-ahead, PVT and cam engines, safety) is the Card's
 (``Card.set_crd_prm``, ``Card.crd``, ``Card.set_pvt``, ``Card.set_follow``, ...). The card's servo tick is the
-controller's clock; times in ms are converted with its servo period.
+controller's clock; times in ms are converted with its servo period. The system configuration, velocity filters, read-backs and
+``...Mx`` forms are in ``_gts_config.py``, the GUC motion program (threads on the card) in ``_gts_program.py``
+(mixins of :class:`GtsController`); :data:`UNSUPPORTED` names the calls the simulation cannot carry out.
 
 Quick use (GUC L802-843, the hexagon)::
 
@@ -29,6 +31,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -36,6 +39,9 @@ from .. import _core
 from .._core import CardCommandRefused, LookAheadParams, MotionCommandRefused
 from ..card import Card
 from ._controller import DialectController, export_functions, register32, wrap32  # noqa: F401
+from ._gts_config import (FOLLOW_SWITCH_SEGMENT, FOLLOW_SWITCH_TABLE, MC_ARRIVE, UNSUPPORTED_CONFIG,  # noqa: F401
+                          GtsConfigMixin, TJogPrmExt, TTrapPrm, attach_mx_forms)
+from ._gts_program import UNSUPPORTED_PROGRAM, GtsProgramMixin, TCompileInfo, TThreadSts, TVarInfo  # noqa: F401
 
 # Return codes (GUC Tab 2-1 L165-180; iDEABOX Table 3-1 L333-361).
 RTN_SUCCESS = 0
@@ -99,7 +105,7 @@ class TCrdPrm:
     originPos: list = field(default_factory=lambda: [0] * 8)
 
 
-class GtsController(DialectController):
+class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
     """One GUC-ECAT / iDEABOX program's view of a :class:`~servobench.Card` (its advanced functions)."""
 
     def __init__(self):
@@ -159,10 +165,13 @@ class GtsController(DialectController):
 
     # -- system and basic axis calls used by the examples ---------------------------------------------------
     def GT_Open(self, card: Card | None = None, **axis_parts) -> int:
-        """Opens the controller: ``card`` or a new 8-axis :class:`~servobench.Card` from ``axis_parts`` (GUC
-        8 axes, L250). A second open without close returns -6 (GUC L176)."""
+        """Opens the controller: ``card``, else the machine :meth:`use_machine` set (issue 25.2), else a new
+        8-axis :class:`~servobench.Card` from ``axis_parts`` (GUC 8 axes, L250). A second open without close
+        returns -6 (GUC L176)."""
         if self._card is not None:
             return RTN_OPEN_ERROR
+        if card is None and not axis_parts:
+            card = self._machine_card()
         self._card = card if card is not None else Card(8, **axis_parts)
         self._la = {}
         return RTN_SUCCESS
@@ -171,12 +180,18 @@ class GtsController(DialectController):
         """Closes the controller."""
         if self._card is None:
             return RTN_COMM_ERROR
+        self._close_program()
+        for name in list(self._cfg()["hooks"]):
+            self._tick_hook(name, None)
         self._card = None
         return RTN_SUCCESS
 
     def GT_Reset(self) -> int:
-        """Resets the controller (card reset: no crd, PVT or cam, drives off)."""
+        """Resets the controller (card reset: no crd, PVT or cam, drives off); the motion-program threads stop
+        (the downloaded program stays until power-off, GUC L2245)."""
         self._la = {}
+        if self._card is not None:
+            self._close_program()
         return self._do(lambda: self._card.reset())
 
     def GT_AxisOn(self, axis) -> int:
@@ -223,6 +238,9 @@ class GtsController(DialectController):
         """(rtn, profile velocity, pulse/ms)."""
         if not self._axis_ok(profile):
             return self._bad(), 0.0
+        exp = self._cfg()["prf_exp"].get(int(profile), 0)
+        if exp:  # GT_SetAxisPrfVelFilter: the mean over the last 2^exp ticks (iDEABOX L3801; GS9)
+            return self._get(lambda: self._filtered_vel(int(profile) - 1, 0, exp))
         return self._get(lambda: self._card.profile_vel(int(profile) - 1) / self._ms)
 
     def GT_GetEncPos(self, axis, count=1):
@@ -238,8 +256,11 @@ class GtsController(DialectController):
         return self._do(self._card.set_mode, int(profile) - 1, "t_curve")
 
     def GT_SetTrapPrm(self, profile, acc, dec=None, velStart=0, smoothTime=0) -> int:
-        """TTrapPrm acc (and dec), pulse/ms^2 > 0. The card's T-curve has one acceleration for both ramps:
-        dec is taken equal to acc (decision V61); velStart and smoothTime must be 0."""
+        """TTrapPrm acc (and dec), pulse/ms^2 > 0, as scalars or a :class:`TTrapPrm` as ``acc`` (GUC L2898-2908
+        reads it with GT_GetTrapPrm, changes acc/dec and writes it back). The card's T-curve has one acceleration
+        for both ramps: dec is taken equal to acc (decision V61); velStart and smoothTime must be 0."""
+        if isinstance(acc, TTrapPrm):
+            acc, dec, velStart, smoothTime = acc.acc, acc.dec, acc.velStart, acc.smoothTime
         if not self._axis_ok(profile):
             return self._bad()
         if not _open_in(acc, 0, math.inf) or (dec is not None and not _open_in(dec, 0, math.inf)) \
@@ -254,8 +275,18 @@ class GtsController(DialectController):
         return self._do(self._card.set_mode, int(profile) - 1, "jog")
 
     def GT_SetJogPrm(self, profile, acc, dec=None, smooth=0) -> int:
-        """TJogPrm acc (dec taken equal, V61), pulse/ms^2 > 0."""
-        return self.GT_SetTrapPrm(profile, acc, dec)
+        """Jog acc (dec taken equal, V61), pulse/ms^2 > 0, smooth 0..1 (recorded, GS17): scalars or a
+        :class:`TJogPrmExt` as ``acc`` (iDEABOX Ex 4-1 L726-730 passes the struct)."""
+        if isinstance(acc, TJogPrmExt):
+            acc, dec, smooth = acc.acc, (acc.dec or None), acc.smooth
+        if not self._axis_ok(profile):
+            return self._bad()
+        if _num(smooth) is None or not 0 <= float(smooth) <= 1:
+            return RTN_PARAMETER_ERROR
+        rtn = self.GT_SetTrapPrm(profile, acc, dec)
+        if rtn == RTN_SUCCESS:
+            self._cfg()["jog"][int(profile)] = float(smooth)
+        return rtn
 
     def GT_SetVel(self, profile, vel) -> int:
         """Target velocity, pulse/ms (signed in jog mode) (staged)."""
@@ -295,12 +326,11 @@ class GtsController(DialectController):
             for a in range(len(self._card)):
                 if not mask & (1 << a):
                     continue
-                if option & (1 << a) or self._card.mode(a) not in ("t_curve", "s_curve", "jog"):
+                if self._card.mode(a) not in ("t_curve", "s_curve", "jog"):
                     if self._card.group_of(a) < 0:
                         self._card.abrupt_stop(a)
-                elif self._card.moving(a):
-                    self._card.stage_smooth_stop(a)
-                    self._card.update(1 << a)
+                elif option & (1 << a) or self._card.moving(a):
+                    self._stop_axis(a, bool(option & (1 << a)))  # GT_SetStopDec decelerations (GS7)
 
         return self._do(stop)
 
@@ -590,7 +620,7 @@ class GtsController(DialectController):
             pair = self._card.crd(int(crd))
             for k in (0, 1):
                 pair.fifo(k).set_stop_dec(float(decSmoothStop), float(decAbruptStop))
-            self._stop_dec = (float(decSmoothStop), float(decAbruptStop))
+            self._cfg()["crd_stop_dec"][int(crd)] = (float(decSmoothStop), float(decAbruptStop))
 
         return self._do(set_)
 
@@ -667,6 +697,16 @@ class GtsController(DialectController):
         return self._table(tableId, lambda: _core.pvt_table_continuous(
             pos=a(pPos, count), vel=a(pVel, count), percent=a(pPercent, count), vel_max=a(pVelMax, count),
             acc=a(pAcc, count), dec=a(pDec, count), time_begin_ms=float(timeBegin)))
+
+    def GT_PvtTableContinuousEx(self, tableId, count, pPos, pVel, pAccPercent, pDecPercent, pVelMax, pAcc, pDec,
+                                timeBegin=0) -> int:
+        """Continuous-Ex data: as GT_PvtTableContinuous with separate S shares (0..100) for the acceleration and
+        the deceleration phase of each segment (iDEABOX L6745-6803)."""
+        a = self._arr
+        return self._table(tableId, lambda: _core.pvt_table_continuous_ex(
+            pos=a(pPos, count), vel=a(pVel, count), acc_percent=a(pAccPercent, count),
+            dec_percent=a(pDecPercent, count), vel_max=a(pVelMax, count), acc=a(pAcc, count), dec=a(pDec, count),
+            time_begin_ms=float(timeBegin)))
 
     def GT_PvtContinuousCalculate(self, count, pPos, pVel, pPercent, pVelMax, pAcc, pDec):
         """(rtn, point times ms, time[0] = 0) of Continuous data (GUC L1230; iDEABOX L6222-6251)."""
@@ -844,12 +884,31 @@ class GtsController(DialectController):
         return self._do(self._card.follow_switch, int(mask))
 
 
+attach_mx_forms(GtsController)
+
+#: Calls the simulation cannot carry out: defined, they return the manual's code; name -> reason.
+UNSUPPORTED: dict[str, str] = {**UNSUPPORTED_CONFIG, **UNSUPPORTED_PROGRAM}
+
 _default = GtsController()
 GTS_FUNCTIONS: tuple[str, ...] = export_functions(globals(), _default, "GT_")
 
-__all__ = ["GtsController", "GTS_FUNCTIONS", "TCrdPrm", "RTN_SUCCESS", "RTN_COMMAND_ERROR", "RTN_LICENSE_ERROR",
+
+def __getattr__(name: str) -> Any:
+    """Only for type checkers (PEP 562): the ``GT_*`` functions, ``use_machine`` ... are generated into this module
+    by :func:`export_functions`, so mypy cannot list them; a program's ``from servobench.dialects.gts import
+    GT_Open`` type-checks through this hook. At run time a missing name is an AttributeError as usual."""
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def set_inputs(bits: int) -> None:
+    """The simulated levels of the general inputs GPI 1..16 of the open card (:meth:`GtsController.set_inputs`)."""
+    _default.set_inputs(bits)
+
+__all__ = ["GtsController", "GTS_FUNCTIONS", "TCrdPrm", "TTrapPrm", "TJogPrmExt", "TVarInfo", "TThreadSts",
+           "TCompileInfo", "UNSUPPORTED", "MC_ARRIVE", "FOLLOW_SWITCH_SEGMENT", "FOLLOW_SWITCH_TABLE", "use_machine",
+           "RTN_SUCCESS", "RTN_COMMAND_ERROR", "RTN_LICENSE_ERROR",
            "RTN_PARAMETER_ERROR", "RTN_COMM_ERROR", "RTN_OPEN_ERROR", "MC_ENABLE", "MC_CLEAR", "MC_GPO",
            "MC_LIMIT_POSITIVE", "MC_LIMIT_NEGATIVE", "MC_ALARM", "MC_HOME", "MC_GPI", "FOLLOW_SEGMENT_NORMAL",
            "FOLLOW_SEGMENT_EVEN", "FOLLOW_SEGMENT_STOP", "FOLLOW_SEGMENT_CONTINUE", "FOLLOW_MASTER_ENCODER",
            "FOLLOW_MASTER_PROFILE", "FOLLOW_MASTER_AXIS", "FOLLOW_EVENT_START", "FOLLOW_EVENT_PASS", "card",
-           "controller", "run", "wait_until", *GTS_FUNCTIONS]
+           "controller", "run", "wait_until", "set_inputs", *GTS_FUNCTIONS]
