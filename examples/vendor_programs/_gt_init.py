@@ -101,13 +101,15 @@ INDEX_AT = 2000                             # the encoder's index mark, counts i
 
 
 def machine() -> list:
-    """Two GT-400-SV cards in one PC (card 1 is the program's): axes 1-2 analog velocity-mode servo drives, axes
+    """Two GT-400-SV cards in one PC (card 1 is the program's): axes 1-2 analog speed-mode servo drives, axes
     3-4 pulse-input drives; encoders of axes 1-4 wired to count against the motors (as InputCfg corrects); axis 1
     has its Home switch from 30000 to 40000 pulse and an 8000-count encoder with its index at count 2000."""
     rad = 2 * math.pi / COUNTS_PER_REV
     cards = []
     for _ in range(2):
-        analog = dict(law=sb.GtServoLaw(), drive=sb.VelocityDrive(), servo_period_s=200e-6,
+        # a stiff speed-mode servo drive: 300 rad/s per volt, speed loop 1 N*m*s/rad, 200 N*m/rad
+        drive = sb.VelocityDrive(speed_per_volt_rad_s=300.0, kp_nms=1.0, ki_nm_per_rad=200.0)
+        analog = dict(law=sb.GtServoLaw(), drive=drive, servo_period_s=200e-6,
                       encoder=sb.Encoder(counts_per_rev=COUNTS_PER_REV, index_angle_rad=INDEX_AT * rad))
         axes = [sb.Axis(switches=sb.Switches(home_min_rad=HOME_EDGE * rad, home_max_rad=HOME_END * rad), **analog),
                 sb.Axis(**analog),

@@ -130,6 +130,22 @@ def test_exinpt_exopt_sample_9_1_and_example_4_5(gt_on):
     assert gt_on.GT_ExInpt()[0] == 7                     # a machine that gives no 16-bit word: 7, no exception
 
 
+def test_exinpt_exi8_stops_the_coordinated_motion_tv45_l3395_3403(gt_on):
+    # L3395-3403: "If EXI8 is at logic 1, stop the motion in coordinate system": GT_StpMtn, a smooth stop
+    gt_map_mm(gt_on, pulse_per_mm=100)
+    card_io.of(gt_on.card).inputs = lambda t: 0x100 if t >= 0.2 else 0
+    assert [gt_on.GT_SetSynVel(0.05), gt_on.GT_SetSynAcc(0.001), gt_on.GT_LnXY(100, 0)] == [0] * 3
+    while True:
+        gt_on.run(10)
+        rtn, ex_inp = gt_on.GT_ExInpt()
+        if ex_inp & 0x100:
+            assert gt_on.GT_StpMtn() == 0
+            break
+    assert gt_on.card.tick == 1000                       # 0.2 s
+    gt_on.run(2000)
+    assert gt_on.GT_GetCrdSts()[1] & 1 and gt_on.card.profile_pos(0) < 10000   # stopped short of 100 mm
+
+
 def test_set_time_records_the_pulse_width_l5042_5050(g):
     assert g.GT_SetTime(65535) == 0 and card_io.of(g.card).pulse_width_s == pytest.approx(16e-3)
     assert g.GT_SetTime(0) == 0 and card_io.of(g.card).pulse_width_s == 0
@@ -146,12 +162,14 @@ def test_get_adc_set_adc_chn_l3498_3520_l4585_4595(g):
     rtn, adc = g.GT_GetAdc(3)
     assert adc == 2048 + 512                             # -2.5 V, as the sample decodes (L3511): -10 (d-2048)/2048
     assert -10 * (adc - 2048) / 2048 == -2.5
+    io.adc_volts[1] = -5.0
+    assert g.GT_GetAdc(2) == (0, 3072)                   # TV32 (L3517-3519): code 3072 -> -5 V
     assert g.GT_GetAdc(8) == (0, 0)
     g.card.run(5)                                        # 1 ms: still before the next 770 Hz conversion (1.3 ms)
     assert g.GT_GetAdc(8) == (0, 0)
     g.card.run(2)
     assert g.GT_GetAdc(8) == (0, 2047)                   # +10 V: the top code
-    assert g.GT_SetAdcChn(2) == 0 and g.GT_GetAdc(3) == (7, 0) and g.GT_GetAdc(2)[1] == 1024
+    assert g.GT_SetAdcChn(2) == 0 and g.GT_GetAdc(3) == (7, 0) and g.GT_GetAdc(2)[1] == 3072
     assert g.GT_SetAdcChn(9) == 7 and g.GT_SetAdcChn(0) == 7 and g.GT_GetAdc(0) == (7, 0)
     assert g.GT_Reset() == 0 and g.GT_GetAdc(8)[0] == 0  # reset: all 8 channels again
 
@@ -191,24 +209,35 @@ def test_aux_encoder_index_capture_l3727_3759_l4733_4747(g):
 
 
 # -- coordinated motion ---------------------------------------------------------------------------------------------
-@pytest.mark.parametrize("name, plane, end, mid", [
-    ("GT_ArcXYP", (0, 1), (20, 0), (10, 10)),    # CCW from +Z: from (0,0) to (20,0) about (10,0) passes (10,-10)?
-    ("GT_ArcYZP", (1, 2), (20, 0), (10, 10)),
-    ("GT_ArcZXP", (2, 0), (20, 0), (10, 10)),
-])
-def test_arc_by_end_point_and_radius_l1753_1757(gt_on, name, plane, end, mid):
-    # a half circle of radius 10 from the origin to (20, 0) in the plane, direction -1 (CW seen from the third
-    # axis) passes (10, +10); the arc runs at once in immediate mode and ends at the end point
-    gt_map_mm(gt_on, axes=(1, 2, 3), pulse_per_mm=100)
-    assert gt_on.GT_SetSynVel(0.02) == 0 and gt_on.GT_SetSynAcc(0.0002) == 0
-    assert getattr(gt_on, name)(*end, 10, -1) == 0
-    run = gt_on.run(12000)
-    pos = np.c_[run[0].pos, run[1].pos, run[2].pos] / 100.0        # mm on x, y, z
-    i, j = plane
-    assert pos[-1, i] == pytest.approx(end[0], abs=1e-6) and pos[-1, j] == pytest.approx(end[1], abs=1e-6)
-    assert np.max(pos[:, j]) == pytest.approx(mid[1], abs=1e-3)     # through (10, 10): clockwise
-    assert np.allclose(np.hypot(pos[:, i] - 10, pos[:, j]), 10, atol=1e-6)
-    assert gt_on.GT_GetCrdSts()[1] & 1 == 0 or True
+def arc_p_run(g, call, plane):
+    """Runs an immediate arc by end point and radius on axes 1-3 (100 pulse/mm); returns the path, mm, in the
+    plane's two coordinates."""
+    gt_map_mm(g, axes=(1, 2, 3), pulse_per_mm=100)
+    assert g.GT_SetSynVel(0.02) == 0 and g.GT_SetSynAcc(0.0002) == 0
+    assert call() == 0
+    run = g.run(12000)
+    pos = np.c_[run[0].pos, run[1].pos, run[2].pos] / 100.0
+    return pos[:, plane[0]], pos[:, plane[1]]
+
+
+def check_half_circle_cw(u, v):
+    # from (0, 0) to (20, 0) with radius 10, direction -1 (CW seen from the third axis, L1793): through (10, +10)
+    # (the axes' command positions are whole pulses: 0.01 mm at 100 pulse/mm)
+    assert u[-1] == pytest.approx(20, abs=1e-9) and v[-1] == pytest.approx(0, abs=1e-9)
+    assert np.max(v) == pytest.approx(10, abs=0.01) and np.min(v) >= 0
+    assert np.allclose(np.hypot(u - 10, v), 10, atol=0.011)
+
+
+def test_arc_xyp_by_end_point_and_radius_l1753(gt_on):
+    check_half_circle_cw(*arc_p_run(gt_on, lambda: gt_on.GT_ArcXYP(20, 0, 10, -1), (0, 1)))
+
+
+def test_arc_yzp_by_end_point_and_radius_l1755(gt_on):
+    check_half_circle_cw(*arc_p_run(gt_on, lambda: gt_on.GT_ArcYZP(20, 0, 10, -1), (1, 2)))
+
+
+def test_arc_zxp_by_end_point_and_radius_l1757(gt_on):
+    check_half_circle_cw(*arc_p_run(gt_on, lambda: gt_on.GT_ArcZXP(20, 0, 10, -1), (2, 0)))
 
 
 def test_arc_return_codes_5_and_7_l406(gt_on):
@@ -234,41 +263,43 @@ def test_arc_yz_zx_centre_angle_l1754_1756(gt_on):
 def test_get_mtn_nm_counts_the_buffer_segments_l1971_1985(gt_on):
     gt_map_mm(gt_on, pulse_per_mm=100)
     assert gt_on.GT_GetMtnNm() == (0, 0)                 # immediate mode
-    assert [gt_on.GT_StrtList(), gt_on.GT_MvXY(1, 0, 0.05, 0.001)] == [0, 0]
+    assert [gt_on.GT_StrtList(), gt_on.GT_MvXY(5, 0, 0.05, 0.001)] == [0, 0]
     for x, y in ((10, 0), (10, 10), (0, 10)):
         assert gt_on.GT_LnXY(x, y) == 0
     assert [gt_on.GT_EndList(), gt_on.GT_StrtMtn()] == [0, 0]
     seen = []
-    while gt_on.GT_GetCrdSts()[1] & 1:
+    while True:
         gt_on.run(20)
         seen.append(gt_on.GT_GetMtnNm()[1])
+        if gt_on.GT_GetCrdSts()[1] & 1:                  # bit 0: 1 when the coordinated motion has finished
+            break
     assert seen[0] == 0                                  # the Mv line has no number (L1979)
     assert sorted(set(seen)) == [0, 1, 2, 3] and seen == sorted(seen) and seen[-1] == 3
     assert gt_on.GT_StrtList() == 0 and gt_on.GT_GetMtnNm() == (0, 0)
 
 
 def test_set_acc_lmt_lowers_the_corner_velocity_l1956_1966(gt_on):
-    def corner_speed(limit):
+    def axis_velocities(limit):
         g = GtController()
         assert g.GT_Open(sb.Card(4, law=LAW)) == 0
         for a in (1, 2):
             g.GT_Axis(a)
             g.GT_AxisOn()
             if limit is not None:
-                assert g.GT_SetAccLmt(limit) == 0
+                assert g.GT_SetAccLmt(limit) == 0            # before the mapping: kept and applied (GF10)
         gt_map_mm(g, pulse_per_mm=100)
         assert [g.GT_StrtList(), g.GT_MvXY(0, 0, 0.05, 0.0005), g.GT_LnXY(20, 0), g.GT_LnXY(20, 20),
                 g.GT_EndList(), g.GT_StrtMtn()] == [0] * 6
-        run = g.run(20000)
-        vx, vy = np.diff(run[0].pos), np.diff(run[1].pos)
-        return vx, vy
+        run = g.card.run(20000, signals=["prf_vel"])
+        return run[0].prf_vel, run[1].prf_vel             # pulse/ST
 
-    vx, vy = corner_speed(None)
-    vx_l, vy_l = corner_speed(0.2)
-    # a 90-degree joint: each axis changes its velocity by the joint speed; with AccLmt 0.2 pulse/ST^2 per axis
-    # the planner slows down there so that no axis exceeds it
-    assert np.max(np.abs(np.diff(vx_l))) <= 0.2 + 1e-6 and np.max(np.abs(np.diff(vy_l))) <= 0.2 + 1e-6
-    assert np.max(np.abs(np.diff(vx))) > 0.2
+    vx, vy = axis_velocities(None)
+    vx_l, vy_l = axis_velocities(0.2)
+    # a 90-degree joint at 5 pulse/ST: without a limit each axis changes its velocity there by the joint speed in
+    # one cycle; with AccLmt 0.2 pulse/ST^2 on each axis the vector velocity is lowered so that neither does
+    assert np.max(np.abs(np.diff(vx))) > 1 and np.max(np.abs(np.diff(vy))) > 1
+    assert np.max(np.abs(np.diff(vx_l))) <= 0.2 + 1e-9 and np.max(np.abs(np.diff(vy_l))) <= 0.2 + 1e-9
+    assert vx_l[-1] == vy_l[-1] == 0
     assert gt_on.GT_SetAccLmt(-1) == 7 and gt_on.GT_SetAccLmt(16385) == 7
 
 
@@ -277,13 +308,13 @@ def test_stp_mtn_keeps_the_breakpoint_and_restarts(gt_on):
     gt_map_mm(gt_on, pulse_per_mm=100)
     assert [gt_on.GT_StrtList(), gt_on.GT_MvXY(0, 0, 0.05, 0.001), gt_on.GT_LnXY(50, 0), gt_on.GT_EndList(),
             gt_on.GT_StrtMtn()] == [0] * 5
-    gt_on.run(2000)
+    gt_on.run(500)                                       # 50 mm at 0.05 mm/ST takes 1000 ST and more
     assert gt_on.GT_StpMtn() == 0
     gt_on.run(2000)
     rtn, brk = gt_on.GT_GetBrkPnt()
     assert rtn == 0 and 0 < brk[0] < 50 and gt_on.GT_GetCrdSts()[1] & 1
     assert gt_on.GT_StrtMtn() == 0
-    while gt_on.GT_GetCrdSts()[1] & 1 == 0:
+    while not gt_on.GT_GetCrdSts()[1] & 1:
         gt_on.run(100)
     assert gt_on.card.profile_pos(0) == 5000
 
@@ -318,10 +349,12 @@ def test_unhook_isr_restores_the_previous_routine_l5164_5182(gt_on):
 # -- registers that read back ---------------------------------------------------------------------------------
 def test_getters_read_back_the_staged_registers_l3694_4104(g):
     g.GT_Axis(2)
-    for setter, getter, value in (("GT_SetKi", "GT_GetKi", 12), ("GT_SetKd", "GT_GetKd", 345),
-                                  ("GT_SetKvff", "GT_GetKvff", 6), ("GT_SetKaff", "GT_GetKaff", 789),
-                                  ("GT_SetMtrBias", "GT_GetMtrBias", -20)):
-        assert getattr(g, setter)(value) == 0 and getattr(g, getter)() == (0, value)
+    assert g.GT_SetKi(12) == 0 and g.GT_GetKi() == (0, 12)
+    assert g.GT_SetKd(345) == 0 and g.GT_GetKd() == (0, 345)
+    assert g.GT_SetKvff(6) == 0 and g.GT_GetKvff() == (0, 6)
+    assert g.GT_SetKaff(789) == 0 and g.GT_GetKaff() == (0, 789)
+    assert g.GT_SetMtrBias(-20) == 0 and g.GT_GetMtrBias() == (0, -20)
+    assert g.card.axes[1].law.kd == LAW.kd                  # staged only: the active law changes at GT_Update
     assert g.GT_PrflS() == 0 and g.GT_SetJerk(0.001) == 0 and g.GT_GetJerk() == (0, 0.001)
     assert g.GT_SetMAcc(0.25) == 0 and g.GT_GetMAcc() == (0, 0.25)
     assert g.GT_SetRatio(-2.5) == 0 and g.GT_GetRatio() == (0, -2.5)
@@ -375,6 +408,6 @@ def test_unsupported_functions_return_1_with_the_reason(g):
         out = getattr(g, name)(0)
         assert (out[0] if isinstance(out, tuple) else out) == 1, name
         assert g.card.last_fault == "not_simulated"
-    assert gt.GT_BrkOn is not None and GtController().GT_SetLmt(0) == -1
+    assert g.GT_BrkOn() == 1 and GtController().GT_SetLmt(0) == -1
     assert GtController().GT_GetBgCommandResult() == (-1, 0)
     assert g.GT_HomeSense() == 1 and g.GT_SetBgCommandSet([], 0) == 1

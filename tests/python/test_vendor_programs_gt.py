@@ -33,7 +33,7 @@ def run_program(monkeypatch):
 
     def run(name: str, max_ticks: int = 2_000_000):
         program, init = load(name), load("_gt_init")
-        codes = []
+        codes, values = [], []
         for mod in (program, init):
             for attr in [a for a in vars(mod) if a.startswith("GT_")]:
                 fn = getattr(mod, attr)
@@ -45,6 +45,8 @@ def run_program(monkeypatch):
                         raise ProgramRanTooLong(f"{name}: still polling after {max_ticks} ticks ({_name})")
                     out = _fn(*args)
                     codes.append((_name, out if isinstance(out, int) else out[0]))
+                    if not isinstance(out, int):
+                        values.append((_name, out[1]))
                     return out
 
                 guarded.guard_of = fn
@@ -55,7 +57,7 @@ def run_program(monkeypatch):
             program.main()
         finally:
             gt.use_machine(None)
-        return cards, codes
+        return cards, codes, values
 
     yield run
     gt.GT_Close()
@@ -66,7 +68,7 @@ def snapshot(cards) -> list:
 
 
 def test_example_6_1_home_index_reaches_the_index_and_zeroes_it(run_program):
-    cards, codes = run_program("gt_home_index_6_1")
+    cards, codes, values = run_program("gt_home_index_6_1")
     first = snapshot(cards)
     init = load("_gt_init")
     # every call of Examples 3-3/3-4/3-6 and 6-1 returned 0: SwitchtoCardNo(1) found card 1, SetSmplTm(200) is its
@@ -83,12 +85,16 @@ def test_example_6_1_home_index_reaches_the_index_and_zeroes_it(run_program):
     gt.GT_Axis(1)
     assert gt.GT_GetPos() == (0, 0) and gt.card().profile_pos(0) == 0
     assert not gt.GT_GetSts()[1] & 0x400                             # not moving (bit 0 was cleared, L2079)
-    # the program zeroes as soon as the profile ends (L2080), with the axis still 82 pulse past the index (it was
-    # reversing from 4 pulse/ST); the loop then brings it onto the new zero, the Index mark
+    # the program zeroes as soon as the profile ends (L2080): the stiff axis stands on the Index mark then, and
+    # actual and target read 0 there; it stays
+    assert abs(cards[1].axes[0].feedback_pulse - idx) <= 1 and abs(gt.GT_GetAtlPos()[1]) <= 1
     gt.delay(500)
     rtn, atl = gt.GT_GetAtlPos()
     assert rtn == 0 and abs(atl) <= 1
     assert abs(cards[1].axes[0].feedback_pulse - idx) <= 1
+    # the captures the program read: Home at the switch's edge, Index at the mark, +-1 pulse (L2015)
+    capt = [v for name, v in values if name == "GT_GetCapt"]
+    assert len(capt) == 2 and abs(capt[0] - edge) <= 1 and abs(capt[1] - idx) <= 1
     # the other card of the PC was never commanded: its axes stand at 0, drives off
     assert all(cards[0].axes[k].feedback_pulse == 0 and not cards[0].servo_on(k) for k in range(4))
     # program mode: the polling loops ended after the simulated time the motion takes (30000 pulse at 4 pulse/ST
@@ -96,7 +102,7 @@ def test_example_6_1_home_index_reaches_the_index_and_zeroes_it(run_program):
     assert 7500 < cards[1].tick < 40000
     assert edge == 30000
     gt.GT_Close()
-    cards2, codes2 = run_program("gt_home_index_6_1")
+    cards2, codes2, _ = run_program("gt_home_index_6_1")
     assert snapshot(cards2) == first and codes2 == codes              # same program, same result, bit for bit
 
 
@@ -112,7 +118,7 @@ def follow_to_the_end(card):
 
 
 def test_example_4_7_breakpoint_changes_the_velocity_at_20000(run_program):
-    cards, codes = run_program("gt_breakpoint_4_7")
+    cards, codes, _ = run_program("gt_breakpoint_4_7")
     assert [c for c in codes if c[1] != 0] == []
     card = cards[1]
     at_end = snapshot(cards)
@@ -127,7 +133,7 @@ def test_example_4_7_breakpoint_changes_the_velocity_at_20000(run_program):
     assert gt.GT_GetSts()[1] & 0x4                                   # breakpoint triggered (L1263)
     assert card.profile_pos(0) == 50000 and abs(gt.GT_GetAtlPos()[1] - 50000) <= 100
     gt.GT_Close()
-    cards2, _ = run_program("gt_breakpoint_4_7")
+    cards2, _, _ = run_program("gt_breakpoint_4_7")
     assert snapshot(cards2) == at_end
     gt.GT_Axis(1)
     assert follow_to_the_end(cards2[1]) == (vel, pos)

@@ -737,12 +737,11 @@ class GtController(_GtSystem, DialectController):
         return RTN_SUCCESS, (n - 1) % 32767 + 1 if n > 0 else 0
 
     def _apply_acc_lmt(self):
-        lim = self._crd()["acc_lmt"]
         if self._card.group_info(2)["set_up"]:
             path = self._card.gt_path()
-            want = {f"axis_acc_{k + 1}": lim[k] for k in range(4)}
-            if any(getattr(path.setup, k) != v for k, v in want.items()):
-                path.setup = path.setup.replace(**want)
+            for k, lim in enumerate(self._crd()["acc_lmt"]):
+                if getattr(path.setup, f"axis_acc_{k + 1}") != lim:
+                    path.set_axis_acc(k + 1, lim)
 
     def GT_SetAccLmt(self, acc) -> int:
         """Acceleration limit of the current axis at the joints of a buffered path, pulse/ST^2, 0..16384 (0 = no
