@@ -109,7 +109,7 @@ def machine() -> list:
     for _ in range(2):
         # a stiff speed-mode servo drive: 300 rad/s per volt, speed loop 1 N*m*s/rad, 200 N*m/rad
         drive = sb.VelocityDrive(speed_per_volt_rad_s=300.0, kp_nms=1.0, ki_nm_per_rad=200.0)
-        analog = dict(law=sb.GtServoLaw(), drive=drive, servo_period_s=200e-6,
+        analog: dict = dict(law=sb.GtServoLaw(), drive=drive, servo_period_s=200e-6,
                       encoder=sb.Encoder(counts_per_rev=COUNTS_PER_REV, index_angle_rad=INDEX_AT * rad))
         axes = [sb.Axis(switches=sb.Switches(home_min_rad=HOME_EDGE * rad, home_max_rad=HOME_END * rad), **analog),
                 sb.Axis(**analog),

@@ -28,7 +28,7 @@ GT_HookCommand, GT_LmtSns, GT_LnXYZ, GT_Open = lib.GT_HookCommand, lib.GT_LmtSns
 GT_Reset, GT_SetSynAcc, GT_SetSynVel, GT_StepPulse = lib.GT_Reset, lib.GT_SetSynAcc, lib.GT_SetSynVel, lib.GT_StepPulse
 GT_StpMtn, GT_ZeroPos, delay = lib.GT_StpMtn, lib.GT_ZeroPos, lib.delay
 
-printed = []  # what main and the handler printed, for the test
+printed: list = []  # what main and the handler printed, for the test
 
 
 def error(rtn):

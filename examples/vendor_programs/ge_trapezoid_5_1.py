@@ -17,7 +17,7 @@ C -> Python changes (syntax only): the handler's ``char *command`` is a Python s
 from servobench.dialects.ge import (GT_AxisOn, GT_ClrSts, GT_HookCommand, GT_LmtSns, GT_Open, GT_PrflT, GT_Reset,
                                     GT_SetAcc, GT_SetKp, GT_SetPos, GT_SetVel, GT_Update, delay, use_machine)
 
-errors = []  # (command, error) the handler printed, for the test
+errors: list = []  # (command, error) the handler printed, for the test
 
 
 def error(rtn):

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import functools
 import math
+from typing import Any
 import threading
 
 from .. import _core, card_io
@@ -1908,6 +1909,13 @@ def delay(ms: float):
     """The manual's ``delay(ms)``: runs the open card for ``ms`` milliseconds (rounded to whole ticks)."""
     return _default.delay(ms)
 
+
+
+def __getattr__(name: str) -> Any:
+    """PEP 562 hook: the module's GT_* functions are made at import by export_functions (they exist as globals, so
+    this is never reached for them); it tells a type checker that ``from servobench.dialects.ge import GT_Axis``
+    names a module attribute. Any other name: AttributeError."""
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 __all__ = ["GeController", "GE_FUNCTIONS", "TLookAheadMsg", "RTN_COMMAND_ERROR", "RTN_COMM_ERROR", "UNSUPPORTED",
            "use_machine",

@@ -17,6 +17,7 @@ for programs that drive several. Simulation helpers (not in the manual): :func:`
 from __future__ import annotations
 
 import math
+from typing import Any
 
 from .. import _core
 from .._core import CardCommandRefused, GtHome, MotionCommandRefused, PathGeometryError, PathSegment
@@ -1157,6 +1158,13 @@ GT_FUNCTIONS: tuple[str, ...] = export_functions(globals(), _default, "GT_")
 def delay(ms: float):
     """The manual's ``delay(ms)``: runs the open card for ``ms`` milliseconds (rounded to whole ticks)."""
     return _default.delay(ms)
+
+
+def __getattr__(name: str) -> Any:
+    """PEP 562 hook: the module's GT_* functions are made at import by export_functions (they exist as globals, so
+    this is never reached for them); it tells a type checker that ``from servobench.dialects.gt import GT_Axis``
+    names a module attribute. Any other name: AttributeError."""
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 __all__ = ["GtController", "GT_FUNCTIONS", "RTN_COMMAND_ERROR", "RTN_COMM_ERROR", "RTN_PARAMETER_ERROR",
            "RTN_SUCCESS", "UNSUPPORTED", "card", "controller", "delay", "run", "use_machine", "wait_until",
