@@ -61,6 +61,19 @@ def test_set_addr_get_addr_example_3_1_l506_l547_556_l3524_3549():
     assert c.GT_SetAddr(0x340) == 0 and c.card is card and c.GT_GetAddr() == (0, 0x340)
     assert c.GT_SetAddr(0x10000) == 7 and c.GT_SetAddr(-1) == 7
     assert [c.GT_Reset(), c.GT_SetSmplTm(200)] == [0, 0]   # Example 3-1 (L506-508) goes on
+    assert c.GT_SetAddr(0x300) == -1 and c.card is None and c.GT_Reset() == -1   # nothing answers: -1 (L399)
+
+
+def test_isa_windows_open_example_3_2_l519_523_l549_553():
+    card = sb.Card(4, law=LAW)
+    c = GtController()
+    c.use_machine(card)
+    assert c.GT_Open(0x300, 0) == 0 and c.card is card     # GT_Open(PortBase, irq): the default jumper 0x300
+    assert [c.GT_Reset(), c.GT_SetSmplTm(200)] == [0, 0]
+    assert c.GT_Close() == 0
+    assert c.GT_Open(0x340, 0) == -1 and c.card is None     # no card at 0x340
+    assert c.GT_Open(0x300, 9) == 7                         # irq: 0 (none) or 10..15 (L551)
+    assert c.GT_Open(0x300, 11) == 0 and c.GT_GetAddr() == (0, 0x300)
 
 
 def test_set_smpl_tm_is_the_machines_period_l5026_5036(g):

@@ -45,7 +45,7 @@ _PER_CARD = ("_card", "_axis", "_lmt_sns", "_index", "_crd_state", "_intr_state"
 
 
 def _fresh_sys() -> dict:
-    return {"addr": None, "enc_sns": 0, "step_pulse": [False] * 4, "adc_chn": 8, "enc_zero": [0, 0],
+    return {"enc_sns": 0, "step_pulse": [False] * 4, "adc_chn": 8, "enc_zero": [0, 0],
             "capt": None}
 
 
@@ -134,27 +134,28 @@ class _GtSystem:
 
     # -- ISA base address (DOS, L506, L547-556, L3524-3549, L4597-4611) -------------------------------------------
     def GT_SetAddr(self, Address) -> int:
-        """Sets the ISA base address (DOS; default 0x300): 0 when a card answers there (its base-address jumper,
-        ``card_io.of(card).base_address``), -1 when none does (L552-556). Opens the machine's card at that address
-        when none is open (the DOS form of GT_Open, Example 3-1)."""
+        """Sets the ISA base address (DOS; default 0x300): 0 when a card of the machine answers there (its
+        base-address jumper, ``card_io.of(card).base_address``), which becomes current (opened if none was: the DOS
+        form of GT_Open, Example 3-1); -1 when none does, and no card is reachable then (L552-556)."""
         if not _int_in(Address, 0, 0xFFFF):
             return RTN_PARAMETER_ERROR
-        cards = self._machine_cards() if self._card is None else [s["_card"] for s in self._slots]
-        if self._card is None and not cards:
+        self._isa_addr = int(Address)
+        cards = [s["_card"] for s in self._slots] if getattr(self, "_slots", None) else self._machine_cards()
+        if not cards:
             cards = [Card(4)]
         hit = [n for n, c in enumerate(cards) if card_io.of(c).base_address == int(Address)]
-        if self._card is None:
+        if not hit:
+            self._slots, self._card = [], None
+            return RTN_COMM_ERROR
+        if not getattr(self, "_slots", None):
             self._open_cards(cards)
-        if hit:
-            self._switch(hit[0])
-        self._sys_state()["addr"] = int(Address)
-        return RTN_SUCCESS if hit else RTN_COMM_ERROR
+        self._switch(hit[0])
+        return RTN_SUCCESS
 
     def GT_GetAddr(self):
         """(0, base address): the one GT_SetAddr set, even a wrong one, else the default 0x300; always 0, there is
         no exchange with the card (L3524-3549)."""
-        addr = self._sys_state()["addr"] if self._card is not None else None
-        return RTN_SUCCESS, 0x300 if addr is None else addr
+        return RTN_SUCCESS, getattr(self, "_isa_addr", 0x300)
 
     # -- sample time (L508, L558-566, L5026-5036) -----------------------------------------------------------------
     def GT_SetSmplTm(self, Timer) -> int:

@@ -105,10 +105,16 @@ class GtController(_GtSystem, DialectController):
         return self.run_ms(ms)
 
     # -- 8.1 system -------------------------------------------------------------------------------------------
-    def GT_Open(self, card: Card | None = None, **axis_parts) -> int:
+    def GT_Open(self, card: Card | int | None = None, irq: int = 0, **axis_parts) -> int:
         """Opens the card(s) (PCI form, L4381-4391): ``card``, else the machine :meth:`use_machine` set (one Card
         or the PC's several GT cards, card 0 current, L5134-5140), else a new 4-axis :class:`~servobench.Card`
-        built from ``axis_parts``. The GT has 4 axes (L752-756)."""
+        built from ``axis_parts``. The GT has 4 axes (L752-756). The ISA Windows form ``GT_Open(PortBase, irq)``
+        (Example 3-2, L519-523, L549-553) opens the machine's card whose base-address jumper is ``PortBase``
+        (``card_io.of(card).base_address``): 0, or -1 when no card answers there; irq 0 (none) or 10..15."""
+        if card is not None and not isinstance(card, Card):
+            if not _int_in(card, 0, 0xFFFF) or not (_int_in(irq, 10, 15) or irq == 0):
+                return RTN_PARAMETER_ERROR
+            return RTN_SUCCESS if self.GT_SetAddr(int(card)) == RTN_SUCCESS else RTN_COMM_ERROR
         cards = [card] if card is not None else (self._machine_cards() if not axis_parts else [])
         self._open_cards(cards or [Card(4, **axis_parts)])
         return RTN_SUCCESS
