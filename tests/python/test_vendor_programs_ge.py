@@ -12,6 +12,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from servobench import card_io
 from servobench.dialects import ge
 
 PROGRAMS = Path(__file__).resolve().parents[2] / "examples" / "vendor_programs"
@@ -132,3 +133,49 @@ def test_example_7_1_without_a_home_switch_returns_1(monkeypatch):
     program.AxisInitial(1, 0)
     assert program.Home(1, -20000, 1000, 20, 2) == 1
     assert program.lib.card.profile_pos(0) == -20000 and program.printed == []
+
+
+def run_10_4(monkeypatch):
+    program = load("ge_adc_10_4")
+    guard(monkeypatch, program, ge.controller(), 10**5)
+    cards = []
+    ge.use_machine(lambda: cards.append(program.machine()) or cards[-1])
+    try:
+        program.main()
+    finally:
+        ge.use_machine(None)
+    return program, cards[0]
+
+
+def test_example_10_4_reads_channel_1_as_table_10_4_says(monkeypatch):
+    program, card = run_10_4(monkeypatch)
+    # 5 V on channel 1: 2048 x 5 / 10 = 1024 counts (Table 10-4: +10 V 2047, 0 V 0, -10 V -2048)
+    assert program.CHANNEL_1_VOLTS == 5.0 and program.out == ["\n Channel 1 Voltage : 1024"]
+    assert ge.card() is not card                                         # GT_Close closed it
+    program2, card2 = run_10_4(monkeypatch)
+    assert program2.out == program.out and card2.tick == card.tick
+
+
+def run_10_6(monkeypatch):
+    program = load("ge_spindle_10_6")
+    guard(monkeypatch, program, program.lib, 10**6)
+    seen = []
+
+    def machine():
+        card = program.machine()
+        # the machine's spindle amplifier sees the output every 100 ms
+        card.on_event(lambda c, _f: seen.append((c.tick, card_io.of(c).spindle_volts)), timer_ticks=500)
+        return card
+
+    program.lib.use_machine(machine)
+    program.main()
+    return program, seen
+
+
+def test_example_10_6_spindle_at_10_v_for_10_s_then_off(monkeypatch):
+    program, seen = run_10_6(monkeypatch)
+    assert program.out == ["\n GT_SetSpindleVel OK!", "\n GT_ CloseSpindle OK!"]
+    volts = [v for _t, v in seen]
+    assert len(volts) == 100 and all(v == pytest.approx(10.0, abs=1e-3) for v in volts)   # +10 V for 10 s
+    assert program.lib.card is None                                      # GT_Close
+    assert run_10_6(monkeypatch)[1] == seen                              # bit for bit
