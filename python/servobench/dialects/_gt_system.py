@@ -258,7 +258,7 @@ class _GtSystem:
         return RTN_SUCCESS
 
     def GT_GetAdc(self, Channel):
-        """(rtn, A/D result of channel 1..8): 0..2047 for 0..+10 V, 2048..4095 for -0..-10 V (code = 2048 |V|/10,
+        """(rtn, A/D result of channel 1..8): 0..2047 for 0..+10 V, 2048..4095 for -0..-10 V (code = 2048 abs(V) / 10,
         at most 2047 in each half), the voltage sampled at the last 770 Hz conversion (L3498-3520). 7 for a channel
         beyond GT_SetAdcChn's number."""
         if self._card is None:
