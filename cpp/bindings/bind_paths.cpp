@@ -266,6 +266,8 @@ void bind_paths(py::module_& m) {
       .def("set_override", &PathGenerator::set_override, py::arg("ratio"))
       .def("set_g0_override", &PathGenerator::set_g0_override, py::arg("ratio"))
       .def("set_stop_dec", &PathGenerator::set_stop_dec, py::arg("smooth"), py::arg("abrupt"))
+      .def("set_axis_acc", &PathGenerator::set_axis_acc, py::arg("axis"), py::arg("acc"),
+           "acceleration limit of motor axis 1..4 at the joints (PathSetup.axis_acc_k; GT_SetAccLmt, L1956)")
       .def("set_aux_position", &PathGenerator::set_aux_position, py::arg("axis"), py::arg("pos"))
       .def_property_readonly("tail", [](const PathGenerator& g) { return crd_array(g.tail(), g.coords().dim()); },
                              "start point of the next buffered segment")

@@ -385,6 +385,31 @@ TEST(PathFeedRules, GtOneJointRuleWithAxisAccelerationLimit) {
   EXPECT_EQ(vmin, 100);
 }
 
+TEST(PathFeedRules, SetAxisAccOnALiveGeneratorIsTheSetupsLimit) {
+  // GT_SetAccLmt (GT L1956, decision GF10): set_axis_acc(k, a) on a built generator acts as PathSetup.axis_acc_k
+  sm::PathSetup s;
+  s.axis_acc_1 = 2;
+  s.axis_acc_2 = 2;
+  sm::PathGenerator a(sm::CoordSystem::identity(2), s);
+  sm::PathGenerator b(sm::CoordSystem::identity(2));
+  b.set_axis_acc(1, 2);
+  b.set_axis_acc(2, 2);
+  EXPECT_EQ(b.setup().axis_acc_1, 2);
+  EXPECT_EQ(b.setup().axis_acc_2, 2);
+  for (auto* g : {&a, &b}) {
+    g->push_segment(G::line({0, 0}, {50000, 0}, 2), 100, 1, 0, false, true);
+    g->push_segment(G::line({50000, 0}, {50000, 50000}, 2), 100, 1, 0, false, true);
+    g->start();
+  }
+  const auto ra = run(a);
+  const auto rb = run(b);
+  ASSERT_EQ(ra.size(), rb.size());
+  for (std::size_t i = 0; i < ra.size(); ++i) EXPECT_EQ(ra[i].speed, rb[i].speed);
+  EXPECT_THROW(b.set_axis_acc(0, 1), std::invalid_argument);
+  EXPECT_THROW(b.set_axis_acc(5, 1), std::invalid_argument);
+  EXPECT_THROW(b.set_axis_acc(1, -1), std::invalid_argument);
+}
+
 TEST(PathGenerator, MapsToMotorAxesAndRefusesBadCommands) {
   // TV34 on the generator: 2000 pulse/mm; the motor positions follow the coordinate path.
   sm::PathGenerator g(sm::CoordSystem::gt_map({{1, 2000, 0, 0, 0, 0}, {2, 0, 2000, 0, 0, 0}}));

@@ -605,8 +605,10 @@ def test_t22_exopt_and_home_levels_l4094_4118():
 
 
 def test_unsupported_commands_say_so(g):
-    assert g.GT_GetAdc(1) == (1, 0) and g.GT_SetSpindleVel(100) == 1 and g.GT_CloseSpindle() == 1
-    assert g.card.last_fault == "not_simulated" and g.GT_GetCmdSts() == (0, 0)
+    # the spindle (GE-X00-SV, L5732, L3891) and the auxiliary encoder are SX commands: 1 on a PX card (GF17);
+    # the A/D is simulated on both (tests/python/test_dialect_ge_io.py)
+    assert g.GT_SetSpindleVel(100) == 1 and g.GT_CloseSpindle() == 1
+    assert g.card.last_fault == "not_in_command_set" and g.GT_GetCmdSts() == (0, 0)
     assert g.GT_HandWheel(1, 0.1) == 1 and g.GT_EncPos(1) == (1, 0)   # SX commands on a PX card
     assert g.GT_HomeSns(0) == 0 and g.GT_HomeSns(1) == 1            # rising edge not simulated
     assert g.GT_EncSns(0) == 0 and g.GT_EncSns(0x4) == 1 and g.GT_EncSns(0x100) == 0  # bit 8: no axis 9

@@ -121,6 +121,16 @@ def test_t25_g0_line_full_profile():
     assert prf(c)[:2] == [12345, 67890] and ms == pytest.approx(expected, abs=3)
 
 
+def test_g0_3d_line_full_profile():
+    # GT_LnXYZG0 (L1429, L1473-1477): the 3-D form of T25, the same profile along the 3-D length
+    c = sx()
+    assert [c.GT_SetSynVel(30), c.GT_SetSynAcc(1), c.GT_LnXYZG0(12345, 67890, -5000)] == [0] * 3
+    ms, _ = run_path(c)
+    length = math.sqrt(12345**2 + 67890**2 + 5000**2)
+    expected = 2 * (30 - 0.5) + (length - (30**2 - 0.5**2)) / 30
+    assert prf(c)[:3] == [12345, 67890, -5000] and ms == pytest.approx(expected, abs=3)
+
+
 def test_t36_override_clamped_to_max_vel():
     # L1952-1958: the overridden feed is clamped to MaxVel (T36: MaxVel 500, feed 300 x 2.0 -> 500), here at a
     # fifth of the speeds so that the velocity drive (50 pulse/ms per volt) keeps up: 100, 60 x 2.0 -> 100
@@ -139,12 +149,13 @@ def test_t36_override_clamped_to_max_vel():
 
 # -- arcs ------------------------------------------------------------------------------------------------------------
 
-@pytest.mark.parametrize("cmd_name,plane", [("GT_ArcXY", (0, 1)), ("GT_ArcYZ", (1, 2)), ("GT_ArcZX", (2, 0))])
+@pytest.mark.parametrize("cmd_name,plane", [(lambda c, *a: c.GT_ArcXY(*a), (0, 1)), (lambda c, *a: c.GT_ArcYZ(*a), (1, 2)),
+                                            (lambda c, *a: c.GT_ArcZX(*a), (2, 0))], ids=["xy", "yz", "zx"])
 def test_t17_t20_immediate_half_circle(cmd_name, plane):
     # L3448-3465, L3529-3543, L3603-3617: SynVel 5, SynAcc 0.1, Arc(40000, 30000, 180) from (0, 0)
     c = sx()
     assert [c.GT_SetSynVel(5), c.GT_SetSynAcc(0.1)] == [0, 0]
-    assert getattr(c, cmd_name)(40000, 30000, 180) == 0
+    assert cmd_name(c, 40000, 30000, 180) == 0
     ms, pos = run_path(c)
     i, j = plane
     p = prf(c)
@@ -172,16 +183,17 @@ def test_arc_return_codes_2_and_5():
     assert crd(c) == IDLE and prf(c) == [0, 0, 0, 0]
 
 
-@pytest.mark.parametrize("cmd_name,plane,mv", [("GT_ArcXYP", (0, 1), "GT_MvXY"),
-                                               ("GT_ArcYZP", (1, 2), "GT_MvXYZ"),
-                                               ("GT_ArcZXP", (2, 0), "GT_MvXYZ")])
+@pytest.mark.parametrize("cmd_name,plane,mv", [(lambda c, *a: c.GT_ArcXYP(*a), (0, 1), "GT_MvXY"),
+                                               (lambda c, *a: c.GT_ArcYZP(*a), (1, 2), "GT_MvXYZ"),
+                                               (lambda c, *a: c.GT_ArcZXP(*a), (2, 0), "GT_MvXYZ")],
+                         ids=["xy", "yz", "zx"])
 def test_t18_t19_buffered_arc_by_radius(cmd_name, plane, mv):
     # L3490-3505, L3567-3581, L3642-3656: StrtList; Mv(0, 0, [0,] 5, 0.1); ArcP(40000, 0, 20000, -1); EndList
     c = sx()
     assert c.GT_StrtList() == 0
     args = (0, 0, 5, 0.1) if mv == "GT_MvXY" else (0, 0, 0, 5, 0.1)
     assert getattr(c, mv)(*args) == 0
-    assert getattr(c, cmd_name)(40000, 0, 20000, -1) == 0
+    assert cmd_name(c, 40000, 0, 20000, -1) == 0
     assert [c.GT_EndList(), c.GT_StrtMtn()] == [0, 0]
     _, pos = run_path(c)
     i, j = plane

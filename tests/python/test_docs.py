@@ -26,7 +26,7 @@ API_PAGES = ["axis", "batch", "design", "motion", "paths", "frequency", "autotun
              "dialects",
              "dialect-gt", "dialect-ge", "dialect-gts", "dialect-aps"]
 MODULES = ["servobench.batch", "servobench.frequency", "servobench.identify", "servobench.design", "servobench.plot", "servobench.card",
-           "servobench.card_clock",
+           "servobench.card_clock", "servobench.card_io",
            "servobench.autotune", "servobench.motion", "servobench.homing", "servobench.gearing", "servobench.pvt",
            "servobench.paths", "servobench.widgets", "servobench.interop", "servobench.dialects", "servobench.dialects.gt", "servobench.dialects.ge",
            "servobench.dialects.gts", "servobench.dialects.aps"]

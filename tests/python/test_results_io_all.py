@@ -162,6 +162,7 @@ NOT_RESULTS = {
     "Variant": "the axis-file schema", "Plot": "a drawn figure; its data are the result's own table",
     "GtController": "a vendor-dialect controller (live)", "CardClock": "a card's live clock",
     "ClockOptions": "an input (how a card's time flows)",
+    "CardIO": "a card's live I/O wiring (servobench.card_io)", "AuxEncoder": "an input (an auxiliary encoder's source)",
     "GeController": "a vendor-dialect controller (live)", "GtsController": "a vendor-dialect controller (live)",
     "ApsController": "a vendor-dialect controller (live)", "TAxis": "a vendor struct (input)",
     "TWatchBuffer": "a vendor struct", "TLookAheadMsg": "a vendor struct", "TCrdPrm": "a vendor struct (input)",

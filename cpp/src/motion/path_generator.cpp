@@ -108,6 +108,13 @@ void PathGenerator::set_stop_dec(double smooth, double abrupt) {
   stop_dec_abrupt_ = abrupt;
 }
 
+void PathGenerator::set_axis_acc(int axis, double acc) {
+  check_range("PathGenerator", "axis", axis, 1, 4, "motor axis of the coordinate system");
+  check_range("PathGenerator", "axis_acc", acc, 0, 1e9, "pulse/cycle^2, 0 = corner_axis_acc; GT L1956");
+  double* own[4] = {&setup_.axis_acc_1, &setup_.axis_acc_2, &setup_.axis_acc_3, &setup_.axis_acc_4};
+  *own[axis - 1] = acc;
+}
+
 PathGenerator::Aux& PathGenerator::aux(int axis) {
   auto it = aux_.find(axis);
   if (it != aux_.end()) return it->second;

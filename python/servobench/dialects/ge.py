@@ -26,9 +26,10 @@ from __future__ import annotations
 
 import functools
 import math
+from typing import Any
 import threading
 
-from .. import _core
+from .. import _core, card_io
 from .._core import CardCommandRefused, MotionCommandRefused, PathGeometryError
 from ..card import Card
 from . import _ge_watch
@@ -58,7 +59,8 @@ _PX_ONLY = frozenset({
     "GT_GetMode", "GT_GetPrfPos", "GT_GetAtlVel", "GT_GetAtlErr", "GT_CloseLp", "GT_OpenLp",
     "GT_SetMtrCmd", "GT_GetMtrCmd", "GT_AuStpOn", "GT_AuStpOff", "GT_IndexSns"})
 # Commands of the SX set only: on a PX card they return 1 (Table 2-3 has no bit for it).
-_SX_ONLY = frozenset({"GT_EncPos", "GT_HandWheel", "GT_ExitHWheel", "GT_SetAdcChn",
+_SX_ONLY = frozenset({"GT_EncPos", "GT_HandWheel", "GT_ExitHWheel", "GT_SetAdcChn", "GT_SetSpindleVel",
+                      "GT_CloseSpindle",
                       # [sx-path] path motion, buffer and look-ahead (ch11 Table 11-2, GE §6)
                       "GT_LnXY", "GT_LnXYZ", "GT_LnXYZA", "GT_LnXYG0", "GT_LnXYZG0", "GT_LnXYZAG0", "GT_ArcXY",
                       "GT_ArcYZ", "GT_ArcZX", "GT_ArcXYP", "GT_ArcYZP", "GT_ArcZXP", "GT_SetSynVel", "GT_SetSynAcc",
@@ -188,6 +190,7 @@ class _Slot:
         self.enc_on = [True] * n     # GT_EncOn (default on an analog axis) / GT_EncOff
         self.inputs = 0              # EXI0..EXI15 (simulated levels, set_inputs)
         self.outputs = 0             # EXO0..EXO15 (GT_ExOpt)
+        self.adc_chn = 8             # GT_SetAdcChn (SX)
         self.shadow = {}             # (axis, register) -> (GE-unit value, per-tick value) for exact read-backs
         self.path = None             # [sx-path] _GePathState, created at the first path command
 
@@ -366,11 +369,14 @@ class GeController(DialectController):
     # -- 7.1 system -------------------------------------------------------------------------------------------
     def GT_Open(self, address=65535, card: Card | None = None, **axis_parts) -> int:
         """Opens the next card (L5313-5321; a second call opens the next one, L4310-4315) and makes it current:
-        ``card`` (or a :class:`~servobench.Card` as the first argument), or a new one built from ``axis_parts``
+        ``card`` (or a :class:`~servobench.Card` as the first argument), the machine :meth:`use_machine` set, or a
+        new one built from ``axis_parts``
         (GE reset defaults: gains 0). ``address``: the ISA base address (e.g. 0x300) or 65535 for PCI, recorded.
         Returns -1 when 16 cards are open."""
         if isinstance(address, Card):
             address, card = 65535, address
+        if card is None and not axis_parts:
+            card = self._machine_card()  # the machine use_machine set (a program's plain GT_Open(), issue 25.2)
         if not _int_in(address, 0, 0xFFFFFFFF):
             return RTN_PARAMETER_ERROR
         free = [n for n in range(_MAX_CARDS) if n not in self._slots]
@@ -1816,34 +1822,79 @@ class GeController(DialectController):
         msg.error, msg.num = 3, path.window_size
         return 9
 
-    # -- not simulated (documented in docs/card.md) ------------------------------------------------------------
+    # -- analog inputs, spindle output, auxiliary encoders (ch10 L2890-3020; card_io) -------------------------------
     def GT_GetAdc(self, channel):
-        """(1, 0): the analog inputs are not simulated (L4132-4142)."""
-        return self._not_simulated(read=True)
+        """(rtn, input voltage of channel 1..8 as 12-bit counts): +10 V = 2047, 0 V = 0, -10 V = -2048 (Table 10-4,
+        L2930-2937), sampled at the last conversion: PX 4 kHz, SX 770 Hz x 8 / GT_SetAdcChn's channels (L2939-2943).
+        The voltages are the machine's, ``card_io.of(card).adc_volts`` (L4132-4142)."""
+        if self._card is None:
+            return RTN_COMM_ERROR, 0
+        if not _int_in(channel, 1, 8):
+            return self._param(-1), 0
+        rate = 4000.0 if self.variant == "PX" else 770.0 * 8 / self._slot.adc_chn
+        t = math.floor(self._card.tick * self._card.servo_period_s * rate) / rate
+        v = card_io.of(self._card).volts(int(channel) - 1, t)
+        return RTN_SUCCESS, max(-2048, min(2047, math.floor(v / 10.0 * 2048)))
 
     def GT_SetAdcChn(self, channel) -> int:
-        """Returns 1: the analog inputs are not simulated (SX, L5447-5455)."""
-        return self._not_simulated()
+        """Number of A/D channels converted, 1..8 (SX; default 8, decision GF7): fewer channels, faster sampling,
+        one channel 8 x 770 Hz = 6.16 kHz (L5447-5455, L2941-2943)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if not _int_in(channel, 1, 8):
+            return self._param(-1)
+        self._slot.adc_chn = int(channel)
+        return RTN_SUCCESS
 
     def GT_SetSpindleVel(self, vel) -> int:
-        """Returns 1: the spindle DAC is not simulated (SV, L5724-5734)."""
-        return self._not_simulated()
+        """Spindle speed: the 16-bit spindle DAC, -32768..32767 for -10..+10 V, output from now on (SV,
+        L5724-5734); the machine reads ``card_io.of(card).spindle_volts`` (V = vel x 10 / 32768)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if not _int_in(vel, -32768, 32767):
+            return self._param(-1)
+        card_io.of(self._card).spindle_volts = int(vel) * 10.0 / 32768
+        return RTN_SUCCESS
 
     def GT_CloseSpindle(self) -> int:
-        """Returns 1: the spindle DAC is not simulated (SV, L3885-3893)."""
-        return self._not_simulated()
+        """Spindle output off: 0 V (SV, L3885-3893)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        card_io.of(self._card).spindle_volts = 0.0
+        return RTN_SUCCESS
 
+    def GT_EncPos(self, encoder):
+        """(rtn, position of auxiliary encoder 1 or 2, pulse) (SX, L4002-4023): the machine's
+        ``card_io.of(card).aux_encoders`` (whole counts)."""
+        if self._card is None:
+            return RTN_COMM_ERROR, 0
+        if not _int_in(encoder, 1, 2):
+            return self._param(-1), 0
+        enc = card_io.of(self._card).aux_encoders[int(encoder) - 1]
+        return RTN_SUCCESS, 0 if enc is None else enc.counts(self._card.tick * self._card.servo_period_s)
+
+    # -- not simulated (UNSUPPORTED) -------------------------------------------------------------------------------
     def GT_HandWheel(self, axis, ratio) -> int:
-        """Returns 1: the handwheel is not simulated (SX, L4839-4853)."""
+        """Returns 1: not simulated (UNSUPPORTED; SX, L4839-4853)."""
         return self._not_simulated()
 
     def GT_ExitHWheel(self) -> int:
-        """Returns 1: the handwheel is not simulated (SX, L4086-4092)."""
+        """Returns 1: not simulated (UNSUPPORTED; SX, L4086-4092)."""
         return self._not_simulated()
 
-    def GT_EncPos(self, encoder):
-        """(1, 0): the auxiliary encoder is not simulated (SX, L4002-4023)."""
-        return self._not_simulated(read=True)
+    def GT_Axis(self, num) -> int:
+        """Returns 1: not in the GE command set (UNSUPPORTED)."""
+        return self._not_simulated()
+
+
+#: GE functions the simulation cannot carry out: each returns 1 (a read (1, 0)) (decision GF3).
+UNSUPPORTED: dict[str, str] = {
+    "GT_HandWheel": "the handwheel drives an axis from the auxiliary encoder input (L2950-2990); the card's gear "
+                    "follows another axis's profile only, it has no encoder master",
+    "GT_ExitHWheel": "leaves the handwheel mode GT_HandWheel would enter (L4086-4092), which is not simulated",
+    "GT_Axis": "every GE command names its axis (Table 11-1/11-2); GT_Axis appears once, in the GT-lineage sample "
+               "under GT_CaptProb (L3848), with no prototype in the GE manual",
+}
 
 
 for _name in [n for n in vars(GeController) if n.startswith("GT_") and n != "GT_HookCommand"]:
@@ -1859,6 +1910,14 @@ def delay(ms: float):
     return _default.delay(ms)
 
 
-__all__ = ["GeController", "GE_FUNCTIONS", "TLookAheadMsg", "RTN_COMMAND_ERROR", "RTN_COMM_ERROR",
+
+def __getattr__(name: str) -> Any:
+    """PEP 562 hook: the module's GT_* functions are made at import by export_functions (they exist as globals, so
+    this is never reached for them); it tells a type checker that ``from servobench.dialects.ge import GT_Axis``
+    names a module attribute. Any other name: AttributeError."""
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+__all__ = ["GeController", "GE_FUNCTIONS", "TLookAheadMsg", "RTN_COMMAND_ERROR", "RTN_COMM_ERROR", "UNSUPPORTED",
+           "use_machine",
            "RTN_PARAMETER_ERROR", "RTN_REENTERED", "RTN_SUCCESS", "TAxis", "TWatchBuffer", "card", "controller", "delay",
            "run", "wait_until", *GE_FUNCTIONS]

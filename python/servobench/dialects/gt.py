@@ -17,11 +17,13 @@ for programs that drive several. Simulation helpers (not in the manual): :func:`
 from __future__ import annotations
 
 import math
+from typing import Any
 
 from .. import _core
 from .._core import CardCommandRefused, GtHome, MotionCommandRefused, PathGeometryError, PathSegment
 from ..card import Card
 from ._controller import DialectController, export_functions, register32, wrap32  # noqa: F401
+from ._gt_system import UNSUPPORTED, _GtSystem
 
 # Return codes (Table 2-1, L393-408).
 RTN_SUCCESS = 0
@@ -49,14 +51,17 @@ def _real_in(value, lo, hi, hi_open=False) -> bool:
     return math.isfinite(v) and lo <= v and (v < hi if hi_open else v <= hi)
 
 
-class GtController(DialectController):
-    """One GT card program's view of a :class:`~servobench.Card`: the current axis and the GT_* commands."""
+class GtController(_GtSystem, DialectController):
+    """A GT program's view of the GT cards of one PC (:class:`~servobench.Card` objects; one current card, chosen
+    with GT_SwitchtoCardNo): the current axis and the GT_* commands."""
 
     def __init__(self):
         super().__init__()
         self._axis = 0          # current axis, 0-based (default axis 1, L754)
         self._lmt_sns = 0       # GT_LmtSns bits (L4217-4231)
         self._index = [0] * 4   # GT_Index per axis (L4190-4196)
+        self._slots: list[dict] = []  # the open cards' dialect state, by card number (GT_SwitchtoCardNo)
+        self._card_no = 0
 
     # -- plumbing -------------------------------------------------------------------------------------------
     def _do(self, fn, *args) -> int:
@@ -100,21 +105,25 @@ class GtController(DialectController):
         return self.run_ms(ms)
 
     # -- 8.1 system -------------------------------------------------------------------------------------------
-    def GT_Open(self, card: Card | None = None, **axis_parts) -> int:
-        """Opens the card (PCI form, L4381-4391): ``card`` or a new 4-axis :class:`~servobench.Card` built from
-        ``axis_parts``. The GT has 4 axes (L752-756)."""
-        if card is None:
-            card = Card(4, **axis_parts)
-        if len(card) != 4:
-            raise ValueError(f"a GT card has 4 axes (GT L752-756); this Card has {len(card)}")
-        self._card = card
-        self._axis = 0
+    def GT_Open(self, card: Card | int | None = None, irq: int = 0, **axis_parts) -> int:
+        """Opens the card(s) (PCI form, L4381-4391): ``card``, else the machine :meth:`use_machine` set (one Card
+        or the PC's several GT cards, card 0 current, L5134-5140), else a new 4-axis :class:`~servobench.Card`
+        built from ``axis_parts``. The GT has 4 axes (L752-756). The ISA Windows form ``GT_Open(PortBase, irq)``
+        (Example 3-2, L519-523, L549-553) opens the machine's card whose base-address jumper is ``PortBase``
+        (``card_io.of(card).base_address``): 0, or -1 when no card answers there; irq 0 (none) or 10..15."""
+        if card is not None and not isinstance(card, Card):
+            if not _int_in(card, 0, 0xFFFF) or not (_int_in(irq, 10, 15) or irq == 0):
+                return RTN_PARAMETER_ERROR
+            return RTN_SUCCESS if self.GT_SetAddr(int(card)) == RTN_SUCCESS else RTN_COMM_ERROR
+        cards = [card] if card is not None else (self._machine_cards() if not axis_parts else [])
+        self._open_cards(cards or [Card(4, **axis_parts)])
         return RTN_SUCCESS
 
     def GT_Close(self) -> int:
-        """Closes the card (L3051-3061)."""
+        """Closes the card(s) (L3051-3061)."""
         if self._card is None:
             return RTN_COMM_ERROR
+        self._slots = []
         self._card = None
         return RTN_SUCCESS
 
@@ -123,6 +132,8 @@ class GtController(DialectController):
         auto-update/auto-stop off, closed loop, limits on, drives off, events cleared."""
         self._lmt_sns = 0
         self._index = [0] * 4
+        st = self._sys_state()
+        st.update(enc_sns=0, step_pulse=[False] * 4, adc_chn=8)  # pulse + direction, 8 A/D channels (GF7)
         # the coordinate system back to the HardRst state: SynVel/SynAcc 0 (item 1, L4126), CrdAuStp allowed
         # (item 15, L4140), immediate mode (item 16, L4141); the card's reset drops the mapping (item 17, L4142)
         self.__dict__.pop("_crd_state", None)
@@ -553,7 +564,7 @@ class GtController(DialectController):
     def _crd(self):
         if not hasattr(self, "_crd_state"):
             self._crd_state = dict(vel=0.0, acc=0.0, buffer=False, open=False, mv=False, started=False,
-                                   error=False, au_stp=True, cmd_bit=12)
+                                   error=False, au_stp=True, cmd_bit=12, pushed=0, mv_pushed=0, acc_lmt=[0.0] * 4)
         return self._crd_state
 
     def _crd_refuse(self, bit: int = 12, rtn: int = RTN_COMMAND_ERROR) -> int:
@@ -591,6 +602,7 @@ class GtController(DialectController):
             return self._param_error("illegal_control_param")
         try:
             self._card.gt_map_axis(int(axis_num), [float(c) for c in map_count])
+            self._apply_acc_lmt()
         except (CardCommandRefused, MotionCommandRefused):
             return self._crd_refuse()
         except PathGeometryError as e:
@@ -636,7 +648,9 @@ class GtController(DialectController):
             st["error"] = True
             return int(_core.gt_geometry_code(e.gt_code)) if isinstance(e, PathGeometryError) else RTN_PARAMETER_ERROR
         if st["buffer"] and st["open"]:
-            return self._crd_do(lambda: path.push_segment(seg, st["vel"], st["acc"], auto_end=True))
+            rtn = self._crd_do(lambda: path.push_segment(seg, st["vel"], st["acc"], auto_end=True))
+            st["pushed"] += rtn == RTN_SUCCESS
+            return rtn
         if st["buffer"] and path.breakpoint is not None:
             # stopped buffer: a path command runs at once as a single line, the buffer waits (L1938, V64)
             if seg.kind != "line" or path.busy:
@@ -685,6 +699,69 @@ class GtController(DialectController):
         return self._path_cmd(lambda t: PathSegment.arc_center_angle(t, "zx", (float(z_center), float(x_center)),
                                                                      float(angle)))
 
+    def _arcp(self, plane, e1, e2, r, direction) -> int:
+        i, j = {"xy": (0, 1), "yz": (1, 2), "zx": (2, 0)}[plane]
+        if self._card is not None and not (_real_in(e1, _POS_MIN, _POS_MAX) and _real_in(e2, _POS_MIN, _POS_MAX)
+                                           and _real_in(r, -2.0**31, 2.0**31)):
+            return RTN_PARAMETER_ERROR
+        if direction not in (1, -1):
+            return RTN_PARAMETER_ERROR if self._card is not None else RTN_COMM_ERROR
+
+        def make(t):
+            end = list(t)
+            end[i], end[j] = float(e1), float(e2)
+            return PathSegment.arc_radius(t, end, plane, float(r), int(direction) == 1)
+
+        return self._path_cmd(make)
+
+    def GT_ArcXYP(self, x_end, y_end, r, direction) -> int:
+        """Arc in the XY plane to the end point (x_end, y_end) with radius ``r``: r > 0 the arc of at most 180 deg,
+        r < 0 the longer one; direction +1 CCW, -1 CW (seen from +Z, L1793). The GT manual names it with "the end
+        point and radius" (L1753) and its return code 5, end point or radius wrong (L406), but prints no prototype:
+        the GE lineage's (GE L3477-3483) is taken (decision GF8). 2: radius 0; 5: chord longer than the diameter."""
+        return self._arcp("xy", x_end, y_end, r, direction)
+
+    def GT_ArcYZP(self, y_end, z_end, r, direction) -> int:
+        """Arc in the YZ plane by end point and radius (L1755; as GT_ArcXYP, positive CCW seen from +X)."""
+        return self._arcp("yz", y_end, z_end, r, direction)
+
+    def GT_ArcZXP(self, z_end, x_end, r, direction) -> int:
+        """Arc in the ZX plane by end point and radius (L1757; as GT_ArcXYP, positive CCW seen from +Y)."""
+        return self._arcp("zx", z_end, x_end, r, direction)
+
+    def GT_GetMtnNm(self):
+        """(rtn, number of the buffer segment executing, or where the buffer stopped): the Mv* line is 0, the path
+        segments since GT_StrtList count from 1; it holds when the buffer runs dry and after the last segment
+        (L1971-1985, decision GF9). 0 in immediate mode."""
+        if self._card is None:
+            return RTN_COMM_ERROR, 0
+        st = self._crd()
+        if not st["buffer"] or not self._card.group_info(2)["set_up"]:
+            return RTN_SUCCESS, 0
+        path = self._card.gt_path()
+        n = path.state.segments_done - st["mv_pushed"] + (1 if path.busy and path.state.speed > 0 else 0)
+        n = max(0, min(n, st["pushed"]))
+        return RTN_SUCCESS, (n - 1) % 32767 + 1 if n > 0 else 0
+
+    def _apply_acc_lmt(self):
+        if self._card.group_info(2)["set_up"]:
+            path = self._card.gt_path()
+            for k, lim in enumerate(self._crd()["acc_lmt"]):
+                if getattr(path.setup, f"axis_acc_{k + 1}") != lim:
+                    path.set_axis_acc(k + 1, lim)
+
+    def GT_SetAccLmt(self, acc) -> int:
+        """Acceleration limit of the current axis at the joints of a buffered path, pulse/ST^2, 0..16384 (0 = no
+        limit, the default): the vector velocity at a joint is lowered until no mapped axis changes its velocity
+        by more than its limit (L1956-1966, strategies one and two). "A command for each motor axis" (L1956); the
+        manual prints no prototype: one argument on the current axis, like every single-axis command (GF10)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if not _real_in(acc, 0, 16384):
+            return self._param_error("motion_param_overflow")
+        self._crd()["acc_lmt"][self._axis] = float(acc)
+        return self._do(self._apply_acc_lmt)
+
     def GT_StrtList(self) -> int:
         """Opens and clears the buffer (buffer mode); refused while the buffer executes (bit 12) (L1841)."""
         if self._card is None:
@@ -697,7 +774,7 @@ class GtController(DialectController):
             return self._crd_refuse()
         rtn = self._crd_do(path.clear)
         if rtn == RTN_SUCCESS:
-            self._crd().update(buffer=True, open=True, mv=False, started=False)
+            self._crd().update(buffer=True, open=True, mv=False, started=False, pushed=0, mv_pushed=0)
         return rtn
 
     def _mv(self, point, vel, acc) -> int:
@@ -718,7 +795,7 @@ class GtController(DialectController):
 
         rtn = self._crd_do(push, mv=True)
         if rtn == RTN_SUCCESS:
-            st.update(mv=True, vel=float(vel), acc=float(acc))  # the Mv vel/acc become the defaults (L1845)
+            st.update(mv=True, vel=float(vel), acc=float(acc), mv_pushed=int(end != t))  # the Mv vel/acc become the defaults (L1845)
         return rtn
 
     def GT_MvXY(self, x, y, vel, acc) -> int:
@@ -849,7 +926,7 @@ class _GtInterrupts:
         st = self.__dict__.get("_intr_state")
         if st is None or st["card"] is not self._card:
             st = {"card": self._card, "mode": "event", "msk": [0] * 4, "tm": 0, "isr": None, "pending": False,
-                  "axis": 0, "subs": [], "in_isr": False, "recheck": False, "storm": (-1, 0)}
+                  "axis": 0, "subs": [], "in_isr": False, "recheck": False, "storm": (-1, 0), "sync": None}
             self.__dict__["_intr_state"] = st
         return st
 
@@ -857,9 +934,9 @@ class _GtInterrupts:
         st = self._intr()
         for sid in st["subs"]:
             self._card.remove_event(sid)
-        isr = st["isr"]                     # the host's hooked routine stays (it is the host's, not the card's)
+        isr, sync = st["isr"], st["sync"]   # the host's routine and event stay (they are the host's, not the card's)
         self.__dict__.pop("_intr_state", None)
-        self._intr()["isr"] = isr
+        self._intr().update(isr=isr, sync=sync)
 
     def _intr_sync(self):
         st, c = self._intr(), self._card
@@ -898,6 +975,8 @@ class _GtInterrupts:
             count = count + 1 if tick == self._card.tick else 1
             st["storm"] = (self._card.tick, count)
             st["pending"], st["axis"] = True, k
+            if st["sync"] is not None:
+                st["sync"].set()            # the driver's ISR signals the program's event (L2338)
             if st["isr"] is None or count > _INTR_REFIRE_LIMIT:
                 return
             st["in_isr"] = True
@@ -913,6 +992,8 @@ class _GtInterrupts:
     def _intr_timer(self, _card, _fired):
         st = self._intr()
         st["pending"] = True
+        if st["sync"] is not None:
+            st["sync"].set()
         if st["isr"] is not None and not st["in_isr"]:
             st["in_isr"] = True
             try:
@@ -945,6 +1026,18 @@ class _GtInterrupts:
         st = self._intr()
         old, st["isr"] = st["isr"], isr
         return old
+
+    def GT_SetIntSyncEvent(self, hIntEvent) -> int:
+        """Windows form of interrupt service (L2334-2410): the driver's ISR sets the program's synchronisation event
+        at each interrupt request, and a thread of the program waiting on it (``WaitForSingleObject``) runs.
+        ``hIntEvent`` is an object with ``set()`` (a :class:`threading.Event`), or None to release it before
+        closing (L2340). 7 for anything else."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if hIntEvent is not None and not callable(getattr(hIntEvent, "set", None)):
+            return RTN_PARAMETER_ERROR
+        self._intr()["sync"] = hIntEvent
+        return RTN_SUCCESS
 
     def GT_UnhookIsr(self, old_isr) -> int:
         """Restores the ISR ``old_isr`` (L5164-5182)."""
@@ -1072,5 +1165,13 @@ def delay(ms: float):
     """The manual's ``delay(ms)``: runs the open card for ``ms`` milliseconds (rounded to whole ticks)."""
     return _default.delay(ms)
 
+
+def __getattr__(name: str) -> Any:
+    """PEP 562 hook: the module's GT_* functions are made at import by export_functions (they exist as globals, so
+    this is never reached for them); it tells a type checker that ``from servobench.dialects.gt import GT_Axis``
+    names a module attribute. Any other name: AttributeError."""
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
 __all__ = ["GtController", "GT_FUNCTIONS", "RTN_COMMAND_ERROR", "RTN_COMM_ERROR", "RTN_PARAMETER_ERROR",
-           "RTN_SUCCESS", "card", "controller", "delay", "run", "wait_until", *GT_FUNCTIONS]
+           "RTN_SUCCESS", "UNSUPPORTED", "card", "controller", "delay", "run", "use_machine", "wait_until",
+           *GT_FUNCTIONS]

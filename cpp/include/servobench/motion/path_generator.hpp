@@ -141,6 +141,10 @@ class PathGenerator {
   void set_g0_override(double ratio);
   // Stop decelerations (GT_SetCrdStopDec, GUC L704-709): > 0, or 0 for the defaults of PathSetup.
   void set_stop_dec(double smooth, double abrupt);
+  // Acceleration limit of motor axis `axis` (1..4) at the joints, as PathSetup::axis_acc_k (pulse per cycle^2,
+  // 0..1e9, 0 = corner_axis_acc): GT_SetAccLmt, "a command for each motor axis" (GT L1956). Joints planned
+  // from now on use it.
+  void set_axis_acc(int axis, double acc);
   // Position of an axis outside the coordinate system (pulse) before BufMove / BufGear use it (at rest).
   void set_aux_position(int axis, double pos);
 
