@@ -15,6 +15,17 @@ PROGRAMS = Path(__file__).resolve().parents[2] / "examples" / "vendor_programs"
 TS = 250e-6   # the machines' servo period (L1733)
 
 
+@pytest.fixture(autouse=True)
+def _a_fresh_process():
+    """Each program starts as in a fresh process: the module's default controller closed, no machine set (a test
+    elsewhere may leave them; the vendor's open call then answers 'already open')."""
+    aps.APS_close()
+    aps.use_machine(None)
+    yield
+    aps.APS_close()
+    aps.use_machine(None)
+
+
 def load(stem):
     spec = importlib.util.spec_from_file_location(stem, PROGRAMS / f"{stem}.py")
     mod = importlib.util.module_from_spec(spec)

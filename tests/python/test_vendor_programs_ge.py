@@ -18,6 +18,17 @@ from servobench.dialects import ge
 PROGRAMS = Path(__file__).resolve().parents[2] / "examples" / "vendor_programs"
 
 
+@pytest.fixture(autouse=True)
+def _a_fresh_process():
+    """Each program starts as in a fresh process: the module's default controller closed, no machine set (a test
+    elsewhere may leave them; the vendor's open call then answers 'already open')."""
+    ge.GT_Close()
+    ge.use_machine(None)
+    yield
+    ge.GT_Close()
+    ge.use_machine(None)
+
+
 class ProgramRanTooLong(BaseException):
     """Raised by the guard (a BaseException, so no vendor-call guard turns it into a return code)."""
 

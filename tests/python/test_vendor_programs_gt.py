@@ -16,6 +16,17 @@ from servobench.dialects import gt
 PROGRAMS = Path(__file__).resolve().parents[2] / "examples" / "vendor_programs"
 
 
+@pytest.fixture(autouse=True)
+def _a_fresh_process():
+    """Each program starts as in a fresh process: the module's default controller closed, no machine set (a test
+    elsewhere may leave them; the vendor's open call then answers 'already open')."""
+    gt.GT_Close()
+    gt.use_machine(None)
+    yield
+    gt.GT_Close()
+    gt.use_machine(None)
+
+
 class ProgramRanTooLong(BaseException):
     """Raised by the guard (a BaseException, so no vendor-call guard turns it into a return code)."""
 

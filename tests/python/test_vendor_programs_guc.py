@@ -15,6 +15,17 @@ from servobench.dialects import gts
 PROGRAMS = Path(__file__).resolve().parents[2] / "examples" / "vendor_programs"
 
 
+@pytest.fixture(autouse=True)
+def _a_fresh_process():
+    """Each program starts as in a fresh process: the module's default controller closed, no machine set (a test
+    elsewhere may leave them; the vendor's open call then answers 'already open')."""
+    gts.GT_Close()
+    gts.use_machine(None)
+    yield
+    gts.GT_Close()
+    gts.use_machine(None)
+
+
 class TickBudgetExceeded(RuntimeError):
     pass
 

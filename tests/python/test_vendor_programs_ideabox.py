@@ -10,6 +10,17 @@ from servobench.dialects import gts
 from test_vendor_programs_guc import load
 
 
+@pytest.fixture(autouse=True)
+def _a_fresh_process():
+    """Each program starts as in a fresh process: the module's default controller closed, no machine set (a test
+    elsewhere may leave them; the vendor's open call then answers 'already open')."""
+    gts.GT_Close()
+    gts.use_machine(None)
+    yield
+    gts.GT_Close()
+    gts.use_machine(None)
+
+
 def run(stem, follow_ms):
     """main() against the program's machine, then ``follow_ms`` more of card time. Returns (main's code,
     GT_GetFollowLoopEx(2), GT_GetJogPrm(1), per tick (master profile position, slave profile position, slave actual

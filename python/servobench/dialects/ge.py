@@ -742,10 +742,10 @@ class GeController(DialectController):
         if self.variant != "SX" or a >= 4 or not self._card.ge_crd_exists():
             return
         path = self._card.ge_path()
-        if path.busy or self._pth().open or self._kept(path) or self._card.moving(a):
+        if path.busy or self._path_state().open or self._resumable(path) or self._card.moving(a):
             return
         self._card.set_mode(a, "t_curve")
-        self._pth().dirty = True
+        self._path_state().dirty = True
 
     def GT_GetAtlPos(self, axis):
         """(rtn, actual position, pulse) (L4173); with the encoder off, the profile position (L4180)."""
@@ -956,7 +956,7 @@ class GeController(DialectController):
     # buffered (StrtList, an immediate command), so a changed StrtVel/MaxVel/MapCnt takes effect there (V101).
     # This block keeps the GE list bookkeeping; refusals leave the card unchanged and set the SX command-error
     # bit of their cause: 8 path command, 9 buffer state, 15 buffer full, 6 MapCnt (Table 2-4 L324-347; V100).
-    def _pth(self) -> _GePathState:
+    def _path_state(self) -> _GePathState:
         slot = self._slot
         if slot.path is None:
             slot.path = _GePathState(len(self._card))
@@ -965,13 +965,13 @@ class GeController(DialectController):
     def _crd_fault(self, bit: int) -> int:
         """A path refusal: the card records a crd-state fault; GT_GetCmdSts shows `bit` while it is the last."""
         self._card.record_fault(-1, "crd_state_error" if bit != 6 else "axis_state_error")
-        self._pth().cmd_bit = bit
+        self._path_state().cmd_bit = bit
         return RTN_COMMAND_ERROR
 
     def _fresh(self):
         """The crd's generator, empty, at the present profile positions: cleared, or rebuilt when a setting
         changed or an axis moved outside the path (ZeroPos, AxisOn) (V101)."""
-        st = self._pth()
+        st = self._path_state()
         st.dim = 0
         if (self._card.ge_crd_exists() and not st.dirty and not self._card.ge_path().lookahead_on
                 and self._card.ge_path().coords.dim == min(4, len(self._card))):
@@ -982,11 +982,11 @@ class GeController(DialectController):
                 path.clear()
                 return path
         st.dirty = True
-        return self._gp(rebuild=True)
+        return self._path_generator(rebuild=True)
 
-    def _gp(self, rebuild=False):
+    def _path_generator(self, rebuild=False):
         """The crd's generator; (re)built at the present positions when asked and nothing is kept."""
-        st = self._pth()
+        st = self._path_state()
         if not self._card.ge_crd_exists() or (rebuild and st.dirty):
             n = min(st.dim or 4, len(self._card))
             self._card.ge_crd_setup(st.offsets[:n], st.strt_vel, st.max_vel, st.stp_acc, st.capacity, n)
@@ -1000,14 +1000,14 @@ class GeController(DialectController):
         return self._card.ge_path()
 
     def _path_moving(self, path) -> bool:
-        st = self._pth()
+        st = self._path_state()
         return (path.busy or (path.running and path.remaining_segments > 0)
                 or (st.started and st.open and not path.stopped))
 
-    def _kept(self, path) -> bool:
+    def _resumable(self, path) -> bool:
         """A stopped buffer that RestoreMtn can resume (breakpoint and unexecuted segments); a stopped immediate
         move keeps none (L1654)."""
-        st = self._pth()
+        st = self._path_state()
         return st.buffer and st.started and path.breakpoint is not None and path.remaining_segments > 0
 
     def _geom(self, make):
@@ -1024,11 +1024,11 @@ class GeController(DialectController):
         immediate mode runs it at once at SynVel/SynAcc (L1445-1492)."""
         if self._card is None:
             return RTN_COMM_ERROR
-        st = self._pth()
+        st = self._path_state()
         if st.open:
             if not st.mv or dim > st.mv_dim:
                 return self._crd_fault(8)   # no Mv* after StrtList, or a 3-D command after MvXY (L335, L5244)
-            path = self._gp()
+            path = self._path_generator()
             if path.fifo_space < 1 + len(st.pending_io):
                 return self._crd_fault(15)  # buffer full: re-send (L1575-1579, L347)
             seg, rtn = self._geom(lambda: make(list(path.tail)))
@@ -1048,14 +1048,14 @@ class GeController(DialectController):
             st.ends.append(list(seg.end))
             return RTN_SUCCESS
         try:
-            path = self._gp()
+            path = self._path_generator()
         except (CardCommandRefused, MotionCommandRefused):
             return self._crd_fault(8)
         if self._path_moving(path):
             return self._crd_fault(8)       # an immediate path command while the path moves (L1492, L335)
         if not (st.syn_vel > 0 and st.syn_acc > 0):
             return self._crd_fault(8)       # no feed set (SetSynVel / SetSynAcc): a bad path parameter
-        kept = self._kept(path)
+        kept = self._resumable(path)
         if not kept:
             try:
                 path = self._fresh()
@@ -1203,14 +1203,14 @@ class GeController(DialectController):
             return RTN_COMM_ERROR
         if not self._feed_value(vel, _VEL_MAX):
             return 4
-        self._pth().syn_vel = float(vel)
+        self._path_state().syn_vel = float(vel)
         return RTN_SUCCESS
 
     def GT_SetSynAcc(self, acc) -> int:
         """Path acceleration of immediate motion, pulse/ms^2; illegal in buffer mode (bit 8, L1411-1413, L335)."""
         if self._card is None:
             return RTN_COMM_ERROR
-        st = self._pth()
+        st = self._path_state()
         if st.open:
             return self._crd_fault(8)
         if not self._feed_value(acc, _ACC_MAX):
@@ -1221,7 +1221,7 @@ class GeController(DialectController):
     def _setting(self, value, hi, field, zero_ok=False) -> int:
         if self._card is None:
             return RTN_COMM_ERROR
-        st = self._pth()
+        st = self._path_state()
         if self._card.ge_crd_exists() and self._path_moving(self._card.ge_path()):
             return self._crd_fault(8)  # start/max velocity, stop acceleration: not while the path moves (L335)
         if not _real_in(value, 0, hi) or (float(value) == 0 and not zero_ok):
@@ -1249,7 +1249,7 @@ class GeController(DialectController):
             return RTN_COMM_ERROR
         if not _real_in(ratio, 0, 2) or float(ratio) == 0:
             return RTN_PARAMETER_ERROR   # a multiplier, (0, 2] (L1952-1958, L5348; V105)
-        st = self._pth()
+        st = self._path_state()
         if g0:
             st.override_g0 = float(ratio)
         else:
@@ -1272,7 +1272,7 @@ class GeController(DialectController):
         """End velocity, pulse/ms, of the next buffered path segment (L5492-5500, L1679; V106). Buffer only."""
         if self._card is None:
             return RTN_COMM_ERROR
-        st = self._pth()
+        st = self._path_state()
         if not st.open or not st.mv:
             return self._crd_fault(8)
         if not _real_in(vel, 0, _VEL_MAX):
@@ -1287,7 +1287,7 @@ class GeController(DialectController):
             return RTN_COMM_ERROR
         if not _int_in(axis, 1, min(4, self.axes)):
             return self._param(-1)
-        st = self._pth()
+        st = self._path_state()
         moving = any(self._card.moving(a) for a in range(len(self._card)))
         if moving or st.open or not _real_in(count, _POS_MIN, _POS_MAX):
             return self._crd_fault(6)
@@ -1301,7 +1301,7 @@ class GeController(DialectController):
         has not stopped or the buffer is open (L1549, L5861-5865)."""
         if self._card is None:
             return RTN_COMM_ERROR
-        st = self._pth()
+        st = self._path_state()
         if st.open:
             return self._crd_fault(9)
         if self._card.ge_crd_exists():
@@ -1318,14 +1318,14 @@ class GeController(DialectController):
     def _mv(self, point, vel, acc) -> int:
         if self._card is None:
             return RTN_COMM_ERROR
-        st = self._pth()
+        st = self._path_state()
         if not st.open or st.mv:
             return self._crd_fault(8)   # Mv* only right after StrtList, once (L1551, L335)
         if not self._pts_ok(*point):
             return 3
         if not self._feed_value(vel, _VEL_MAX) or not self._feed_value(acc, _ACC_MAX):
             return 4
-        path = self._gp()
+        path = self._path_generator()
         t = list(path.tail)
         end = list(t)
         for k, p in enumerate(point):
@@ -1355,7 +1355,7 @@ class GeController(DialectController):
         """Closes the buffer (only while open, else bit 9) (L1559-1571, L4037)."""
         if self._card is None:
             return RTN_COMM_ERROR
-        st = self._pth()
+        st = self._path_state()
         if not st.open:
             return self._crd_fault(9)
         st.open = False
@@ -1365,7 +1365,7 @@ class GeController(DialectController):
         """Reopens a closed buffer; while open: bit 9 (L1559-1571, L3339)."""
         if self._card is None:
             return RTN_COMM_ERROR
-        st = self._pth()
+        st = self._path_state()
         if st.open or not st.buffer or not st.mv:
             return self._crd_fault(9)
         st.open = True
@@ -1376,10 +1376,10 @@ class GeController(DialectController):
         streams more until EndList (L1640-1646, L5871-5875). Bit 9 while path motion runs."""
         if self._card is None:
             return RTN_COMM_ERROR
-        st = self._pth()
+        st = self._path_state()
         if not st.buffer or not st.mv:
             return self._crd_fault(9)
-        path = self._gp()
+        path = self._path_generator()
         if path.busy or st.started:
             return self._crd_fault(9)   # StrtMtn while path motion runs, or to resume (RestoreMtn, L1664)
 
@@ -1395,7 +1395,7 @@ class GeController(DialectController):
     def _stp(self, abrupt) -> int:
         if self._card is None:
             return RTN_COMM_ERROR
-        st = self._pth()
+        st = self._path_state()
         if not self._card.ge_crd_exists():
             return RTN_SUCCESS
         path = self._card.ge_path()
@@ -1420,11 +1420,11 @@ class GeController(DialectController):
         velocity, then the rest (L1656-1664, L5412). Bit 9 unless stopped with unexecuted segments."""
         if self._card is None:
             return RTN_COMM_ERROR
-        st = self._pth()
+        st = self._path_state()
         if not st.started or not self._card.ge_crd_exists():
             return self._crd_fault(9)
         path = self._card.ge_path()
-        if path.busy or not path.stopped or not self._kept(path):
+        if path.busy or not path.stopped or not self._resumable(path):
             return self._crd_fault(9)
 
         def start():
@@ -1437,7 +1437,7 @@ class GeController(DialectController):
         """-1 in immediate mode (L3754); bit 8 without Mv; None when the buffer takes it."""
         if self._card is None:
             return RTN_COMM_ERROR
-        st = self._pth()
+        st = self._path_state()
         if not st.open:
             return RTN_COMM_ERROR
         if not st.mv:
@@ -1452,7 +1452,7 @@ class GeController(DialectController):
             return gate
         if not _int_in(io_status, 0, 0xFFFF):
             return RTN_PARAMETER_ERROR
-        st = self._pth()
+        st = self._path_state()
         if st.io_count >= 2:
             return self._crd_fault(8)
         path = self._card.ge_path()
@@ -1470,7 +1470,7 @@ class GeController(DialectController):
             return gate
         if not _int_in(io_bit, 0, 15) or not _int_in(bit_status, 0, 1):
             return RTN_PARAMETER_ERROR
-        self._pth().pending_io = [(1 << int(io_bit), int(bit_status) << int(io_bit))]
+        self._path_state().pending_io = [(1 << int(io_bit), int(bit_status) << int(io_bit))]
         return RTN_SUCCESS
 
     def GT_Delay(self, delay_time) -> int:
@@ -1480,7 +1480,7 @@ class GeController(DialectController):
             return gate
         if not _int_in(delay_time, 1, 8191):
             return RTN_PARAMETER_ERROR
-        st = self._pth()
+        st = self._path_state()
         if st.delay_count >= 1:
             return self._crd_fault(8)
         path = self._card.ge_path()
@@ -1496,7 +1496,7 @@ class GeController(DialectController):
         4 segment completed, 7 immediate input mode, 9 an axis fault stopped the path, 13 buffer empty."""
         if self._card is None:
             return RTN_COMM_ERROR, 0
-        st = self._pth()
+        st = self._path_state()
         if not self._card.ge_crd_exists():
             return RTN_SUCCESS, _core.ge_crd_status(buffer_closed=not st.open, immediate_mode=not st.buffer)
         path = self._card.ge_path()
@@ -1510,7 +1510,7 @@ class GeController(DialectController):
         if self._card is None:
             return RTN_COMM_ERROR, 0
         if not self._card.ge_crd_exists():
-            return RTN_SUCCESS, [float(self._card.profile_pos(a)) - self._pth().offsets[a]
+            return RTN_SUCCESS, [float(self._card.profile_pos(a)) - self._path_state().offsets[a]
                                  for a in range(min(3, len(self._card)))]
         path = self._card.ge_path()
         p = which(path)
@@ -1522,7 +1522,7 @@ class GeController(DialectController):
 
     def GT_GetSegPnt(self):
         """(rtn, [X, Y, Z] end point of the executing segment, pulse) (L4735-4743): the tail when idle."""
-        return self._pnt(lambda p: self._pth().seg_end(p))
+        return self._pnt(lambda p: self._path_state().seg_end(p))
 
     def GT_GetBrkPnt(self):
         """(rtn, [X, Y, Z] breakpoint of the last buffered stop, pulse, or None) (L4233-4241)."""
@@ -1533,7 +1533,7 @@ class GeController(DialectController):
         after the last segment; StrtList clears it; wraps 32767 -> 1 (L2005-2017, L4578-4586; V109)."""
         if self._card is None:
             return RTN_COMM_ERROR, 0
-        st = self._pth()
+        st = self._path_state()
         if not self._card.ge_crd_exists() or not st.buffer:
             return RTN_SUCCESS, 0
         path = self._card.ge_path()
@@ -1563,8 +1563,9 @@ class GeController(DialectController):
         try:
             p = _core.GeLookAheadParams(t_s=float(t), acc_max=float(acc_max), acc=float(acc), vel=float(vel),
                                         n=float(n), con=float(con))
-            start = [float(self._card.profile_pos(a)) - self._pth().offsets[a] for a in range(min(3, len(self._card)))]
-            self._pth().la = _core.GeLookAhead(p, [v / float(con) for v in start])
+            offsets = self._path_state().offsets
+            start = [float(self._card.profile_pos(a)) - offsets[a] for a in range(min(3, len(self._card)))]
+            self._path_state().la = _core.GeLookAhead(p, [v / float(con) for v in start])
         except (ValueError, TypeError):
             return RTN_PARAMETER_ERROR
         return RTN_SUCCESS
@@ -1575,7 +1576,7 @@ class GeController(DialectController):
         at its end. 0 accepted, 1 the point equals the previous one (L3370-3394, Table 6-8 L1709-1724)."""
         if self._card is None:
             return RTN_COMM_ERROR
-        la = self._pth().la
+        la = self._path_state().la
         if la is None:
             return self._crd_fault(8)
         try:
@@ -1589,7 +1590,7 @@ class GeController(DialectController):
         the last (L3790-3800, L1725). Send the segment with GT_SetDccVel(vel * con / 1000)."""
         if self._card is None:
             return RTN_COMM_ERROR, 0.0, 0
-        la = self._pth().la
+        la = self._path_state().la
         if la is None or la.pending == 0:
             self._crd_fault(8)
             return RTN_COMMAND_ERROR, 0.0, 0
@@ -1609,7 +1610,7 @@ class GeController(DialectController):
                                         con=float(con))
         except (ValueError, TypeError):
             return RTN_PARAMETER_ERROR
-        self._pth().ex = _GeLookAheadEx(p)
+        self._path_state().ex = _GeLookAheadEx(p)
         return RTN_SUCCESS
 
     def GT_InitLookAheadExx(self, T, amax, am, n, con) -> int:
@@ -1619,7 +1620,7 @@ class GeController(DialectController):
     def _mv_ex(self, point_mm, vel) -> int:
         if self._card is None:
             return RTN_COMM_ERROR
-        st = self._pth()
+        st = self._path_state()
         ex = st.ex
         if ex is None:
             return self._crd_fault(8)
@@ -1632,7 +1633,7 @@ class GeController(DialectController):
             return self._crd_fault(8)
         st.dim, st.dirty = 3, True   # the look-ahead plans X, Y, Z (L1679): a 3-D crd
         try:
-            path = self._gp(rebuild=True)
+            path = self._path_generator(rebuild=True)
         except (CardCommandRefused, MotionCommandRefused):
             return self._crd_fault(8)
         p = ex.params
@@ -1654,7 +1655,7 @@ class GeController(DialectController):
 
     def _ex_gate(self, msg, number):
         """(path, ex) when an Ex command may be buffered now, else (None, rtn) after filling msg."""
-        st = self._pth()
+        st = self._path_state()
         ex = st.ex
         if ex is None or not ex.active or not st.open or not self._card.ge_crd_exists():
             msg.error, msg.mtnNum, msg.num = 8, int(number), 0
@@ -1692,8 +1693,8 @@ class GeController(DialectController):
             msg.error, msg.mtnNum, msg.num = 1, int(number), 0   # the point equals the previous one (L3374)
             return RTN_COMMAND_ERROR
         path.push_segment(seg, float(F) * c / 1000.0, ex.params.acc * c / 1e6, g0=g0, stop_at_end=bool(int(dcc)))
-        self._pth().pushed += 1
-        self._pth().ends.append(list(seg.end))
+        self._path_state().pushed += 1
+        self._path_state().ends.append(list(seg.end))
         msg.error, msg.mtnNum, msg.num = 0, int(number), 0
         return RTN_SUCCESS
 
@@ -1775,7 +1776,7 @@ class GeController(DialectController):
     def _ex_plain(self, push) -> int:
         if self._card is None:
             return RTN_COMM_ERROR
-        st = self._pth()
+        st = self._path_state()
         if not st.open:
             return RTN_COMM_ERROR      # immediate mode (L3758-3762)
         msg = TLookAheadMsg()
@@ -1811,7 +1812,7 @@ class GeController(DialectController):
         if self._card is None:
             return RTN_COMM_ERROR
         msg = pMsg if pMsg is not None else TLookAheadMsg()
-        st = self._pth()
+        st = self._path_state()
         if st.ex is None or not st.ex.active or not st.open or not self._card.ge_crd_exists():
             msg.error = 8
             return self._crd_fault(8)
