@@ -216,10 +216,10 @@ void bind_card_modes(py::class_<Card>& c, py::module_& m) {
              return hosted_dict(k.modes().hosted(static_cast<std::size_t>(slot)));
            }, py::arg("slot"), "the hosted group in slot (crd c: slot c-1; GT map: slot 2)")
       .def("group_of", [](Card& k, AxisIndex i) { return k.modes().group_of(card_axis(k, i)); }, py::arg("axis"))
-      .def("gt_map_axis", [](Card& k, double axis, const std::vector<double>& cnt) {
+      .def("gt_map_axis", [](Card& k, AxisIndex axis, const std::vector<double>& cnt) {  // GT numbering 1..axes
              if (cnt.size() != 5) throw std::invalid_argument("GT_MapAxis: map_count has 5 values {Cx, Cy, Cz, Ca, C}");
-             check_integer("GT_MapAxis", "axis", axis, 1, static_cast<double>(k.axis_count()), "GT L1533");
-             k.modes().gt_map_axis({static_cast<int>(axis), cnt[0], cnt[1], cnt[2], cnt[3], cnt[4]});
+             check_integer("GT_MapAxis", "axis", axis.value, 1, static_cast<double>(k.axis_count()), "GT L1533");
+             k.modes().gt_map_axis({static_cast<int>(axis.value), cnt[0], cnt[1], cnt[2], cnt[3], cnt[4]});
            }, py::arg("axis"), py::arg("map_count"))
       .def("gt_path", [](py::object self) {
              Card& k = self.cast<Card&>();

@@ -228,10 +228,10 @@ void bind_card_scope(py::module_& m, py::class_<Card>& c) {
              return std::string(machine::to_string(k.loop(card_axis(k, i)).capture().source()));
            }, py::arg("axis"))
       // position compare
-      .def("compare_set_source", [](Card& k, double comp, double axis, Flag command) {
+      .def("compare_set_source", [](Card& k, double comp, AxisIndex axis, Flag command) {
              check_integer("Card", "comparator", comp, 0, 3);
              machine::CompareSource s;
-             s.axis = axis;
+             s.axis = static_cast<double>(card_axis(k, axis));
              s.command = command;
              scope_of(k).compare().set_source(static_cast<int>(comp), s, k.axis_count());
            }, py::arg("comparator"), py::arg("axis"), py::arg("command") = false)
