@@ -69,12 +69,6 @@ void Card::detach(CardHooks& module) {
     }
 }
 
-bool Card::limit_enabled(std::size_t i, bool positive) const {
-  for (const CardHooks* h : hooks_)
-    if (!h->limit_enabled(i, positive)) return false;
-  return true;
-}
-
 void Card::check_axis(std::size_t i) const {
   if (i >= st_.size()) throw_invalid("Card", "axis", static_cast<double>(i), "is not an axis of this card");
 }
@@ -162,30 +156,6 @@ bool Card::moving(std::size_t i) const {
   for (const CardHooks* h : hooks_)  // [modes] a halted gear / a PVT or cam axis: the mode says
     if (const std::optional<bool> m = h->moving(i)) return *m || l.generator().moving();
   return state(i).mode == AxisMode::Gear || l.generator().moving() || l.sequence_active();
-}
-
-bool Card::pos_limit_input(std::size_t i) const {
-  const Axis& a = loop(i).axis();
-  const bool hit = a.config().switches.pos_limit(a.load_angle_rad());
-  return hit != state(i).limits.pos_active_low;
-}
-
-bool Card::neg_limit_input(std::size_t i) const {
-  const Axis& a = loop(i).axis();
-  const bool hit = a.config().switches.neg_limit(a.load_angle_rad());
-  return hit != state(i).limits.neg_active_low;
-}
-
-bool Card::inhibited_pos(std::size_t i) const {
-  const CardAxisState& s = st_[i];
-  return (s.limits.enabled && (s.events & event_bit(CardEvent::PosLimit))) ||
-         (s.limits.soft_pos_enabled && (s.events & event_bit(CardEvent::SoftPosLimit)));
-}
-
-bool Card::inhibited_neg(std::size_t i) const {
-  const CardAxisState& s = st_[i];
-  return (s.limits.enabled && (s.events & event_bit(CardEvent::NegLimit))) ||
-         (s.limits.soft_neg_enabled && (s.events & event_bit(CardEvent::SoftNegLimit)));
 }
 
 }  // namespace servobench::machine

@@ -16,6 +16,38 @@ using detail::shifted;
 
 // -- the tick -----------------------------------------------------------------------------------------------
 
+// The inputs and inhibits safety reads every tick (here, beside the tick, so the tick inlines them).
+
+bool Card::limit_enabled(std::size_t i, bool positive) const {
+  for (const CardHooks* h : hooks_)
+    if (!h->limit_enabled(i, positive)) return false;
+  return true;
+}
+
+bool Card::pos_limit_input(std::size_t i) const {
+  const Axis& a = loop(i).axis();
+  const bool hit = a.config().switches.pos_limit(a.load_angle_rad());
+  return hit != state(i).limits.pos_active_low;
+}
+
+bool Card::neg_limit_input(std::size_t i) const {
+  const Axis& a = loop(i).axis();
+  const bool hit = a.config().switches.neg_limit(a.load_angle_rad());
+  return hit != state(i).limits.neg_active_low;
+}
+
+bool Card::inhibited_pos(std::size_t i) const {
+  const CardAxisState& s = st_[i];
+  return (s.limits.enabled && (s.events & event_bit(CardEvent::PosLimit))) ||
+         (s.limits.soft_pos_enabled && (s.events & event_bit(CardEvent::SoftPosLimit)));
+}
+
+bool Card::inhibited_neg(std::size_t i) const {
+  const CardAxisState& s = st_[i];
+  return (s.limits.enabled && (s.events & event_bit(CardEvent::NegLimit))) ||
+         (s.limits.soft_neg_enabled && (s.events & event_bit(CardEvent::SoftNegLimit)));
+}
+
 void Card::limit_stop(std::size_t i, StopCause cause) {
   for (CardHooks* h : hooks_)  // a module may stop the axis its own way (ADLINK PRA_EL_MODE 1: decelerating)
     if (h->on_limit(i, cause)) return;
