@@ -14,9 +14,9 @@
 #include "param_class.hpp"
 #include "card_axis.hpp"
 #include "servobench/common/validate.hpp"
-#include "servobench/machine/aps_status.hpp"
+#include "servobench/vendor/adlink/aps_status.hpp"
 #include "servobench/machine/card.hpp"
-#include "servobench/machine/gt_status.hpp"
+#include "servobench/vendor/googol/gt_status.hpp"
 
 namespace servobench::bindings {
 
@@ -216,15 +216,15 @@ void bind_card(py::module_& m) {
       .def_property_readonly("motion_cycle_ticks", [](const Card& k) { return k.cycles().motion_cycle_ticks; })
       .def_property_readonly("host_cycle_ticks", [](const Card& k) { return k.cycles().host_cycle_ticks; })
       .def("reset", &Card::reset)
-      .def("stage_pos", [](Card& k, double i, double v) { k.stage_pos(card_axis(k, i), v); }, py::arg("axis"), py::arg("pos"))
-      .def("stage_vel", [](Card& k, double i, double v) { k.stage_vel(card_axis(k, i), v); }, py::arg("axis"), py::arg("vel"))
-      .def("stage_acc", [](Card& k, double i, double v) { k.stage_acc(card_axis(k, i), v); }, py::arg("axis"), py::arg("acc"))
-      .def("stage_macc", [](Card& k, double i, double v) { k.stage_macc(card_axis(k, i), v); }, py::arg("axis"), py::arg("macc"))
-      .def("stage_jerk", [](Card& k, double i, double v) { k.stage_jerk(card_axis(k, i), v); }, py::arg("axis"), py::arg("jerk"))
-      .def("stage_ratio", [](Card& k, double i, double v) { k.stage_ratio(card_axis(k, i), v); }, py::arg("axis"), py::arg("ratio"))
-      .def("stage_brk_cn", [](Card& k, double i, double v) { k.stage_brk_cn(card_axis(k, i), v); }, py::arg("axis"), py::arg("brk_cn"))
-      .def("stage_pos_err", [](Card& k, double i, double v) { k.stage_pos_err(card_axis(k, i), v); }, py::arg("axis"), py::arg("pos_err"))
-      .def("stage_law", [](Card& k, double i, const py::object& law) {
+      .def("stage_pos", [](Card& k, AxisIndex i, double v) { k.stage_pos(card_axis(k, i), v); }, py::arg("axis"), py::arg("pos"))
+      .def("stage_vel", [](Card& k, AxisIndex i, double v) { k.stage_vel(card_axis(k, i), v); }, py::arg("axis"), py::arg("vel"))
+      .def("stage_acc", [](Card& k, AxisIndex i, double v) { k.stage_acc(card_axis(k, i), v); }, py::arg("axis"), py::arg("acc"))
+      .def("stage_macc", [](Card& k, AxisIndex i, double v) { k.stage_macc(card_axis(k, i), v); }, py::arg("axis"), py::arg("macc"))
+      .def("stage_jerk", [](Card& k, AxisIndex i, double v) { k.stage_jerk(card_axis(k, i), v); }, py::arg("axis"), py::arg("jerk"))
+      .def("stage_ratio", [](Card& k, AxisIndex i, double v) { k.stage_ratio(card_axis(k, i), v); }, py::arg("axis"), py::arg("ratio"))
+      .def("stage_brk_cn", [](Card& k, AxisIndex i, double v) { k.stage_brk_cn(card_axis(k, i), v); }, py::arg("axis"), py::arg("brk_cn"))
+      .def("stage_pos_err", [](Card& k, AxisIndex i, double v) { k.stage_pos_err(card_axis(k, i), v); }, py::arg("axis"), py::arg("pos_err"))
+      .def("stage_law", [](Card& k, AxisIndex i, const py::object& law) {
              machine::LawParams p;
              if (py::isinstance<control::GtServoLawParams>(law)) {
                p = law.cast<control::GtServoLawParams>();
@@ -235,114 +235,78 @@ void bind_card(py::module_& m) {
              }
              k.stage_law(card_axis(k, i), p);
            }, py::arg("axis"), py::arg("law"))
-      .def("stage_smooth_stop", [](Card& k, double i) { k.stage_smooth_stop(card_axis(k, i)); }, py::arg("axis"))
-      .def("stage_synch_pos", [](Card& k, double i) { k.stage_synch_pos(card_axis(k, i)); }, py::arg("axis"))
+      .def("stage_smooth_stop", [](Card& k, AxisIndex i) { k.stage_smooth_stop(card_axis(k, i)); }, py::arg("axis"))
+      .def("stage_synch_pos", [](Card& k, AxisIndex i) { k.stage_synch_pos(card_axis(k, i)); }, py::arg("axis"))
       .def("update", [](Card& k, double mask) {
              check_integer("Card", "mask", mask, 0, 65535);
              k.update(static_cast<std::uint32_t>(mask));
            }, py::arg("mask"))
-      .def("staged", [](const Card& k, double i) { return registers(k.state(card_axis(k, i)).staged); }, py::arg("axis"))
-      .def("active", [](const Card& k, double i) { return registers(k.state(card_axis(k, i)).active); }, py::arg("axis"))
-      .def("commit_pending", [](const Card& k, double i) { return k.state(card_axis(k, i)).commit_pending; }, py::arg("axis"))
-      .def("set_mode", [](Card& k, double i, const std::string& s) { k.set_mode(card_axis(k, i), mode_from(s)); },
+      .def("staged", [](const Card& k, AxisIndex i) { return registers(k.state(card_axis(k, i)).staged); }, py::arg("axis"))
+      .def("active", [](const Card& k, AxisIndex i) { return registers(k.state(card_axis(k, i)).active); }, py::arg("axis"))
+      .def("commit_pending", [](const Card& k, AxisIndex i) { return k.state(card_axis(k, i)).commit_pending; }, py::arg("axis"))
+      .def("set_mode", [](Card& k, AxisIndex i, const std::string& s) { k.set_mode(card_axis(k, i), mode_from(s)); },
            py::arg("axis"), py::arg("mode"))
-      .def("mode", [](const Card& k, double i) { return std::string(to_string(k.state(card_axis(k, i)).mode)); }, py::arg("axis"))
-      .def("update_pending", [](const Card& k, double i) { return k.state(card_axis(k, i)).commit_pending; }, py::arg("axis"))
-      .def("staged_changes", [](const Card& k, double i) { return k.state(card_axis(k, i)).dirty; }, py::arg("axis"))
-      .def("abrupt_stop", [](Card& k, double i) { k.abrupt_stop(card_axis(k, i)); }, py::arg("axis"))
-      .def("zero_pos", [](Card& k, double i) { k.zero_pos(card_axis(k, i)); }, py::arg("axis"))
-      .def("zero_pos_range", [](Card& k, double first, double count) { k.zero_pos_range(card_axis(k, first), count); },
+      .def("mode", [](const Card& k, AxisIndex i) { return std::string(to_string(k.state(card_axis(k, i)).mode)); }, py::arg("axis"))
+      .def("update_pending", [](const Card& k, AxisIndex i) { return k.state(card_axis(k, i)).commit_pending; }, py::arg("axis"))
+      .def("staged_changes", [](const Card& k, AxisIndex i) { return k.state(card_axis(k, i)).dirty; }, py::arg("axis"))
+      .def("abrupt_stop", [](Card& k, AxisIndex i) { k.abrupt_stop(card_axis(k, i)); }, py::arg("axis"))
+      .def("zero_pos", [](Card& k, AxisIndex i) { k.zero_pos(card_axis(k, i)); }, py::arg("axis"))
+      .def("zero_pos_range", [](Card& k, AxisIndex first, double count) {
+             check_integer("Card", "count", count, 0, 64, "a number of axes");  // whole; the range is the kernel's
+             k.zero_pos_range(card_axis(k, first), static_cast<std::size_t>(count));
+           },
            py::arg("first"), py::arg("count"),
            "GTS GT_ZeroPos(axis, count): actual = target = profile = 0 on `count` axes from `first` (0-based), all or "
            "none: refused (CardCommandRefused) with nothing changed if any of them moves or is in gear/crd mode.")
-      .def("set_actual_pos", [](Card& k, double i, double p) { k.set_actual_pos(card_axis(k, i), p); }, py::arg("axis"), py::arg("pos"))
-      .def("axis_on", [](Card& k, double i) { k.axis_on(card_axis(k, i)); }, py::arg("axis"))
-      .def("axis_off", [](Card& k, double i) { k.axis_off(card_axis(k, i)); }, py::arg("axis"))
-      .def("drive_reset", [](Card& k, double i) { k.drive_reset(card_axis(k, i)); }, py::arg("axis"))
-      .def("set_closed_loop", [](Card& k, double i, Flag on) { k.set_closed_loop(card_axis(k, i), on); }, py::arg("axis"), py::arg("closed"))
-      .def("set_mtr_cmd", [](Card& k, double i, double v) { k.set_mtr_cmd(card_axis(k, i), v); }, py::arg("axis"), py::arg("counts"))
-      .def("mtr_cmd", [](const Card& k, double i) { return k.state(card_axis(k, i)).mtr_cmd; }, py::arg("axis"))
-      .def("set_auto_stop", [](Card& k, double i, Flag on) { k.set_auto_stop(card_axis(k, i), on); }, py::arg("axis"), py::arg("on"))
-      .def("set_auto_update", [](Card& k, double i, Flag on) { k.set_auto_update(card_axis(k, i), on); }, py::arg("axis"), py::arg("on"))
-      .def("arm_breakpoint", [](Card& k, double i, const std::string& s) { k.arm_breakpoint(card_axis(k, i), break_from(s)); },
+      .def("set_actual_pos", [](Card& k, AxisIndex i, double p) { k.set_actual_pos(card_axis(k, i), p); }, py::arg("axis"), py::arg("pos"))
+      .def("axis_on", [](Card& k, AxisIndex i) { k.axis_on(card_axis(k, i)); }, py::arg("axis"))
+      .def("axis_off", [](Card& k, AxisIndex i) { k.axis_off(card_axis(k, i)); }, py::arg("axis"))
+      .def("drive_reset", [](Card& k, AxisIndex i) { k.drive_reset(card_axis(k, i)); }, py::arg("axis"))
+      .def("set_closed_loop", [](Card& k, AxisIndex i, Flag on) { k.set_closed_loop(card_axis(k, i), on); }, py::arg("axis"), py::arg("closed"))
+      .def("set_mtr_cmd", [](Card& k, AxisIndex i, double v) { k.set_mtr_cmd(card_axis(k, i), v); }, py::arg("axis"), py::arg("counts"))
+      .def("mtr_cmd", [](const Card& k, AxisIndex i) { return k.state(card_axis(k, i)).mtr_cmd; }, py::arg("axis"))
+      .def("set_auto_stop", [](Card& k, AxisIndex i, Flag on) { k.set_auto_stop(card_axis(k, i), on); }, py::arg("axis"), py::arg("on"))
+      .def("set_auto_update", [](Card& k, AxisIndex i, Flag on) { k.set_auto_update(card_axis(k, i), on); }, py::arg("axis"), py::arg("on"))
+      .def("arm_breakpoint", [](Card& k, AxisIndex i, const std::string& s) { k.arm_breakpoint(card_axis(k, i), break_from(s)); },
            py::arg("axis"), py::arg("kind"))
-      .def("breakpoint_armed", [](Card& k, double i) { return std::string(to_string(k.loop(card_axis(k, i)).breakpoint().armed())); },
+      .def("breakpoint_armed", [](Card& k, AxisIndex i) { return std::string(to_string(k.loop(card_axis(k, i)).breakpoint().armed())); },
            py::arg("axis"))
-      .def("arm_capture", [](Card& k, double i, const std::string& s) { k.arm_capture(card_axis(k, i), capture_from(s)); },
+      .def("arm_capture", [](Card& k, AxisIndex i, const std::string& s) { k.arm_capture(card_axis(k, i), capture_from(s)); },
            py::arg("axis"), py::arg("trigger"))
-      .def("capture_value", [](Card& k, double i) { return k.loop(card_axis(k, i)).capture().value(); }, py::arg("axis"))
-      .def("home", [](Card& k, double i, const motion::GtHomeParams& p) { k.home(card_axis(k, i), p); }, py::arg("axis"), py::arg("params"))
-      .def("home", [](Card& k, double i, const motion::AdlinkHomeParams& p) { k.home(card_axis(k, i), p); }, py::arg("axis"),
-           py::arg("params"))
-      .def("jog", [](Card& k, double i, const motion::AdlinkJogParams& p) { k.jog(card_axis(k, i), p); }, py::arg("axis"),
-           py::arg("params"))
-      .def("set_jog_on", [](Card& k, double i, Flag on) { k.set_jog_on(card_axis(k, i), on); }, py::arg("axis"), py::arg("on"))
-      .def("jog_on", [](const Card& k, double i) { return k.jog_on(card_axis(k, i)); }, py::arg("axis"))
-      .def("jogging", [](const Card& k, double i) { return k.jogging(card_axis(k, i)); }, py::arg("axis"))
-      .def("move_ptp_wait", [](Card& k, double i, const motion::AdlinkPtpParams& p) { k.move_ptp_wait(card_axis(k, i), p); },
-           py::arg("axis"), py::arg("params"))
-      .def("move_trigger", [](Card& k, double mask) {
-             check_integer("Card", "mask", mask, 1, 255);
-             k.move_trigger(static_cast<std::uint32_t>(mask));
-           }, py::arg("mask"))
-      .def("waiting_trigger", [](const Card& k, double i) { return k.waiting_trigger(card_axis(k, i)); }, py::arg("axis"))
-      .def("set_limit_stop_mode", [](Card& k, double i, Flag dec, double d) { k.set_limit_stop_mode(card_axis(k, i), dec, d); },
-           py::arg("axis"), py::arg("decelerate"), py::arg("dec_pulse_per_s2"))
-      .def("limit_stop_mode", [](const Card& k, double i) {
-             const auto& s = k.state(card_axis(k, i));
-             return py::make_tuple(s.limit_decelerate, s.limit_dec);
-           }, py::arg("axis"))
-      .def("set_move_event_distances", [](Card& k, double i, double pre, double post) {
-             k.set_move_event_distances(card_axis(k, i), pre, post);
-           }, py::arg("axis"), py::arg("pre_pulse"), py::arg("post_pulse"))
-      .def("move_event_distances", [](const Card& k, double i) {
-             const auto& s = k.state(card_axis(k, i));
-             return py::make_tuple(s.pre_event_dist, s.post_event_dist);
-           }, py::arg("axis"))
-      .def("move_ptp", [](Card& k, double i, const motion::AdlinkPtpParams& p) { k.move_ptp(card_axis(k, i), p); },
-           py::arg("axis"), py::arg("params"))
-      .def("move_velocity", [](Card& k, double i, double v, const motion::AdlinkPtpParams& p) {
-             k.move_velocity(card_axis(k, i), v, p);
-           }, py::arg("axis"), py::arg("vel_pulse_per_s"), py::arg("params"))
-      .def("stop_move", [](Card& k, double i, const motion::AdlinkPtpParams& p) { k.stop_move(card_axis(k, i), p); },
-           py::arg("axis"), py::arg("params"))
-      .def("set_in_position_band", [](Card& k, double i, double v) { k.set_in_position_band(card_axis(k, i), v); },
-           py::arg("axis"), py::arg("pulse"))
-      .def("in_position", [](const Card& k, double i) { return k.in_position(card_axis(k, i)); }, py::arg("axis"))
-      .def("set_limits", [](Card& k, double i, const machine::LimitConfig& l) { k.set_limits(card_axis(k, i), l); },
+      .def("capture_value", [](Card& k, AxisIndex i) { return k.loop(card_axis(k, i)).capture().value(); }, py::arg("axis"))
+      .def("home", [](Card& k, AxisIndex i, const motion::GtHomeParams& p) { k.home(card_axis(k, i), p); }, py::arg("axis"), py::arg("params"))
+      .def("set_limits", [](Card& k, AxisIndex i, const machine::LimitConfig& l) { k.set_limits(card_axis(k, i), l); },
            py::arg("axis"), py::arg("limits"))
-      .def("limits", [](const Card& k, double i) { return k.state(card_axis(k, i)).limits; }, py::arg("axis"))
-      .def("set_alarm_enabled", [](Card& k, double i, Flag on) { k.set_alarm_enabled(card_axis(k, i), on); }, py::arg("axis"), py::arg("on"))
-      .def("set_alarm_input", [](Card& k, double i, Flag on) { k.set_alarm_input(card_axis(k, i), on); }, py::arg("axis"), py::arg("alarm"))
-      .def("set_error_level", [](Card& k, double i, double v) { k.set_error_level(card_axis(k, i), v); }, py::arg("axis"), py::arg("pulse"))
-      .def("error_level", [](const Card& k, double i) { return k.state(card_axis(k, i)).error_level_pulse; }, py::arg("axis"))
+      .def("limits", [](const Card& k, AxisIndex i) { return k.state(card_axis(k, i)).limits; }, py::arg("axis"))
+      .def("set_alarm_enabled", [](Card& k, AxisIndex i, Flag on) { k.set_alarm_enabled(card_axis(k, i), on); }, py::arg("axis"), py::arg("on"))
+      .def("set_alarm_input", [](Card& k, AxisIndex i, Flag on) { k.set_alarm_input(card_axis(k, i), on); }, py::arg("axis"), py::arg("alarm"))
       .def_property("emergency_stop", &Card::emergency_stop, &Card::set_emergency_stop)
-      .def("clear_events", [](Card& k, double i, double which) {
+      .def("clear_events", [](Card& k, AxisIndex i, double which) {
              check_integer("Card", "which", which, 0, 4095);
              k.clear_events(card_axis(k, i), static_cast<std::uint32_t>(which));
            }, py::arg("axis"), py::arg("which"))
-      .def("events", [](const Card& k, double i) { return k.events(card_axis(k, i)); }, py::arg("axis"))
-      .def("record_fault", [](Card& k, double axis, const std::string& f) {
-             check_integer("Card", "axis", axis, -1, static_cast<double>(k.axis_count()) - 1);
-             k.record_fault(static_cast<int>(axis), fault_from(f));
+      .def("events", [](const Card& k, AxisIndex i) { return k.events(card_axis(k, i)); }, py::arg("axis"))
+      .def("record_fault", [](Card& k, AxisIndex axis, const std::string& f) {
+             check_integer("Card", "axis", axis.value, -1, static_cast<double>(k.axis_count()) - 1);  // -1: card-wide
+             k.record_fault(static_cast<int>(axis.value), fault_from(f));
            }, py::arg("axis"), py::arg("fault"))
       .def_property_readonly("last_fault", [](const Card& k) { return std::string(to_string(k.last_fault())); })
-      .def("stop_cause", [](const Card& k, double i) { return std::string(to_string(k.state(card_axis(k, i)).stop_cause)); }, py::arg("axis"))
-      .def("moving", [](const Card& k, double i) { return k.moving(card_axis(k, i)); }, py::arg("axis"))
-      .def("servo_on", [](const Card& k, double i) { return k.servo_on(card_axis(k, i)); }, py::arg("axis"))
-      .def("closed_loop", [](const Card& k, double i) { return k.closed_loop(card_axis(k, i)); }, py::arg("axis"))
-      .def("auto_stop", [](const Card& k, double i) { return k.state(card_axis(k, i)).auto_stop; }, py::arg("axis"))
-      .def("auto_update", [](const Card& k, double i) { return k.state(card_axis(k, i)).auto_update; }, py::arg("axis"))
-      .def("profile_pos", [](const Card& k, double i) { return k.profile_pos(card_axis(k, i)); }, py::arg("axis"))
-      .def("profile_vel", [](const Card& k, double i) { return k.profile_vel(card_axis(k, i)); }, py::arg("axis"))
-      .def("actual_pos", [](const Card& k, double i) { return k.actual_pos(card_axis(k, i)); }, py::arg("axis"))
-      .def("following_error", [](const Card& k, double i) { return k.following_error(card_axis(k, i)); }, py::arg("axis"))
-      .def("integral", [](Card& k, double i) -> double {
+      .def("stop_cause", [](const Card& k, AxisIndex i) { return std::string(to_string(k.state(card_axis(k, i)).stop_cause)); }, py::arg("axis"))
+      .def("moving", [](const Card& k, AxisIndex i) { return k.moving(card_axis(k, i)); }, py::arg("axis"))
+      .def("servo_on", [](const Card& k, AxisIndex i) { return k.servo_on(card_axis(k, i)); }, py::arg("axis"))
+      .def("closed_loop", [](const Card& k, AxisIndex i) { return k.closed_loop(card_axis(k, i)); }, py::arg("axis"))
+      .def("auto_stop", [](const Card& k, AxisIndex i) { return k.state(card_axis(k, i)).auto_stop; }, py::arg("axis"))
+      .def("auto_update", [](const Card& k, AxisIndex i) { return k.state(card_axis(k, i)).auto_update; }, py::arg("axis"))
+      .def("profile_pos", [](const Card& k, AxisIndex i) { return k.profile_pos(card_axis(k, i)); }, py::arg("axis"))
+      .def("profile_vel", [](const Card& k, AxisIndex i) { return k.profile_vel(card_axis(k, i)); }, py::arg("axis"))
+      .def("actual_pos", [](const Card& k, AxisIndex i) { return k.actual_pos(card_axis(k, i)); }, py::arg("axis"))
+      .def("following_error", [](const Card& k, AxisIndex i) { return k.following_error(card_axis(k, i)); }, py::arg("axis"))
+      .def("integral", [](Card& k, AxisIndex i) -> double {
              // the GT law's accumulator (GT_GetIntgr), pulse*tick; 0 for the other law
              return k.axis(card_axis(k, i)).law_error_sum();
            }, py::arg("axis"))
-      .def("pos_limit_input", [](const Card& k, double i) { return k.pos_limit_input(card_axis(k, i)); }, py::arg("axis"))
-      .def("neg_limit_input", [](const Card& k, double i) { return k.neg_limit_input(card_axis(k, i)); }, py::arg("axis"))
+      .def("pos_limit_input", [](const Card& k, AxisIndex i) { return k.pos_limit_input(card_axis(k, i)); }, py::arg("axis"))
+      .def("neg_limit_input", [](const Card& k, AxisIndex i) { return k.neg_limit_input(card_axis(k, i)); }, py::arg("axis"))
       .def("run", &run_card, py::arg("ticks"), py::arg("signals") = py::none());
   bind_card_modes(c, m);  // gear, PVT, FollowEx, coordinate systems
   bind_card_scope(m, c);  // scope, events, compare, probe (issue 10.3)
@@ -351,21 +315,21 @@ void bind_card(py::module_& m) {
   // Every other method waits for the running chunk (object_lock.hpp): the card stays readable while it runs.
   serialise_methods(c, {"run", "run_until_event"});
 
-  m.def("gt_axis_status", [](const Card& k, double i) { auto lk = lock_releasing_gil(locks_of(&k)->state); return machine::gt_axis_status(k, card_axis(k, i)); },
+  m.def("gt_axis_status", [](const Card& k, AxisIndex i) { auto lk = lock_releasing_gil(locks_of(&k)->state); return vendor::googol::gt_axis_status(k, card_axis(k, i)); },
         py::arg("card"), py::arg("axis"), "GT axis status register (Table 4-14) of a card axis (0-based).");
-  m.def("aps_motion_status", [](const Card& k, double i) { auto lk = lock_releasing_gil(locks_of(&k)->state); return machine::aps_motion_status(k, card_axis(k, i)); },
+  m.def("aps_motion_status", [](const Card& k, AxisIndex i) { auto lk = lock_releasing_gil(locks_of(&k)->state); return vendor::adlink::aps_motion_status(k, card_axis(k, i)); },
         py::arg("card"), py::arg("axis"), "ADLINK APS_motion_status (MSTS) of a card axis (0-based), L3164-3206");
-  m.def("aps_motion_io_status", [](const Card& k, double i) { auto lk = lock_releasing_gil(locks_of(&k)->state); return machine::aps_motion_io_status(k, card_axis(k, i)); },
+  m.def("aps_motion_io_status", [](const Card& k, AxisIndex i) { auto lk = lock_releasing_gil(locks_of(&k)->state); return vendor::adlink::aps_motion_io_status(k, card_axis(k, i)); },
         py::arg("card"), py::arg("axis"), "ADLINK APS_motion_io_status (MIO) of a card axis (0-based), L3611-3631");
-  m.def("aps_stop_code", [](const Card& k, double i) { auto lk = lock_releasing_gil(locks_of(&k)->state); return machine::aps_stop_code(k, card_axis(k, i)); },
+  m.def("aps_stop_code", [](const Card& k, AxisIndex i) { auto lk = lock_releasing_gil(locks_of(&k)->state); return vendor::adlink::aps_stop_code(k, card_axis(k, i)); },
         py::arg("card"), py::arg("axis"), "ADLINK APS_get_stop_code of a card axis (0-based), L3922-4023");
-  m.def("gt_mode_register", [](const Card& k, double i) { auto lk = lock_releasing_gil(locks_of(&k)->state); return machine::gt_mode_register(k, card_axis(k, i)); },
+  m.def("gt_mode_register", [](const Card& k, AxisIndex i) { auto lk = lock_releasing_gil(locks_of(&k)->state); return vendor::googol::gt_mode_register(k, card_axis(k, i)); },
         py::arg("card"), py::arg("axis"), "GT axis mode register (Table 4-15) of a card axis (0-based).");
-  m.def("gt_command_status", [](const Card& k) { auto lk = lock_releasing_gil(locks_of(&k)->state); return machine::gt_command_status(k); }, py::arg("card"),
+  m.def("gt_command_status", [](const Card& k) { auto lk = lock_releasing_gil(locks_of(&k)->state); return vendor::googol::gt_command_status(k); }, py::arg("card"),
         "GT command status register (Table 2-2): the bit of the last refused command's cause.");
   m.def("gt_events_to_clear", [](double mask) {
           check_integer("GT_RstSts", "mask", mask, 0, 65535);
-          return machine::gt_events_to_clear(static_cast<std::uint16_t>(mask));
+          return vendor::googol::gt_events_to_clear(static_cast<std::uint16_t>(mask));
         }, py::arg("mask"), "The card events GT_RstSts(mask) clears (mask bit 1 keeps, 0 clears; bits 0-7).");
   bind_card_ge(m);
 }

@@ -1,5 +1,7 @@
-// The ADLINK interpolation group on the Card (machine/card_group_adlink.hpp) and the gear engage ramp: thin,
-// axes 0-based; servobench.dialects.aps translates. Called from bind_card.cpp.
+// The ADLINK module of the Card (vendor/adlink/adlink_axes.hpp: immediate moves, trigger, limit stop mode, distance
+// events, error level, in-position band, homing and jog sequences), the interpolation group
+// (machine/card_group_adlink.hpp) and the gear engage ramp: thin, axes 0-based; servobench.dialects.aps translates.
+// The module's methods stay methods of Card (the Python API of the card is unchanged). Called from bind_card.cpp.
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
@@ -13,6 +15,7 @@
 #include "servobench/machine/card.hpp"
 #include "servobench/machine/card_group_adlink.hpp"
 #include "servobench/machine/card_modes.hpp"
+#include "servobench/vendor/adlink/adlink_axes.hpp"
 
 namespace servobench::bindings {
 
@@ -46,14 +49,61 @@ motion::AdlinkMoveSpec::Kind kind_of(const std::string& kind) {
 }  // namespace
 
 void bind_card_aps(py::class_<Card>& c, py::module_& m) {
-  c.def("aps_interp", [](Card& k, const std::vector<double>& array, const std::vector<motion::AdlinkPtpParams>& params,
+  using vendor::adlink::adlink;
+  using vendor::adlink::adlink_state;
+  c.def("home", [](Card& k, AxisIndex i, const motion::AdlinkHomeParams& p) { adlink(k).home(card_axis(k, i), p); },
+        py::arg("axis"), py::arg("params"))
+      .def("jog", [](Card& k, AxisIndex i, const motion::AdlinkJogParams& p) { adlink(k).jog(card_axis(k, i), p); },
+           py::arg("axis"), py::arg("params"))
+      .def("set_jog_on", [](Card& k, AxisIndex i, Flag on) { adlink(k).set_jog_on(card_axis(k, i), on); }, py::arg("axis"),
+           py::arg("on"))
+      .def("jog_on", [](const Card& k, AxisIndex i) { return k.loop(card_axis(k, i)).jog_on(); }, py::arg("axis"))
+      .def("jogging", [](const Card& k, AxisIndex i) { return vendor::adlink::jogging(k, card_axis(k, i)); }, py::arg("axis"))
+      .def("move_ptp_wait", [](Card& k, AxisIndex i, const motion::AdlinkPtpParams& p) { adlink(k).move_ptp_wait(card_axis(k, i), p); },
+           py::arg("axis"), py::arg("params"))
+      .def("move_trigger", [](Card& k, double mask) {
+             check_integer("Card", "mask", mask, 1, 255);
+             adlink(k).move_trigger(static_cast<std::uint32_t>(mask));
+           }, py::arg("mask"))
+      .def("waiting_trigger", [](const Card& k, AxisIndex i) { return adlink_state(k, card_axis(k, i)).wait_trigger; },
+           py::arg("axis"))
+      .def("set_limit_stop_mode", [](Card& k, AxisIndex i, Flag dec, double d) {
+             adlink(k).set_limit_stop_mode(card_axis(k, i), dec, d);
+           }, py::arg("axis"), py::arg("decelerate"), py::arg("dec_pulse_per_s2"))
+      .def("limit_stop_mode", [](const Card& k, AxisIndex i) {
+             const auto& s = adlink_state(k, card_axis(k, i));
+             return py::make_tuple(s.limit_decelerate, s.limit_dec);
+           }, py::arg("axis"))
+      .def("set_move_event_distances", [](Card& k, AxisIndex i, double pre, double post) {
+             adlink(k).set_move_event_distances(card_axis(k, i), pre, post);
+           }, py::arg("axis"), py::arg("pre_pulse"), py::arg("post_pulse"))
+      .def("move_event_distances", [](const Card& k, AxisIndex i) {
+             const auto& s = adlink_state(k, card_axis(k, i));
+             return py::make_tuple(s.pre_event_dist, s.post_event_dist);
+           }, py::arg("axis"))
+      .def("move_ptp", [](Card& k, AxisIndex i, const motion::AdlinkPtpParams& p) { adlink(k).move_ptp(card_axis(k, i), p); },
+           py::arg("axis"), py::arg("params"))
+      .def("move_velocity", [](Card& k, AxisIndex i, double v, const motion::AdlinkPtpParams& p) {
+             adlink(k).move_velocity(card_axis(k, i), v, p);
+           }, py::arg("axis"), py::arg("vel_pulse_per_s"), py::arg("params"))
+      .def("stop_move", [](Card& k, AxisIndex i, const motion::AdlinkPtpParams& p) { adlink(k).stop_move(card_axis(k, i), p); },
+           py::arg("axis"), py::arg("params"))
+      .def("set_in_position_band", [](Card& k, AxisIndex i, double v) { adlink(k).set_in_position_band(card_axis(k, i), v); },
+           py::arg("axis"), py::arg("pulse"))
+      .def("in_position", [](const Card& k, AxisIndex i) { return vendor::adlink::in_position(k, card_axis(k, i)); },
+           py::arg("axis"))
+      .def("set_error_level", [](Card& k, AxisIndex i, double v) { adlink(k).set_error_level(card_axis(k, i), v); },
+           py::arg("axis"), py::arg("pulse"))
+      .def("error_level", [](const Card& k, AxisIndex i) { return adlink_state(k, card_axis(k, i)).error_level_pulse; },
+           py::arg("axis"));
+  c.def("aps_interp", [](Card& k, const std::vector<AxisIndex>& array, const std::vector<motion::AdlinkPtpParams>& params,
                          const std::string& kind, const std::vector<double>& target, const std::vector<double>& center,
                          const std::vector<double>& normal, double angle_deg, int dir, double height,
                          double final_radius, Flag relative, motion::BlendMode mode, double blend, double vm,
                          const motion::AdlinkPtpParams* all, Flag wait, double dwell_s, double buffer_size,
                          Flag point_table) {
          machine::AdlinkGroupMove mv;
-         for (double a : array) mv.array.push_back(card_axis(k, a));
+         for (AxisIndex a : array) mv.array.push_back(card_axis(k, a));
          mv.params = params;
          mv.spec.kind = kind_of(kind);
          mv.spec.relative = relative;
@@ -110,18 +160,18 @@ void bind_card_aps(py::class_<Card>& c, py::module_& m) {
              d["pos"] = std::vector<double>(p.begin(), p.begin() + g->interp().dim());
              return d;
            }, "the ADLINK interpolation group: array, busy, waiting, blending, pending, moves_done, speed, pos");
-  c.def("set_gear_ramp", [](Card& k, double i, double master, double ratio, double rate_per_tick) {
+  c.def("set_gear_ramp", [](Card& k, AxisIndex i, AxisIndex master, double ratio, double rate_per_tick) {
          k.modes().set_gear_ramp(card_axis(k, i), card_axis(k, master), ratio, rate_per_tick);
        }, py::arg("axis"), py::arg("master"), py::arg("ratio"), py::arg("rate_per_tick"),
        "ADLINK APS_start_gear: gear on master's profile, the ratio ramped from 0 at rate_per_tick (ratio/tick)")
-      .def("gear_ramp_to", [](Card& k, double i, double ratio, double rate_per_tick) {
+      .def("gear_ramp_to", [](Card& k, AxisIndex i, double ratio, double rate_per_tick) {
              k.modes().gear_ramp_to(card_axis(k, i), ratio, rate_per_tick);
            }, py::arg("axis"), py::arg("ratio"), py::arg("rate_per_tick"), "on-the-fly ratio change, ramped")
-      .def("gear_ratio", [](Card& k, double i) { return k.modes().gear_ratio(card_axis(k, i)); }, py::arg("axis"),
+      .def("gear_ratio", [](Card& k, AxisIndex i) { return k.modes().gear_ratio(card_axis(k, i)); }, py::arg("axis"),
            "the gear ratio in effect now");
-  m.def("aps_group_motion_status", [](const Card& k, double i) { return machine::aps_group_motion_status(k, card_axis(k, i)); },
+  m.def("aps_group_motion_status", [](const Card& k, AxisIndex i) { return machine::aps_group_motion_status(k, card_axis(k, i)); },
         py::arg("card"), py::arg("axis"), "APS_motion_status with the interpolation group's view (WAIT, BLD, MDN)");
-  m.def("aps_group_stop_code", [](const Card& k, double i) { return machine::aps_group_stop_code(k, card_axis(k, i)); },
+  m.def("aps_group_stop_code", [](const Card& k, AxisIndex i) { return machine::aps_group_stop_code(k, card_axis(k, i)); },
         py::arg("card"), py::arg("axis"), "APS_get_stop_code with a group fault's code on every group axis");
 }
 

@@ -1,5 +1,5 @@
 // The Card's driven modes (machine/card_modes.hpp): electronic gear, PVT, FollowEx, coordinate systems, and the
-// coordinate-system status words (machine/crd_status.hpp). Thin: axes 0-based, crd 1..2 as the manuals; the
+// coordinate-system status words (vendor/googol/crd_status.hpp). Thin: axes 0-based, crd 1..2 as the manuals; the
 // dialects (servobench.dialects.gt / gts) translate. Called from bind_card.cpp.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -16,7 +16,7 @@
 #include "servobench/common/validate.hpp"
 #include "servobench/machine/card.hpp"
 #include "servobench/machine/card_modes.hpp"
-#include "servobench/machine/crd_status.hpp"
+#include "servobench/vendor/googol/crd_status.hpp"
 
 namespace servobench::bindings {
 
@@ -82,8 +82,8 @@ py::dict hosted_dict(const machine::HostedGroup& h) {
   return d;
 }
 
-machine::CrdStatusInputs inputs_from(const py::kwargs& kw) {
-  machine::CrdStatusInputs in;
+vendor::googol::CrdStatusInputs inputs_from(const py::kwargs& kw) {
+  vendor::googol::CrdStatusInputs in;
   for (const auto& item : kw) {
     const std::string k = py::str(item.first);
     const bool v = item.second.cast<bool>();
@@ -106,10 +106,10 @@ machine::CrdStatusInputs inputs_from(const py::kwargs& kw) {
 
 void bind_card_modes(py::class_<Card>& c, py::module_& m) {
   // -- electronic gear
-  c.def("set_gear", [](Card& k, double i, double master) { k.modes().set_gear(card_axis(k, i), card_axis(k, master)); },
+  c.def("set_gear", [](Card& k, AxisIndex i, AxisIndex master) { k.modes().set_gear(card_axis(k, i), card_axis(k, master)); },
         py::arg("axis"), py::arg("master"), "GT_PrflG: axis follows master's profile position with the active ratio")
-      .def("gear_master", [](Card& k, double i) { return k.modes().gear_master(card_axis(k, i)); }, py::arg("axis"))
-      .def("gear_halted", [](Card& k, double i) { return k.modes().gear_halted(card_axis(k, i)); }, py::arg("axis"))
+      .def("gear_master", [](Card& k, AxisIndex i) { return k.modes().gear_master(card_axis(k, i)); }, py::arg("axis"))
+      .def("gear_halted", [](Card& k, AxisIndex i) { return k.modes().gear_halted(card_axis(k, i)); }, py::arg("axis"))
       // -- PVT
       .def("pvt_download", [](Card& k, double table, const motion::PvtCurve& curve) {
              check_integer("Card", "table_id", table, 1, 32, "GUC L1304");
@@ -120,35 +120,35 @@ void bind_card_modes(py::class_<Card>& c, py::module_& m) {
              const motion::PvtCurve* t = k.modes().pvt_tables().table(static_cast<int>(table));
              return t ? py::cast(*t) : py::none();
            }, py::arg("table_id"))
-      .def("set_pvt", [](Card& k, double i) { k.modes().set_pvt(card_axis(k, i)); }, py::arg("axis"), "GT_PrfPvt")
-      .def("pvt_select", [](Card& k, double i, double table) {
+      .def("set_pvt", [](Card& k, AxisIndex i) { k.modes().set_pvt(card_axis(k, i)); }, py::arg("axis"), "GT_PrfPvt")
+      .def("pvt_select", [](Card& k, AxisIndex i, double table) {
              check_integer("Card", "table_id", table, 1, 32, "GUC L1304");
              k.modes().pvt_select(card_axis(k, i), static_cast<int>(table));
            }, py::arg("axis"), py::arg("table_id"))
-      .def("pvt_loop", [](Card& k, double i, double loop) { k.modes().pvt_loop(card_axis(k, i), loop); },
+      .def("pvt_loop", [](Card& k, AxisIndex i, double loop) { k.modes().pvt_loop(card_axis(k, i), loop); },
            py::arg("axis"), py::arg("loop"))
       .def("pvt_start", [](Card& k, double mask) { k.modes().pvt_start(mask_of(mask, "mask")); }, py::arg("mask"))
-      .def("pvt_status", [](Card& k, double i) {
+      .def("pvt_status", [](Card& k, AxisIndex i) {
              const motion::PvtAxis& a = k.modes().pvt(card_axis(k, i));
              return py::make_tuple(a.table_id(), a.time_ms());
            }, py::arg("axis"), "(table id, PVT time ms) (GT_PvtStatus)")
-      .def("pvt_loop_status", [](Card& k, double i) {
+      .def("pvt_loop_status", [](Card& k, AxisIndex i) {
              const motion::PvtAxis& a = k.modes().pvt(card_axis(k, i));
              return py::make_tuple(a.loop_count(), a.loop());
            }, py::arg("axis"), "(passes done, loop setting) (GT_GetPvtLoop)")
       // -- FollowEx
-      .def("set_follow", [](Card& k, double i, const motion::FollowExSetup& s, double master) {
+      .def("set_follow", [](Card& k, AxisIndex i, const motion::FollowExSetup& s, AxisIndex master) {
              k.modes().set_follow(card_axis(k, i), s, machine::FollowMaster{card_axis(k, master)});
            }, py::arg("axis"), py::arg("setup"), py::arg("master"), "GT_PrfFollowEx + GT_SetFollowMasterEx")
-      .def("follow_configure", [](Card& k, double i, const motion::FollowExSetup& s) {
+      .def("follow_configure", [](Card& k, AxisIndex i, const motion::FollowExSetup& s) {
              k.modes().follow_configure(card_axis(k, i), s);
            }, py::arg("axis"), py::arg("setup"))
-      .def("follow_set_master", [](Card& k, double i, double master) {
+      .def("follow_set_master", [](Card& k, AxisIndex i, AxisIndex master) {
              k.modes().follow_master(card_axis(k, i), machine::FollowMaster{card_axis(k, master)});
            }, py::arg("axis"), py::arg("master"))
-      .def("follow_master", [](Card& k, double i) { return k.modes().follow_master_of(card_axis(k, i)).master; },
+      .def("follow_master", [](Card& k, AxisIndex i) { return k.modes().follow_master_of(card_axis(k, i)).master; },
            py::arg("axis"))
-      .def("follow", [](py::object self, double i) {
+      .def("follow", [](py::object self, AxisIndex i) {
              Card& k = self.cast<Card&>();
              auto f = k.modes().follow_shared(card_axis(k, i));
              return view(f.get(), f, self);
@@ -158,7 +158,7 @@ void bind_card_modes(py::class_<Card>& c, py::module_& m) {
            }, py::arg("mask"), py::arg("option") = 0.0)
       .def("follow_switch", [](Card& k, double mask) { k.modes().follow_switch(mask_of(mask, "mask")); },
            py::arg("mask"))
-      .def("follow_master_pos", [](Card& k, double i) {
+      .def("follow_master_pos", [](Card& k, AxisIndex i) {
              const std::size_t a = card_axis(k, i);
              k.modes().follow(a);
              return k.modes().follow_master_pos(a);
@@ -200,7 +200,7 @@ void bind_card_modes(py::class_<Card>& c, py::module_& m) {
            }, py::arg("crd"), py::arg("abrupt") = false)
       .def("crd_status", [](Card& k, double crd, double fifo) {
              check_integer("Card", "fifo", fifo, 0, 1);
-             const machine::GucCrdStatus s = machine::guc_crd_status(k, crd_of(crd), static_cast<int>(fifo));
+             const vendor::googol::GucCrdStatus s = vendor::googol::guc_crd_status(k, crd_of(crd), static_cast<int>(fifo));
              return py::make_tuple(s.run, s.segment);
            }, py::arg("crd"), py::arg("fifo") = 0.0, "(run, segment) as GT_CrdStatus")
       .def("crd_pos", [](Card& k, double crd) {
@@ -215,11 +215,11 @@ void bind_card_modes(py::class_<Card>& c, py::module_& m) {
              check_integer("Card", "slot", slot, 0, static_cast<double>(machine::kGroupSlots) - 1);
              return hosted_dict(k.modes().hosted(static_cast<std::size_t>(slot)));
            }, py::arg("slot"), "the hosted group in slot (crd c: slot c-1; GT map: slot 2)")
-      .def("group_of", [](Card& k, double i) { return k.modes().group_of(card_axis(k, i)); }, py::arg("axis"))
-      .def("gt_map_axis", [](Card& k, double axis, const std::vector<double>& cnt) {
+      .def("group_of", [](Card& k, AxisIndex i) { return k.modes().group_of(card_axis(k, i)); }, py::arg("axis"))
+      .def("gt_map_axis", [](Card& k, AxisIndex axis, const std::vector<double>& cnt) {  // GT numbering 1..axes
              if (cnt.size() != 5) throw std::invalid_argument("GT_MapAxis: map_count has 5 values {Cx, Cy, Cz, Ca, C}");
-             check_integer("GT_MapAxis", "axis", axis, 1, static_cast<double>(k.axis_count()), "GT L1533");
-             k.modes().gt_map_axis({static_cast<int>(axis), cnt[0], cnt[1], cnt[2], cnt[3], cnt[4]});
+             check_integer("GT_MapAxis", "axis", axis.value, 1, static_cast<double>(k.axis_count()), "GT L1533");
+             k.modes().gt_map_axis({static_cast<int>(axis.value), cnt[0], cnt[1], cnt[2], cnt[3], cnt[4]});
            }, py::arg("axis"), py::arg("map_count"))
       .def("gt_path", [](py::object self) {
              Card& k = self.cast<Card&>();
@@ -238,9 +238,9 @@ void bind_card_modes(py::class_<Card>& c, py::module_& m) {
              k.modes().stop_group(static_cast<std::size_t>(slot), abrupt);
            }, py::arg("slot"), py::arg("abrupt") = false);
 
-  m.def("gt_crd_status", [](const py::kwargs& kw) { return machine::gt_crd_status(inputs_from(kw)); },
+  m.def("gt_crd_status", [](const py::kwargs& kw) { return vendor::googol::gt_crd_status(inputs_from(kw)); },
         "GT GT_GetCrdSts word (Table 5-6, GT L1990-2011) from keyword inputs (see CrdStatusInputs)");
-  m.def("ge_crd_status", [](const py::kwargs& kw) { return machine::ge_crd_status(inputs_from(kw)); },
+  m.def("ge_crd_status", [](const py::kwargs& kw) { return vendor::googol::ge_crd_status(inputs_from(kw)); },
         "GE GT_GetCrdSts word (Table 4-5, GE L951-968) from keyword inputs (see CrdStatusInputs)");
 }
 

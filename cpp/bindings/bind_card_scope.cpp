@@ -17,6 +17,7 @@
 #include "servobench/common/validate.hpp"
 #include "servobench/machine/card.hpp"
 #include "servobench/machine/card_scope.hpp"
+#include "servobench/vendor/scope_words.hpp"
 
 namespace servobench::bindings {
 
@@ -27,6 +28,13 @@ using machine::Card;
 std::vector<const void*> card_keys(Card& card);  // bind_card.cpp: the card and its axes
 
 namespace {
+
+// The card's scope with the vendor words every dialect samples and watches (vendor/scope_words.hpp).
+machine::CardScope& scope_of(Card& k) {
+  machine::CardScope& s = k.scope();
+  if (!s.words().msts) s.set_words(vendor::scope_words());
+  return s;
+}
 
 machine::SampleTrigger trigger_from(const std::string& s) {
   if (s == "immediate") return machine::SampleTrigger::Immediate;
@@ -68,7 +76,7 @@ py::tuple block_tuple(const machine::SampleBlock& b, std::size_t nch) {
 py::list fired_list(const Card& c) {
   py::list out;
   if (!c.has_scope()) return out;
-  for (const machine::FiredEvent& f : const_cast<Card&>(c).scope().fired())
+  for (const machine::FiredEvent& f : scope_of(const_cast<Card&>(c)).fired())
     out.append(py::make_tuple(f.tick, f.axis, word_name(f.word), f.bits));
   return out;
 }
@@ -78,6 +86,7 @@ py::list fired_list(const Card& c) {
 // in chunks, so a run that stops early costs what it ran, not what it might have.
 py::tuple run_until_event(Card& card, double ticks, const std::vector<std::string>& wanted) {
   check_integer("Card.run_until_event", "ticks", ticks, 0, 1e9);
+  scope_of(card);  // the vendor words, before the first tick watched
   const std::size_t n_ax = card.axis_count();
   const auto n = static_cast<std::size_t>(ticks);
   // The run usually ends at an event long before `ticks`: its buffers are checked before each growth.
@@ -118,7 +127,7 @@ py::tuple run_until_event(Card& card, double ticks, const std::vector<std::strin
       {
         auto held = lock.chunk();
         ran += card.run_until_event(chunk, tr);
-        fired = !card.scope().fired().empty();
+        fired = !scope_of(card).fired().empty();
       }
       if (fired || ran >= n) break;
       check_signals();
@@ -167,84 +176,86 @@ void bind_card_scope(py::module_& m, py::class_<Card>& c) {
           cfg.event_bits = event_bits;
           cfg.pretrigger = pretrigger;
           cfg.continuous = continuous;
-          k.scope().start_sampler(cfg);
+          scope_of(k).start_sampler(cfg);
         },
         py::arg("channels"), py::arg("every_ticks") = 1.0, py::arg("depth") = 1000.0, py::arg("trigger") = "immediate",
         py::arg("trigger_channel") = 0.0, py::arg("level") = 0.0, py::arg("event_axis") = 0.0,
         py::arg("event_bits") = 1.0, py::arg("pretrigger") = 0.0, py::arg("continuous") = false)
-      .def("sampler_stop", [](Card& k) { if (k.has_scope()) k.scope().sampler().stop(); })
+      .def("sampler_stop", [](Card& k) { if (k.has_scope()) scope_of(k).sampler().stop(); })
       .def_property_readonly("sampler_state", [](Card& k) {
-        return std::string(k.has_scope() ? state_name(k.scope().sampler().state()) : "idle");
+        return std::string(k.has_scope() ? state_name(scope_of(k).sampler().state()) : "idle");
       })
-      .def_property_readonly("sampler_filled", [](Card& k) { return k.has_scope() ? k.scope().sampler().filled() : 0; })
-      .def_property_readonly("sampler_blocks", [](Card& k) { return k.has_scope() ? k.scope().sampler().blocks().size() : 0; })
-      .def_property_readonly("sampler_dropped", [](Card& k) { return k.has_scope() ? k.scope().sampler().dropped_blocks() : 0; })
+      .def_property_readonly("sampler_filled", [](Card& k) { return k.has_scope() ? scope_of(k).sampler().filled() : 0; })
+      .def_property_readonly("sampler_blocks", [](Card& k) { return k.has_scope() ? scope_of(k).sampler().blocks().size() : 0; })
+      .def_property_readonly("sampler_dropped", [](Card& k) { return k.has_scope() ? scope_of(k).sampler().dropped_blocks() : 0; })
       .def("sampler_pop_block", [](Card& k) -> py::object {
-        if (!k.has_scope() || !k.scope().sampler().block_ready()) return py::none();
-        const std::size_t nch = k.scope().sampler().config().channels.size();
-        return block_tuple(k.scope().sampler().pop_block(), nch);
+        if (!k.has_scope() || !scope_of(k).sampler().block_ready()) return py::none();
+        const std::size_t nch = scope_of(k).sampler().config().channels.size();
+        return block_tuple(scope_of(k).sampler().pop_block(), nch);
       })
       .def("sampler_snapshot", [](Card& k) -> py::object {
         if (!k.has_scope()) return py::none();
-        const std::size_t nch = k.scope().sampler().config().channels.size();
-        return block_tuple(k.scope().sampler().snapshot(), nch);
+        const std::size_t nch = scope_of(k).sampler().config().channels.size();
+        return block_tuple(scope_of(k).sampler().snapshot(), nch);
       })
-      .def("set_watch", [](Card& k, double i, double events, double msts, double mio) {
+      .def("set_watch", [](Card& k, AxisIndex i, double events, double msts, double mio) {
              check_integer("Card", "events", events, 0, 4095);
              check_integer("Card", "msts", msts, 0, 4294967295.0);
              check_integer("Card", "mio", mio, 0, 4294967295.0);
-             k.scope().set_watch(card_axis(k, i), static_cast<std::uint32_t>(events), static_cast<std::uint32_t>(msts),
+             scope_of(k).set_watch(card_axis(k, i), static_cast<std::uint32_t>(events), static_cast<std::uint32_t>(msts),
                                  static_cast<std::uint32_t>(mio));
            }, py::arg("axis"), py::arg("events"), py::arg("msts") = 0.0, py::arg("mio") = 0.0)
       .def("set_system_watch", [](Card& k, double bits) {
              check_integer("Card", "system_bits", bits, 0, 31);
-             k.scope().set_system_watch(static_cast<std::uint32_t>(bits));
+             scope_of(k).set_system_watch(static_cast<std::uint32_t>(bits));
            }, py::arg("bits"))
-      .def("set_timer", [](Card& k, double t) { k.scope().set_timer(t); }, py::arg("ticks"))
+      .def("set_timer", [](Card& k, double t) { scope_of(k).set_timer(t); }, py::arg("ticks"))
       .def_property_readonly("fired", [](const Card& k) { return fired_list(k); })
       .def("run_until_event", &run_until_event, py::arg("ticks"), py::arg("signals") = std::vector<std::string>{})
       .def("set_probe_time", [](Card& k, std::optional<double> t) {
              if (t) check_range("Card.set_probe_time", "t_s", *t, 0.0, 1e9, "s on the card clock; None = never");
              k.set_probe_time(t ? *t : std::nan(""));
            }, py::arg("t_s"), "The probe input EXI0's edge at t_s (s on the card clock, 0..1e9; None: never).")
-      .def("set_probe_position", [](Card& k, double axis, double pos) { k.scope().set_probe_position(axis, pos); },
+      .def("set_probe_position", [](Card& k, AxisIndex axis, double pos) {
+             scope_of(k).set_probe_position(card_axis(k, axis), pos);
+           },
            py::arg("axis"), py::arg("pos"))
-      .def("clear_probe_position", [](Card& k) { if (k.has_scope()) k.scope().clear_probe_position(); })
-      .def("capture_armed", [](Card& k, double i) {
+      .def("clear_probe_position", [](Card& k) { if (k.has_scope()) scope_of(k).clear_probe_position(); })
+      .def("capture_armed", [](Card& k, AxisIndex i) {
              return std::string(machine::to_string(k.loop(card_axis(k, i)).capture().armed()));
            }, py::arg("axis"))
-      .def("capture_source", [](Card& k, double i) {
+      .def("capture_source", [](Card& k, AxisIndex i) {
              return std::string(machine::to_string(k.loop(card_axis(k, i)).capture().source()));
            }, py::arg("axis"))
       // position compare
-      .def("compare_set_source", [](Card& k, double comp, double axis, Flag command) {
+      .def("compare_set_source", [](Card& k, double comp, AxisIndex axis, Flag command) {
              check_integer("Card", "comparator", comp, 0, 3);
              machine::CompareSource s;
-             s.axis = axis;
+             s.axis = static_cast<double>(card_axis(k, axis));
              s.command = command;
-             k.scope().compare().set_source(static_cast<int>(comp), s, k.axis_count());
+             scope_of(k).compare().set_source(static_cast<int>(comp), s, k.axis_count());
            }, py::arg("comparator"), py::arg("axis"), py::arg("command") = false)
       .def("compare_source", [](Card& k, double comp) {
              check_integer("Card", "comparator", comp, 0, 3);
-             const auto& s = k.scope().compare().source(static_cast<int>(comp));
+             const auto& s = scope_of(k).compare().source(static_cast<int>(comp));
              return py::make_tuple(s.axis, s.command);
            }, py::arg("comparator"))
       .def("compare_set_linear", [](Card& k, double ch, double start, double count, double interval) {
              check_integer("Card", "channel", ch, 0, 1);
-             k.scope().compare().set_linear(static_cast<int>(ch), start, count, interval);
+             scope_of(k).compare().set_linear(static_cast<int>(ch), start, count, interval);
            }, py::arg("channel"), py::arg("start"), py::arg("count"), py::arg("interval"))
       .def("compare_set_table", [](Card& k, double ch, const std::vector<double>& pts) {
              check_integer("Card", "channel", ch, 0, 1);
-             k.scope().compare().set_table(static_cast<int>(ch), pts);
+             scope_of(k).compare().set_table(static_cast<int>(ch), pts);
            }, py::arg("channel"), py::arg("points"))
       .def("compare_set_table_direction", [](Card& k, double ch, double dir) {
              check_integer("Card", "channel", ch, 0, 1);
              check_integer("Card", "direction", dir, -1, 1);
-             k.scope().compare().set_table_direction(static_cast<int>(ch), static_cast<int>(dir));
+             scope_of(k).compare().set_table_direction(static_cast<int>(ch), static_cast<int>(dir));
            }, py::arg("channel"), py::arg("direction"))
       .def("compare_table_direction", [](Card& k, double ch) {
              check_integer("Card", "channel", ch, 0, 1);
-             return k.scope().compare().table_direction(static_cast<int>(ch));
+             return scope_of(k).compare().table_direction(static_cast<int>(ch));
            }, py::arg("channel"))
       .def("compare_set_output", [](Card& k, double trg, double sources, double width, Flag active_low, Flag toggle) {
              check_integer("Card", "output", trg, 0, 3);
@@ -254,12 +265,12 @@ void bind_card_scope(py::module_& m, py::class_<Card>& c) {
              o.pulse_width_s = width;
              o.active_low = active_low;
              o.toggle = toggle;
-             k.scope().compare().set_output(static_cast<int>(trg), o);
+             scope_of(k).compare().set_output(static_cast<int>(trg), o);
            }, py::arg("output"), py::arg("sources"), py::arg("pulse_width_s") = 1e-7, py::arg("active_low") = false,
            py::arg("toggle") = false)
       .def("compare_output", [](Card& k, double trg) {
              check_integer("Card", "output", trg, 0, 3);
-             const auto& o = k.scope().compare().output(static_cast<int>(trg));
+             const auto& o = scope_of(k).compare().output(static_cast<int>(trg));
              py::dict d;
              d["sources"] = o.sources;
              d["pulse_width_s"] = o.pulse_width_s;
@@ -269,35 +280,35 @@ void bind_card_scope(py::module_& m, py::class_<Card>& c) {
            }, py::arg("output"))
       .def("compare_enable", [](Card& k, double mask) {
              check_integer("Card", "enable_mask", mask, 0, 15);
-             k.scope().compare().set_enabled_mask(static_cast<std::uint32_t>(mask));
+             scope_of(k).compare().set_enabled_mask(static_cast<std::uint32_t>(mask));
            }, py::arg("mask"))
-      .def_property_readonly("compare_enabled", [](Card& k) { return k.scope().compare().enabled_mask(); })
+      .def_property_readonly("compare_enabled", [](Card& k) { return scope_of(k).compare().enabled_mask(); })
       .def("compare_manual", [](Card& k, double trg) {
              check_integer("Card", "output", trg, 0, 3);
-             k.scope().compare().manual(static_cast<int>(trg), static_cast<double>(k.tick()) * k.servo_period_s(), k.tick());
+             scope_of(k).compare().manual(static_cast<int>(trg), static_cast<double>(k.tick()) * k.servo_period_s(), k.tick());
            }, py::arg("output"))
       .def("compare_count", [](Card& k, double trg) {
              check_integer("Card", "output", trg, 0, 3);
-             return k.scope().compare().count(static_cast<int>(trg));
+             return scope_of(k).compare().count(static_cast<int>(trg));
            }, py::arg("output"))
       .def("compare_reset_count", [](Card& k, double trg) {
              check_integer("Card", "output", trg, 0, 3);
-             k.scope().compare().reset_count(static_cast<int>(trg));
+             scope_of(k).compare().reset_count(static_cast<int>(trg));
            }, py::arg("output"))
       .def("compare_level", [](Card& k, double trg) {
              check_integer("Card", "output", trg, 0, 3);
-             return k.scope().compare().level(static_cast<int>(trg));
+             return scope_of(k).compare().level(static_cast<int>(trg));
            }, py::arg("output"))
       .def("compare_next_point", [](Card& k, double comp) {
              check_integer("Card", "comparator", comp, 0, 3);
-             return k.scope().compare().next_point(static_cast<int>(comp));
+             return scope_of(k).compare().next_point(static_cast<int>(comp));
            }, py::arg("comparator"))
       .def("compare_remaining", [](Card& k, double comp) {
              check_integer("Card", "comparator", comp, 0, 3);
-             return k.scope().compare().remaining(static_cast<int>(comp));
+             return scope_of(k).compare().remaining(static_cast<int>(comp));
            }, py::arg("comparator"))
       .def("compare_log", [](Card& k) {
-             const auto& log = k.scope().compare().log();
+             const auto& log = scope_of(k).compare().log();
              std::vector<double> t, tick, out, comp, pt;
              for (const auto& e : log) {
                t.push_back(e.time_s);
@@ -314,7 +325,7 @@ void bind_card_scope(py::module_& m, py::class_<Card>& c) {
              d["point"] = to_array(pt);
              return d;
            })
-      .def("compare_clear_log", [](Card& k) { k.scope().compare().clear_log(); });
+      .def("compare_clear_log", [](Card& k) { scope_of(k).compare().clear_log(); });
 }
 
 }  // namespace servobench::bindings

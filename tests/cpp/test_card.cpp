@@ -5,10 +5,13 @@
 #include <cmath>
 
 #include "servobench/machine/card.hpp"
+#include "servobench/vendor/adlink/adlink_axes.hpp"
 #include "card_fixtures.hpp"
-#include "servobench/machine/gt_status.hpp"
+#include "servobench/vendor/googol/gt_status.hpp"
 
 namespace mc = servobench::machine;
+namespace vg = servobench::vendor::googol;
+namespace va = servobench::vendor::adlink;
 namespace sm = servobench::motion;
 
 namespace {
@@ -119,8 +122,8 @@ TEST(Card, RefusedUpdateCommitsNothingAndRecordsTheCause) {
     EXPECT_EQ(e.fault(), mc::CommandFault::ChangeInMotion);
     EXPECT_EQ(e.axis(), 0);
   }
-  EXPECT_EQ(mc::gt_command_status(c), 1u << 11);
-  EXPECT_TRUE(mc::gt_axis_status(c, 0) & 0x80);  // bit 7: command error
+  EXPECT_EQ(vg::gt_command_status(c), 1u << 11);
+  EXPECT_TRUE(vg::gt_axis_status(c, 0) & 0x80);  // bit 7: command error
   EXPECT_EQ(c.state(0).active.vel, 2);
   EXPECT_EQ(c.state(0).staged.vel, 3);
   EXPECT_FALSE(c.state(1).commit_pending);
@@ -133,57 +136,57 @@ TEST(Card, RefusedUpdateCommitsNothingAndRecordsTheCause) {
   EXPECT_EQ(c.state(0).active.pos, 8000);
   // mode change while moving: bit 6 (L464)
   EXPECT_THROW(c.set_mode(0, mc::AxisMode::TCurve), mc::CardCommandRefused);
-  EXPECT_EQ(mc::gt_command_status(c), 1u << 6);
+  EXPECT_EQ(vg::gt_command_status(c), 1u << 6);
   EXPECT_EQ(c.state(0).mode, mc::AxisMode::SCurve);
   // MltiUpdt(0): bit 2 (L460)
   EXPECT_THROW(c.update(0), mc::CardCommandRefused);
-  EXPECT_EQ(mc::gt_command_status(c), 1u << 2);
+  EXPECT_EQ(vg::gt_command_status(c), 1u << 2);
   // ZeroPos while moving: bit 11 (L1421)
   EXPECT_THROW(c.zero_pos(0), mc::CardCommandRefused);
-  EXPECT_EQ(mc::gt_command_status(c), 1u << 11);
+  EXPECT_EQ(vg::gt_command_status(c), 1u << 11);
 }
 
 TEST(GtStatus, StateBitsOfTable4_14AndTheModeRegister) {
   // GT Table 4-14 (L1439-1464) and 4-15 (L1493-1511).
   mc::Card c(4, tuned_axis());
   // axis 3 after power-on: closed loop (8), limits on (11), axis number 10b (12-13), nothing else
-  EXPECT_EQ(mc::gt_axis_status(c, 2), 0x0100 | 0x0800 | 0x2000);
-  EXPECT_EQ(mc::gt_axis_status(c, 3) & 0x3000, 0x3000);
+  EXPECT_EQ(vg::gt_axis_status(c, 2), 0x0100 | 0x0800 | 0x2000);
+  EXPECT_EQ(vg::gt_axis_status(c, 3) & 0x3000, 0x3000);
   c.axis_on(2);  // bit 9, and AxisOn sets motion complete (L1481)
-  EXPECT_EQ(mc::gt_axis_status(c, 2) & 0x0201, 0x0201);
+  EXPECT_EQ(vg::gt_axis_status(c, 2) & 0x0201, 0x0201);
   c.set_closed_loop(2, false);
-  EXPECT_FALSE(mc::gt_axis_status(c, 2) & 0x0100);
+  EXPECT_FALSE(vg::gt_axis_status(c, 2) & 0x0100);
   c.set_closed_loop(2, true);
   c.arm_capture(2, mc::CaptureTrigger::Home);
-  EXPECT_TRUE(mc::gt_axis_status(c, 2) & 0x4000);
+  EXPECT_TRUE(vg::gt_axis_status(c, 2) & 0x4000);
   EXPECT_THROW(c.arm_capture(2, mc::CaptureTrigger::Home), mc::CardCommandRefused);  // L465-471: bit 8
-  EXPECT_EQ(mc::gt_command_status(c), 1u << 8);
+  EXPECT_EQ(vg::gt_command_status(c), 1u << 8);
   c.arm_capture(2, mc::CaptureTrigger::None);
   c.arm_capture(2, mc::CaptureTrigger::Index);
-  EXPECT_EQ(mc::gt_axis_status(c, 2) & 0xC000, 0x8000);
+  EXPECT_EQ(vg::gt_axis_status(c, 2) & 0xC000, 0x8000);
   EXPECT_THROW(c.arm_capture(2, mc::CaptureTrigger::Index), mc::CardCommandRefused);
-  EXPECT_EQ(mc::gt_command_status(c), 1u << 7);
+  EXPECT_EQ(vg::gt_command_status(c), 1u << 7);
   mc::LimitConfig lim;
   lim.enabled = false;
   c.set_limits(2, lim);
-  EXPECT_FALSE(mc::gt_axis_status(c, 2) & 0x0800);
+  EXPECT_FALSE(vg::gt_axis_status(c, 2) & 0x0800);
   // bit 10 while the profile moves
   c.set_mode(2, mc::AxisMode::Jog);
   c.stage_acc(2, 0.1);
   c.stage_vel(2, 1);
   c.update(1u << 2);
   c.run(2);
-  EXPECT_TRUE(mc::gt_axis_status(c, 2) & 0x0400);
+  EXPECT_TRUE(vg::gt_axis_status(c, 2) & 0x0400);
   // mode register: jog = 001 in bits 11-13; AuStp bit 7; AuUpdt bit 10
-  EXPECT_EQ(mc::gt_mode_register(c, 2), 1u << 11);
+  EXPECT_EQ(vg::gt_mode_register(c, 2), 1u << 11);
   c.set_auto_stop(2, true);
   c.set_auto_update(2, true);
-  EXPECT_EQ(mc::gt_mode_register(c, 2), (1u << 11) | (1u << 7) | (1u << 10));
+  EXPECT_EQ(vg::gt_mode_register(c, 2), (1u << 11) | (1u << 7) | (1u << 10));
   // RstSts(0xff7f) clears bit 7 only; the state bits stay (L1468, L4557-4569)
-  const auto before = mc::gt_axis_status(c, 2);
+  const auto before = vg::gt_axis_status(c, 2);
   ASSERT_TRUE(before & 0x80);
-  c.clear_events(2, mc::gt_events_to_clear(0xff7f));
-  EXPECT_EQ(mc::gt_axis_status(c, 2), before & ~0x80);
+  c.clear_events(2, vg::gt_events_to_clear(0xff7f));
+  EXPECT_EQ(vg::gt_axis_status(c, 2), before & ~0x80);
 }
 
 TEST(CardSafety, HardLimitStopsLatchesAndInhibitsTheDirection) {
@@ -196,7 +199,7 @@ TEST(CardSafety, HardLimitStopsLatchesAndInhibitsTheDirection) {
   t_move(c, 0, 10000, 4, 0.1);
   c.run(3000);
   EXPECT_FALSE(c.moving(0));
-  const auto sts = mc::gt_axis_status(c, 0);
+  const auto sts = vg::gt_axis_status(c, 0);
   EXPECT_TRUE(sts & 0x20);
   EXPECT_TRUE(sts & 0x01);  // the limit sets motion complete (L1478)
   EXPECT_EQ(c.state(0).stop_cause, mc::StopCause::PosLimit);
@@ -207,17 +210,17 @@ TEST(CardSafety, HardLimitStopsLatchesAndInhibitsTheDirection) {
   EXPECT_THROW(c.update(1), mc::CardCommandRefused);
   EXPECT_EQ(c.state(0).active.pos, 10000);
   // clearing while still on the switch: it latches again at the next tick
-  c.clear_events(0, mc::gt_events_to_clear(0xffdf));
+  c.clear_events(0, vg::gt_events_to_clear(0xffdf));
   c.run(1);
-  EXPECT_TRUE(mc::gt_axis_status(c, 0) & 0x20);
+  EXPECT_TRUE(vg::gt_axis_status(c, 0) & 0x20);
   // moving away is allowed (TV27, L2866-2880)
   c.stage_pos(0, 0);
   c.update(1);
   c.run(3000);
   EXPECT_LT(c.actual_pos(0), 2990);
-  c.clear_events(0, mc::gt_events_to_clear(0xff9f));  // TV4 mask: clears bits 5 and 6
+  c.clear_events(0, vg::gt_events_to_clear(0xff9f));  // TV4 mask: clears bits 5 and 6
   c.run(1);
-  EXPECT_FALSE(mc::gt_axis_status(c, 0) & 0x60);
+  EXPECT_FALSE(vg::gt_axis_status(c, 0) & 0x60);
   // limits off: the switch is ignored (GT_LmtsOff), its level still readable
   mc::LimitConfig off;
   off.enabled = false;
@@ -226,7 +229,7 @@ TEST(CardSafety, HardLimitStopsLatchesAndInhibitsTheDirection) {
   c.run(3000);
   EXPECT_EQ(c.profile_pos(0), 5000);
   EXPECT_TRUE(c.pos_limit_input(0));
-  EXPECT_FALSE(mc::gt_axis_status(c, 0) & 0x20);
+  EXPECT_FALSE(vg::gt_axis_status(c, 0) & 0x20);
 }
 
 TEST(CardSafety, WrongLimitSenseFlagsTheAxisAndSoftLimitsStopToo) {
@@ -236,8 +239,8 @@ TEST(CardSafety, WrongLimitSenseFlagsTheAxisAndSoftLimitsStopToo) {
   lim.neg_active_low = true;
   c.set_limits(1, lim);
   c.run(1);
-  EXPECT_TRUE(mc::gt_axis_status(c, 1) & 0x40);
-  EXPECT_FALSE(mc::gt_axis_status(c, 1) & 0x20);
+  EXPECT_TRUE(vg::gt_axis_status(c, 1) & 0x40);
+  EXPECT_FALSE(vg::gt_axis_status(c, 1) & 0x20);
   // soft limit (ADLINK PRA_SPEL_*, L3983-4010) on axis 3
   mc::LimitConfig soft;
   soft.soft_pos_enabled = true;
@@ -248,7 +251,7 @@ TEST(CardSafety, WrongLimitSenseFlagsTheAxisAndSoftLimitsStopToo) {
   c.run(3000);
   EXPECT_EQ(c.state(2).stop_cause, mc::StopCause::SoftPosLimit);
   EXPECT_TRUE(c.events(2) & ev(mc::CardEvent::SoftPosLimit));
-  EXPECT_TRUE(mc::gt_axis_status(c, 2) & 0x20);
+  EXPECT_TRUE(vg::gt_axis_status(c, 2) & 0x20);
   EXPECT_LT(c.profile_pos(2), 2100);
 }
 
@@ -314,19 +317,19 @@ TEST(CardSafety, DriveAlarmDisablesAndTheResetSequenceRecovers) {
   mc::Card c(4, tuned_axis());
   c.axis_on(1);
   EXPECT_THROW(c.drive_reset(1), mc::CardCommandRefused);
-  EXPECT_EQ(mc::gt_command_status(c), 1u << 3);
+  EXPECT_EQ(vg::gt_command_status(c), 1u << 3);
   c.clear_events(1, mc::kAllEvents);
   t_move(c, 1, 5000, 2, 0.1);
   c.run(100);
   c.set_alarm_input(1, true);
   c.run(1);
-  EXPECT_EQ(mc::gt_axis_status(c, 1) & 0x0203, 0x0003);
+  EXPECT_EQ(vg::gt_axis_status(c, 1) & 0x0203, 0x0003);
   EXPECT_FALSE(c.moving(1));
   EXPECT_THROW(c.axis_on(1), mc::CardCommandRefused);
-  EXPECT_EQ(mc::gt_command_status(c), 1u << 9);
+  EXPECT_EQ(vg::gt_command_status(c), 1u << 9);
   c.set_alarm_input(1, false);  // the cause fixed
   c.drive_reset(1);
-  c.clear_events(1, mc::gt_events_to_clear(0xfffd));  // TV26: clears bit 1 only
+  c.clear_events(1, vg::gt_events_to_clear(0xfffd));  // TV26: clears bit 1 only
   EXPECT_FALSE(c.events(1) & ev(mc::CardEvent::DriveAlarm));
   c.run(300);
   c.stage_synch_pos(1);
@@ -370,7 +373,7 @@ TEST(CardSafety, EmergencyStopAndErrorLevelServoOff) {
   c.set_emergency_stop(false);
   c.update(4);
   // ADLINK ERR_POS_LEVEL: servo off when |E| exceeds the level (L4012-4023)
-  c.set_error_level(3, 5);
+  va::adlink(c).set_error_level(3, 5);
   c.set_mtr_cmd(3, 0);
   t_move(c, 3, 20000, 20, 1);
   c.run(100);
@@ -413,5 +416,5 @@ TEST(Card, OpenLoopOutputsTheHostCommand) {
   c.run(5, tr);
   EXPECT_NEAR(volts[4], 1.0, 1e-3);
   EXPECT_THROW(c.set_mtr_cmd(0, 40000), std::invalid_argument);
-  EXPECT_EQ(mc::gt_command_status(c), 1u << 1);
+  EXPECT_EQ(vg::gt_command_status(c), 1u << 1);
 }

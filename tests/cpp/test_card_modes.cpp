@@ -8,10 +8,11 @@
 #include "servobench/machine/card.hpp"
 #include "card_fixtures.hpp"
 #include "servobench/machine/card_modes.hpp"
-#include "servobench/machine/crd_status.hpp"
-#include "servobench/machine/gt_status.hpp"
+#include "servobench/vendor/googol/crd_status.hpp"
+#include "servobench/vendor/googol/gt_status.hpp"
 
 namespace mc = servobench::machine;
+namespace vg = servobench::vendor::googol;
 namespace sm = servobench::motion;
 
 namespace {
@@ -39,9 +40,9 @@ TEST(CardModes, GearTv10SlaveMirrorsTheMasterAndBit10StaysSet) {
   c.stage_ratio(0, -1);
   c.update(1u);
   EXPECT_EQ(c.state(0).mode, mc::AxisMode::Gear);
-  EXPECT_EQ(mc::gt_mode_register(c, 0) >> 11 & 7, 3);
+  EXPECT_EQ(vg::gt_mode_register(c, 0) >> 11 & 7, 3);
   c.run(10);
-  EXPECT_TRUE(mc::gt_axis_status(c, 0) & (1u << 10));  // master at rest, slave "moving"
+  EXPECT_TRUE(vg::gt_axis_status(c, 0) & (1u << 10));  // master at rest, slave "moving"
   t_move(c, 1, 20000, 2, 0.01);
   double max_err = 0;
   for (int k = 0; k < 12000; ++k) {
@@ -53,7 +54,7 @@ TEST(CardModes, GearTv10SlaveMirrorsTheMasterAndBit10StaysSet) {
   EXPECT_EQ(c.profile_pos(1), 20000);
   EXPECT_NEAR(c.actual_pos(0), -20000, 2);  // the slave's loop tracks
   EXPECT_LT(max_err, 20);
-  EXPECT_TRUE(mc::gt_axis_status(c, 0) & (1u << 10));
+  EXPECT_TRUE(vg::gt_axis_status(c, 0) & (1u << 10));
   // invalid in gear mode (GT L1144, L1421-1429): SmthStp, ZeroPos, SynchPos, profile moves
   EXPECT_THROW(c.stage_smooth_stop(0), mc::CardCommandRefused);
   EXPECT_THROW(c.zero_pos(0), mc::CardCommandRefused);
@@ -92,7 +93,7 @@ TEST(CardModes, GearSlaveLimitStopsTheMaster) {
   c.run(3);
   EXPECT_TRUE(c.modes().gear_halted(0));
   EXPECT_FALSE(c.loop(1).generator().moving());
-  EXPECT_FALSE(mc::gt_axis_status(c, 0) & (1u << 10));  // bit 10 clears on the abnormal stop (L1090)
+  EXPECT_FALSE(vg::gt_axis_status(c, 0) & (1u << 10));  // bit 10 clears on the abnormal stop (L1090)
   // mode change and a new PrflG recover
   EXPECT_THROW(c.modes().set_gear(0, 0), mc::CardCommandRefused);  // its own master
 }
@@ -140,12 +141,12 @@ TEST(CardModes, CrdPairOnTheCardRunsTheHexagonSideAndTracks) {
   c.stage_pos(0, 10);
   EXPECT_THROW(c.update(1u), mc::CardCommandRefused);
   c.modes().crd_start(1u, 0u);
-  EXPECT_EQ(mc::guc_crd_status(c, 1, 0).run, 1);
+  EXPECT_EQ(vg::guc_crd_status(c, 1, 0).run, 1);
   c.run(14995);
-  EXPECT_EQ(mc::guc_crd_status(c, 1, 0).run, 1);
+  EXPECT_EQ(vg::guc_crd_status(c, 1, 0).run, 1);
   c.run(10);
-  EXPECT_EQ(mc::guc_crd_status(c, 1, 0).run, 0);
-  EXPECT_EQ(mc::guc_crd_status(c, 1, 0).segment, 1);
+  EXPECT_EQ(vg::guc_crd_status(c, 1, 0).run, 0);
+  EXPECT_EQ(vg::guc_crd_status(c, 1, 0).segment, 1);
   EXPECT_EQ(c.profile_pos(0), 200000);
   EXPECT_EQ(c.profile_pos(1), 0);
   c.run(1000);
@@ -171,16 +172,16 @@ TEST(CardModes, AxisFaultStopsThePathAndTheStatusShowsIt) {
   const mc::HostedGroup& h = c.modes().hosted(0);
   EXPECT_TRUE(h.fault_stopped);
   EXPECT_EQ(h.fault_cause, mc::StopCause::DriveAlarm);
-  EXPECT_EQ(mc::guc_crd_status(c, 1, 0).run, 0);
+  EXPECT_EQ(vg::guc_crd_status(c, 1, 0).run, 0);
   const auto x = c.profile_pos(0);
   c.run(100);
   EXPECT_EQ(c.profile_pos(0), x);  // X stopped with the path
   // a start is refused while the alarm is active
   EXPECT_THROW(c.modes().crd_start(1u, 0u), mc::CardCommandRefused);
-  mc::CrdStatusInputs in;
+  vg::CrdStatusInputs in;
   in.fault_stopped = h.fault_stopped;
-  EXPECT_EQ(mc::gt_crd_status(in), 0x02D3);  // bits 0, 1, 4, 6, 7, 9
-  EXPECT_EQ(mc::ge_crd_status(in), 0x2293);  // bits 0, 1, 4, 7, 9, 13
+  EXPECT_EQ(vg::gt_crd_status(in), 0x02D3);  // bits 0, 1, 4, 6, 7, 9
+  EXPECT_EQ(vg::ge_crd_status(in), 0x2293);  // bits 0, 1, 4, 7, 9, 13
 }
 
 TEST(CardModes, PvtAxisOnTheCard) {

@@ -8,9 +8,10 @@
 #include "servobench/machine/card.hpp"
 #include "card_fixtures.hpp"
 #include "servobench/machine/card_scope.hpp"
-#include "servobench/machine/gt_status.hpp"
+#include "servobench/vendor/googol/gt_status.hpp"
 
 namespace mc = servobench::machine;
+namespace vg = servobench::vendor::googol;
 
 namespace {
 
@@ -244,7 +245,7 @@ TEST(CardScope, ProbeAtATimeAndAtAPositionLatchesEveryArmedAxis) {
   c.run(1000, tr);
   for (std::size_t i = 0; i < 2; ++i) {
     EXPECT_TRUE(c.events(i) & mc::event_bit(mc::CardEvent::Captured));
-    EXPECT_TRUE(mc::gt_axis_status(c, i) & 0x8);
+    EXPECT_TRUE(vg::gt_axis_status(c, i) & 0x8);
     const std::vector<double>& act = i == 0 ? act0 : act1;
     const double v = c.loop(i).capture().value();
     EXPECT_GE(v, std::min(act[498], act[499]) - 1.0);

@@ -7,9 +7,10 @@
 
 #include "servobench/machine/card.hpp"
 #include "card_fixtures.hpp"
-#include "servobench/machine/ge_status.hpp"
+#include "servobench/vendor/googol/ge_status.hpp"
 
 namespace mc = servobench::machine;
+namespace vg = servobench::vendor::googol;
 
 namespace {
 
@@ -26,48 +27,48 @@ TEST(GeStatus, PowerOnWordsPxAndSx) {
   // Table 4-3 L902-932 / Table 4-2 L879-900: closed loop (8) and limits on (11) by default; servo off, idle.
   mc::Card c(8, ge_axis());
   for (std::size_t i = 0; i < 8; ++i) {
-    EXPECT_EQ(mc::ge_px_axis_status(c, i), bit(8) | bit(11) | (static_cast<std::uint32_t>(i) << 28)) << i;
+    EXPECT_EQ(vg::ge_px_axis_status(c, i), bit(8) | bit(11) | (static_cast<std::uint32_t>(i) << 28)) << i;
   }
   mc::Card s(4, ge_axis());
   for (std::size_t i = 0; i < 4; ++i) {
-    EXPECT_EQ(mc::ge_sx_axis_status(s, i), bit(11) | (i << 12)) << i;  // SX bit 8 reserved
+    EXPECT_EQ(vg::ge_sx_axis_status(s, i), bit(11) | (i << 12)) << i;  // SX bit 8 reserved
   }
-  EXPECT_EQ(mc::ge_mode_register(c, 0), 0u);  // Table 4-4: trapezoid 000, auto-stop off
-  EXPECT_EQ(mc::ge_command_status(mc::GeVariant::PX, c), 0u);
+  EXPECT_EQ(vg::ge_mode_register(c, 0), 0u);  // Table 4-4: trapezoid 000, auto-stop off
+  EXPECT_EQ(vg::ge_command_status(vg::GeVariant::PX, c), 0u);
 }
 
 TEST(GeStatus, AxisNumberFieldsL928AndL896) {
   // PX bits 30:28 = axis - 1 (000 axis 1 ... 111 axis 8); SX bits 13:12 (00 axis 1, 01 axis 2, 10 axis 3).
   mc::Card c(8, ge_axis());
-  EXPECT_EQ(mc::ge_px_axis_status(c, 7) >> 28 & 7u, 7u);
-  EXPECT_EQ(mc::ge_px_axis_status(c, 4) >> 28 & 7u, 4u);
-  EXPECT_EQ(mc::ge_px_axis_status(c, 0) & 0x80000000u, 0u);  // bit 31 reserved
-  EXPECT_EQ(mc::ge_sx_axis_status(c, 2) >> 12 & 3u, 2u);
-  EXPECT_EQ(mc::ge_sx_axis_status(c, 3) >> 12 & 3u, 3u);
+  EXPECT_EQ(vg::ge_px_axis_status(c, 7) >> 28 & 7u, 7u);
+  EXPECT_EQ(vg::ge_px_axis_status(c, 4) >> 28 & 7u, 4u);
+  EXPECT_EQ(vg::ge_px_axis_status(c, 0) & 0x80000000u, 0u);  // bit 31 reserved
+  EXPECT_EQ(vg::ge_sx_axis_status(c, 2) >> 12 & 3u, 2u);
+  EXPECT_EQ(vg::ge_sx_axis_status(c, 3) >> 12 & 3u, 3u);
 }
 
 TEST(GeStatus, ServoEnabledMotionAndReservedBit0) {
   mc::Card c(4, ge_axis());
   c.axis_on(0);
-  EXPECT_TRUE(mc::ge_px_axis_status(c, 0) & bit(9));  // bit 9 servo enabled
-  EXPECT_EQ(mc::ge_px_axis_status(c, 0) & bit(0), 0u);  // bit 0 reserved even though the card latched motion complete
+  EXPECT_TRUE(vg::ge_px_axis_status(c, 0) & bit(9));  // bit 9 servo enabled
+  EXPECT_EQ(vg::ge_px_axis_status(c, 0) & bit(0), 0u);  // bit 0 reserved even though the card latched motion complete
   t_move(c, 0, 2000, 2, 0.02);
   c.run(2);
-  EXPECT_TRUE(mc::ge_px_axis_status(c, 0) & bit(10));  // bit 10 motion
-  EXPECT_TRUE(mc::ge_sx_axis_status(c, 0) & bit(10));
+  EXPECT_TRUE(vg::ge_px_axis_status(c, 0) & bit(10));  // bit 10 motion
+  EXPECT_TRUE(vg::ge_sx_axis_status(c, 0) & bit(10));
   c.run(1200);
-  EXPECT_EQ(mc::ge_px_axis_status(c, 0) & bit(10), 0u);
-  EXPECT_EQ(mc::ge_px_axis_status(c, 0) & (bit(0) | bit(2)), 0u);
+  EXPECT_EQ(vg::ge_px_axis_status(c, 0) & bit(10), 0u);
+  EXPECT_EQ(vg::ge_px_axis_status(c, 0) & (bit(0) | bit(2)), 0u);
   c.axis_off(0);
-  EXPECT_EQ(mc::ge_px_axis_status(c, 0) & bit(9), 0u);
+  EXPECT_EQ(vg::ge_px_axis_status(c, 0) & bit(9), 0u);
 }
 
 TEST(GeStatus, OpenLoopClearsBit8) {
   mc::Card c(4, ge_axis());
   c.set_closed_loop(1, false);  // GT_OpenLp (L5325): bit 8 = 0 open loop
-  EXPECT_EQ(mc::ge_px_axis_status(c, 1) & bit(8), 0u);
+  EXPECT_EQ(vg::ge_px_axis_status(c, 1) & bit(8), 0u);
   c.set_closed_loop(1, true);
-  EXPECT_TRUE(mc::ge_px_axis_status(c, 1) & bit(8));
+  EXPECT_TRUE(vg::ge_px_axis_status(c, 1) & bit(8));
 }
 
 TEST(GeStatus, LimitsEnabledAndTriggered) {
@@ -80,18 +81,18 @@ TEST(GeStatus, LimitsEnabledAndTriggered) {
   t_move(c, 0, 5000, 2, 0.02);
   t_move(c, 1, -5000, 2, 0.02);
   c.run(1500);
-  const auto px0 = mc::ge_px_axis_status(c, 0), px1 = mc::ge_px_axis_status(c, 1);
+  const auto px0 = vg::ge_px_axis_status(c, 0), px1 = vg::ge_px_axis_status(c, 1);
   EXPECT_TRUE(px0 & bit(5));  // bit 5 positive limit triggered (L2381-2388)
   EXPECT_FALSE(px0 & bit(6));
   EXPECT_TRUE(px1 & bit(6));  // bit 6 negative limit triggered
   EXPECT_FALSE(px1 & bit(5));
-  EXPECT_TRUE(mc::ge_sx_axis_status(c, 0) & bit(5));
+  EXPECT_TRUE(vg::ge_sx_axis_status(c, 0) & bit(5));
   // bit 11: limits enabled (GT_LmtsOn default; LmtsOff clears it, L4921-4944)
   mc::LimitConfig off = c.state(2).limits;
   off.enabled = false;
   c.set_limits(2, off);
-  EXPECT_EQ(mc::ge_px_axis_status(c, 2) & bit(11), 0u);
-  EXPECT_TRUE(mc::ge_px_axis_status(c, 3) & bit(11));
+  EXPECT_EQ(vg::ge_px_axis_status(c, 2) & bit(11), 0u);
+  EXPECT_TRUE(vg::ge_px_axis_status(c, 3) & bit(11));
 }
 
 TEST(GeStatus, DriveAlarmBit1) {
@@ -99,10 +100,10 @@ TEST(GeStatus, DriveAlarmBit1) {
   c.axis_on(0);
   c.set_alarm_input(0, true);
   c.run(1);
-  const auto w = mc::ge_px_axis_status(c, 0);
+  const auto w = vg::ge_px_axis_status(c, 0);
   EXPECT_TRUE(w & bit(1));             // drive alarm (L2390-2398)
   EXPECT_EQ(w & bit(9), 0u);           // servo switched off
-  EXPECT_TRUE(mc::ge_sx_axis_status(c, 0) & bit(1));
+  EXPECT_TRUE(vg::ge_sx_axis_status(c, 0) & bit(1));
 }
 
 TEST(GeStatus, FollowingErrorBit4) {
@@ -112,8 +113,8 @@ TEST(GeStatus, FollowingErrorBit4) {
   c.stage_pos_err(0, 5);  // a 5-pulse limit: the move's lag exceeds it (L2344-2364)
   t_move(c, 0, 20000, 10, 0.5);
   c.run(100);
-  EXPECT_TRUE(mc::ge_px_axis_status(c, 0) & bit(4));
-  EXPECT_TRUE(mc::ge_sx_axis_status(c, 0) & bit(4));
+  EXPECT_TRUE(vg::ge_px_axis_status(c, 0) & bit(4));
+  EXPECT_TRUE(vg::ge_sx_axis_status(c, 0) & bit(4));
 }
 
 TEST(GeStatus, CaptureArmedAndTriggeredBits3_14_15) {
@@ -123,28 +124,28 @@ TEST(GeStatus, CaptureArmedAndTriggeredBits3_14_15) {
   mc::Card c(4, cfg);
   c.axis_on(0);
   c.arm_capture(0, mc::CaptureTrigger::Home);
-  EXPECT_TRUE(mc::ge_px_axis_status(c, 0) & bit(14));  // Home capture armed (L3802-3826)
-  EXPECT_FALSE(mc::ge_px_axis_status(c, 0) & bit(15));
+  EXPECT_TRUE(vg::ge_px_axis_status(c, 0) & bit(14));  // Home capture armed (L3802-3826)
+  EXPECT_FALSE(vg::ge_px_axis_status(c, 0) & bit(15));
   t_move(c, 0, 2000, 2, 0.05);
   c.run(1300);
-  auto w = mc::ge_px_axis_status(c, 0);
+  auto w = vg::ge_px_axis_status(c, 0);
   EXPECT_TRUE(w & bit(3));               // captured
   EXPECT_EQ(w & (bit(14) | bit(15)), 0u);  // one shot: armed bit cleared
-  c.clear_events(0, mc::ge_events_to_clear(0));
+  c.clear_events(0, vg::ge_events_to_clear(0));
   c.arm_capture(0, mc::CaptureTrigger::Index);
-  EXPECT_TRUE(mc::ge_px_axis_status(c, 0) & bit(15));
-  EXPECT_TRUE(mc::ge_sx_axis_status(c, 0) & bit(15));
+  EXPECT_TRUE(vg::ge_px_axis_status(c, 0) & bit(15));
+  EXPECT_TRUE(vg::ge_sx_axis_status(c, 0) & bit(15));
 }
 
 TEST(GeStatus, ProbeCaptureSetsBit3OnEveryAxis) {
   mc::Card c(4, ge_axis());
   c.arm_probe();  // GT_CaptProb (L3828-3862): all axes latch, bit 3 of all axes
-  EXPECT_EQ(mc::ge_px_axis_status(c, 0) & (bit(14) | bit(15)), 0u);
+  EXPECT_EQ(vg::ge_px_axis_status(c, 0) & (bit(14) | bit(15)), 0u);
   EXPECT_THROW(c.arm_probe(), mc::CardCommandRefused);  // armed and not triggered: cmd bit 5
-  EXPECT_EQ(mc::ge_command_status(mc::GeVariant::PX, c), bit(5));
+  EXPECT_EQ(vg::ge_command_status(vg::GeVariant::PX, c), bit(5));
   c.set_probe_time(10 * c.servo_period_s() + 1e-6);
   c.run(20);
-  for (std::size_t i = 0; i < 4; ++i) EXPECT_TRUE(mc::ge_px_axis_status(c, i) & bit(3)) << i;
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_TRUE(vg::ge_px_axis_status(c, i) & bit(3)) << i;
 }
 
 TEST(GeStatus, CommandErrorBit7PxOnlyAndEncoderAbnormalBit27) {
@@ -152,30 +153,30 @@ TEST(GeStatus, CommandErrorBit7PxOnlyAndEncoderAbnormalBit27) {
   EXPECT_THROW(c.update(0), mc::CardCommandRefused);  // MltiUpdt(0): cmd bit 2, no axis
   c.axis_on(0);
   EXPECT_THROW(c.drive_reset(0), mc::CardCommandRefused);  // DrvRst with the servo on: cmd bit 3
-  EXPECT_TRUE(mc::ge_px_axis_status(c, 0) & bit(7));     // axis command error (L917)
-  EXPECT_EQ(mc::ge_sx_axis_status(c, 0) & bit(7), 0u);   // SX bit 7 reserved
+  EXPECT_TRUE(vg::ge_px_axis_status(c, 0) & bit(7));     // axis command error (L917)
+  EXPECT_EQ(vg::ge_sx_axis_status(c, 0) & bit(7), 0u);   // SX bit 7 reserved
   c.set_encoder_fault(1, true);
-  EXPECT_TRUE(mc::ge_px_axis_status(c, 1) & bit(27));    // encoder abnormal (L920-921)
-  EXPECT_EQ(mc::ge_px_axis_status(c, 0) & bit(27), 0u);
+  EXPECT_TRUE(vg::ge_px_axis_status(c, 1) & bit(27));    // encoder abnormal (L920-921)
+  EXPECT_EQ(vg::ge_px_axis_status(c, 0) & bit(27), 0u);
 }
 
 TEST(GeStatus, ModeRegisterCodesAndAutoStop) {
   // Table 4-4 L938-945: bits 13..11 000 trapezoid, 001 velocity, 010 S-curve; bit 7 auto-stop.
   mc::Card c(4, ge_axis());
   c.set_mode(0, mc::AxisMode::Jog);
-  EXPECT_EQ(mc::ge_mode_register(c, 0), 0x0800u);
+  EXPECT_EQ(vg::ge_mode_register(c, 0), 0x0800u);
   c.set_mode(0, mc::AxisMode::SCurve);
-  EXPECT_EQ(mc::ge_mode_register(c, 0), 0x1000u);
+  EXPECT_EQ(vg::ge_mode_register(c, 0), 0x1000u);
   c.set_mode(0, mc::AxisMode::TCurve);
   c.set_auto_stop(0, true);
-  EXPECT_EQ(mc::ge_mode_register(c, 0), 0x0080u);
+  EXPECT_EQ(vg::ge_mode_register(c, 0), 0x0080u);
   c.set_auto_update(0, true);  // a GT feature: GE bit 10 is reserved
-  EXPECT_EQ(mc::ge_mode_register(c, 0), 0x0080u);
+  EXPECT_EQ(vg::ge_mode_register(c, 0), 0x0080u);
 }
 
 TEST(GeStatus, CommandErrorBitsPxTable2_3) {
   using F = mc::CommandFault;
-  const auto px = [](F f) { return mc::ge_command_status_bit(mc::GeVariant::PX, f); };
+  const auto px = [](F f) { return vg::ge_command_status_bit(vg::GeVariant::PX, f); };
   EXPECT_EQ(px(F::MotionParamOverflow), bit(0));
   EXPECT_EQ(px(F::IllegalControlParam), bit(1));
   EXPECT_EQ(px(F::NoAxisInMask), bit(2));
@@ -192,7 +193,7 @@ TEST(GeStatus, CommandErrorBitsPxTable2_3) {
 
 TEST(GeStatus, CommandErrorBitsSxTable2_4) {
   using F = mc::CommandFault;
-  const auto sx = [](F f) { return mc::ge_command_status_bit(mc::GeVariant::SX, f); };
+  const auto sx = [](F f) { return vg::ge_command_status_bit(vg::GeVariant::SX, f); };
   EXPECT_EQ(sx(F::MotionParamOverflow), bit(1));  // SX bit 0 reserved: "illegal axis parameter" (bit 1)
   EXPECT_EQ(sx(F::IllegalControlParam), bit(1));
   EXPECT_EQ(sx(F::NoAxisInMask), bit(2));
@@ -212,20 +213,20 @@ TEST(GeStatus, CardRefusalsReadOnTheRegister) {
   t_move(c, 0, 20000, 2, 0.02);
   c.run(5);
   EXPECT_THROW(c.set_mode(0, mc::AxisMode::SCurve), mc::CardCommandRefused);  // L310, L5368
-  EXPECT_EQ(mc::ge_command_status(mc::GeVariant::PX, c), bit(6));
+  EXPECT_EQ(vg::ge_command_status(vg::GeVariant::PX, c), bit(6));
   EXPECT_THROW(c.zero_pos(0), mc::CardCommandRefused);  // L721-729
-  EXPECT_EQ(mc::ge_command_status(mc::GeVariant::PX, c), bit(11));
+  EXPECT_EQ(vg::ge_command_status(vg::GeVariant::PX, c), bit(11));
   c.stage_acc(0, 0.05);  // Acc of a T move in motion (L315)
   EXPECT_THROW(c.update(1), mc::CardCommandRefused);
-  EXPECT_EQ(mc::ge_command_status(mc::GeVariant::PX, c), bit(11));
-  EXPECT_EQ(mc::ge_command_status(mc::GeVariant::SX, c), bit(11));
+  EXPECT_EQ(vg::ge_command_status(vg::GeVariant::PX, c), bit(11));
+  EXPECT_EQ(vg::ge_command_status(vg::GeVariant::SX, c), bit(11));
 }
 
 TEST(GeStatus, RstStsMaskRule) {
   // L5423-5431: a mask bit 1 keeps, 0 clears; only bits 0-7. RstSts(1, 0xFE) clears bit 0 only (L5487).
-  EXPECT_EQ(mc::ge_events_to_clear(0xFE), 0x1u);
-  EXPECT_EQ(mc::ge_events_to_clear(0xFFFF), 0u);
-  const std::uint32_t all = mc::ge_events_to_clear(0);
+  EXPECT_EQ(vg::ge_events_to_clear(0xFE), 0x1u);
+  EXPECT_EQ(vg::ge_events_to_clear(0xFFFF), 0u);
+  const std::uint32_t all = vg::ge_events_to_clear(0);
   EXPECT_EQ(all & 0xFFu, 0xFFu);
   EXPECT_TRUE(all & mc::event_bit(mc::CardEvent::SoftPosLimit));
   EXPECT_EQ(all & mc::event_bit(mc::CardEvent::EmergencyStop), 0u);
@@ -251,12 +252,12 @@ TEST(GeStatus, Bit10SetFromTheUpdateOfAMotion) {
   c.axis_on(0);
   t_move(c, 0, 1000, 2, 0.05);
   EXPECT_FALSE(c.moving(0));                          // the commit is at the next tick
-  EXPECT_TRUE(mc::ge_px_axis_status(c, 0) & bit(10));
+  EXPECT_TRUE(vg::ge_px_axis_status(c, 0) & bit(10));
   c.stage_pos_err(1, 100);
   c.update(2);                                        // an update without motion registers: no bit 10
-  EXPECT_EQ(mc::ge_px_axis_status(c, 1) & bit(10), 0u);
+  EXPECT_EQ(vg::ge_px_axis_status(c, 1) & bit(10), 0u);
   c.synch_pos_now(1);                                 // AxisOn's synchronisation at rest
   c.run(2);
   EXPECT_THROW(c.synch_pos_now(0), mc::CardCommandRefused);  // in motion: refused (cmd bit 11)
-  EXPECT_EQ(mc::ge_command_status(mc::GeVariant::PX, c), bit(11));
+  EXPECT_EQ(vg::ge_command_status(vg::GeVariant::PX, c), bit(11));
 }

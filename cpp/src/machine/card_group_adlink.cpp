@@ -5,10 +5,16 @@
 #include <string>
 
 #include "servobench/common/validate.hpp"
-#include "servobench/machine/aps_status.hpp"
+#include "servobench/vendor/adlink/aps_status.hpp"
 #include "servobench/machine/card_modes.hpp"
 
 namespace servobench::machine {
+
+using vendor::adlink::aps_motion_io_status;  // the ADLINK words this group's view builds on
+using vendor::adlink::aps_motion_status;
+using vendor::adlink::aps_stop_code;
+using vendor::adlink::ApsMio;
+using vendor::adlink::ApsMsts;
 
 namespace {
 

@@ -3,9 +3,7 @@
 #include <cmath>
 
 #include "servobench/common/validate.hpp"
-#include "servobench/machine/aps_status.hpp"
 #include "servobench/machine/card.hpp"
-#include "servobench/machine/gt_status.hpp"
 
 namespace servobench::machine {
 
@@ -24,11 +22,19 @@ CardScope::CardScope(Card& card) : card_(card), n_(card.axis_count()) {
   w_mio_.assign(n_, 0u);
   for (std::size_t i = 0; i < n_; ++i) {
     prev_events_[i] = card_.events(i);
-    prev_msts_[i] = aps_motion_status(card_, i);
-    prev_mio_[i] = aps_motion_io_status(card_, i);
+    prev_msts_[i] = word(words_.msts, i);
+    prev_mio_[i] = word(words_.mio, i);
   }
   prev_estop_ = card_.emergency_stop();
   resync();
+}
+
+void CardScope::set_words(const ScopeWords& words) {
+  words_ = words;
+  for (std::size_t i = 0; i < n_; ++i) {
+    prev_msts_[i] = word(words_.msts, i);
+    prev_mio_[i] = word(words_.mio, i);
+  }
 }
 
 void CardScope::resync() {
@@ -39,8 +45,8 @@ void CardScope::resync() {
     // Bits the host cleared between runs count as off (their next latch fires); bits it set are not taken as
     // seen, so an input the host switched on (alarm, e-stop) fires at the next tick.
     prev_events_[i] &= card_.events(i);
-    if (w_msts_[i]) prev_msts_[i] &= aps_motion_status(card_, i);
-    if (w_mio_[i]) prev_mio_[i] &= aps_motion_io_status(card_, i);
+    if (w_msts_[i]) prev_msts_[i] &= word(words_.msts, i);
+    if (w_mio_[i]) prev_mio_[i] &= word(words_.mio, i);
   }
   prev_estop_ = prev_estop_ && card_.emergency_stop();
 }
@@ -65,8 +71,8 @@ void CardScope::set_watch(std::size_t axis, std::uint32_t events, std::uint32_t 
   w_msts_[axis] = msts;
   w_mio_[axis] = mio;
   prev_events_[axis] = card_.events(axis);
-  prev_msts_[axis] = aps_motion_status(card_, axis);
-  prev_mio_[axis] = aps_motion_io_status(card_, axis);
+  prev_msts_[axis] = word(words_.msts, axis);
+  prev_mio_[axis] = word(words_.mio, axis);
   fired_.clear();
 }
 
@@ -83,8 +89,8 @@ bool CardScope::watching() const {
   return false;
 }
 
-void CardScope::set_probe_position(double axis, double pos) {
-  check_integer("CardScope", "probe axis", axis, 0, static_cast<double>(n_) - 1);
+void CardScope::set_probe_position(std::size_t axis, double pos) {
+  check_integer("CardScope", "probe axis", static_cast<double>(axis), 0, static_cast<double>(n_) - 1);
   if (!std::isfinite(pos)) throw_invalid("CardScope", "probe position", pos, "must be finite (pulse)");
   probe_axis_ = static_cast<int>(axis);
   probe_pos_ = pos;
@@ -138,9 +144,9 @@ double CardScope::value(std::size_t i, SampleSignal s) const {
     case SampleSignal::card_prf_vel: return card_.profile_vel(i);
     case SampleSignal::card_prf_acc: return card_.loop(i).generator().state().acc;
     case SampleSignal::card_fbk_vel: return card_.actual_pos(i) - prev_actual_[i];
-    case SampleSignal::card_msts: return static_cast<double>(aps_motion_status(card_, i));
-    case SampleSignal::card_mio: return static_cast<double>(aps_motion_io_status(card_, i));
-    case SampleSignal::card_gt_status: return static_cast<double>(gt_axis_status(card_, i));
+    case SampleSignal::card_msts: return static_cast<double>(word(words_.msts, i));
+    case SampleSignal::card_mio: return static_cast<double>(word(words_.mio, i));
+    case SampleSignal::card_gt_status: return static_cast<double>(word(words_.status, i));
     case SampleSignal::card_error_sum: return card_.axis(i).law_error_sum();
     case SampleSignal::card_error_prev: return prev_error_[i];
     case SampleSignal::card_error_diff: return card_.following_error(i) - prev_error_[i];
@@ -172,13 +178,13 @@ void CardScope::after_tick(long long tick) {
       sampler_.note_events(ev & ~prev_events_[i]);
     prev_events_[i] = ev;
     if (w_msts_[i]) {
-      const std::uint32_t w = aps_motion_status(card_, i);
+      const std::uint32_t w = word(words_.msts, i);
       if (const std::uint32_t r = w & ~prev_msts_[i] & w_msts_[i])
         fired_.push_back(FiredEvent{tick, static_cast<int>(i), WatchWord::Msts, r});
       prev_msts_[i] = w;
     }
     if (w_mio_[i]) {
-      const std::uint32_t w = aps_motion_io_status(card_, i);
+      const std::uint32_t w = word(words_.mio, i);
       // EZ (bit 5) reads 0 in the word (V44); as an event it is the index mark passing during this tick.
       const std::uint32_t ez = card_.loop(i).inputs().ez.rose ? (1u << 5) : 0u;
       if (const std::uint32_t r = ((w & ~prev_mio_[i]) | ez) & w_mio_[i])

@@ -1,6 +1,7 @@
-// Card: the virtual motion-control card. 4 or 8 axes, one integer tick clock, staged (double-buffered) and
-// active parameters, latched events, safety checked every tick. Vendor-neutral: the status words of each
-// manual are functions of this state (machine/gt_status.hpp, ...) and the vendor facades only translate.
+// Card: the virtual motion-control card's neutral kernel. 4 or 8 axes, one integer tick clock, staged
+// (double-buffered) and active parameters, latched events, safety checked every tick. Vendor-neutral: what one
+// vendor adds (registers, state machines, status words, return codes) lives in cpp/include/servobench/vendor/
+// and plugs in as a module through CardHooks (machine/card_hooks.hpp; docs/architecture.md).
 //
 // Each axis is a MotionLoop (a profile generator coupled to an Axis: homing, capture, breakpoints) around an
 // Axis the card owns or is given. Units are the controller's: pulse, pulse/tick, pulse/tick^2, pulse/tick^3
@@ -15,14 +16,16 @@
 //   3. the MotionLoop tick: profile advance, Axis tick (encoder read, law, filters, DAC, drive, plant over Ts),
 //      capture and breakpoint on the actual position; a breakpoint with auto-update on commits this axis's
 //      staged registers (effective from the next tick, GT L1263);
-//   4. following error |E_n| (the law's own error this tick) against the active limit; ADLINK-style error
-//      level -> servo off; motion-complete events from the profile.
+//   4. following error |E_n| (the law's own error this tick) against the active limit; motion-complete events
+//      from the profile; then every module's after_axis(i, r) (e.g. the ADLINK error level -> servo off).
 // So a fault seen in step 4 acts on the profile from the next tick (one tick, as on a DSP).
 #pragma once
 
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "servobench/machine/axis.hpp"
@@ -168,29 +171,16 @@ struct CardAxisState {
   double mtr_cmd = 0.0;             // open-loop output, DAC counts -32767..32767 (GT_SetMtrCmd)
   bool auto_stop = false;           // GT_AuStpOn: following error stops and disables the axis
   bool auto_update = false;         // GT_AuUpdtOn: a breakpoint commits the staged registers
-  bool alarm_enabled = true;        // GE GT_AlarmOn/Off: react to the drive-alarm input
+  bool alarm_enabled = true;        // react to the drive-alarm input (GE GT_AlarmOn/Off; on by default)
   bool alarm_input = false;         // the ALM input forced by the user (besides the drive's own alarm)
   bool alarm_prev = false;          // the alarm input level at the previous tick
-  double error_level_pulse = 0.0;   // ADLINK PRA_ERR_POS_LEVEL: |E| above it turns the servo off; 0 = off
   LimitConfig limits{};
   double error_pulse = 0.0;         // the law's error E_n of the last tick (planned - actual), pulse
   bool following_error_now = false; // the check failed in the last tick (enabled, closed loop, |E| > limit)
   StopCause stop_cause = StopCause::None;  // cleared when the next motion starts (ADLINK ASTP, L3652)
   bool was_moving = false;
-  bool dir_positive = false;        // direction of the last profile motion, kept after the stop (ADLINK DIR, L3218)
-  double in_position_pulse = 10.0;  // in-position band |E| (the drive's INP output, ADLINK MIO bit 6; V46)
-  // ADLINK synchronous start, limit stop mode and distance events (APS dialect; decisions V27-V33).
-  bool wait_trigger = false;          // an APS_ptp with MF_WAIT waits for APS_move_trigger (MTS WAIT, bit 10)
-  motion::AdlinkPtpParams waiting{};  // the move it will start
-  bool limit_decelerate = false;      // PRA_EL_MODE 1: a limit stops at limit_dec (0: at once, the default)
-  double limit_dec = 1e6;             // PRA_SD_DEC at the time PRA_EL_MODE was set, pulse/s^2
-  bool limit_stopping = false;        // a decelerating limit stop runs
-  double pre_event_dist = 0.0;        // PRA_PRE_EVENT_DIST (2Ah), pulse; 0 = off
-  double post_event_dist = 0.0;       // PRA_POST_EVENT_DIST (2Bh), pulse; 0 = off
-  bool ptp_active = false;            // a point-to-point move runs: the distance events are measured on it
-  double move_start = 0.0, move_target = 0.0;  // its start and target, pulse
-  bool pre_event = false, post_event = false;  // MTS PRED (bit 18) / POSTD (bit 19), cleared at the next start
-  bool encoder_fault = false;       // the encoder-abnormal input (GE PX status bit 27), set by the user
+  bool dir_positive = false;        // the direction of the last profile motion, kept after the stop (decision VK3)
+  bool encoder_fault = false;       // the encoder-abnormal input, set by the user: counts as a following error
 };
 
 // What one tick of one axis records (each a buffer of n doubles or null), besides the Axis and loop traces.
@@ -252,7 +242,7 @@ class Card {
   // mechanism does not move, a following error left at rest is dropped.
   void set_actual_pos(std::size_t i, double pos);
   // GTS GT_ZeroPos(axis, count): zeroes `count` axes from `first`, all or none (every axis is checked first).
-  void zero_pos_range(std::size_t first, double count);
+  void zero_pos_range(std::size_t first, std::size_t count);
   // Refuses (CardCommandRefused) unless ZeroPos/SetAtlPos may act on axis i now: not in gear mode, not in a
   // coordinate system, at rest (GT L1421-1429, L4617, L5200; GE L5461, L5909).
   void check_position_set(std::size_t i);
@@ -266,41 +256,11 @@ class Card {
   void arm_breakpoint(std::size_t i, motion::BreakKind kind);  // GT_PosBrk/NegBrk/MtnBrk/ExtBrk, None = BrkOff
   void arm_capture(std::size_t i, CaptureTrigger trigger);    // GT_CaptHome/CaptIndex (None disarms)
   void home(std::size_t i, const motion::GtHomeParams& p);    // GT_Home / GT_Index automatic homing
-  // ADLINK-style immediate moves (no Update; pulse/s units in p, converted with the servo period): point to
-  // point to p.pos (APS_ptp / relative / absolute move, on the fly during a PTP or velocity move), velocity
-  // move to the signed vel_pulse_per_s (APS_vel / APS_velocity_move), decelerating stop at p.sd_dec (or p.dec)
-  // (APS_stop_move). Motion while the e-stop, the alarm input or a latched limit in the move's direction is
-  // active is refused and records that cause as the stop cause (ADLINK L3931-4010: ignored, stop code, ASTP).
-  void move_ptp(std::size_t i, const motion::AdlinkPtpParams& p);
-  void move_velocity(std::size_t i, double vel_pulse_per_s, const motion::AdlinkPtpParams& p);
-  void stop_move(std::size_t i, const motion::AdlinkPtpParams& p);
-  void set_in_position_band(std::size_t i, double pulse);  // |E| <= band at rest counts as in position
-  bool in_position(std::size_t i) const;  // servo on, at rest, |E| <= band (ADLINK MIO INP)
-
-  // -- ADLINK sequences and synchronous start (APS dialect) ---------------------------------------------------
-  // APS_home_move with the PRA_HOME_* parameters (modes 0 ORG, 1 EL, 2 EZ; L2246-2556). Refused while moving.
-  void home(std::size_t i, const motion::AdlinkHomeParams& p);
-  // Installs the PRA_JG_* jog parameters (JOG-ON off). Ignored (refused) while another motion runs (L2708).
-  void jog(std::size_t i, const motion::AdlinkJogParams& p);
-  // The JOG-ON signal (APS_jog_on): continuous mode moves while on; step mode steps, waits, then moves.
-  void set_jog_on(std::size_t i, bool on);
-  bool jog_on(std::size_t i) const { return loop(i).jog_on(); }
-  bool jogging(std::size_t i) const;  // a jog sequence is installed and running (MTS JOG, bit 15)
-  // APS_ptp with Option bit 8 (MF_WAIT): the move is checked now and waits for move_trigger (MTS WAIT, L3669-3720).
-  void move_ptp_wait(std::size_t i, const motion::AdlinkPtpParams& p);
-  // APS_move_trigger: starts every waiting move of the masked axes in this same tick (L3787-3790).
-  void move_trigger(std::uint32_t mask);
-  bool waiting_trigger(std::size_t i) const { return state(i).wait_trigger; }
-  // PRA_EL_MODE: false stops at once on a limit (default), true decelerates at dec_pulse_per_s2 (PRA_SD_DEC).
-  void set_limit_stop_mode(std::size_t i, bool decelerate, double dec_pulse_per_s2);
-  // PRA_PRE_EVENT_DIST / PRA_POST_EVENT_DIST (L3284-3292), pulse, 0 = off.
-  void set_move_event_distances(std::size_t i, double pre_pulse, double post_pulse);
 
   // -- safety configuration and inputs ----------------------------------------------------------------------
   void set_limits(std::size_t i, const LimitConfig& limits);
   void set_alarm_enabled(std::size_t i, bool on) { at(i).alarm_enabled = on; }
   void set_alarm_input(std::size_t i, bool alarm) { at(i).alarm_input = alarm; }
-  void set_error_level(std::size_t i, double pulse);  // 0 = off
   void set_emergency_stop(bool active) { estop_ = active; }
   bool emergency_stop() const { return estop_; }
 
@@ -326,7 +286,7 @@ class Card {
   bool pos_limit_input(std::size_t i) const;  // hard-limit inputs as triggered (polarity applied)
   bool neg_limit_input(std::size_t i) const;
 
-  // -- GE additions (dialects/ge.py; docs/card.md, decisions V86-V99) ----------------------------------------
+  // -- neutral commands first met in the GE manual (decisions V86-V99, VK4) ------------------------------------
   // GE GT_SmthStp: an immediate smooth stop at the mode's limits (GE L1310-1312, Example 7-2 L2245); no-op at rest.
   void smooth_stop(std::size_t i);
   // GE GT_CaptProb: every axis's capture armed on the probe input EXI0, one shot (GE L3828-3862); refused as a
@@ -346,6 +306,24 @@ class Card {
   // attached before it.
   void attach(CardHooks& module);
   void detach(CardHooks& module);
+  // The card's module of type M (a vendor module: vendor/adlink/adlink_axes.hpp ...), created from the card and
+  // attached on first use, owned by the card. The kernel knows it only as CardHooks.
+  template <class M>
+  M& module() {
+    if (M* m = find_module<M>()) return *m;
+    auto owned = std::make_unique<M>(*this);
+    M& m = *owned;
+    attach(m);
+    owned_modules_.push_back(std::move(owned));
+    return m;
+  }
+  // The card's module of type M if created, else null.
+  template <class M>
+  const M* module_if_any() const {
+    for (const auto& o : owned_modules_)
+      if (const M* m = dynamic_cast<const M*>(o.get())) return m;
+    return nullptr;
+  }
 
   // -- kernel services: what a module may use (docs/architecture.md "The hook interface") ---------------------------
   // The one axis-index check: ValueError (std::invalid_argument) naming the axis unless i < axis_count().
@@ -359,6 +337,17 @@ class Card {
   // Abrupt stop of axis i's own profile, motion-complete event (no hooks called).
   void stop_profile(std::size_t i);
   bool alarm_active(std::size_t i) const;  // the drive-alarm input of axis i, as the card reacts to it
+  // Before an immediate move of direction dir (sign; 0: none) on axis i: refuses (recording the ignored command's
+  // stop cause) in a driven mode, during a sequence, while the e-stop, the alarm input or a latched limit toward
+  // dir is active (ADLINK L3931-4010).
+  void check_move_allowed(std::size_t i, double dir);
+  // Stops axis i for `cause`: the modules' on_fault, the profile stopped (motion complete), the stop cause
+  // recorded; with servo_off the drive is disabled.
+  void fault_stop(std::size_t i, StopCause cause, bool servo_off);
+  // Latches event e on axis i.
+  void latch_event(std::size_t i, CardEvent e);
+  // The target registers (staged and active) take pos, whole pulses: an immediate move's target reads back.
+  void set_target_pos(std::size_t i, double pos);
   bool inhibited_pos(std::size_t i) const;  // motion toward + is inhibited (a latched hard or soft limit)
   bool inhibited_neg(std::size_t i) const;
 
@@ -382,22 +371,32 @@ class Card {
   void init(const CardCycles& cycles);
   CardAxisState& at(std::size_t i);
   void touch(std::size_t i, std::uint32_t bits);
+  // Runs a validation; its std::invalid_argument also records `fault` (command-error event) before it propagates.
   template <class F>
-  void checked(std::size_t i, CommandFault fault, F&& check);
+  void checked(std::size_t i, CommandFault fault, F&& check) {
+    try {
+      check();
+    } catch (const std::invalid_argument&) {
+      record_fault(static_cast<int>(i), fault);
+      throw;
+    }
+  }
   void apply_output(std::size_t i);
-  void fault_stop(std::size_t i, StopCause cause, bool servo_off);
   // What committing registers r with changes d on axis i would refuse now (None = fine); `why` gets the message.
   CommandFault check_commit(std::size_t i, const AxisRegisters& r, std::uint32_t d, std::string* why) const;
   void commit(std::size_t i, const AxisRegisters& r, std::uint32_t d);
   void tick_once(const std::vector<CardTrace>& traces, std::size_t k);
-  // Before an immediate move of direction dir on axis i: refuses (recording the ignored command's stop cause)
-  // while the e-stop, the alarm input or a latched limit toward dir is active.
-  void check_move_allowed(std::size_t i, double dir);
   void safety_before(std::size_t i);
   void after_tick(std::size_t i, const LoopTick& r);
   void record(std::size_t i, const CardTrace& ct, std::size_t k) const;
   void limit_stop(std::size_t i, StopCause cause);
-  void start_ptp(std::size_t i, const motion::AdlinkPtpParams& p);
+  template <class M>
+  M* find_module() {
+    for (const auto& o : owned_modules_)
+      if (M* m = dynamic_cast<M*>(o.get())) return m;
+    return nullptr;
+  }
+  std::vector<std::unique_ptr<CardHooks>> owned_modules_;  // module<M>()'s, attached in creation order
   // [modes] owned, and attached as a module like any other
   std::unique_ptr<CardModes> modes_;
   std::vector<CardHooks*> hooks_;  // attached modules, in attach order

@@ -5,13 +5,16 @@
 // (cpp/include/servobench/vendor/). The card calls the hooks of every attached module at fixed points of its tick
 // and of its commands, in the order the modules were attached; each hook's default does nothing, so a module
 // overrides what it needs. A module reaches the kernel only through the card's public methods (its "kernel
-// services": check_axis, refuse, set_driven_mode, set_stop_cause, stop_profile, alarm_active, inhibited_pos/neg,
-// loop, state, ...): no friend classes.
+// services": check_axis, refuse, record_fault, set_driven_mode, set_stop_cause, stop_profile, alarm_active,
+// inhibited_pos/neg, check_move_allowed, fault_stop, latch_event, set_target_pos, loop, state, ...): no friend
+// classes. A vendor module the card owns is created with Card::module<M>() (vendor/adlink/adlink_axes.hpp).
 //
 // The tick, with the hooks (card.hpp "One tick"):
 //   1. commit pending updates                                   on_ratio(i, r) when a gear ratio commits
 //   2. safety on this instant's inputs                          limit_enabled(i, positive), on_fault(i, cause)
-//   3. begin_tick(tick) once, then per axis i in ascending order: feed(i), MotionLoop::step, the checks after it
+//   3. begin_tick(tick) once, then per axis i in ascending order: feed(i), MotionLoop::step, the kernel's checks
+//      after it, then after_axis(i, r) with what the step returned (a vendor's error level, distance events)
+//   (in 2., a latched limit in the direction of motion: on_limit(i, cause) may stop the axis its own way)
 // Commands: set_mode -> leave(i); abrupt_stop -> on_abrupt_stop(i); reset -> reset(); a move's direction check
 // -> inhibits_move(i, dir); the status bit "moving" -> moving(i).
 #pragma once
@@ -22,6 +25,7 @@
 namespace servobench::machine {
 
 enum class StopCause : int;  // machine/card.hpp
+struct LoopTick;             // machine/motion_loop.hpp: what one tick of an axis returned
 
 class CardHooks {
  public:
@@ -35,6 +39,12 @@ class CardHooks {
   virtual void feed(std::size_t /*i*/) {}
   // Whether the card sees this hard limit of axis i (GUC BufLmtsOff hides it while its buffer place runs).
   virtual bool limit_enabled(std::size_t /*i*/, bool /*positive*/) const { return true; }
+  // After the kernel's checks on axis i this tick (following error, events): r is what MotionLoop::step returned
+  // (the law's error E_n, the actual position). Called for every attached module, active or not.
+  virtual void after_axis(std::size_t /*i*/, const LoopTick& /*r*/) {}
+  // Axis i moves toward a latched limit (cause: PosLimit ... SoftNegLimit). True: the module stops it its own way
+  // (an ADLINK decelerating limit stop, PRA_EL_MODE 1); false: the kernel stops it at once.
+  virtual bool on_limit(std::size_t /*i*/, StopCause /*cause*/) { return false; }
   // The kernel stopped axis i for `cause` (e-stop, alarm, limit, following error): stop what depends on it.
   virtual void on_fault(std::size_t /*i*/, StopCause /*cause*/) {}
   // GT_AbptStp on axis i.

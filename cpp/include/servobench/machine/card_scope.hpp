@@ -10,6 +10,8 @@
 //   mio     the ADLINK motion I/O word (IALM, IPEL, IMEL, IORG, IINP, IEMG, ISPEL, ISMEL: MIO bits 0-4, 6, 11, 12);
 // card-wide the system word (ADLINK item 8: bit 0 EMG, 1/2 linear compare 0/1 ended, 3/4 table compare 0/1
 // ended) and a timer (every N ticks: GT_TmrIntr). The vendor layouts of the interrupt factors are the dialects'.
+// The vendor words (msts, mio, the GT status the sampler records) are functions a vendor module provides
+// (set_words; vendor/scope_words.hpp): the scope calls them and knows no layout; unset words read 0.
 #pragma once
 
 #include <array>
@@ -25,6 +27,15 @@
 namespace servobench::machine {
 
 class Card;
+
+// A vendor status word of one card axis, a function of the card's state (vendor/adlink/aps_status.hpp ...).
+using StatusWordFn = std::uint32_t (*)(const Card& card, std::size_t axis);
+// The vendor words the scope samples (card_msts, card_mio, card_gt_status) and watches (msts, mio).
+struct ScopeWords {
+  StatusWordFn msts = nullptr;    // a motion status word (ADLINK MSTS)
+  StatusWordFn mio = nullptr;     // a motion I/O word (ADLINK MIO)
+  StatusWordFn status = nullptr;  // an axis status register (GT Table 4-14)
+};
 
 enum class WatchWord : int { Events = 0, Msts = 1, Mio = 2, System = 3, Timer = 4 };
 
@@ -52,6 +63,10 @@ class CardScope {
   PositionCompare& compare() { return compare_; }
   const PositionCompare& compare() const { return compare_; }
 
+  // The vendor words (read again now for the watch); words() reports them.
+  void set_words(const ScopeWords& words);
+  const ScopeWords& words() const { return words_; }
+
   // -- event watch ------------------------------------------------------------------------------------------
   void set_watch(std::size_t axis, std::uint32_t events, std::uint32_t msts, std::uint32_t mio);
   void set_system_watch(std::uint32_t bits) { sys_mask_ = bits & 0x1Fu; }
@@ -63,7 +78,7 @@ class CardScope {
   void clear_fired() { fired_.clear(); }
 
   // -- probe input EXI0 at a position: fires when `axis`'s actual position passes `pos` (either direction) --
-  void set_probe_position(double axis, double pos);
+  void set_probe_position(std::size_t axis, double pos);
   void clear_probe_position() { probe_axis_ = -1; }
   int probe_axis() const { return probe_axis_; }
   double probe_pos() const { return probe_pos_; }
@@ -87,10 +102,12 @@ class CardScope {
 
  private:
   double value(std::size_t axis, SampleSignal s) const;
+  std::uint32_t word(StatusWordFn f, std::size_t axis) const { return f ? f(card_, axis) : 0u; }
   void refresh_need();
 
   Card& card_;
   std::size_t n_;
+  ScopeWords words_{};
   Sampler sampler_;
   PositionCompare compare_;
   // per-axis scratch and read pointers for the sampled trace signals

@@ -20,7 +20,7 @@
 #include "servobench/machine/card.hpp"
 #include "servobench/motion/path_generator.hpp"
 
-namespace servobench::machine {
+namespace servobench::vendor::googol {
 
 struct CrdStatusInputs {
   bool moving = false;              // path motion in progress (a segment, a dwell, a stop ramp)
@@ -44,6 +44,6 @@ struct GucCrdStatus {
 };
 GucCrdStatus guc_crd_status(const motion::PathGenerator& fifo);
 // Of a card's crd 1..2 (GT_SetCrdPrm), fifo 0..1.
-GucCrdStatus guc_crd_status(Card& card, int crd, int fifo);
+GucCrdStatus guc_crd_status(machine::Card& card, int crd, int fifo);
 
-}  // namespace servobench::machine
+}  // namespace servobench::vendor::googol

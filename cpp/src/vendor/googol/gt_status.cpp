@@ -1,6 +1,8 @@
-#include "servobench/machine/gt_status.hpp"
+#include "servobench/vendor/googol/gt_status.hpp"
 
-namespace servobench::machine {
+namespace servobench::vendor::googol {
+
+using namespace machine;  // the kernel's types: Card, CardEvent, CommandFault, StopCause ...
 
 std::uint16_t gt_axis_status(const Card& card, std::size_t axis) {
   const CardAxisState& s = card.state(axis);
@@ -49,7 +51,7 @@ std::uint16_t gt_command_status_bit(CommandFault fault) {
     case CommandFault::MotorStateWhileEnabled:
     case CommandFault::AxisStateError:
     case CommandFault::NotInCommandSet:
-    case CommandFault::NotSimulated: return 0;  // GE causes (machine/ge_status.hpp)
+    case CommandFault::NotSimulated: return 0;  // GE causes (vendor/googol/ge_status.hpp)
     case CommandFault::CrdStateError: return 1u << 12;
     case CommandFault::NoInterruptPending: return 1u << 4;
   }
@@ -66,4 +68,4 @@ std::uint32_t gt_events_to_clear(std::uint16_t rst_sts_mask) {
   return e;
 }
 
-}  // namespace servobench::machine
+}  // namespace servobench::vendor::googol

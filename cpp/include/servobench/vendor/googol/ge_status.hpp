@@ -21,18 +21,18 @@
 
 #include "servobench/machine/card.hpp"
 
-namespace servobench::machine {
+namespace servobench::vendor::googol {
 
 enum class GeVariant : int { PX = 0, SX = 1 };
 
-std::uint32_t ge_px_axis_status(const Card& card, std::size_t axis);
-std::uint16_t ge_sx_axis_status(const Card& card, std::size_t axis);
-std::uint16_t ge_mode_register(const Card& card, std::size_t axis);
+std::uint32_t ge_px_axis_status(const machine::Card& card, std::size_t axis);
+std::uint16_t ge_sx_axis_status(const machine::Card& card, std::size_t axis);
+std::uint16_t ge_mode_register(const machine::Card& card, std::size_t axis);
 // The command-error bit of a refusal cause on each variant (0 where the table has no bit for it).
-std::uint16_t ge_command_status_bit(GeVariant variant, CommandFault fault);
-std::uint16_t ge_command_status(GeVariant variant, const Card& card);
+std::uint16_t ge_command_status_bit(GeVariant variant, machine::CommandFault fault);
+std::uint16_t ge_command_status(GeVariant variant, const machine::Card& card);
 // GT_RstSts(axis, mask) (L5423-5431): mask bit 1 keeps, 0 clears, bits 0-7 only; the card events to clear
 // (mask 0 = GT_ClrSts). Reserved bits 0 and 2 clear the card's motion-complete and breakpoint events.
 std::uint32_t ge_events_to_clear(std::uint16_t rst_sts_mask);
 
-}  // namespace servobench::machine
+}  // namespace servobench::vendor::googol

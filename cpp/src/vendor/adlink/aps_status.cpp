@@ -1,8 +1,12 @@
-#include "servobench/machine/aps_status.hpp"
+#include "servobench/vendor/adlink/aps_status.hpp"
 
 #include <cmath>
 
-namespace servobench::machine {
+#include "servobench/vendor/adlink/adlink_axes.hpp"
+
+namespace servobench::vendor::adlink {
+
+using namespace machine;  // the kernel's types: Card, CardEvent, CommandFault, StopCause ...
 
 namespace {
 constexpr std::uint32_t bit(ApsMsts b) { return 1u << static_cast<int>(b); }
@@ -11,6 +15,7 @@ constexpr std::uint32_t bit(ApsMio b) { return 1u << static_cast<int>(b); }
 
 std::uint32_t aps_motion_status(const Card& card, std::size_t axis) {
   const CardAxisState& s = card.state(axis);
+  const AdlinkAxisState& ad = adlink_state(card, axis);
   const MotionLoop& l = card.loop(axis);
   const motion::ProfileGenerator& gen = l.generator();
   const bool profile = gen.moving();
@@ -25,10 +30,10 @@ std::uint32_t aps_motion_status(const Card& card, std::size_t axis) {
   if (s.dir_positive) w |= bit(ApsMsts::DIR);
   w |= card.moving(axis) ? bit(ApsMsts::NSTP) : bit(ApsMsts::MDN);
   if (l.homing() && !l.homing()->finished()) w |= bit(ApsMsts::HMV);
-  if (s.wait_trigger) w |= bit(ApsMsts::WAIT);
-  if (card.jogging(axis)) w |= bit(ApsMsts::JOG);
-  if (s.pre_event) w |= bit(ApsMsts::PRED);
-  if (s.post_event) w |= bit(ApsMsts::POSTD);
+  if (ad.wait_trigger) w |= bit(ApsMsts::WAIT);
+  if (jogging(card, axis)) w |= bit(ApsMsts::JOG);
+  if (ad.pre_event) w |= bit(ApsMsts::PRED);
+  if (ad.post_event) w |= bit(ApsMsts::POSTD);
   if (s.stop_cause != StopCause::None) w |= bit(ApsMsts::ASTP);
   if (s.mode == AxisMode::Gear) w |= bit(ApsMsts::GER);
   return w;
@@ -43,7 +48,7 @@ std::uint32_t aps_motion_io_status(const Card& card, std::size_t axis) {
   if (card.neg_limit_input(axis)) w |= bit(ApsMio::MEL);
   if (a.config().switches.home(a.load_angle_rad())) w |= bit(ApsMio::ORG);
   if (card.emergency_stop()) w |= bit(ApsMio::EMG);
-  if (card.in_position(axis)) w |= bit(ApsMio::INP);
+  if (in_position(card, axis)) w |= bit(ApsMio::INP);
   if (s.enabled) w |= bit(ApsMio::SVON);
   const double act = card.actual_pos(axis);
   if (s.limits.soft_pos_enabled && act >= s.limits.soft_pos_pulse) w |= bit(ApsMio::SPEL);
@@ -68,4 +73,4 @@ int aps_stop_code(StopCause cause) {
 
 int aps_stop_code(const Card& card, std::size_t axis) { return aps_stop_code(card.state(axis).stop_cause); }
 
-}  // namespace servobench::machine
+}  // namespace servobench::vendor::adlink

@@ -1,8 +1,10 @@
-#include "servobench/machine/crd_status.hpp"
+#include "servobench/vendor/googol/crd_status.hpp"
 
 #include "servobench/machine/card_modes.hpp"
 
-namespace servobench::machine {
+namespace servobench::vendor::googol {
+
+using namespace machine;  // the kernel's types: Card, CardEvent, CommandFault, StopCause ...
 
 std::uint16_t gt_crd_status(const CrdStatusInputs& in) {
   std::uint32_t w = 0;
@@ -38,4 +40,4 @@ GucCrdStatus guc_crd_status(const motion::PathGenerator& fifo) {
 
 GucCrdStatus guc_crd_status(Card& card, int crd, int fifo) { return guc_crd_status(card.modes().crd(crd).fifo(fifo)); }
 
-}  // namespace servobench::machine
+}  // namespace servobench::vendor::googol

@@ -31,7 +31,7 @@
 
 #include "servobench/machine/card.hpp"
 
-namespace servobench::machine {
+namespace servobench::vendor::adlink {
 
 // Bit numbers of the motion status word (MSTS).
 enum class ApsMsts : int { CSTP = 0, VM = 1, ACC = 2, DEC = 3, DIR = 4, MDN = 5, HMV = 6, NSTP = 7, WAIT = 10, PTB = 11,
@@ -44,9 +44,9 @@ enum class ApsMio : int { ALM = 0, PEL = 1, MEL = 2, ORG = 3, EMG = 4, EZ = 5, I
 constexpr int kApsStopNormal = 0, kApsStopEmg = 1, kApsStopAlm = 2, kApsStopSvno = 3, kApsStopPel = 4,
               kApsStopMel = 5, kApsStopSpel = 6, kApsStopSmel = 7, kApsStopErrorLevel = 13;
 
-std::uint32_t aps_motion_status(const Card& card, std::size_t axis);
-std::uint32_t aps_motion_io_status(const Card& card, std::size_t axis);
-int aps_stop_code(StopCause cause);
-int aps_stop_code(const Card& card, std::size_t axis);
+std::uint32_t aps_motion_status(const machine::Card& card, std::size_t axis);
+std::uint32_t aps_motion_io_status(const machine::Card& card, std::size_t axis);
+int aps_stop_code(machine::StopCause cause);
+int aps_stop_code(const machine::Card& card, std::size_t axis);
 
-}  // namespace servobench::machine
+}  // namespace servobench::vendor::adlink

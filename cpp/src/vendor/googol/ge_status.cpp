@@ -1,6 +1,8 @@
-#include "servobench/machine/ge_status.hpp"
+#include "servobench/vendor/googol/ge_status.hpp"
 
-namespace servobench::machine {
+namespace servobench::vendor::googol {
+
+using namespace machine;  // the kernel's types: Card, CardEvent, CommandFault, StopCause ...
 
 namespace {
 
@@ -98,4 +100,4 @@ std::uint32_t ge_events_to_clear(std::uint16_t rst_sts_mask) {
   return e;
 }
 
-}  // namespace servobench::machine
+}  // namespace servobench::vendor::googol

@@ -16,14 +16,14 @@
 
 #include "servobench/machine/card.hpp"
 
-namespace servobench::machine {
+namespace servobench::vendor::googol {
 
-std::uint16_t gt_axis_status(const Card& card, std::size_t axis);
-std::uint16_t gt_mode_register(const Card& card, std::size_t axis);
+std::uint16_t gt_axis_status(const machine::Card& card, std::size_t axis);
+std::uint16_t gt_mode_register(const machine::Card& card, std::size_t axis);
 // The command-status bit of a refusal cause (0 for causes the GT register has no bit for).
-std::uint16_t gt_command_status_bit(CommandFault fault);
-std::uint16_t gt_command_status(const Card& card);
+std::uint16_t gt_command_status_bit(machine::CommandFault fault);
+std::uint16_t gt_command_status(const machine::Card& card);
 // GT_RstSts(mask): mask bit 1 keeps, 0 clears, bits 0-7 (L4557-4569); the card events to clear.
 std::uint32_t gt_events_to_clear(std::uint16_t rst_sts_mask);
 
-}  // namespace servobench::machine
+}  // namespace servobench::vendor::googol
