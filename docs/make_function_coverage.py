@@ -89,15 +89,13 @@ def load_list(manual: str) -> list[Entry]:
     return [Entry(r[0], int(r[1]), r[2], r[3] if len(r) > 3 else "") for r in body]
 
 
-def functions(manual: str) -> list[Entry]:
-    return [e for e in load_list(manual) if e.kind == "function"]
-
-
 # ---------------------------------------------------------------------------------------------------------- calls
 _SOURCES = ("tests/python", "examples/vendor_programs")
 
 
-def _module_aliases(tree: ast.AST, module: str) -> bool:
+def _imports_dialect(tree: ast.AST, module: str) -> bool:
+    """Whether a file imports `module` (``from servobench.dialects.gt import ...``, ``from servobench.dialects import
+    gt``), the dialects package (``from servobench import dialects``) or any dialect module by ``import``."""
     short = module.rsplit(".", 1)[1]
     for node in ast.walk(tree):
         if isinstance(node, ast.ImportFrom) and node.module:
@@ -113,12 +111,12 @@ def _module_aliases(tree: ast.AST, module: str) -> bool:
 
 def called_names(module: str) -> dict[str, list[str]]:
     """Name -> the files (repo-relative) that call it, among the test files and vendor programs that import the
-    dialect `module` (a call ``f(...)``, ``gt.f(...)`` or ``ctl.f(...)``)."""
+    dialect `module` as :func:`_imports_dialect` reads it (a call ``f(...)``, ``gt.f(...)`` or ``ctl.f(...)``)."""
     out: dict[str, list[str]] = {}
     for base in _SOURCES:
         for path in sorted((REPO / base).rglob("*.py")):
             tree = ast.parse(path.read_text(encoding="utf-8"), filename=str(path))
-            if not _module_aliases(tree, module):
+            if not _imports_dialect(tree, module):
                 continue
             rel = str(path.relative_to(REPO))
             for node in ast.walk(tree):
