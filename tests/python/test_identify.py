@@ -70,11 +70,20 @@ def test_rigid_within_2pct_from_50pct_guesses(true):
         assert abs(e.value - true[k]) < 5 * e.std_error + 1e-6 * abs(true[k]), (k, e)
 
 
-def test_a_best_start_at_the_resolution_floor_needs_no_twin_when_the_others_are_clearly_worse():
+def test_a_best_start_at_the_resolution_floor_needs_no_twin_when_the_others_are_clearly_worse(monkeypatch):
     # RIGID_B with a PRBS held 4 ticks: the start from the guess ends at the quantisation floor (0.288 count RMS, the
-    # truth within 0.01 %); the two perturbed starts lose the Stribeck peak and stop at 34-37 counts. J43 alone
-    # called this NOT CONVERGED; J47: a point at the resolution floor with every other start >= 2x worse is the
-    # log's best and is converged.
+    # truth within 0.01 %); two other starts that begin with the Stribeck peak flattened (static friction at the
+    # Coulomb level, a 0.2 rad/s Stribeck speed) lose the peak and stop at 31-33 counts. J43 alone called this NOT
+    # CONVERGED; J47: a point at the resolution floor with every other start >= 2x worse is the log's best and is
+    # converged. (Until session 11 the seeded 1.5x perturbations of the guess did this by themselves; since the
+    # continuation stages are warm-started (LK3) they reach the floor too, so the lost starts are made explicit.)
+    perturbed = sb.oefit.perturbed_starts
+
+    def peakless_others(guess, free, n_starts, seed=0, spread=1.5):
+        starts = perturbed(guess, free, n_starts, seed, spread)
+        return starts[:1] + [dict(g, static_nm=0.0101, stribeck_speed_rad_s=0.2) for g in starts[1:]]
+
+    monkeypatch.setattr(sb.oefit, "perturbed_starts", peakless_others)
     log = sb.run_experiment(axis_with(_core.RigidPlant(**RIGID_B)), amplitude_v=0.1, seed=0, hold_samples=4)
     fit = sb.fit_time(log, "rigid", guess=guesses(RIGID_B), strict=False)
     rms = sorted(s.residual_rms / log.measurement_count for s in fit.starts)

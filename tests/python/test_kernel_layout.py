@@ -14,8 +14,9 @@ CPP = ROOT / "cpp"
 # Still in machine/ and still ADLINK/GE modules (docs/architecture.md "Where the code is today"): they may include
 # their vendor's words until they move to vendor/.
 GROUP_MODULES = {"card_group_adlink.cpp", "card_group_adlink.hpp", "card_group_ge.cpp", "card_group_ge.hpp"}
-# identify/time_fit.cpp is left as the brief allows (decision VK8).
-LONG_ALLOWED = {"cpp/src/identify/time_fit.cpp"}
+# None: identify/time_fit.cpp was split into time_fit.cpp (the solve) and shooting_model.cpp (the model and the
+# shooting problem) in session 11.
+LONG_ALLOWED: set[str] = set()
 
 
 def _kernel_files():
@@ -60,3 +61,13 @@ def test_card_bindings_take_int_axes_through_the_one_check():
     sb = pytest.importorskip("servobench")
     doc = sb._core.Card.axis_on.__doc__
     assert "axis: int" in doc, doc
+
+
+def test_one_line_and_arc_geometry():
+    """Issue 24.5: one line/arc geometry type for every vendor (decision LK2): only motion/segment_geometry defines a
+    point along a segment; the Googol and ADLINK names are aliases of its two instantiations."""
+    owners = sorted(str(f.relative_to(ROOT)) for f in CPP.rglob("*.[ch]pp") if re.search(r"\bpoint_at\(double", f.read_text()))
+    assert owners == ["cpp/include/servobench/motion/segment_geometry.hpp", "cpp/src/motion/segment_geometry.cpp"], owners
+    header = (CPP / "include" / "servobench" / "motion" / "segment_geometry.hpp").read_text()
+    assert "using PathSegmentGeometry = SegmentGeometry<kCrdMaxDim>;" in header
+    assert "using SpaceSegment = SegmentGeometry<kSpaceMaxDim>;" in header

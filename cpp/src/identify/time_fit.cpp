@@ -15,6 +15,8 @@
 #include "servobench/identify/covariance.hpp"
 #include "servobench/identify/solver_progress.hpp"
 
+#include "shooting_model.hpp"
+
 namespace servobench::identify {
 
 void TimeFitOptions::validate() const {
@@ -37,190 +39,12 @@ void TimeFitOptions::validate() const {
 
 namespace {
 
-constexpr int kMaxStates = 5;
-template <class T>
-using Vec = Eigen::Matrix<T, Eigen::Dynamic, 1, 0, kMaxStates, 1>;
-template <class T>
-using Mat = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxStates, kMaxStates>;
-template <class T>
-using InMat = Eigen::Matrix<T, Eigen::Dynamic, 4, 0, kMaxStates, 4>;
-
-inline double value_of(double x) { return x; }
-template <int N>
-double value_of(const ceres::Jet<double, N>& x) {
-  return x.a;
-}
-
-// A discretisation matrix on T: the value, and for Jets the derivatives along the first directions (the linear
-// parameters come first in the parameter block, so Jet direction k is linear parameter k).
-template <class M>
-void lift(const Eigen::MatrixXd& v, const std::vector<Eigen::MatrixXd>&, M& out, std::true_type /*double*/) {
-  out = v;
-}
-template <class M>
-void lift(const Eigen::MatrixXd& v, const std::vector<Eigen::MatrixXd>& d, M& out, std::false_type /*jet*/) {
-  using T = typename M::Scalar;
-  out.resize(v.rows(), v.cols());
-  for (Eigen::Index r = 0; r < v.rows(); ++r)
-    for (Eigen::Index c = 0; c < v.cols(); ++c) {
-      T x(v(r, c));
-      for (std::size_t k = 0; k < d.size(); ++k) x.v[static_cast<Eigen::Index>(k)] = d[k](r, c);
-      out(r, c) = x;
-    }
-}
-
-// Everything the segments share.
-struct FitContext {
-  ModelLayout layout;
-  const TimeLog* log = nullptr;
-  std::vector<double> lag;  // current-loop torque at every sample (parameter-free: the loop is known)
-  double lag_decay = 0.0;   // exp(-wc h) over one sub-step h
-  bool has_load = true;     // false: the constant load is held at 0 (no input column for it)
-  int substeps = 1;
-  int output_index = 0;
-  double inv_scale = 1.0;
-  double continuity_weight = 1.0;
-  mutable std::unique_ptr<DiscretisationCache> cache;
-};
-
-// The mechanical part of a discretisation (value or derivative): the current-loop torque is data (ctx.lag), so the
-// state is mechanical only and the lag's column of phi becomes a fourth input column:
-// x_mech' = phi_mm x_mech + [gamma_m | phi_m,lag] [u, t_motor, t_load, lag].
-Eigen::MatrixXd mechanical_phi(const Eigen::MatrixXd& phi, int nl) {
-  return phi.bottomRightCorner(phi.rows() - nl, phi.cols() - nl);
-}
-Eigen::MatrixXd mechanical_gamma(const Eigen::MatrixXd& phi, const Eigen::MatrixXd& gamma, int nl) {
-  const Eigen::Index nm = gamma.rows() - nl;
-  Eigen::MatrixXd g = Eigen::MatrixXd::Zero(nm, 4);
-  g.leftCols(3) = gamma.bottomRows(nm);
-  if (nl) g.col(3) = phi.block(nl, 0, nm, 1);
-  return g;
-}
-
-// Simulates samples [start, start + count) from the mechanical state x0 with parameters p, writing the output per
-// sample to out (scaled residuals when y is given). T = double or a Ceres Jet.
-template <PlantModel M, class T>
-void simulate_segment(const FitContext& ctx, const T* p, const T* x0, int start, int count, T* out, bool residual,
-                      const T* x_next = nullptr, T* continuity = nullptr) {
-  constexpr bool is_double = std::is_same<T, double>::value;
-  const ModelLayout& layout = ctx.layout;
-  const int nlin = linear_parameter_count(layout.model);
-  const int nl = layout.lag_states();
-  double lin[6];
-  for (int k = 0; k < nlin; ++k) lin[k] = value_of(p[k]);
-  const auto disc = ctx.cache->get(lin, !is_double);
-  const std::size_t masks = disc->phi.size();
-  std::array<Mat<T>, 4> phis;
-  std::array<InMat<T>, 4> gammas;
-  for (std::size_t m = 0; m < masks; ++m) {
-    std::vector<Eigen::MatrixXd> dphi, dgamma;
-    for (std::size_t k = 0; k < disc->dphi[m].size(); ++k) {
-      dphi.push_back(mechanical_phi(disc->dphi[m][k], nl));
-      dgamma.push_back(mechanical_gamma(disc->dphi[m][k], disc->dgamma[m][k], nl));
-    }
-    lift(mechanical_phi(disc->phi[m], nl), dphi, phis[m], std::integral_constant<bool, is_double>());
-    lift(mechanical_gamma(disc->phi[m], disc->gamma[m], nl), dgamma, gammas[m],
-         std::integral_constant<bool, is_double>());
-  }
-  plant::DryFriction<T> dry[2];
-  T load_nm;
-  model_friction<M>(layout, p, dry, &load_nm);
-  const int nb = body_count(layout.model);
-  plant::BodyIndex idx[2] = {layout.body(0), layout.body(1)};
-  for (auto& b : idx) {  // mechanical state indices
-    b.angle -= nl;
-    b.speed -= nl;
-  }
-  const int n = mechanical_states(layout.model);
-  const int out_index = ctx.output_index - nl;
-  Vec<T> x(n), xf(n);
-  for (int i = 0; i < n; ++i) x[i] = x0[i];
-  char stuck[2] = {0, 0};
-  for (int b = 0; b < nb; ++b) stuck[b] = value_of(x[idx[b].speed]) == 0.0 ? 1 : 0;
-  const T t_load = -load_nm;
-  const std::vector<double>& u = ctx.log->torque_nm;
-  const std::vector<double>& y = ctx.log->measured;
-  double lag = nl ? ctx.lag[static_cast<std::size_t>(start)] : 0.0;
-  for (int k = 0; k < count; ++k) {
-    const std::size_t s = static_cast<std::size_t>(start + k);
-    out[k] = residual ? T((x[out_index] - T(y[s])) * ctx.inv_scale) : T(x[out_index]);
-    if (k + 1 == count && !continuity) break;
-    // The logged command and the current loop's torque are data (double): no Jet products for them.
-    for (int sub = 0; sub < ctx.substeps; ++sub) {
-      if (ctx.has_load)
-        plant::advance_with_dry_friction(static_cast<std::size_t>(nb), idx, dry, phis, gammas, u[s], 0.0, t_load, x,
-                                         xf, stuck, lag);
-      else
-        plant::advance_with_dry_friction(static_cast<std::size_t>(nb), idx, dry, phis, gammas, u[s], 0.0, 0.0, x, xf,
-                                         stuck, lag);
-      if (nl) lag = ctx.lag_decay * lag + (1.0 - ctx.lag_decay) * u[s];
-    }
-  }
-  if (continuity) {  // the next segment must start where this one ends (angles in counts, speeds in counts/sample)
-    for (int i = 0; i < n; ++i) {
-      const bool angle = i % 2 == 0;
-      const double w = ctx.continuity_weight * ctx.inv_scale * (angle ? 1.0 : ctx.log->sample_period_s);
-      continuity[i] = (x[i] - x_next[i]) * w;
-    }
-  }
-}
-
-template <PlantModel M>
-struct SegmentCost {
-  const FitContext* ctx;
-  int start, count;
-  template <class T>
-  bool operator()(const T* p, const T* x0, T* r) const {
-    simulate_segment<M>(*ctx, p, x0, start, count, r, true);
-    return true;
-  }
-};
-
-// A segment and the continuity of its end state with the next segment's start (multiple shooting).
-template <PlantModel M>
-struct LinkedSegmentCost {
-  const FitContext* ctx;
-  int start, count;
-  template <class T>
-  bool operator()(const T* p, const T* x0, const T* x_next, T* r) const {
-    simulate_segment<M>(*ctx, p, x0, start, count, r, true, x_next, r + count);
-    return true;
-  }
-};
-
-// The layout, the output, the discretisation cache and the known current loop's torque at every sample
-// (i' = wc (u - i), u held over each sample, exactly; it starts at the first torque sample).
-void init_context(FitContext& ctx, const TimeLog& log, const TimeFitOptions& options) {
-  ctx.layout.model = options.model;
-  ctx.layout.current_bw_hz = options.current_bw_hz;
-  ctx.layout.stribeck_exponent = options.stribeck_exponent;
-  ctx.log = &log;
-  ctx.substeps = options.substeps;
-  ctx.inv_scale = 1.0 / options.measurement_scale;
-  ctx.continuity_weight = options.continuity_weight;
-  const ModelLayout& l = ctx.layout;
-  ctx.output_index = log.measured_is_speed ? (log.measured_on_load ? l.load_speed() : l.motor_speed())
-                                           : (log.measured_on_load ? l.load_angle() : l.motor_angle());
-  ctx.cache = std::make_unique<DiscretisationCache>(ctx.layout, log.sample_period_s / options.substeps);
-  ctx.lag_decay = std::exp(-2.0 * M_PI * options.current_bw_hz * log.sample_period_s / options.substeps);
-  const std::size_t n = log.torque_nm.size();
-  ctx.lag.clear();
-  if (!l.lag_states() || n == 0) return;
-  const double e = std::exp(-2.0 * M_PI * options.current_bw_hz * log.sample_period_s);
-  ctx.lag.resize(n);
-  double i = log.torque_nm[0];
-  for (std::size_t k = 0; k < n; ++k) {
-    ctx.lag[k] = i;
-    i = e * i + (1.0 - e) * log.torque_nm[k];
-  }
-}
-
-void run_segment(const FitContext& ctx, const double* p, const double* x0, int start, int count, double* out) {
-  if (ctx.layout.model == PlantModel::kRigid)
-    simulate_segment<PlantModel::kRigid>(ctx, p, x0, start, count, out, false);
-  else
-    simulate_segment<PlantModel::kTwoMass>(ctx, p, x0, start, count, out, false);
-}
+using detail::add_segment_blocks;
+using detail::check_log;
+using detail::FitContext;
+using detail::init_context;
+using detail::run_segment;
+using detail::state_at;
 
 struct Stage {
   ShootingProblem shooting;
@@ -228,149 +52,6 @@ struct Stage {
   ceres::Solver::Summary summary;
   double seconds = 0.0;
 };
-
-
-void check_log(const TimeLog& log, const TimeFitOptions& o) {
-  check_positive("TimeLog", "sample_period_s", log.sample_period_s);
-  if (log.torque_nm.size() != log.measured.size())
-    throw std::invalid_argument("TimeLog: torque_nm has " + std::to_string(log.torque_nm.size()) +
-                                " samples but measured has " + std::to_string(log.measured.size()) +
-                                "; they must have the same length");
-  for (std::size_t k = 0; k < log.measured.size(); ++k) {
-    if (!std::isfinite(log.torque_nm[k]))
-      throw std::invalid_argument("TimeLog.torque_nm[" + std::to_string(k) + "] = " + format_value(log.torque_nm[k]) +
-                                  " is not a finite number");
-    if (!std::isfinite(log.measured[k]))
-      throw std::invalid_argument("TimeLog.measured[" + std::to_string(k) + "] = " + format_value(log.measured[k]) +
-                                  " is not a finite number");
-  }
-  const std::size_t need = 2 * static_cast<std::size_t>(o.min_segment_samples);
-  if (log.measured.size() < need)
-    throw std::invalid_argument("TimeLog: " + std::to_string(log.measured.size()) +
-                                " samples is too short a log: at least " + std::to_string(need) + " are needed");
-  if (log.measured_on_load && o.model == PlantModel::kRigid) {
-    // the same body: allowed, nothing to do
-  }
-}
-
-// Where the shooting segments go. A segment simulated through a stick phase or a reversal can be trapped: once the
-// model body sticks at a different moment than the real one, the residuals stop depending on the segment's state and
-// on the friction parameters. The data are therefore cut into runs of one-way motion -- the measured direction,
-// sign(y[k+h] - y[k-h]), constant and the change over 2h samples at least `rest_threshold` -- with `edge_samples`
-// trimmed at both ends; runs shorter than min_segment_samples are left out, longer ones are split into pieces of
-// about segment_samples. Rest phases and reversals carry no residual (the friction's low-speed branch is still seen
-// on the way into and out of them).
-void shooting_segments(const TimeLog& log, const TimeFitOptions& o, std::vector<int>* starts, std::vector<int>* counts) {
-  const std::vector<double>& y = log.measured;
-  const int n = static_cast<int>(y.size());
-  const int h = o.direction_window / 2;
-  const double thr = o.rest_threshold * o.measurement_scale;
-  std::vector<int> dir(static_cast<std::size_t>(n), 0);
-  for (int k = 0; k < n; ++k) {
-    double d;
-    if (log.measured_is_speed) {
-      d = y[static_cast<std::size_t>(k)];
-    } else {
-      const int a = std::max(0, k - h), b = std::min(n - 1, k + h);
-      d = y[static_cast<std::size_t>(b)] - y[static_cast<std::size_t>(a)];
-    }
-    dir[static_cast<std::size_t>(k)] = d >= thr ? 1 : (d <= -thr ? -1 : 0);
-  }
-  int k = 0;
-  while (k < n) {
-    if (dir[static_cast<std::size_t>(k)] == 0) {
-      ++k;
-      continue;
-    }
-    int e = k;
-    while (e < n && dir[static_cast<std::size_t>(e)] == dir[static_cast<std::size_t>(k)]) ++e;
-    const int a = k + o.edge_samples, b = e - o.edge_samples;  // [a, b)
-    k = e;
-    if (b - a < o.min_segment_samples) continue;
-    const int pieces = std::max(1, (b - a + o.segment_samples / 2) / o.segment_samples);
-    for (int i = 0; i < pieces; ++i) {
-      const int s0 = a + (b - a) * i / pieces, s1 = a + (b - a) * (i + 1) / pieces;
-      starts->push_back(s0);
-      counts->push_back(s1 - s0);
-    }
-  }
-}
-
-// Where the segments start: a line through each segment's first samples (angle and speed; a two-mass load starts
-// with the motor).
-void initial_states(const TimeLog& log, ShootingProblem& sp) {
-  const auto& y = log.measured;
-  const double ts = log.sample_period_s;
-  const int ns = sp.state_size;
-  sp.states.assign(sp.starts.size() * static_cast<std::size_t>(ns), 0.0);
-  for (std::size_t s = 0; s < sp.starts.size(); ++s) {
-    const std::size_t a = static_cast<std::size_t>(sp.starts[s]);
-    const std::size_t m = std::min<std::size_t>(8, static_cast<std::size_t>(sp.counts[s]));
-    double angle = 0.0, speed = 0.0;
-    if (log.measured_is_speed) {
-      speed = y[a];
-    } else {
-      double s_t = 0, sy = 0, stt = 0, sty = 0;
-      for (std::size_t j = 0; j < m; ++j) {
-        const double tj = static_cast<double>(j) * ts;
-        s_t += tj;
-        sy += y[a + j];
-        stt += tj * tj;
-        sty += tj * y[a + j];
-      }
-      const double md = static_cast<double>(m);
-      speed = (md * sty - s_t * sy) / (md * stt - s_t * s_t);
-      angle = (sy - speed * s_t) / md;
-    }
-    double* v = sp.states.data() + s * static_cast<std::size_t>(ns);
-    v[0] = angle;
-    v[1] = speed;
-    if (ns == 4) {
-      v[2] = angle;
-      v[3] = speed;
-    }
-  }
-}
-
-ceres::LossFunction* make_loss(const TimeFitOptions& options) {
-  switch (options.loss) {
-    case Loss::kHuber: return new ceres::HuberLoss(options.loss_scale);
-    case Loss::kSoftLOne: return new ceres::SoftLOneLoss(options.loss_scale);
-    case Loss::kCauchy: return new ceres::CauchyLoss(options.loss_scale);
-    default: return nullptr;
-  }
-}
-
-// One residual block per segment: the model simulated from the segment's state (the AutoDiff cost); with
-// continuity_weight > 0, adjacent segments are linked. with_loss: the robust loss of the options.
-void add_segment_blocks(ceres::Problem& problem, const FitContext& ctx, ShootingProblem& sp, double* p,
-                        const TimeFitOptions& options, bool with_loss = true) {
-  const int nseg = static_cast<int>(sp.starts.size());
-  const std::size_t ns = static_cast<std::size_t>(sp.state_size);
-  for (int s = 0; s < nseg; ++s) {
-    const std::size_t u = static_cast<std::size_t>(s);
-    const int a = sp.starts[u], c = sp.counts[u];
-    const bool linked = options.continuity_weight > 0.0 && s + 1 < nseg && sp.starts[u + 1] == a + c;
-    using ceres::AutoDiffCostFunction;
-    using ceres::DYNAMIC;
-    constexpr PlantModel R = PlantModel::kRigid, W = PlantModel::kTwoMass;
-    ceres::CostFunction* cost = nullptr;
-    if (options.model == R && linked)
-      cost = new AutoDiffCostFunction<LinkedSegmentCost<R>, DYNAMIC, 6, 2, 2>(new LinkedSegmentCost<R>{&ctx, a, c}, c + 2);
-    else if (options.model == R)
-      cost = new AutoDiffCostFunction<SegmentCost<R>, DYNAMIC, 6, 2>(new SegmentCost<R>{&ctx, a, c}, c);
-    else if (linked)
-      cost = new AutoDiffCostFunction<LinkedSegmentCost<W>, DYNAMIC, 11, 4, 4>(new LinkedSegmentCost<W>{&ctx, a, c}, c + 4);
-    else
-      cost = new AutoDiffCostFunction<SegmentCost<W>, DYNAMIC, 11, 4>(new SegmentCost<W>{&ctx, a, c}, c);
-    ceres::LossFunction* loss = with_loss ? make_loss(options) : nullptr;
-    double* x = sp.states.data() + u * ns;
-    if (linked)
-      problem.AddResidualBlock(cost, loss, p, x, x + ns);
-    else
-      problem.AddResidualBlock(cost, loss, p, x);
-  }
-}
 
 std::string loss_name(Loss l) {
   switch (l) {
@@ -428,13 +109,33 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
   for (int i = 0; i < np; ++i)
     if (!fixed[static_cast<std::size_t>(i)]) free_index.push_back(i);
   if (free_index.empty()) throw std::invalid_argument("ParameterSetup: every parameter is fixed; nothing to fit");
-  // One stage of the continuation: segments of about `len` samples, their start states from the data, solved from the
-  // present parameters p.
-  auto run_stage = [&](int len, bool hold_stribeck, bool last, Stage& st) {
+  // A later stage starts its segments where the previous stage's model is at their first sample (decision LK3): the
+  // previous segment that holds the sample, simulated to it with the present parameters. A sample no previous
+  // segment holds keeps the state read from the data.
+  auto warm_start = [&](const ShootingProblem& prev, ShootingProblem& sp) {
+    const std::size_t nsu = static_cast<std::size_t>(ns);
+    std::size_t j = 0;
+    for (std::size_t s = 0; s < sp.starts.size(); ++s) {
+      const int k = sp.starts[s];
+      while (j < prev.starts.size() && prev.starts[j] + prev.counts[j] <= k) ++j;
+      if (j == prev.starts.size()) break;
+      if (prev.starts[j] > k) continue;
+      const double* x0 = prev.states.data() + j * nsu;
+      double* x = sp.states.data() + s * nsu;
+      if (prev.starts[j] == k)
+        std::copy(x0, x0 + ns, x);
+      else
+        state_at(ctx, p.data(), x0, prev.starts[j], k - prev.starts[j], x);
+    }
+  };
+  // One stage of the continuation: segments of about `len` samples, their start states from the previous stage (the
+  // first stage: from the data), solved from the present parameters p.
+  auto run_stage = [&](int len, bool hold_stribeck, bool last, const ShootingProblem* prev, Stage& st) {
     TimeFitOptions so = options;
     so.segment_samples = len;
     so.min_segment_samples = std::min(options.min_segment_samples, len);
     st.shooting = shooting_problem(log, so);
+    if (prev) warm_start(*prev, st.shooting);
     st.problem = std::make_unique<ceres::Problem>();
     ceres::Problem& problem = *st.problem;
     add_segment_blocks(problem, ctx, st.shooting, p.data(), options);
@@ -493,11 +194,13 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
                              (!fixed[si] || !fixed[static_cast<std::size_t>(stribeck_index(model))]);
   if (stribeck_free) lengths.insert(lengths.begin(), lengths.front());
   Stage st;
+  ShootingProblem prev;
   int total_iterations = 0;
   double seconds = 0.0, initial_cost = 0.0;
   for (std::size_t i = 0; i < lengths.size(); ++i) {
+    if (i) prev = st.shooting;
     st = Stage();
-    run_stage(lengths[i], stribeck_free && i == 0, i + 1 == lengths.size(), st);
+    run_stage(lengths[i], stribeck_free && i == 0, i + 1 == lengths.size(), i ? &prev : nullptr, st);
     total_iterations += static_cast<int>(st.summary.iterations.size()) - 1;
     seconds += st.seconds;
     if (i == 0) initial_cost = st.summary.initial_cost;
@@ -601,87 +304,6 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
   }
   fs.report = os.str();
   return result;
-}
-
-ShootingProblem shooting_problem(const TimeLog& log, const TimeFitOptions& options) {
-  options.validate();
-  check_log(log, options);
-  ShootingProblem sp;
-  sp.state_size = mechanical_states(options.model);
-  shooting_segments(log, options, &sp.starts, &sp.counts);
-  const int nseg = static_cast<int>(sp.starts.size());
-  if (nseg < 2)
-    throw std::invalid_argument("TimeLog: only " + std::to_string(nseg) +
-                                " stretch(es) of one-way motion long enough to fit (at least 2 of " +
-                                std::to_string(options.min_segment_samples) +
-                                " samples are needed): the log is too short or the axis hardly moves");
-  initial_states(log, sp);
-  return sp;
-}
-
-std::vector<double> shooting_residual(const TimeLog& log, const TimeFitOptions& options,
-                                      const ShootingProblem& problem, const std::vector<double>& p,
-                                      const std::vector<double>& states, SparseJacobian* jacobian) {
-  options.validate();
-  check_log(log, options);
-  if (static_cast<int>(p.size()) != parameter_count(options.model))
-    throw std::invalid_argument("shooting_residual: the " + std::string(model_name(options.model)) + " model has " +
-                                std::to_string(parameter_count(options.model)) + " parameters, got " +
-                                std::to_string(p.size()));
-  if (states.size() != problem.states.size() || problem.state_size != mechanical_states(options.model))
-    throw std::invalid_argument("shooting_residual: states must hold " + std::to_string(problem.states.size()) +
-                                " values (the problem's segments times its state size), got " +
-                                std::to_string(states.size()));
-  for (std::size_t s = 0; s < problem.starts.size(); ++s)
-    if (problem.starts[s] < 0 || problem.counts[s] < 1 ||
-        static_cast<std::size_t>(problem.starts[s] + problem.counts[s]) > log.measured.size())
-      throw std::invalid_argument("shooting_residual: segment " + std::to_string(s) + " lies outside the log");
-  FitContext ctx;
-  init_context(ctx, log, options);
-  ShootingProblem sp = problem;
-  sp.states = states;
-  std::vector<double> pv = p;
-  ceres::Problem::Options po;
-  ceres::Problem cp(po);
-  add_segment_blocks(cp, ctx, sp, pv.data(), options, false);
-  ceres::Problem::EvaluateOptions eopt;
-  eopt.parameter_blocks.push_back(pv.data());
-  for (std::size_t s = 0; s < sp.starts.size(); ++s)
-    eopt.parameter_blocks.push_back(sp.states.data() + s * static_cast<std::size_t>(sp.state_size));
-  eopt.apply_loss_function = false;
-  eopt.num_threads = options.num_threads;
-  double cost = 0.0;
-  std::vector<double> residual;
-  ceres::CRSMatrix crs;
-  cp.Evaluate(eopt, &cost, &residual, nullptr, jacobian ? &crs : nullptr);
-  if (jacobian) {
-    jacobian->rows = crs.num_rows;
-    jacobian->cols = crs.num_cols;
-    jacobian->row_ptr = crs.rows;
-    jacobian->col_index = crs.cols;
-    jacobian->values = crs.values;
-  }
-  return residual;
-}
-
-std::vector<double> simulate_model(const TimeLog& log, const std::vector<double>& parameters,
-                                   const std::vector<double>& initial_state, const TimeFitOptions& options) {
-  options.validate();
-  check_positive("TimeLog", "sample_period_s", log.sample_period_s);
-  if (static_cast<int>(parameters.size()) != parameter_count(options.model))
-    throw std::invalid_argument("simulate_model: wrong number of parameters");
-  if (static_cast<int>(initial_state.size()) != mechanical_states(options.model))
-    throw std::invalid_argument("simulate_model: wrong number of initial states");
-  FitContext ctx;
-  init_context(ctx, log, options);
-  const std::size_t n = log.torque_nm.size();
-  TimeLog padded = log;
-  padded.measured.assign(n, 0.0);
-  ctx.log = &padded;
-  std::vector<double> out(n);
-  const std::vector<double> internal = to_internal(options.model, parameters);
-  if (n) run_segment(ctx, internal.data(), initial_state.data(), 0, static_cast<int>(n), out.data());
-  return out;
 }
 
 }  // namespace servobench::identify

@@ -43,7 +43,9 @@ SpaceSegment AdlinkMoveSpec::build(const SpacePoint& start, const SpacePoint& re
   const SpacePoint tgt = relative ? add(ref, target, dim) : target;
   const SpacePoint ctr = relative ? add(ref, center, dim) : center;
   switch (kind) {
-    case Kind::Line: return SpaceSegment::line(start, tgt, dim);
+    case Kind::Line:
+      check_integer("AdlinkLine", "dim", dim, 2, kSpaceMaxDim, "axes; ADLINK L2817, L2829");
+      return SpaceSegment::line(start, tgt, dim);
     case Kind::Arc2Ca: return SpaceSegment::arc2_ca(start, ctr, angle_deg);
     case Kind::Arc2Ce: return SpaceSegment::arc2_ce(start, ctr, tgt, dir);
     case Kind::Arc3Ca: return SpaceSegment::arc3_ca(start, ctr, normal, angle_deg);

@@ -39,7 +39,7 @@ struct TimeFitOptions {
   // The continuation starts with segments of this length and doubles it up to segment_samples, each stage from
   // the previous one's parameters: short segments have a wide basin of attraction, long ones small errors.
   int initial_segment_samples = 250;  // 10..100000
-  // Segmentation into one-way motion (see shooting_segments in time_fit.cpp): the direction is the sign of the
+  // Segmentation into one-way motion (see shooting_segments in shooting_model.cpp): the direction is the sign of the
   // measured change over direction_window samples when it is at least rest_threshold (in measurement_scale units);
   // edge_samples are trimmed at both ends of every run; runs shorter than min_segment_samples are not used.
   int min_segment_samples = 20;     // 3..segment_samples
