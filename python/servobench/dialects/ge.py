@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import functools
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 import threading
 
 from .. import _core, card_io
@@ -183,6 +183,9 @@ class GeController(DialectController):
         self._hook = None
         self._lock = threading.Lock()
 
+    if TYPE_CHECKING:  # the GT_* methods are made from the rows (_ROWS) after the class statement
+        def __getattr__(self, name: str) -> Any: ...
+
     # -- plumbing: the card handle and the one-line adapters' helpers ----------------------------------------------
     @property
     def _slot(self) -> _Slot | None:
@@ -307,12 +310,6 @@ class GeController(DialectController):
         on = self._regs().encoder_on(a)
         return register32(self._card.actual_pos(a) if on else self._card.profile_pos(a))
 
-    def _atl_vel(self, a):
-        ax = self._card.axes[a]
-        enc = ax.encoder
-        speed = ax.load_speed_rad_s if enc.on_load else ax.speed_rad_s
-        return speed * enc.counts_per_rev / (2 * math.pi) * 1e-3
-
     def _set_vel(self, axis, vel) -> int:
         if self._card is None:
             return RTN_COMM_ERROR
@@ -321,23 +318,6 @@ class GeController(DialectController):
             return RTN_PARAMETER_ERROR
         lo = _VEL_MIN_JOG if self._card.mode(a) == "jog" else 0
         return self._motion(axis, "vel", vel, lo, _VEL_MAX)
-
-    def _switch_word(self, bit):
-        """GT_GetLmtSwt / GT_GetHomeSwt levels of every axis: bit(k) for axis k+1."""
-        w = 0
-        for k in range(self.axes):
-            w |= bit(k)
-        return w
-
-    def _limit_bits(self, k):
-        lim = self._card.limits(k)
-        return (int(self._card.pos_limit_input(k) != lim.pos_active_low) << (2 * k)
-                | int(self._card.neg_limit_input(k) != lim.neg_active_low) << (2 * k + 1))
-
-    def _home_bit(self, k):
-        ax = self._card.axes[k]
-        sw, angle = ax.switches, ax.load_angle_rad
-        return int(sw.home_min_rad <= angle <= sw.home_max_rad) << k
 
     def _adc(self, channel):
         rate = 4000.0 if self.variant == "PX" else 770.0 * 8 / self._regs().adc_channels()
@@ -610,7 +590,7 @@ _ROWS = (
      "(rtn, profile position, pulse) (L4701)."),
     ("GT_GetAtlErr", "axis", lambda c, axis: c._read(axis, lambda a: int(round(c._card.following_error(a)))),
      "(rtn, following error profile - actual of the last tick, pulse) (L4144-4171)."),
-    ("GT_GetAtlVel", "axis", lambda c, axis: c._read(axis, c._atl_vel),
+    ("GT_GetAtlVel", "axis", lambda c, axis: c._read(axis, lambda a: c._regs().actual_vel(a)),
      "(rtn, actual velocity, pulse/ms): the encoder shaft's speed now in counts (V96) (L4203)."),
     # -- 7.5 servo parameters (XV; on Update) ---------------------------------------------------------------------
     ("GT_SetKp", "axis, kp", lambda c, axis, kp: c._set_law(axis, "kp", kp, _real_in(kp, 0, _GAIN_MAX)),
@@ -683,10 +663,10 @@ _ROWS = (
     ("GT_ExOpt", "value", lambda c, value: c._card_cmd(lambda: _core.ge_list(c._card.kernel).set_outputs(int(value)),
                                                         _int_in(value, 0, 0xFFFF)),
      "Writes EXO0..EXO15, bit n = EXOn (L4094-4118)."),
-    ("GT_GetLmtSwt", "", lambda c: c._get(lambda: c._switch_word(c._limit_bits)),
+    ("GT_GetLmtSwt", "", lambda c: c._get(lambda: c._regs().limit_levels()),
      "(rtn, limit input levels): bit 2k Limit k+ (axis k+1), 2k+1 Limit k-; 1 = high = the switch is hit with the "
      "default normally-closed wiring, whatever LmtSns says (L2448-2456, L4510-4552; as GT V21)."),
-    ("GT_GetHomeSwt", "", lambda c: c._get(lambda: c._switch_word(c._home_bit)),
+    ("GT_GetHomeSwt", "", lambda c: c._get(lambda: c._regs().home_levels()),
      "(rtn, Home input levels): bit k = Home k (axis k+1), 1 = high = the axis is inside its home switch (V97) "
      "(L2458-2460, L4341-4381)."),
     # -- [sx-path] path motion, buffer, look-ahead (SX; GE §6 L1393-2040, §12; ge.md §4, §7.9-7.11): one call each

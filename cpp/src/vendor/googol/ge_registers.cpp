@@ -3,6 +3,7 @@
 #include <cmath>
 #include <variant>
 
+#include "servobench/machine/axis.hpp"
 #include "servobench/machine/powertrain.hpp"
 
 namespace servobench::vendor::googol {
@@ -160,6 +161,34 @@ double GeRegisters::read_motion(std::size_t a, GeMotionRegister r, double ms_per
   const auto it = written_.find({a, static_cast<int>(r)});
   if (it != written_.end() && it->second.second == per_tick) return it->second.first;
   return per_tick / std::pow(ms_per_tick, order_of(r));
+}
+
+std::uint32_t GeRegisters::limit_levels() const {
+  std::uint32_t w = 0;
+  for (std::size_t k = 0; k < card_.axis_count(); ++k) {
+    const machine::LimitConfig& lim = card_.state(k).limits;
+    w |= static_cast<std::uint32_t>(card_.pos_limit_input(k) != lim.pos_active_low) << (2 * k);
+    w |= static_cast<std::uint32_t>(card_.neg_limit_input(k) != lim.neg_active_low) << (2 * k + 1);
+  }
+  return w;
+}
+
+std::uint32_t GeRegisters::home_levels() {
+  std::uint32_t w = 0;
+  for (std::size_t k = 0; k < card_.axis_count(); ++k) {
+    const machine::Axis& ax = card_.axis(k);
+    const plant::SwitchParams& sw = ax.config().switches;
+    const double angle = ax.load_angle_rad();
+    w |= static_cast<std::uint32_t>(sw.home_min_rad <= angle && angle <= sw.home_max_rad) << k;
+  }
+  return w;
+}
+
+double GeRegisters::actual_vel(std::size_t a) {
+  const machine::Axis& ax = card_.axis(a);
+  const auto& enc = ax.config().encoder;
+  const double speed = enc.on_load ? ax.load_speed_rad_s() : ax.speed_rad_s();
+  return speed * enc.counts_per_rev / (2 * M_PI) * 1e-3;
 }
 
 GeRegisters& ge_registers(machine::Card& card) { return card.module<GeRegisters>(); }

@@ -59,6 +59,14 @@ class GeRegisters : public machine::CardHooks {
   // A servo-law command on a pulse axis is refused (SX cmd bit 6, L333): records the fault; true if refused.
   bool refuse_on_pulse_axis(std::size_t a);
 
+  // Input levels of every axis: GT_GetLmtSwt bit 2k Limit k+ (axis k+1), 2k+1 Limit k-, 1 = high = the switch is
+  // hit with the default normally-closed wiring whatever LmtSns says (L2448-2456, L4510-4552); GT_GetHomeSwt bit
+  // k = the axis is inside its home switch (V97, L2458-2460).
+  std::uint32_t limit_levels() const;
+  std::uint32_t home_levels();
+  // GT_GetAtlVel: the encoder shaft's speed now in counts, pulse/ms (V96, L4203).
+  double actual_vel(std::size_t a);
+
   // EXI0..EXI15 simulated levels (bit n = EXIn).
   void set_inputs(std::uint32_t word) { inputs_ = word & 0xFFFFu; }
   std::uint32_t inputs() const { return inputs_; }
