@@ -1,4 +1,4 @@
-// The GE SX coordinate system on the card (machine/card_group_ge.hpp): X..A = axes 1..4 with GT_MapCnt offsets,
+// The GE SX coordinate system on the card (vendor/googol/ge_crd.hpp, formerly machine/card_group_ge.hpp): X..A = axes 1..4 with GT_MapCnt offsets,
 // the pulse/ms time base, the start velocity and MaxVel clamp, refusals. GE seed 001 §6 (ge.md §4).
 #include <gtest/gtest.h>
 
@@ -6,11 +6,12 @@
 
 #include "servobench/machine/card.hpp"
 #include "card_fixtures.hpp"
-#include "servobench/machine/card_group_ge.hpp"
 #include "servobench/machine/card_modes.hpp"
+#include "servobench/vendor/googol/ge_crd.hpp"
 
 namespace mc = servobench::machine;
 namespace sm = servobench::motion;
+namespace gg = servobench::vendor::googol;
 
 namespace {
 
@@ -23,17 +24,17 @@ TEST(CardGroupGe, LineInPulsePerMsWithOffsetsAndClamp) {
   // with acceleration 1 from StrtVel 0.5: 2 ramps of 99.5 ms plus (30000 - 9999.75) / 100 ms of cruise.
   mc::Card c(4, axis_cfg(1e-3));
   for (std::size_t i = 0; i < 4; ++i) c.axis_on(i);
-  mc::GeCrdSetup s;
+  gg::GeCrdSetup s;
   s.offsets = {1000, -500};
   s.max_vel = 100;
-  mc::ge_crd_setup(c, s);
-  EXPECT_TRUE(mc::ge_crd_exists(c));
+  gg::ge_crd_setup(c, s);
+  EXPECT_TRUE(gg::ge_crd_exists(c));
   EXPECT_EQ(c.state(3).mode, mc::AxisMode::Coordinated);
-  sm::PathGenerator& g = mc::ge_path(c);
+  sm::PathGenerator& g = gg::ge_path(c);
   EXPECT_DOUBLE_EQ(g.setup().cycle_ms, 1.0);
   EXPECT_DOUBLE_EQ(g.state().pos[0], -1000.0);  // work coordinate = axis - offset
   g.push_segment(sm::PathSegmentGeometry::line(g.tail(), {29000, 500, 0, 0}, 4), 300, 1, 0, false, false, true);
-  c.modes().before_group_start(mc::kGeCrdSlot);
+  c.modes().before_group_start(gg::kGeCrdSlot);
   g.start();
   c.run(2);
   EXPECT_GE(g.state().speed, 0.5);
@@ -47,18 +48,18 @@ TEST(CardGroupGe, LineInPulsePerMsWithOffsetsAndClamp) {
   EXPECT_EQ(c.profile_pos(1), 0);
   // refused while it moves; rebuilt at rest at the new positions
   g.push_segment(sm::PathSegmentGeometry::line(g.tail(), {0, 500, 0, 0}, 4), 50, 1, 0, false, false, true);
-  c.modes().before_group_start(mc::kGeCrdSlot);
+  c.modes().before_group_start(gg::kGeCrdSlot);
   g.start();
   c.run(5);
-  EXPECT_THROW(mc::ge_crd_setup(c, s), mc::CardCommandRefused);
-  mc::GeCrdSetup bad;
+  EXPECT_THROW(gg::ge_crd_setup(c, s), mc::CardCommandRefused);
+  gg::GeCrdSetup bad;
   bad.max_vel = 0;
-  EXPECT_THROW(mc::ge_crd_setup(c, bad), std::invalid_argument);
+  EXPECT_THROW(gg::ge_crd_setup(c, bad), std::invalid_argument);
 }
 
 TEST(CardGroupGe, NotSetUpIsRefused) {
   mc::Card c(4, axis_cfg(200e-6));
-  EXPECT_FALSE(mc::ge_crd_exists(c));
-  EXPECT_THROW(mc::ge_path(c), mc::CardCommandRefused);
+  EXPECT_FALSE(gg::ge_crd_exists(c));
+  EXPECT_THROW(gg::ge_path(c), mc::CardCommandRefused);
   EXPECT_EQ(c.last_fault(), mc::CommandFault::CrdStateError);
 }

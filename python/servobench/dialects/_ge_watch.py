@@ -24,12 +24,14 @@ import numpy as np
 
 RTN_SUCCESS, RTN_COMMAND_ERROR, RTN_PARAMETER_ERROR, RTN_COMM_ERROR = 0, 1, 7, -1
 
+from .. import _core
+
 WATCH_PRF_POS, WATCH_ATL_POS, WATCH_PRF_VEL, WATCH_ATL_VEL, WATCH_VOLTAGE = 0x1, 0x2, 0x4, 0x8, 0x40
-#: The watch memory in values (samples x watched signals, all axes): V75.
+#: The watch memory in values (samples x watched signals, all axes): V75 (GeRegisters::kWatchMemoryValues).
 WATCH_MEMORY_VALUES = 32768
-# config bit -> (TAxis field, sampler signal, dtype)
-_BITS = ((0, "PrfPos", "pos", np.int64), (1, "AtlPos", "actual_pos", np.int64), (2, "PrfVel", "prf_vel", np.float64),
-         (3, "AtlVel", "fbk_vel", np.float64), (6, "Voltage", "volts", np.int16))
+# config bit -> (TAxis field, sampler signal, dtype): the table from the manual's word to the card's sampler
+_BITS = {0: ("PrfPos", "pos", np.int64), 1: ("AtlPos", "actual_pos", np.int64), 2: ("PrfVel", "prf_vel", np.float64),
+         3: ("AtlVel", "fbk_vel", np.float64), 6: ("Voltage", "volts", np.int16)}
 
 
 class TAxis:
@@ -56,12 +58,11 @@ class TWatchBuffer:
         self.Axis = [TAxis() for _ in range(int(axis_num))]
 
 
-def _state(ctl) -> dict:
-    st = ctl.__dict__.get("_ge_watch")
-    if st is None or st["card"] is not ctl.card:
-        st = {"card": ctl.card, "config": None, "size": 0, "channels": []}
-        ctl.__dict__["_ge_watch"] = st
-    return st
+def _selection(card):
+    """The watched channels [(axis, TAxis field, sampler signal, dtype)] and the block size: the card's GE registers
+    module keeps the selection (vendor/googol/ge_registers.hpp, GT_SetWatch)."""
+    regs = _core.ge_registers(card.kernel)
+    return [(k, *_BITS[bit]) for k, bit in regs.watch_channels()], regs.watch_size()
 
 
 def GT_SetWatch(ctl, config, size) -> int:
@@ -71,18 +72,11 @@ def GT_SetWatch(ctl, config, size) -> int:
     if card is None:
         return RTN_COMM_ERROR
     try:
-        words = [int(w) for w in config]
+        words = [float(int(w)) for w in config]
         n = float(size)
     except (TypeError, ValueError):
         return RTN_PARAMETER_ERROR
-    if len(words) > len(card) or any(w < 0 or w > 0xFFFF or w & 0xB0 for w in words):
-        return RTN_PARAMETER_ERROR
-    channels = [(k, field, sig, dt) for k, w in enumerate(words) for b, field, sig, dt in _BITS if w >> b & 1]
-    if n != int(n) or n < 1 or not channels or n * len(channels) > WATCH_MEMORY_VALUES:
-        return RTN_PARAMETER_ERROR
-    st = _state(ctl)
-    st.update(config=words, size=int(n), channels=channels)
-    return RTN_SUCCESS
+    return _core.ge_registers(card.kernel).set_watch(words, n)
 
 
 def GT_StartWatch(ctl, n=0) -> int:
@@ -90,8 +84,8 @@ def GT_StartWatch(ctl, n=0) -> int:
     card = ctl.card
     if card is None:
         return RTN_COMM_ERROR
-    st = _state(ctl)
-    if not st["channels"]:
+    channels, size = _selection(card)
+    if not channels:
         return RTN_COMMAND_ERROR
     try:
         v = float(n)
@@ -99,8 +93,7 @@ def GT_StartWatch(ctl, n=0) -> int:
         return RTN_PARAMETER_ERROR
     if v != int(v) or not 0 <= v <= 65535:
         return RTN_PARAMETER_ERROR
-    card.sample([(k, sig) for k, _f, sig, _dt in st["channels"]], every_ticks=int(v) + 1, depth=st["size"],
-                continuous=True)
+    card.sample([(k, sig) for k, _f, sig, _dt in channels], every_ticks=int(v) + 1, depth=size, continuous=True)
     return RTN_SUCCESS
 
 
@@ -110,18 +103,18 @@ def GT_GetWatch(ctl, buffer):
     card = ctl.card
     if card is None:
         return RTN_COMM_ERROR, 0
-    st = _state(ctl)
-    if not st["channels"]:
+    channels, size = _selection(card)
+    if not channels:
         return RTN_COMMAND_ERROR, 0
-    for k, field, _sig, _dt in st["channels"]:
+    for k, field, _sig, _dt in channels:
         arr = getattr(buffer.Axis[k], field, None) if k < len(buffer.Axis) else None
-        if arr is None or len(arr) < st["size"]:
+        if arr is None or len(arr) < size:
             return RTN_PARAMETER_ERROR, 0
     data = card.scope_data()
     if data is None:
         return RTN_SUCCESS, 0
     ms = card.servo_period_s * 1e3
-    for c, (k, field, sig, dt) in enumerate(st["channels"]):
+    for c, (k, field, sig, dt) in enumerate(channels):
         v = data.values[:, c]
         if sig in ("prf_vel", "fbk_vel"):
             v = v / ms  # pulse/tick -> pulse/ms
@@ -129,7 +122,7 @@ def GT_GetWatch(ctl, buffer):
             v = np.clip(np.rint(v * 32767 / 10), -32768, 32767)
         else:
             v = np.rint(v)
-        getattr(buffer.Axis[k], field)[: st["size"]] = v.astype(dt)
+        getattr(buffer.Axis[k], field)[:size] = v.astype(dt)
     return RTN_SUCCESS, 1
 
 
@@ -138,7 +131,7 @@ def GT_StopWatch(ctl) -> int:
     card = ctl.card
     if card is None:
         return RTN_COMM_ERROR
-    card._card.sampler_stop()
+    card.kernel.sampler_stop()
     while card.scope_data() is not None:
         pass
     return RTN_SUCCESS

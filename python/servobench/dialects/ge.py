@@ -26,17 +26,16 @@ from __future__ import annotations
 
 import functools
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 import threading
 
 from .. import _core, card_io
-from .._core import CardCommandRefused, MotionCommandRefused, PathGeometryError
+from .._core import CardCommandRefused, MotionCommandRefused
 from ..card import Card
 from . import _ge_watch
 
-_GE_CRD_SLOT = 4  # the card's group slot of the GE SX crd (machine/card_group_ge.hpp kGeCrdSlot)
 from ._ge_watch import TAxis, TWatchBuffer  # noqa: F401 (the manual's watch structures)
-from ._controller import DialectController, export_functions, register32, wrap32  # noqa: F401
+from ._controller import DialectController, _wrap_vendor_methods, export_functions, register32, wrap32  # noqa: F401
 
 # Return codes (Table 2-1 L263-270, Table 2-2 L272-283).
 RTN_SUCCESS = 0
@@ -72,132 +71,58 @@ _SX_ONLY = frozenset({"GT_EncPos", "GT_HandWheel", "GT_ExitHWheel", "GT_SetAdcCh
                       "GT_InitLookAheadExx", "GT_MvXYEx", "GT_MvXYZEx", "GT_LnXYEx", "GT_LnXYZEx", "GT_LnXYG0Ex",
                       "GT_LnXYZG0Ex", "GT_ArcXYEx", "GT_ArcYZEx", "GT_ArcZXEx", "GT_ArcXYPEx", "GT_ArcYZPEx",
                       "GT_ArcZXPEx", "GT_BufIOEx", "GT_BufIOBitEx", "GT_DelayEx", "GT_M30"})
-# Commands whose C form writes through pointers: (rtn, value) in Python.
+# Commands whose C form writes through pointers: (rtn, value) in Python (also every GT_Get*).
 _READS = frozenset({"GT_ExInpt", "GT_GetLmtSwt", "GT_GetHomeSwt", "GT_GetCmdSts", "GT_EncPos", "GT_CalVel"})
 
 
 def _int_in(value, lo, hi) -> bool:
-    if isinstance(value, bool):
-        return False
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        return False
+    v = _num(value)
     return math.isfinite(v) and v == int(v) and lo <= v <= hi
 
 
 def _real_in(value, lo, hi) -> bool:
-    if isinstance(value, bool):
-        return False
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        return False
+    v = _num(value)
     return math.isfinite(v) and lo <= v <= hi
 
 
-# -- [sx-path] the GE path state and the look-ahead module B queue (see GeController's [sx-path] block) --------
+def _num(value) -> float:
+    """A manual argument as the double the checks and the C++ vendor modules take: a bool or a non-number is NaN
+    (outside every range, so the card answers with the manual's code for a bad value)."""
+    if isinstance(value, bool):
+        return math.nan
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        return math.nan
+
+
+def _nums(*values) -> list[float]:
+    return [_num(v) for v in values]
+
+
 class TLookAheadMsg:
     """The Ex commands' message (L5147-5169): mtnNum the CodeNum where an error occurred, num how many commands
     before it were not sent, error 0 none, 1 point equals the previous one, 3 buffer full (re-send), 8 sending
-    the motion command failed (here: no InitLookAheadEx / MvXYEx, or a bad argument)."""
+    the motion command failed (here: no InitLookAheadEx / MvXYEx, or a bad argument). The manual's struct."""
 
     def __init__(self):
-        self.mtnNum = 0
-        self.num = 0
-        self.error = 0
+        self.mtnNum, self.num, self.error = 0, 0, 0
 
     def __repr__(self):
         return f"TLookAheadMsg(mtnNum={self.mtnNum}, num={self.num}, error={self.error})"
 
 
-class _GeLookAheadEx:
-    """Module B: the GT_InitLookAheadEx parameters (mm, s); active after GT_MvXYEx / GT_MvXYZEx put the card's
-    look-ahead window in front of the buffer."""
-
-    def __init__(self, params):
-        self.params = params
-        self.active = False
-
-
-class _GePathState:
-    """What the GE dialect keeps about the SX path (the card's crd holds the motion)."""
-
-    def __init__(self, axes: int):
-        self.syn_vel = 0.0          # pulse/ms (SetSynVel; the Mv vel in buffer mode until changed)
-        self.syn_acc = 0.0          # pulse/ms^2 (SetSynAcc, immediate mode)
-        self.strt_vel = 0.5         # pulse/ms (L1399)
-        self.max_vel = 256.0        # pulse/ms (L1405)
-        self.stp_acc = 0.0          # pulse/ms^2; 0 = stop at once (V102)
-        self.override = 1.0
-        self.override_g0 = 1.0
-        self.offsets = [0.0] * axes  # GT_MapCnt, pulse
-        self.capacity = 4096        # buffered commands (V102)
-        self.dirty = True           # rebuild the crd at the next occasion
-        self.dim = 0                # crd coordinates (0: up to 4; 3 with look-ahead module B)
-        self.buffer = False         # buffer input/execution mode (crd bit 7 = 0)
-        self.open = False           # buffer open (crd bit 1 = 0)
-        self.mv = False
-        self.mv_dim = 4
-        self.mv_vel = 0.0
-        self.mv_acc = 0.0
-        self.mv_pushed = 0          # the Mv line is segment 0 of the generator
-        self.started = False        # StrtMtn since StrtList
-        self.dcc_vel = None         # SetDccVel for the next segment
-        self.io_count = 0           # BufIO since the last motion command (<= 2)
-        self.delay_count = 0        # Delay since the last motion command (<= 1)
-        self.pending_io = []        # BufIOBit waiting for the next path command
-        self.pushed = 0             # path segments buffered since StrtList
-        self.ends = []              # end points of the generator's segments, in order
-        self.cmd_bit = None         # SX command-error bit of the last path refusal
-        self.gpo_seen = 0           # the crd's buffered-output word last merged into the EXO word
-        self.la = None              # module A
-        self.ex = None              # module B
-
-    def open_list(self):
-        self.buffer = self.open = True
-        self.mv = self.started = False
-        self.mv_pushed = self.pushed = self.io_count = self.delay_count = 0
-        self.dcc_vel = None
-        self.pending_io = []
-        self.ends = []
-        if self.ex is not None:
-            self.ex.active = False
-
-    def seg_end(self, path):
-        i = path.state.segments_done
-        if path.busy and i < len(self.ends):
-            return self.ends[i]
-        return path.tail
-
-
 class _Slot:
-    """One open card and what the dialect keeps about it (settings the Card has no register for)."""
+    """One open card: the handle and its ISA address (its GE state is the card's modules, ge_registers/ge_list)."""
 
     def __init__(self, card: Card, address: int):
         self.card = card
         self.address = address
-        self.reset()
-
-    def reset(self):
-        n = len(self.card)
-        self.lmt_sns = 0             # GT_LmtSns word (L4897-4907)
-        self.home_sns = 0            # GT_HomeSns word (L4809-4837)
-        self.index_sns = 0           # GT_IndexSns word (L4869-4877)
-        self.enc_sns = 0             # GT_EncSns word (L4025-4035)
-        self.ctrl_mode = [0] * n     # GT_CtrlMode: 0 analog (default, L3915), 1 pulse
-        self.step_pulse = [False] * n  # GT_StepPulse (True) / GT_StepDir (False, default L701)
-        self.enc_on = [True] * n     # GT_EncOn (default on an analog axis) / GT_EncOff
-        self.inputs = 0              # EXI0..EXI15 (simulated levels, set_inputs)
-        self.outputs = 0             # EXO0..EXO15 (GT_ExOpt)
-        self.adc_chn = 8             # GT_SetAdcChn (SX)
-        self.shadow = {}             # (axis, register) -> (GE-unit value, per-tick value) for exact read-backs
-        self.path = None             # [sx-path] _GePathState, created at the first path command
 
 
 def _command(name: str, fn):
     """Wraps a GT_* method: variant command set, re-entry (-3), and the GT_HookCommand callback."""
-    read = name in _READS or name.startswith("GT_Get") and name != "GT_GetCurrentCardNo"
+    read = _is_read(name)
 
     @functools.wraps(fn)
     def wrapper(self, *args, **kwargs):
@@ -219,6 +144,11 @@ def _command(name: str, fn):
         return result
 
     return wrapper
+
+
+def _is_read(name: str) -> bool:
+    """A command whose C form writes through pointers: it returns (rtn, value...) in Python."""
+    return name in _READS or name.startswith("GT_Get") and name != "GT_GetCurrentCardNo"
 
 
 class GeController(DialectController):
@@ -253,7 +183,10 @@ class GeController(DialectController):
         self._hook = None
         self._lock = threading.Lock()
 
-    # -- plumbing -------------------------------------------------------------------------------------------
+    if TYPE_CHECKING:  # the GT_* methods are made from the rows (_ROWS) after the class statement
+        def __getattr__(self, name: str) -> Any: ...
+
+    # -- plumbing: the card handle and the one-line adapters' helpers ----------------------------------------------
     @property
     def _slot(self) -> _Slot | None:
         return self._slots.get(self._current)
@@ -261,6 +194,10 @@ class GeController(DialectController):
     def _sync(self):
         slot = self._slot
         self._card = slot.card if slot is not None else None
+
+    def _regs(self):
+        """The card's GE registers module (vendor/googol/ge_registers.hpp)."""
+        return _core.ge_registers(self._card.kernel)
 
     def _ax(self, axis):
         """0-based axis, or None after recording an illegal parameter (bad axis number)."""
@@ -270,6 +207,7 @@ class GeController(DialectController):
         return None
 
     def _do(self, fn, *args) -> int:
+        """fn(*args): 1 when the card refuses it (the cause is recorded), 7 for a bad value, else 0."""
         try:
             fn(*args)
         except (CardCommandRefused, MotionCommandRefused):
@@ -286,14 +224,24 @@ class GeController(DialectController):
         if a is None:
             return RTN_PARAMETER_ERROR
         if not ok:
-            self._card.record_fault(a, fault)
-            return RTN_PARAMETER_ERROR
+            return self._param(a, fault)
         return self._do(fn, a)
 
-    def _fail(self, a, fault, what):
-        """Refuses a command the dialect checks itself: records `fault` (axis bit 7, GT_GetCmdSts) and raises."""
+    def _card_cmd(self, fn, ok=True) -> int:
+        """Card command: -1 without a card, 7 for `ok` False (recording an illegal parameter), else fn()."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        return self._do(fn) if ok else self._param(-1)
+
+    def _refuse(self, a, fault):
+        """A command the card ignores in this state: records `fault` (axis bit 7, GT_GetCmdSts) and raises the
+        card's refusal (1 through _do; the code is the exception's type, never its text)."""
         self._card.record_fault(a, fault)
-        raise CardCommandRefused(f"axis {a + 1}: {what} [refused: {fault}; return code 1]")
+        raise CardCommandRefused(f"axis {a + 1}: refused ({fault})")
+
+    def _param(self, a, fault="illegal_control_param") -> int:
+        self._card.record_fault(a, fault)
+        return RTN_PARAMETER_ERROR
 
     def _read(self, axis, fn):
         if self._card is None:
@@ -314,29 +262,86 @@ class GeController(DialectController):
         self._card.record_fault(-1, "not_simulated")
         return (RTN_COMMAND_ERROR, 0) if read else RTN_COMMAND_ERROR
 
-    def _stage(self, a, register, value, order, stage):
-        per_tick = float(value) * self._k ** order
-        stage(a, per_tick)
-        self._slot.shadow[(a, register)] = (float(value), per_tick)
+    def _ge(self, call):
+        """A command of the GE registers module: -1 without a card, else its code."""
+        return RTN_COMM_ERROR if self._card is None else call(self._regs())
 
-    def _readback(self, a, register, order):
-        per_tick = self._card.staged(a)[register]
-        ge, tick = self._slot.shadow.get((a, register), (None, None))
-        return ge if tick == per_tick else per_tick / self._k ** order
+    def _motion(self, axis, register, value, lo, hi) -> int:
+        """GT_SetVel/Acc/MAcc/Jerk: `value` in GE units (pulse/ms^order), staged per tick (on Update)."""
+        return self._axis_cmd(axis, lambda a: self._regs().stage_motion(a, register, float(value), self._k),
+                              _real_in(value, lo, hi), "motion_param_overflow")
 
     def _law(self, a):
         return self._card.staged(a)["law"]
 
-    def _pulse_axis(self, a) -> bool:
-        return self._slot.ctrl_mode[a] == 1
-
     def _set_law(self, axis, field, value, ok) -> int:
         def apply(a):
-            if self._pulse_axis(a):  # a servo command on a pulse axis (SX cmd bit 6, L333)
-                self._fail(a, "axis_state_error", "pulse axis")
+            if self._regs().refuse_on_pulse_axis(a):  # a servo command on a pulse axis (SX cmd bit 6, L333)
+                raise CardCommandRefused(f"axis {a + 1}: a servo-law command on a pulse axis")
             self._card.stage_law(a, self._law(a).replace(fractional_gains=True, **{field: float(value)}))
 
         return self._axis_cmd(axis, apply, ok)
+
+    def _get_law(self, axis, field, cast=float):
+        return self._read(axis, lambda a: cast(getattr(self._law(a), field)))
+
+    def _axis_on(self, a):
+        self._card.axis_on(a)
+        if not self._card.moving(a):
+            self._card.synch_pos_now(a)
+
+    def _alarm(self, a, on):
+        if self.variant == "SX" and self._card.servo_on(a):   # SX: illegal with the servo on (cmd bit 3)
+            self._refuse(a, "motor_state_while_enabled")
+        self._card.set_alarm_enabled(a, on)
+
+    def _loop(self, a, closed):
+        if self._card.servo_on(a):
+            self._refuse(a, "axis_state_error")
+        self._card.set_closed_loop(a, closed)
+
+    def _leave_crd(self, a):
+        """[sx-path] ZeroPos / SetAtlPos on an SX crd axis at rest: the crd is rebuilt by the next path command
+        (Example 7-1 L2190; V112; GeList::leave_crd)."""
+        if self.variant == "SX":
+            _core.ge_list(self._card.kernel).leave_crd(a)
+
+    def _atl_pos(self, a):
+        on = self._regs().encoder_on(a)
+        return register32(self._card.actual_pos(a) if on else self._card.profile_pos(a))
+
+    def _set_vel(self, axis, vel) -> int:
+        if self._card is None:
+            return RTN_COMM_ERROR
+        a = self._ax(axis)
+        if a is None:
+            return RTN_PARAMETER_ERROR
+        lo = _VEL_MIN_JOG if self._card.mode(a) == "jog" else 0
+        return self._motion(axis, "vel", vel, lo, _VEL_MAX)
+
+    def _adc(self, channel):
+        rate = 4000.0 if self.variant == "PX" else 770.0 * 8 / self._regs().adc_channels()
+        t = math.floor(self._card.tick * self._card.servo_period_s * rate) / rate
+        v = card_io.of(self._card).volts(int(channel) - 1, t)
+        return RTN_SUCCESS, max(-2048, min(2047, math.floor(v / 10.0 * 2048)))
+
+    def _aux_encoder(self, encoder):
+        enc = card_io.of(self._card).aux_encoders[int(encoder) - 1]
+        return RTN_SUCCESS, 0 if enc is None else enc.counts(self._card.tick * self._card.servo_period_s)
+
+    def _sx(self, call, read=False):
+        """A command of the card's GE list module (vendor/googol/ge_list.hpp): -1 without a card, else its code."""
+        if self._card is None:
+            return (RTN_COMM_ERROR, 0) if read else RTN_COMM_ERROR
+        return call(_core.ge_list(self._card.kernel))
+
+    def _ex(self, pMsg, call) -> int:
+        """An Ex command filling ``pMsg`` (a :class:`TLookAheadMsg`, or a scratch one) as the card does."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        m = pMsg if pMsg is not None else TLookAheadMsg()
+        rtn, (m.mtnNum, m.num, m.error) = call(_core.ge_list(self._card.kernel), (m.mtnNum, m.num, m.error))
+        return rtn
 
     # -- simulation helpers -----------------------------------------------------------------------------------
     def delay(self, ms: float):
@@ -348,19 +353,12 @@ class GeController(DialectController):
         ``GT_ExInpt`` reads. (The probe edge of EXI0 for ``GT_CaptProb`` is ``set_probe_time``.)"""
         if not _int_in(bits, 0, 0xFFFF):
             raise ValueError(f"set_inputs.bits = {bits} is outside the allowed range 0..65535 (16 inputs)")
-        self._slot.inputs = int(bits)
+        self._regs().set_inputs(int(bits))
 
     def outputs(self) -> int:
         """The general outputs EXO0..EXO15 as last written by ``GT_ExOpt`` or, on SX, by the path buffer's
         BufIO / BufIOBit when it executed them later (bit n = EXOn)."""
-        slot = self._slot
-        st = slot.path
-        if st is not None and self._card.ge_crd_exists():   # [sx-path] buffered outputs
-            gpo = int(self._card.ge_path().state.gpo) & 0xFFFF
-            if gpo != st.gpo_seen:
-                slot.outputs = (slot.outputs & ~(gpo ^ st.gpo_seen)) | (gpo & (gpo ^ st.gpo_seen))
-                st.gpo_seen = gpo
-        return slot.outputs
+        return _core.ge_list(self._card.kernel).outputs()
 
     def set_probe_time(self, t_s: float | None):
         """The simulated probe edge on EXI0 at time ``t_s`` (s, the axes' clock tick * Ts, 0..1e9; None: never)."""
@@ -397,6 +395,8 @@ class GeController(DialectController):
                              f"servo_period_s = {self.servo_period_s} (give GeController(servo_period_s=...))")
         n = free[0]
         self._slots[n] = _Slot(card, int(address))
+        _core.ge_registers(card.kernel).reset()  # the GE registers and path list of a card a program opens
+        _core.ge_list(card.kernel).reset()
         self._current = n
         self._sync()
         if self.variant == "SX":
@@ -418,8 +418,7 @@ class GeController(DialectController):
         limits on with high-level polarity, alarm input on, outputs 0, drives off, events cleared."""
         if self._card is None:
             return RTN_COMM_ERROR
-        self._card.reset()
-        self._slot.reset()
+        self._card.reset()   # the card's modules (GE registers, list) reset with it
         if self.variant == "SX":
             for a in range(self.axes):
                 self._card.set_auto_stop(a, True)
@@ -452,1095 +451,6 @@ class GeController(DialectController):
         self._sync()
         return RTN_SUCCESS
 
-    def GT_GetCmdSts(self):
-        """(rtn, command-error register): PX Table 2-3 (L301-322), SX Table 2-4 (L324-347); the bit of the last
-        refused command's cause (decision V90)."""
-        def word():
-            path = self._slot.path   # [sx-path] bits 9 and 15 of a path refusal (V100)
-            if (self.variant == "SX" and path is not None and path.cmd_bit is not None
-                    and self._card.last_fault == "crd_state_error"):
-                return 1 << path.cmd_bit
-            return _core.ge_command_status(self._card.kernel, self.variant)
-
-        return self._get(word)
-
-    # -- 7.2 axis configuration -------------------------------------------------------------------------------
-    def GT_AxisOn(self, axis) -> int:
-        """Servo on; target and profile positions take the actual position (L3716-3720); refused while the
-        drive-alarm bit is set (PX cmd bit 9, SX bit 3)."""
-        def on(a):
-            self._card.axis_on(a)
-            if not self._card.moving(a):
-                self._card.synch_pos_now(a)
-
-        return self._axis_cmd(axis, on)
-
-    def GT_AxisOff(self, axis) -> int:
-        """Servo off (L3704)."""
-        return self._axis_cmd(axis, lambda a: self._card.axis_off(a))
-
-    def GT_DrvRst(self, axis) -> int:
-        """Pulses the drive-reset output; only with the servo off (cmd bit 3) (L3954-3980)."""
-        return self._axis_cmd(axis, lambda a: self._card.drive_reset(a))
-
-    def GT_AlarmOn(self, axis) -> int:
-        """Drive-alarm input monitored (default on -XV) (L3408); SX: illegal with the servo on (cmd bit 3)."""
-        return self._alarm(axis, True)
-
-    def GT_AlarmOff(self, axis) -> int:
-        """Drive-alarm input ignored (L3396); SX: illegal with the servo on (cmd bit 3)."""
-        return self._alarm(axis, False)
-
-    def _alarm(self, axis, on) -> int:
-        def apply(a):
-            if self.variant == "SX" and self._card.servo_on(a):
-                self._fail(a, "motor_state_while_enabled", "servo on")
-            self._card.set_alarm_enabled(a, on)
-
-        return self._axis_cmd(axis, apply)
-
-    def GT_LmtsOn(self, axis) -> int:
-        """Limit switches stop the axis (default; status bit 11) (L4921)."""
-        return self._axis_cmd(axis, lambda a: self._card.set_limits(a, self._card.limits(a).replace(enabled=True)))
-
-    def GT_LmtsOff(self, axis) -> int:
-        """Limit switches ignored (still readable by GT_GetLmtSwt) (L4909)."""
-        return self._axis_cmd(axis, lambda a: self._card.set_limits(a, self._card.limits(a).replace(enabled=False)))
-
-    def GT_LmtSns(self, sense) -> int:
-        """Limit polarity, all axes: bit 2k axis k+1 positive, 2k+1 negative; 0 triggers on a high level
-        (default), 1 on a low level (Table 3-3 L516-520, L4897-4907)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if not _int_in(sense, 0, 0xFFFF):
-            return self._param(-1)
-
-        def apply():
-            for k in range(self.axes):
-                lim = self._card.limits(k).replace(pos_active_low=bool(int(sense) >> (2 * k) & 1),
-                                                   neg_active_low=bool(int(sense) >> (2 * k + 1) & 1))
-                self._card.set_limits(k, lim)
-            self._slot.lmt_sns = int(sense)
-
-        return self._do(apply)
-
-    def _param(self, a, fault="illegal_control_param") -> int:
-        self._card.record_fault(a, fault)
-        return RTN_PARAMETER_ERROR
-
-    def _sense_word(self, attr, sense) -> int:
-        """HomeSns / IndexSns / EncSns: 0 bits are the simulated wiring; a set bit (for a card axis) is not
-        simulated (rtn 1, decision V93)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if not _int_in(sense, 0, 0xFFFF):
-            return self._param(-1)
-        if int(sense) & ((1 << self.axes) - 1):
-            return self._not_simulated()
-        setattr(self._slot, attr, int(sense))
-        return RTN_SUCCESS
-
-    def GT_HomeSns(self, sense) -> int:
-        """Home capture edge, bit k = axis k+1: 0 falling (default) = the simulated edge where the axis enters the
-        home switch; 1 rising: not simulated, returns 1 (L524-534, L4809-4837, V93)."""
-        return self._sense_word("home_sns", sense)
-
-    def GT_IndexSns(self, sense) -> int:
-        """Index capture edge (PX; bit meaning not given, L4869-4877): 0 accepted, a set bit returns 1 (V93)."""
-        return self._sense_word("index_sns", sense)
-
-    def GT_EncSns(self, sense) -> int:
-        """Encoder count direction, bit k = axis k+1, 1 = reversed (L535-547, L4025-4035). The simulated encoder
-        counts the drive's positive direction as positive: 0 bits accepted, a set bit returns 1 (V93)."""
-        return self._sense_word("enc_sns", sense)
-
-    def GT_EncOn(self, axis) -> int:
-        """Encoder input on (default); illegal with the servo on (SX cmd bit 3) (L3992-4000)."""
-        return self._enc(axis, True)
-
-    def GT_EncOff(self, axis) -> int:
-        """Encoder input off: GT_GetAtlPos reads the profile position (L3982, L4180); illegal with the servo on."""
-        return self._enc(axis, False)
-
-    def _enc(self, axis, on) -> int:
-        def apply(a):
-            if self._card.servo_on(a):
-                self._fail(a, "motor_state_while_enabled", "servo on")
-            self._slot.enc_on[a] = on
-
-        return self._axis_cmd(axis, apply)
-
-    def GT_CtrlMode(self, axis, mode) -> int:
-        """Output type: 0 analog voltage (default), 1 pulse (L3907-3925); illegal with the servo on (SX cmd bit 6).
-        The simulated output is the axis's drive (StepperDrive / ServoPositionDrive take pulses): a mode that does
-        not match it returns 1 (not simulated, V94)."""
-        def apply(a):
-            if self._card.servo_on(a):
-                self._fail(a, "axis_state_error", "servo on")
-            pulse = type(self._card.axes[a].drive).__name__ in ("StepperDrive", "ServoPositionDrive")
-            if bool(int(mode)) != pulse:
-                self._fail(a, "not_simulated", "drive")
-            self._slot.ctrl_mode[a] = int(mode)
-
-        return self._axis_cmd(axis, apply, mode in (0, 1) and not isinstance(mode, bool))
-
-    def GT_StepDir(self, axis) -> int:
-        """Pulse + direction output (default) (L5805); only on a pulse axis (SX cmd bit 6). Recorded: the
-        simulated pulse drive counts the pulses whatever their electrical form (V94)."""
-        return self._step(axis, False)
-
-    def GT_StepPulse(self, axis) -> int:
-        """CW/CCW pulse output (L5840); only on a pulse axis (SX cmd bit 6). Recorded (V94)."""
-        return self._step(axis, True)
-
-    def _step(self, axis, pulse) -> int:
-        def apply(a):
-            if not self._pulse_axis(a):
-                self._fail(a, "axis_state_error", "analog axis")
-            self._slot.step_pulse[a] = pulse
-
-        return self._axis_cmd(axis, apply)
-
-    def GT_CloseLp(self, axis) -> int:
-        """Closed loop (default; PX status bit 8) (L3875-3883); the servo must be off (else rtn 1)."""
-        return self._loop(axis, True)
-
-    def GT_OpenLp(self, axis) -> int:
-        """Open loop: the output is GT_SetMtrCmd (L5325-5340); the servo must be off (else rtn 1)."""
-        return self._loop(axis, False)
-
-    def _loop(self, axis, closed) -> int:
-        def apply(a):
-            if self._card.servo_on(a):
-                self._fail(a, "axis_state_error", "servo on")
-            self._card.set_closed_loop(a, closed)
-
-        return self._axis_cmd(axis, apply)
-
-    def GT_SetMtrCmd(self, axis, vol) -> int:
-        """Open-loop output, DAC counts -32768..32767 (-32768 is driven as -32767, V95) (L5664-5686)."""
-        ok = _int_in(vol, -32768, 32767)
-        return self._axis_cmd(axis, lambda a: self._card.set_mtr_cmd(a, float(max(int(vol), -32767))), ok)
-
-    def GT_GetMtrCmd(self, axis):
-        """(rtn, open-loop output, counts) (L4600-4606)."""
-        return self._read(axis, lambda a: int(self._card.mtr_cmd(a)))
-
-    def GT_AuStpOn(self, axis) -> int:
-        """A following error stops the axis abruptly and turns the servo off (mode bit 7) (L3678-3686, L2362)."""
-        return self._axis_cmd(axis, lambda a: self._card.set_auto_stop(a, True))
-
-    def GT_AuStpOff(self, axis) -> int:
-        """A following error only sets status bit 4 (default) (L3666)."""
-        return self._axis_cmd(axis, lambda a: self._card.set_auto_stop(a, False))
-
-    # -- 7.3 point-to-point profile (PX) ----------------------------------------------------------------------
-    def GT_PrflT(self, axis) -> int:
-        """Trapezoid mode (L5376); only at rest (else rtn 1, cmd bit 6)."""
-        return self._axis_cmd(axis, lambda a: self._card.set_mode(a, "t_curve"))
-
-    def GT_PrflS(self, axis) -> int:
-        """S-curve mode (L5364); only at rest (cmd bit 6)."""
-        return self._axis_cmd(axis, lambda a: self._card.set_mode(a, "s_curve"))
-
-    def GT_PrflV(self, axis) -> int:
-        """Velocity mode (L5388); only at rest (cmd bit 6)."""
-        return self._axis_cmd(axis, lambda a: self._card.set_mode(a, "jog"))
-
-    def GT_SetPos(self, axis, pos) -> int:
-        """Target position, whole pulses -2^30..2^30-1 (on Update) (L5700)."""
-        return self._axis_cmd(axis, lambda a: self._card.stage_pos(a, float(pos)),
-                              _int_in(pos, _POS_MIN, _POS_MAX), "motion_param_overflow")
-
-    def GT_GetPos(self, axis):
-        """(rtn, target position as set, pulse) (L4622)."""
-        return self._read(axis, lambda a: int(self._card.staged(a)["pos"]))
-
-    def GT_SetVel(self, axis, vel) -> int:
-        """Velocity, pulse/ms: 0..40957 (T, S), -40958..40957 in velocity mode (on Update) (L5780-5786)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        a = self._ax(axis)
-        if a is None:
-            return RTN_PARAMETER_ERROR
-        lo = _VEL_MIN_JOG if self._card.mode(a) == "jog" else 0
-        if not _real_in(vel, lo, _VEL_MAX):
-            return self._param(a, "motion_param_overflow")
-        return self._do(self._stage, a, "vel", vel, 1, self._card.stage_vel)
-
-    def GT_GetVel(self, axis):
-        """(rtn, velocity as set, pulse/ms) (L4757)."""
-        return self._read(axis, lambda a: self._readback(a, "vel", 1))
-
-    def GT_SetAcc(self, axis, acc) -> int:
-        """Acceleration, pulse/ms^2, 0..102400; used by trapezoid and velocity modes (on Update) (L5435-5437)."""
-        return self._axis_cmd(axis, lambda a: self._stage(a, "acc", acc, 2, self._card.stage_acc),
-                              _real_in(acc, 0, _ACC_MAX), "motion_param_overflow")
-
-    def GT_GetAcc(self, axis):
-        """(rtn, acceleration as set, pulse/ms^2) (L4120)."""
-        return self._read(axis, lambda a: self._readback(a, "acc", 2))
-
-    def GT_SetMAcc(self, axis, macc) -> int:
-        """S-curve maximum acceleration, pulse/ms^2, 0..102400 (on Update) (L5626-5628)."""
-        return self._axis_cmd(axis, lambda a: self._stage(a, "macc", macc, 2, self._card.stage_macc),
-                              _real_in(macc, 0, _ACC_MAX), "motion_param_overflow")
-
-    def GT_GetMAcc(self, axis):
-        """(rtn, S-curve maximum acceleration as set, pulse/ms^2) (L4554)."""
-        return self._read(axis, lambda a: self._readback(a, "macc", 2))
-
-    def GT_SetJerk(self, axis, jerk) -> int:
-        """S-curve jerk, pulse/ms^3, 0..256000 (on Update) (L5518-5520)."""
-        return self._axis_cmd(axis, lambda a: self._stage(a, "jerk", jerk, 3, self._card.stage_jerk),
-                              _real_in(jerk, 0, _JERK_MAX), "motion_param_overflow")
-
-    def GT_GetJerk(self, axis):
-        """(rtn, jerk as set, pulse/ms^3) (L4407)."""
-        return self._read(axis, lambda a: self._readback(a, "jerk", 3))
-
-    def GT_Update(self, axis) -> int:
-        """Makes the axis's Set* parameters (Table 5-6 L1280-1296) effective at the next servo tick (L5895);
-        refused as a whole when a parameter may not change now (cmd bit 11) or is zero (cmd bit 1)."""
-        return self._axis_cmd(axis, lambda a: self._card.update(1 << a))
-
-    def GT_MltiUpdt(self, mask) -> int:
-        """As GT_Update for the axes of ``mask`` (bit 0 = axis 1 ... bit 7 = axis 8), all in the same tick; mask 0
-        is an error (cmd bit 2) (L5189-5228)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if not _int_in(mask, 0, 0xFFFF):
-            return self._param(-1)
-        return self._do(self._card.update, int(mask) & ((1 << self.axes) - 1))
-
-    def GT_SmthStp(self, axis) -> int:
-        """Smooth stop at the mode's acceleration, at once (decision V91: immediate, L1310-1312 and Example 7-2;
-        ch12 L5797 calls it update-effective)."""
-        return self._axis_cmd(axis, lambda a: self._card.smooth_stop(a))
-
-    def GT_AbptStp(self, axis) -> int:
-        """Abrupt stop: target and profile velocity 0 at once (L3307-3311, L1317)."""
-        return self._axis_cmd(axis, lambda a: self._card.abrupt_stop(a))
-
-    def GT_GetMode(self, axis):
-        """(rtn, mode register) (Table 4-4 L938-945): bit 7 auto-stop; bits 13..11 000 T, 001 V, 010 S."""
-        return self._read(axis, lambda a: _core.ge_mode_register(self._card.kernel, a))
-
-    # -- 7.4 position, velocity and error feedback --------------------------------------------------------------
-    def GT_ZeroPos(self, axis) -> int:
-        """Actual = target = profile = 0; at rest only (else rtn 1, cmd bit 11) (L5907-5913)."""
-        return self._axis_cmd(axis, lambda a: (self._leave_crd(a), self._card.zero_pos(a)))
-
-    def GT_SetAtlPos(self, axis, pos) -> int:
-        """Actual = target = profile = ``pos``, whole pulses -2^30..2^30-1; at rest only (cmd bit 11) (L5457)."""
-        return self._axis_cmd(axis, lambda a: (self._leave_crd(a), self._card.set_actual_pos(a, float(pos))),
-                              _int_in(pos, _POS_MIN, _POS_MAX), "motion_param_overflow")
-
-    def _leave_crd(self, a):
-        """[sx-path] ZeroPos / SetAtlPos on an SX crd axis with the path at rest and no buffer kept: the crd is
-        dropped and rebuilt at the new positions by the next path command (Example 7-1 L2190; V112)."""
-        if self.variant != "SX" or a >= 4 or not self._card.ge_crd_exists():
-            return
-        path = self._card.ge_path()
-        if path.busy or self._path_state().open or self._resumable(path) or self._card.moving(a):
-            return
-        self._card.set_mode(a, "t_curve")
-        self._path_state().dirty = True
-
-    def GT_GetAtlPos(self, axis):
-        """(rtn, actual position, pulse) (L4173); with the encoder off, the profile position (L4180)."""
-        def atl(a):
-            if not self._slot.enc_on[a]:
-                return register32(self._card.profile_pos(a))
-            return register32(self._card.actual_pos(a))
-
-        return self._read(axis, atl)
-
-    def GT_GetPrfPos(self, axis):
-        """(rtn, profile position, pulse) (L4701)."""
-        return self._read(axis, lambda a: register32(self._card.profile_pos(a)))
-
-    def GT_GetAtlErr(self, axis):
-        """(rtn, following error profile - actual of the last tick, pulse) (L4144-4171)."""
-        return self._read(axis, lambda a: int(round(self._card.following_error(a))))
-
-    def GT_GetAtlVel(self, axis):
-        """(rtn, actual velocity, pulse/ms): the encoder shaft's speed now in counts (V96) (L4203)."""
-        def vel(a):
-            ax = self._card.axes[a]
-            enc = ax.encoder
-            speed = ax.load_speed_rad_s if enc.on_load else ax.speed_rad_s
-            return speed * enc.counts_per_rev / (2 * math.pi) * 1e-3
-
-        return self._read(axis, vel)
-
-    # -- 7.5 servo parameters (XV; on Update) -------------------------------------------------------------------
-    def GT_SetKp(self, axis, kp) -> int:
-        """Proportional gain, double 0..32767 (L5566-5570)."""
-        return self._set_law(axis, "kp", kp, _real_in(kp, 0, _GAIN_MAX))
-
-    def GT_SetKi(self, axis, ki) -> int:
-        """Integral gain, double 0..32767 (term Ki * SumE / 256, V87) (L5554-5558)."""
-        return self._set_law(axis, "ki", ki, _real_in(ki, 0, _GAIN_MAX))
-
-    def GT_SetKd(self, axis, kd) -> int:
-        """Derivative gain, double 0..32767 (L5542-5546)."""
-        return self._set_law(axis, "kd", kd, _real_in(kd, 0, _GAIN_MAX))
-
-    def GT_SetKvff(self, axis, kvff) -> int:
-        """Velocity feed-forward, double 0..32767, on the profile velocity per tick (V87) (L5614-5618)."""
-        return self._set_law(axis, "kvff", kvff, _real_in(kvff, 0, _GAIN_MAX))
-
-    def GT_SetKaff(self, axis, kaff) -> int:
-        """Acceleration feed-forward, double 0..32767, on the profile acceleration per tick^2 (V87) (L5530-5534)."""
-        return self._set_law(axis, "kaff", kaff, _real_in(kaff, 0, _GAIN_MAX))
-
-    def GT_SetILmt(self, axis, ilmt) -> int:
-        """Integral limit 0..32767 (default 32767; 0 clears the integral) (L5504-5510)."""
-        return self._set_law(axis, "ilmt", ilmt, _int_in(ilmt, 0, 32767))
-
-    def GT_SetMtrLmt(self, axis, lmt) -> int:
-        """Output saturation, DAC counts 0..32767 (default 32767 = 10 V) (L5688-5692)."""
-        return self._set_law(axis, "mtr_lmt", lmt, _int_in(lmt, 0, 32767))
-
-    def GT_SetMtrBias(self, axis, bias) -> int:
-        """Zero-drift compensation, DAC counts -32768..32767 (L5648-5652)."""
-        return self._set_law(axis, "bias", bias, _int_in(bias, -32768, 32767))
-
-    def GT_SetPosErr(self, axis, limit) -> int:
-        """Following-error limit 0..32767 pulse (default 32767) (L5712-5716)."""
-        return self._axis_cmd(axis, lambda a: self._card.stage_pos_err(a, float(limit)), _int_in(limit, 0, 32767))
-
-    def _get_law(self, axis, field, cast=float):
-        return self._read(axis, lambda a: cast(getattr(self._law(a), field)))
-
-    def GT_GetKp(self, axis):
-        """(rtn, Kp as set) (L4455)."""
-        return self._get_law(axis, "kp")
-
-    def GT_GetKi(self, axis):
-        """(rtn, Ki as set) (L4443)."""
-        return self._get_law(axis, "ki")
-
-    def GT_GetKd(self, axis):
-        """(rtn, Kd as set) (L4431)."""
-        return self._get_law(axis, "kd")
-
-    def GT_GetKvff(self, axis):
-        """(rtn, Kvff as set) (L4498)."""
-        return self._get_law(axis, "kvff")
-
-    def GT_GetKaff(self, axis):
-        """(rtn, Kaff as set) (L4419)."""
-        return self._get_law(axis, "kaff")
-
-    def GT_GetILmt(self, axis):
-        """(rtn, integral limit as set) (L4383)."""
-        return self._get_law(axis, "ilmt", int)
-
-    def GT_GetMtrLmt(self, axis):
-        """(rtn, output saturation as set, counts) (L4610)."""
-        return self._get_law(axis, "mtr_lmt", int)
-
-    def GT_GetMtrBias(self, axis):
-        """(rtn, bias as set, counts) (L4588)."""
-        return self._get_law(axis, "bias", int)
-
-    def GT_GetPosErr(self, axis):
-        """(rtn, following-error limit as set, pulse) (L4663)."""
-        return self._read(axis, lambda a: int(self._card.staged(a)["pos_err"]))
-
-    def GT_GetIntgr(self, axis):
-        """(rtn, error integral, as a short) (L4395-4405)."""
-        return self._read(axis, lambda a: int(max(-32768, min(32767, round(self._card.integral(a))))))
-
-    # -- 7.6 status -------------------------------------------------------------------------------------------
-    def GT_GetSts(self, axis):
-        """(rtn, axis status): PX 32 bits (Table 4-3 L902-932), SX 16 bits (Table 4-2 L879-900)."""
-        return self._read(axis, lambda a: _core.ge_axis_status(self._card.kernel, a, self.variant))
-
-    def GT_ClrSts(self, axis) -> int:
-        """Clears status bits 0-7 (bit 4 stays while the error persists) (L3895-3899)."""
-        return self._axis_cmd(axis, lambda a: self._card.clear_events(a, _core.ge_events_to_clear(0)))
-
-    def GT_RstSts(self, axis, mask) -> int:
-        """Clears the status bits 0-7 whose mask bit is 0; a 1 keeps the bit (L5423-5431)."""
-        return self._axis_cmd(axis, lambda a: self._card.clear_events(a, _core.ge_events_to_clear(int(mask))),
-                              _int_in(mask, 0, 0xFFFF))
-
-    # -- 7.7 capture ------------------------------------------------------------------------------------------
-    def GT_CaptHome(self, axis) -> int:
-        """Arms a one-shot capture of the actual position on the Home edge (status bit 14; bit 3 on capture);
-        re-arming before a capture or before GT_ClrSts is refused (cmd bit 5) (L3802-3812, L2334-2336)."""
-        return self._axis_cmd(axis, lambda a: self._card.arm_capture(a, "home"))
-
-    def GT_CaptIndex(self, axis) -> int:
-        """Arms a one-shot capture on the encoder index (status bit 15) (L3814-3826)."""
-        return self._axis_cmd(axis, lambda a: self._card.arm_capture(a, "index"))
-
-    def GT_CaptProb(self) -> int:
-        """Arms every axis's capture on the probe input EXI0, one shot; bit 3 of all axes on the edge
-        (L3828-3862). PX and SX (the command is "for all GT series cards", V92)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        return self._do(self._card.arm_probe)
-
-    def GT_GetCapt(self, axis):
-        """(rtn, captured actual position, pulse); holds until the next capture (L4243-4251)."""
-        return self._read(axis, lambda a: int(round(self._card.capture_value(a))))
-
-    # -- 6.6 data watch (dialects/_ge_watch.py on the card's sampler; L2464-2884, decisions V73-V75) --------------
-    def GT_SetWatch(self, config, size) -> int:
-        """``GT_SetWatch(config[AXIS_NUM], size)``: config[k] the watched signals of axis k+1 (bit 0 profile
-        position, 1 actual position, 2 profile velocity, 3 actual velocity, 6 control voltage), ``size`` samples
-        per block; 7 when the block is too large for the watch memory or a reserved bit is set (L2786-2793)."""
-        return _ge_watch.GT_SetWatch(self, config, size)
-
-    def GT_StartWatch(self, n=0) -> int:
-        """``GT_StartWatch(n)``: one sample every n+1 control periods (0: every period, L2558-2559, L2880)."""
-        return _ge_watch.GT_StartWatch(self, n)
-
-    def GT_GetWatch(self, buffer):
-        """``GT_GetWatch(&buffer, &available)`` -> ``(rtn, available)``: 1 when a full block of ``size`` samples
-        was copied into the arrays attached to ``buffer`` (:class:`TWatchBuffer`), oldest block first
-        (L2836-2870)."""
-        return _ge_watch.GT_GetWatch(self, buffer)
-
-    def GT_StopWatch(self) -> int:
-        """``GT_StopWatch()``: stops the watch."""
-        return _ge_watch.GT_StopWatch(self)
-
-    # -- 7.8 digital I/O --------------------------------------------------------------------------------------
-    def GT_ExInpt(self):
-        """(rtn, EXI0..EXI15 levels, bit n = EXIn) (L4074); the simulated levels of ``set_inputs``."""
-        return self._get(lambda: self._slot.inputs)
-
-    def GT_ExOpt(self, value) -> int:
-        """Writes EXO0..EXO15, bit n = EXOn (L4094-4118)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if not _int_in(value, 0, 0xFFFF):
-            return self._param(-1)
-        self._slot.outputs = int(value)
-        return RTN_SUCCESS
-
-    def GT_GetLmtSwt(self):
-        """(rtn, limit input levels): bit 2k Limit k+ (axis k+1), 2k+1 Limit k-; 1 = high = the switch is hit
-        with the default normally-closed wiring, whatever LmtSns says (L2448-2456, L4510-4552; as GT V21)."""
-        def levels():
-            w = 0
-            for k in range(self.axes):
-                lim = self._card.limits(k)
-                w |= int(self._card.pos_limit_input(k) != lim.pos_active_low) << (2 * k)
-                w |= int(self._card.neg_limit_input(k) != lim.neg_active_low) << (2 * k + 1)
-            return w
-
-        return self._get(levels)
-
-    def GT_GetHomeSwt(self):
-        """(rtn, Home input levels): bit k = Home k (axis k+1), 1 = high = the axis is inside its home switch
-        (V97) (L2458-2460, L4341-4381)."""
-        def levels():
-            w = 0
-            for k in range(self.axes):
-                ax = self._card.axes[k]
-                sw, angle = ax.switches, ax.load_angle_rad
-                w |= int(sw.home_min_rad <= angle <= sw.home_max_rad) << k
-            return w
-
-        return self._get(levels)
-
-    # -- [sx-path] path motion, buffer, look-ahead (SX; GE §6 L1393-2040, §12; ge.md §4, §7.9-7.11) ----------
-    # The crd is the card's GE group (Card.ge_crd_setup / ge_path, machine/card_group_ge.hpp: X..A = axes 1..4,
-    # pulse, ms), built at the first path command and rebuilt at the present positions whenever nothing is
-    # buffered (StrtList, an immediate command), so a changed StrtVel/MaxVel/MapCnt takes effect there (V101).
-    # This block keeps the GE list bookkeeping; refusals leave the card unchanged and set the SX command-error
-    # bit of their cause: 8 path command, 9 buffer state, 15 buffer full, 6 MapCnt (Table 2-4 L324-347; V100).
-    def _path_state(self) -> _GePathState:
-        slot = self._slot
-        if slot.path is None:
-            slot.path = _GePathState(len(self._card))
-        return slot.path
-
-    def _crd_fault(self, bit: int) -> int:
-        """A path refusal: the card records a crd-state fault; GT_GetCmdSts shows `bit` while it is the last."""
-        self._card.record_fault(-1, "crd_state_error" if bit != 6 else "axis_state_error")
-        self._path_state().cmd_bit = bit
-        return RTN_COMMAND_ERROR
-
-    def _fresh(self):
-        """The crd's generator, empty, at the present profile positions: cleared, or rebuilt when a setting
-        changed or an axis moved outside the path (ZeroPos, AxisOn) (V101)."""
-        st = self._path_state()
-        st.dim = 0
-        if (self._card.ge_crd_exists() and not st.dirty and not self._card.ge_path().lookahead_on
-                and self._card.ge_path().coords.dim == min(4, len(self._card))):
-            path = self._card.ge_path()
-            n = path.coords.dim
-            pos = list(path.state.pos)
-            if all(abs(pos[k] + st.offsets[k] - self._card.profile_pos(k)) < 0.5 for k in range(n)):
-                path.clear()
-                return path
-        st.dirty = True
-        return self._path_generator(rebuild=True)
-
-    def _path_generator(self, rebuild=False):
-        """The crd's generator; (re)built at the present positions when asked and nothing is kept."""
-        st = self._path_state()
-        if not self._card.ge_crd_exists() or (rebuild and st.dirty):
-            n = min(st.dim or 4, len(self._card))
-            self._card.ge_crd_setup(st.offsets[:n], st.strt_vel, st.max_vel, st.stp_acc, st.capacity, n)
-            self.outputs()               # outputs the old crd's buffer wrote stay
-            st.dirty = False
-            st.mv_pushed = 0
-            st.gpo_seen = 0
-            path = self._card.ge_path()
-            path.set_override(st.override)
-            path.set_g0_override(st.override_g0)
-        return self._card.ge_path()
-
-    def _path_moving(self, path) -> bool:
-        st = self._path_state()
-        return (path.busy or (path.running and path.remaining_segments > 0)
-                or (st.started and st.open and not path.stopped))
-
-    def _resumable(self, path) -> bool:
-        """A stopped buffer that RestoreMtn can resume (breakpoint and unexecuted segments); a stopped immediate
-        move keeps none (L1654)."""
-        st = self._path_state()
-        return st.buffer and st.started and path.breakpoint is not None and path.remaining_segments > 0
-
-    def _geom(self, make):
-        """(segment, 0) or (None, return code 2/3/5/7) for a geometry the path layer refuses."""
-        try:
-            return make(), RTN_SUCCESS
-        except PathGeometryError as e:
-            return None, e.gt_code  # the SX geometry codes 2/3/5 (Table 2-2 L272-283)
-        except ValueError:
-            return None, RTN_PARAMETER_ERROR
-
-    def _path_cmd(self, dim, make, g0=False) -> int:
-        """A line or arc (pulse, absolute): buffer mode appends it (the Mv dimension fixes the dimension, L5244),
-        immediate mode runs it at once at SynVel/SynAcc (L1445-1492)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        st = self._path_state()
-        if st.open:
-            if not st.mv or dim > st.mv_dim:
-                return self._crd_fault(8)   # no Mv* after StrtList, or a 3-D command after MvXY (L335, L5244)
-            path = self._path_generator()
-            if path.fifo_space < 1 + len(st.pending_io):
-                return self._crd_fault(15)  # buffer full: re-send (L1575-1579, L347)
-            seg, rtn = self._geom(lambda: make(list(path.tail)))
-            if seg is None:
-                return rtn
-            vel = st.syn_vel if st.syn_vel > 0 else st.mv_vel
-            for do in st.pending_io:
-                path.buf_io(0, *do)
-            st.pending_io = []
-            if st.dcc_vel is not None:
-                path.push_segment(seg, vel, st.mv_acc, vel_end=st.dcc_vel, g0=g0)
-            else:
-                path.push_segment(seg, vel, st.mv_acc, g0=g0, auto_end=not g0)
-            st.dcc_vel = None
-            st.io_count = st.delay_count = 0
-            st.pushed += 1
-            st.ends.append(list(seg.end))
-            return RTN_SUCCESS
-        try:
-            path = self._path_generator()
-        except (CardCommandRefused, MotionCommandRefused):
-            return self._crd_fault(8)
-        if self._path_moving(path):
-            return self._crd_fault(8)       # an immediate path command while the path moves (L1492, L335)
-        if not (st.syn_vel > 0 and st.syn_acc > 0):
-            return self._crd_fault(8)       # no feed set (SetSynVel / SetSynAcc): a bad path parameter
-        kept = self._resumable(path)
-        if not kept:
-            try:
-                path = self._fresh()
-            except (CardCommandRefused, MotionCommandRefused):
-                return self._crd_fault(8)
-        start = list(path.state.pos)
-        seg, rtn = self._geom(lambda: make(start))
-        if seg is None:
-            return rtn
-        if kept:
-            # a stopped buffer waits for RestoreMtn; a line runs at once from where the path stands (L1652, V104)
-            if seg.kind != "line":
-                return self._crd_fault(8)
-            return self._run(lambda: (self._card.group_start(_GE_CRD_SLOT),
-                                      path.move_immediate(list(seg.end), st.syn_vel, st.syn_acc)))
-
-        def run_now():
-            path.push_segment(seg, st.syn_vel, st.syn_acc, g0=g0, stop_at_end=True)
-            st.ends = [list(seg.end)]
-            self._card.group_start(_GE_CRD_SLOT)
-            path.start()
-
-        rtn = self._run(run_now)
-        if rtn == RTN_SUCCESS:
-            st.buffer = False   # immediate input mode again (crd bit 7, V103)
-            st.started = False
-            st.mv_pushed = 0
-        return rtn
-
-    def _run(self, fn) -> int:
-        try:
-            fn()
-        except (CardCommandRefused, MotionCommandRefused):
-            return self._crd_fault(8)
-        except ValueError:
-            return RTN_PARAMETER_ERROR
-        return RTN_SUCCESS
-
-    @staticmethod
-    def _line_to(dim, pts):
-        def make(t):
-            end = list(t)
-            for k, p in enumerate(pts):
-                end[k] = float(p)
-            return _core.PathSegment.line(t, end)
-        return make
-
-    def _pts_ok(self, *pts) -> bool:
-        return all(_real_in(p, _POS_MIN, _POS_MAX) for p in pts)
-
-    def GT_LnXY(self, x, y) -> int:
-        """Line to the absolute point (x, y), pulse (L4946); the feed is SetSynVel (L1407). Returns 3 for a zero
-        length or overflow (L280)."""
-        return self._path_cmd(2, self._line_to(2, (x, y))) if self._pts_ok(x, y) else self._len_overflow()
-
-    def GT_LnXYZ(self, x, y, z) -> int:
-        """3-D line, pulse (L4980)."""
-        return self._path_cmd(3, self._line_to(3, (x, y, z))) if self._pts_ok(x, y, z) else self._len_overflow()
-
-    def GT_LnXYZA(self, x, y, z, a) -> int:
-        """4-D line, pulse (L5010)."""
-        return (self._path_cmd(4, self._line_to(4, (x, y, z, a))) if self._pts_ok(x, y, z, a)
-                else self._len_overflow())
-
-    def GT_LnXYG0(self, x, y) -> int:
-        """Rapid line: a full profile from StrtVel to SynVel and back to rest, scaled by OverrideG0 (L1473-1477,
-        L5036)."""
-        return self._path_cmd(2, self._line_to(2, (x, y)), g0=True) if self._pts_ok(x, y) else self._len_overflow()
-
-    def GT_LnXYZG0(self, x, y, z) -> int:
-        """3-D rapid line (L5075)."""
-        return (self._path_cmd(3, self._line_to(3, (x, y, z)), g0=True) if self._pts_ok(x, y, z)
-                else self._len_overflow())
-
-    def GT_LnXYZAG0(self, x, y, z, a) -> int:
-        """4-D rapid line (L5113; printed as GT_LnXYZG0(x,y,z,a) at L5115, V110)."""
-        return (self._path_cmd(4, self._line_to(4, (x, y, z, a)), g0=True) if self._pts_ok(x, y, z, a)
-                else self._len_overflow())
-
-    def _len_overflow(self) -> int:
-        return 3 if self._card is not None else RTN_COMM_ERROR
-
-    def _arc(self, plane, c1, c2, angle) -> int:
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if not self._pts_ok(c1, c2):
-            return 3
-        if not _real_in(angle, -360, 360):
-            return RTN_PARAMETER_ERROR
-        dim = 2 if plane == "xy" else 3
-        return self._path_cmd(dim, lambda t: _core.PathSegment.arc_center_angle(t, plane, (float(c1), float(c2)),
-                                                                                float(angle)))
-
-    def GT_ArcXY(self, x_center, y_center, angle) -> int:
-        """Arc about the absolute centre by ``angle`` degrees in [-360, 360], + = CCW seen from +Z (L1481-1486,
-        L3434-3443); the radius is the distance of the start point (2: radius 0)."""
-        return self._arc("xy", x_center, y_center, angle)
-
-    def GT_ArcYZ(self, y_center, z_center, angle) -> int:
-        """Arc in the YZ plane, seen from +X (L3519-3527)."""
-        return self._arc("yz", y_center, z_center, angle)
-
-    def GT_ArcZX(self, z_center, x_center, angle) -> int:
-        """Arc in the ZX plane, seen from +Y (L3593-3601)."""
-        return self._arc("zx", z_center, x_center, angle)
-
-    def _arcp(self, plane, e1, e2, r, direction) -> int:
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if not self._pts_ok(e1, e2, r):
-            return 3
-        if not _int_in(direction, -1, 1) or int(direction) == 0:
-            return RTN_PARAMETER_ERROR
-        i, j = {"xy": (0, 1), "yz": (1, 2), "zx": (2, 0)}[plane]
-        dim = 2 if plane == "xy" else 3
-
-        def make(t):
-            end = list(t)
-            end[i], end[j] = float(e1), float(e2)
-            return _core.PathSegment.arc_radius(t, end, plane, float(r), int(direction) == 1)
-
-        return self._path_cmd(dim, make)
-
-    def GT_ArcXYP(self, x_end, y_end, r, direction) -> int:
-        """Arc to the end point with signed radius: r > 0 the minor arc, r < 0 the major one; direction +1 CCW,
-        -1 CW (L3477-3483). 2: radius or chord 0; 5: chord > diameter (L280-282)."""
-        return self._arcp("xy", x_end, y_end, r, direction)
-
-    def GT_ArcYZP(self, y_end, z_end, r, direction) -> int:
-        """YZ arc by end point and radius (L3555-3561)."""
-        return self._arcp("yz", y_end, z_end, r, direction)
-
-    def GT_ArcZXP(self, z_end, x_end, r, direction) -> int:
-        """ZX arc by end point and radius (L3628-3636)."""
-        return self._arcp("zx", z_end, x_end, r, direction)
-
-    # feed parameters (L1393-1419, §4.3)
-    def _feed_value(self, value, hi):
-        """4 for a value <= 0 or overflow (synthesised vel/acc, L280)."""
-        return _real_in(value, 0, hi) and float(value) > 0
-
-    def GT_SetSynVel(self, vel) -> int:
-        """Path feed, pulse/ms, for the following lines and arcs; bufferable (L1407-1409, L5770-5778)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if not self._feed_value(vel, _VEL_MAX):
-            return 4
-        self._path_state().syn_vel = float(vel)
-        return RTN_SUCCESS
-
-    def GT_SetSynAcc(self, acc) -> int:
-        """Path acceleration of immediate motion, pulse/ms^2; illegal in buffer mode (bit 8, L1411-1413, L335)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        st = self._path_state()
-        if st.open:
-            return self._crd_fault(8)
-        if not self._feed_value(acc, _ACC_MAX):
-            return 4
-        st.syn_acc = float(acc)
-        return RTN_SUCCESS
-
-    def _setting(self, value, hi, field, zero_ok=False) -> int:
-        if self._card is None:
-            return RTN_COMM_ERROR
-        st = self._path_state()
-        if self._card.ge_crd_exists() and self._path_moving(self._card.ge_path()):
-            return self._crd_fault(8)  # start/max velocity, stop acceleration: not while the path moves (L335)
-        if not _real_in(value, 0, hi) or (float(value) == 0 and not zero_ok):
-            return 4
-        setattr(st, field, float(value))
-        st.dirty = True
-        if field == "stp_acc" and self._card.ge_crd_exists():
-            self._card.ge_path().set_stop_dec(0, float(value))
-        return RTN_SUCCESS
-
-    def GT_SetStrtVel(self, vel) -> int:
-        """Start/stop velocity, pulse/ms (default 0.5 = 500 Hz, L1395-1399, L5748-5756); meant for the set-up."""
-        return self._setting(vel, _VEL_MAX, "strt_vel", zero_ok=True)
-
-    def GT_SetMaxVel(self, vel) -> int:
-        """Feed clamp, pulse/ms (default 256, L1401-1405, L5638-5644)."""
-        return self._setting(vel, _VEL_MAX, "max_vel")
-
-    def GT_SetStpAcc(self, acc) -> int:
-        """Deceleration of abnormal stops and GT_EStpMtn, pulse/ms^2 (L1415-1419, L5736-5744)."""
-        return self._setting(acc, _ACC_MAX, "stp_acc")
-
-    def _override(self, ratio, g0) -> int:
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if not _real_in(ratio, 0, 2) or float(ratio) == 0:
-            return RTN_PARAMETER_ERROR   # a multiplier, (0, 2] (L1952-1958, L5348; V105)
-        st = self._path_state()
-        if g0:
-            st.override_g0 = float(ratio)
-        else:
-            st.override = float(ratio)
-        if self._card.ge_crd_exists():
-            path = self._card.ge_path()
-            (path.set_g0_override if g0 else path.set_override)(float(ratio))
-        return RTN_SUCCESS
-
-    def GT_Override(self, override) -> int:
-        """Feed multiplier of all path motion but G0 and Mv, on the running segment and all later ones; the
-        result is clamped to MaxVel (L1952-1958, L5342-5352)."""
-        return self._override(override, False)
-
-    def GT_OverrideG0(self, override) -> int:
-        """Multiplier of G0 lines and the Mv positioning (L5354-5362)."""
-        return self._override(override, True)
-
-    def GT_SetDccVel(self, vel) -> int:
-        """End velocity, pulse/ms, of the next buffered path segment (L5492-5500, L1679; V106). Buffer only."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        st = self._path_state()
-        if not st.open or not st.mv:
-            return self._crd_fault(8)
-        if not _real_in(vel, 0, _VEL_MAX):
-            return 4
-        st.dcc_vel = float(vel)
-        return RTN_SUCCESS
-
-    def GT_MapCnt(self, axis, count) -> int:
-        """Work-coordinate offset of ``axis``, pulse: axis = coordinate + count (L1960-1971, L5179-5187); refused
-        (bit 6) while an axis moves, the buffer is open, or out of range."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if not _int_in(axis, 1, min(4, self.axes)):
-            return self._param(-1)
-        st = self._path_state()
-        moving = any(self._card.moving(a) for a in range(len(self._card)))
-        if moving or st.open or not _real_in(count, _POS_MIN, _POS_MAX):
-            return self._crd_fault(6)
-        st.offsets[int(axis) - 1] = float(count)
-        st.dirty = True
-        return RTN_SUCCESS
-
-    # buffer management (L1496-1664, Tables 6-3/6-4)
-    def GT_StrtList(self) -> int:
-        """Opens and clears the buffer (buffer input mode, segment number 0); refused (bit 9) while buffered motion
-        has not stopped or the buffer is open (L1549, L5861-5865)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        st = self._path_state()
-        if st.open:
-            return self._crd_fault(9)
-        if self._card.ge_crd_exists():
-            path = self._card.ge_path()
-            if path.busy or (st.started and path.running and not path.stopped):
-                return self._crd_fault(9)
-        try:
-            self._fresh()
-        except (CardCommandRefused, MotionCommandRefused):
-            return self._crd_fault(9)
-        st.open_list()
-        return RTN_SUCCESS
-
-    def _mv(self, point, vel, acc) -> int:
-        if self._card is None:
-            return RTN_COMM_ERROR
-        st = self._path_state()
-        if not st.open or st.mv:
-            return self._crd_fault(8)   # Mv* only right after StrtList, once (L1551, L335)
-        if not self._pts_ok(*point):
-            return 3
-        if not self._feed_value(vel, _VEL_MAX) or not self._feed_value(acc, _ACC_MAX):
-            return 4
-        path = self._path_generator()
-        t = list(path.tail)
-        end = list(t)
-        for k, p in enumerate(point):
-            end[k] = float(p)
-        if end != t:
-            path.push_segment(_core.PathSegment.line(t, end), float(vel), float(acc), g0=True)
-            st.mv_pushed = 1
-            st.ends.append(end)
-        st.mv, st.mv_dim, st.mv_vel, st.mv_acc = True, len(point), float(vel), float(acc)
-        st.syn_vel = float(vel)   # the feed of the later segments until SetSynVel (L1555)
-        return RTN_SUCCESS
-
-    def GT_MvXY(self, x, y, vel, acc) -> int:
-        """Buffer start point (x, y) pulse, feed vel pulse/ms and acceleration acc pulse/ms^2 of the buffer
-        (acceleration fixed); StrtMtn first goes there by a line that ends at rest (L1551-1555, L5232)."""
-        return self._mv((x, y), vel, acc)
-
-    def GT_MvXYZ(self, x, y, z, vel, acc) -> int:
-        """3-D buffer start point (L5277)."""
-        return self._mv((x, y, z), vel, acc)
-
-    def GT_MvXYZA(self, x, y, z, a, vel, acc) -> int:
-        """4-D buffer start point (L5291)."""
-        return self._mv((x, y, z, a), vel, acc)
-
-    def GT_EndList(self) -> int:
-        """Closes the buffer (only while open, else bit 9) (L1559-1571, L4037)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        st = self._path_state()
-        if not st.open:
-            return self._crd_fault(9)
-        st.open = False
-        return RTN_SUCCESS
-
-    def GT_AddList(self) -> int:
-        """Reopens a closed buffer; while open: bit 9 (L1559-1571, L3339)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        st = self._path_state()
-        if st.open or not st.buffer or not st.mv:
-            return self._crd_fault(9)
-        st.open = True
-        return RTN_SUCCESS
-
-    def GT_StrtMtn(self) -> int:
-        """Runs the buffer: first the Mv line (ends at rest), then the segments; keeps executing while the host
-        streams more until EndList (L1640-1646, L5871-5875). Bit 9 while path motion runs."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        st = self._path_state()
-        if not st.buffer or not st.mv:
-            return self._crd_fault(9)
-        path = self._path_generator()
-        if path.busy or st.started:
-            return self._crd_fault(9)   # StrtMtn while path motion runs, or to resume (RestoreMtn, L1664)
-
-        def start():
-            self._card.group_start(_GE_CRD_SLOT)
-            path.start()
-
-        rtn = self._run(start)
-        if rtn == RTN_SUCCESS:
-            st.started = True
-        return rtn
-
-    def _stp(self, abrupt) -> int:
-        if self._card is None:
-            return RTN_COMM_ERROR
-        st = self._path_state()
-        if not self._card.ge_crd_exists():
-            return RTN_SUCCESS
-        path = self._card.ge_path()
-        try:
-            path.stop(abrupt)
-        except (CardCommandRefused, MotionCommandRefused):
-            return self._crd_fault(8)
-        if st.buffer:
-            st.open = False   # both stops close the buffer; the breakpoint is kept (L1648-1650)
-        return RTN_SUCCESS
-
-    def GT_StpMtn(self) -> int:
-        """Smooth path stop at the feed acceleration; closes the buffer, keeps the breakpoint (L1648-1654, L5852)."""
-        return self._stp(False)
-
-    def GT_EStpMtn(self) -> int:
-        """Path stop at StpAcc (SetStpAcc; 0: at once); closes the buffer, keeps the breakpoint (L1648, L4064)."""
-        return self._stp(True)
-
-    def GT_RestoreMtn(self) -> int:
-        """Resumes a stopped buffer: a line from the present point to the breakpoint ending at the start
-        velocity, then the rest (L1656-1664, L5412). Bit 9 unless stopped with unexecuted segments."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        st = self._path_state()
-        if not st.started or not self._card.ge_crd_exists():
-            return self._crd_fault(9)
-        path = self._card.ge_path()
-        if path.busy or not path.stopped or not self._resumable(path):
-            return self._crd_fault(9)
-
-        def start():
-            self._card.group_start(_GE_CRD_SLOT)
-            path.start()
-
-        return self._run(start)
-
-    def _buf_gate(self) -> int | None:
-        """-1 in immediate mode (L3754); bit 8 without Mv; None when the buffer takes it."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        st = self._path_state()
-        if not st.open:
-            return RTN_COMM_ERROR
-        if not st.mv:
-            return self._crd_fault(8)
-        return None
-
-    def GT_BufIO(self, io_status) -> int:
-        """Buffered write of all 16 outputs EXO0..15 between the previous segment's end and the next one's start;
-        at most two between motion commands (L3750-3756). -1 in immediate mode."""
-        gate = self._buf_gate()
-        if gate is not None:
-            return gate
-        if not _int_in(io_status, 0, 0xFFFF):
-            return RTN_PARAMETER_ERROR
-        st = self._path_state()
-        if st.io_count >= 2:
-            return self._crd_fault(8)
-        path = self._card.ge_path()
-        if path.fifo_space < 1:
-            return self._crd_fault(15)
-        path.buf_io(0, 0xFFFF, int(io_status))
-        st.io_count += 1
-        return RTN_SUCCESS
-
-    def GT_BufIOBit(self, io_bit, bit_status) -> int:
-        """Buffered write of one output, effective with the next path segment; of two in a row the one nearest
-        the path command wins (L3766-3776)."""
-        gate = self._buf_gate()
-        if gate is not None:
-            return gate
-        if not _int_in(io_bit, 0, 15) or not _int_in(bit_status, 0, 1):
-            return RTN_PARAMETER_ERROR
-        self._path_state().pending_io = [(1 << int(io_bit), int(bit_status) << int(io_bit))]
-        return RTN_SUCCESS
-
-    def GT_Delay(self, delay_time) -> int:
-        """Buffered dwell between two segments, ms (0 < t < 8192; V107); one between motion commands (L3944-3950)."""
-        gate = self._buf_gate()
-        if gate is not None:
-            return gate
-        if not _int_in(delay_time, 1, 8191):
-            return RTN_PARAMETER_ERROR
-        st = self._path_state()
-        if st.delay_count >= 1:
-            return self._crd_fault(8)
-        path = self._card.ge_path()
-        if path.fifo_space < 1:
-            return self._crd_fault(15)
-        path.buf_delay(float(delay_time))
-        st.delay_count += 1
-        return RTN_SUCCESS
-
-    # feedback (Table 6-15, L1973-2040)
-    def GT_GetCrdSts(self):
-        """(rtn, path status, 16 bits) (Table 4-5 L951-968): 0 no path motion (1 idle), 1 buffer closed,
-        4 segment completed, 7 immediate input mode, 9 an axis fault stopped the path, 13 buffer empty."""
-        if self._card is None:
-            return RTN_COMM_ERROR, 0
-        st = self._path_state()
-        if not self._card.ge_crd_exists():
-            return RTN_SUCCESS, _core.ge_crd_status(buffer_closed=not st.open, immediate_mode=not st.buffer)
-        path = self._card.ge_path()
-        info = self._card.group_info(_GE_CRD_SLOT)
-        return RTN_SUCCESS, _core.ge_crd_status(
-            moving=self._path_moving(path), buffer_closed=not st.open, segment_complete=not path.busy,
-            immediate_mode=not st.buffer, fault_stopped=info["fault_stopped"],
-            buffer_empty=path.fifo_size == 0 and path.window_size == 0)
-
-    def _pnt(self, which):
-        if self._card is None:
-            return RTN_COMM_ERROR, 0
-        if not self._card.ge_crd_exists():
-            return RTN_SUCCESS, [float(self._card.profile_pos(a)) - self._path_state().offsets[a]
-                                 for a in range(min(3, len(self._card)))]
-        path = self._card.ge_path()
-        p = which(path)
-        return RTN_SUCCESS, None if p is None else [float(v) for v in list(p)[:3]]
-
-    def GT_GetPrfPnt(self):
-        """(rtn, [X, Y, Z] profile point, pulse, work coordinates) (L4675-4699; three values, V108)."""
-        return self._pnt(lambda p: p.state.pos)
-
-    def GT_GetSegPnt(self):
-        """(rtn, [X, Y, Z] end point of the executing segment, pulse) (L4735-4743): the tail when idle."""
-        return self._pnt(lambda p: self._path_state().seg_end(p))
-
-    def GT_GetBrkPnt(self):
-        """(rtn, [X, Y, Z] breakpoint of the last buffered stop, pulse, or None) (L4233-4241)."""
-        return self._pnt(lambda p: p.breakpoint)
-
-    def GT_GetMtnNm(self):
-        """(rtn, segment number): Mv = 0, path segments from 1; holds when the buffer runs dry, while stopped,
-        after the last segment; StrtList clears it; wraps 32767 -> 1 (L2005-2017, L4578-4586; V109)."""
-        if self._card is None:
-            return RTN_COMM_ERROR, 0
-        st = self._path_state()
-        if not self._card.ge_crd_exists() or not st.buffer:
-            return RTN_SUCCESS, 0
-        path = self._card.ge_path()
-        n = path.state.segments_done - st.mv_pushed + (1 if path.busy and path.state.speed > 0 else 0)
-        n = max(0, min(n, st.pushed))
-        return RTN_SUCCESS, (n - 1) % 32767 + 1 if n > 0 else 0
-
     def GT_GetPrfVel(self, *axis):
         """PX ``GT_GetPrfVel(axis)``: (rtn, profile velocity of the axis, pulse/ms) (L4713). SX
         ``GT_GetPrfVel()``: (rtn, path feed velocity, pulse/ms) (L4725-4733)."""
@@ -1548,344 +458,399 @@ class GeController(DialectController):
             if len(axis) != 1:
                 return RTN_PARAMETER_ERROR, 0
             return self._read(axis[0], lambda a: self._card.profile_vel(a) / self._k)
-        if self._card is None:
-            return RTN_COMM_ERROR, 0
-        if axis:
-            return RTN_PARAMETER_ERROR, 0
-        return RTN_SUCCESS, self._card.ge_path().state.speed if self._card.ge_crd_exists() else 0.0
+        return self._sx(lambda L: (RTN_PARAMETER_ERROR, 0) if axis else (RTN_SUCCESS, L.prf_vel()), read=True)
 
+
+def _adapter(name: str, params: str, body, doc: str):
+    """The GeController method ``name(self, <params>)``: one call of ``body(self, <params>)``, with the row's
+    docstring (what it does, units, the manual's lines) and the manual's return (``-> int``, or a tuple for a
+    read). The parameter names and defaults are the manual's (programs call them by keyword too)."""
+    names = ", ".join(p.split("=")[0].strip() for p in params.split(",") if p.strip())
+    sep = ", " if params else ""
+    namespace = {"_body": body}
+    exec(f"def {name}(self{sep}{params}):\n    return _body(self{sep}{names})\n", namespace)  # noqa: S102
+    fn = namespace[name]
+    fn.__doc__, fn.__qualname__, fn.__module__ = doc, f"GeController.{name}", __name__
+    fn.__annotations__ = {} if _is_read(name) else {"return": "int"}
+    return fn
+
+
+_P = "pMsg=None"  # the Ex commands' last parameter (TLookAheadMsg*)
+# The GE commands as rows: (manual name, parameters, adapter, what the manual says: units and lines).
+_ROWS = (
+    # -- 7.1 system ---------------------------------------------------------------------------------------------
+    ("GT_GetCmdSts", "", lambda c: c._get(lambda: _core.ge_command_status(c._card.kernel, c.variant)),
+     "(rtn, command-error register): PX Table 2-3 (L301-322), SX Table 2-4 (L324-347); the bit of the last refused "
+     "command's cause (decision V90; a path refusal's bit 6/8/9/15, V100)."),
+    # -- 7.2 axis configuration ---------------------------------------------------------------------------------
+    ("GT_AxisOn", "axis", lambda c, axis: c._axis_cmd(axis, c._axis_on),
+     "Servo on; target and profile positions take the actual position (L3716-3720); refused while the "
+     "drive-alarm bit is set (PX cmd bit 9, SX bit 3)."),
+    ("GT_AxisOff", "axis", lambda c, axis: c._axis_cmd(axis, c._card.axis_off), "Servo off (L3704)."),
+    ("GT_DrvRst", "axis", lambda c, axis: c._axis_cmd(axis, c._card.drive_reset),
+     "Pulses the drive-reset output; only with the servo off (cmd bit 3) (L3954-3980)."),
+    ("GT_AlarmOn", "axis", lambda c, axis: c._axis_cmd(axis, lambda a: c._alarm(a, True)),
+     "Drive-alarm input monitored (default on -XV) (L3408); SX: illegal with the servo on (cmd bit 3)."),
+    ("GT_AlarmOff", "axis", lambda c, axis: c._axis_cmd(axis, lambda a: c._alarm(a, False)),
+     "Drive-alarm input ignored (L3396); SX: illegal with the servo on (cmd bit 3)."),
+    ("GT_LmtsOn", "axis", lambda c, axis: c._axis_cmd(axis, lambda a: c._card.set_limits(
+        a, c._card.limits(a).replace(enabled=True))), "Limit switches stop the axis (default; status bit 11) (L4921)."),
+    ("GT_LmtsOff", "axis", lambda c, axis: c._axis_cmd(axis, lambda a: c._card.set_limits(
+        a, c._card.limits(a).replace(enabled=False))),
+     "Limit switches ignored (still readable by GT_GetLmtSwt) (L4909)."),
+    ("GT_LmtSns", "sense", lambda c, sense: c._ge(lambda r: r.set_sense("limit", _num(sense))),
+     "Limit polarity, all axes: bit 2k axis k+1 positive, 2k+1 negative; 0 triggers on a high level (default), 1 "
+     "on a low level (Table 3-3 L516-520, L4897-4907)."),
+    ("GT_HomeSns", "sense", lambda c, sense: c._ge(lambda r: r.set_sense("home", _num(sense))),
+     "Home capture edge, bit k = axis k+1: 0 falling (default) = the simulated edge where the axis enters the home "
+     "switch; 1 rising: not simulated, returns 1 (L524-534, L4809-4837, V93)."),
+    ("GT_IndexSns", "sense", lambda c, sense: c._ge(lambda r: r.set_sense("index", _num(sense))),
+     "Index capture edge (PX; bit meaning not given, L4869-4877): 0 accepted, a set bit returns 1 (V93)."),
+    ("GT_EncSns", "sense", lambda c, sense: c._ge(lambda r: r.set_sense("encoder", _num(sense))),
+     "Encoder count direction, bit k = axis k+1, 1 = reversed (L535-547, L4025-4035). The simulated encoder counts "
+     "the drive's positive direction as positive: 0 bits accepted, a set bit returns 1 (V93)."),
+    ("GT_EncOn", "axis", lambda c, axis: c._ge(lambda r: r.set_encoder(_num(axis), True)),
+     "Encoder input on (default); illegal with the servo on (SX cmd bit 3) (L3992-4000)."),
+    ("GT_EncOff", "axis", lambda c, axis: c._ge(lambda r: r.set_encoder(_num(axis), False)),
+     "Encoder input off: GT_GetAtlPos reads the profile position (L3982, L4180); illegal with the servo on."),
+    ("GT_CtrlMode", "axis, mode", lambda c, axis, mode: c._ge(lambda r: r.set_ctrl_mode(_num(axis), _num(mode))),
+     "Output type: 0 analog voltage (default), 1 pulse (L3907-3925); illegal with the servo on (SX cmd bit 6). The "
+     "simulated output is the axis's drive (StepperDrive / ServoPositionDrive take pulses): a mode that does not "
+     "match it returns 1 (not simulated, V94)."),
+    ("GT_StepDir", "axis", lambda c, axis: c._ge(lambda r: r.set_step_form(_num(axis), False)),
+     "Pulse + direction output (default) (L5805); only on a pulse axis (SX cmd bit 6). Recorded: the simulated "
+     "pulse drive counts the pulses whatever their electrical form (V94)."),
+    ("GT_StepPulse", "axis", lambda c, axis: c._ge(lambda r: r.set_step_form(_num(axis), True)),
+     "CW/CCW pulse output (L5840); only on a pulse axis (SX cmd bit 6). Recorded (V94)."),
+    ("GT_CloseLp", "axis", lambda c, axis: c._axis_cmd(axis, lambda a: c._loop(a, True)),
+     "Closed loop (default; PX status bit 8) (L3875-3883); the servo must be off (else rtn 1)."),
+    ("GT_OpenLp", "axis", lambda c, axis: c._axis_cmd(axis, lambda a: c._loop(a, False)),
+     "Open loop: the output is GT_SetMtrCmd (L5325-5340); the servo must be off (else rtn 1)."),
+    ("GT_SetMtrCmd", "axis, vol", lambda c, axis, vol: c._axis_cmd(
+        axis, lambda a: c._card.set_mtr_cmd(a, float(max(int(vol), -32767))), _int_in(vol, -32768, 32767)),
+     "Open-loop output, DAC counts -32768..32767 (-32768 is driven as -32767, V95) (L5664-5686)."),
+    ("GT_GetMtrCmd", "axis", lambda c, axis: c._read(axis, lambda a: int(c._card.mtr_cmd(a))),
+     "(rtn, open-loop output, counts) (L4600-4606)."),
+    ("GT_AuStpOn", "axis", lambda c, axis: c._axis_cmd(axis, lambda a: c._card.set_auto_stop(a, True)),
+     "A following error stops the axis abruptly and turns the servo off (mode bit 7) (L3678-3686, L2362)."),
+    ("GT_AuStpOff", "axis", lambda c, axis: c._axis_cmd(axis, lambda a: c._card.set_auto_stop(a, False)),
+     "A following error only sets status bit 4 (default) (L3666)."),
+    # -- 7.3 point-to-point profile (PX) ------------------------------------------------------------------------
+    ("GT_PrflT", "axis", lambda c, axis: c._axis_cmd(axis, lambda a: c._card.set_mode(a, "t_curve")),
+     "Trapezoid mode (L5376); only at rest (else rtn 1, cmd bit 6)."),
+    ("GT_PrflS", "axis", lambda c, axis: c._axis_cmd(axis, lambda a: c._card.set_mode(a, "s_curve")),
+     "S-curve mode (L5364); only at rest (cmd bit 6)."),
+    ("GT_PrflV", "axis", lambda c, axis: c._axis_cmd(axis, lambda a: c._card.set_mode(a, "jog")),
+     "Velocity mode (L5388); only at rest (cmd bit 6)."),
+    ("GT_SetPos", "axis, pos", lambda c, axis, pos: c._axis_cmd(
+        axis, lambda a: c._card.stage_pos(a, float(pos)), _int_in(pos, _POS_MIN, _POS_MAX), "motion_param_overflow"),
+     "Target position, whole pulses -2^30..2^30-1 (on Update) (L5700)."),
+    ("GT_GetPos", "axis", lambda c, axis: c._read(axis, lambda a: int(c._card.staged(a)["pos"])),
+     "(rtn, target position as set, pulse) (L4622)."),
+    ("GT_SetVel", "axis, vel", lambda c, axis, vel: c._set_vel(axis, vel),
+     "Velocity, pulse/ms: 0..40957 (T, S), -40958..40957 in velocity mode (on Update) (L5780-5786)."),
+    ("GT_GetVel", "axis", lambda c, axis: c._read(axis, lambda a: c._regs().read_motion(a, "vel", c._k)),
+     "(rtn, velocity as set, pulse/ms) (L4757)."),
+    ("GT_SetAcc", "axis, acc", lambda c, axis, acc: c._motion(axis, "acc", acc, 0, _ACC_MAX),
+     "Acceleration, pulse/ms^2, 0..102400; used by trapezoid and velocity modes (on Update) (L5435-5437)."),
+    ("GT_GetAcc", "axis", lambda c, axis: c._read(axis, lambda a: c._regs().read_motion(a, "acc", c._k)),
+     "(rtn, acceleration as set, pulse/ms^2) (L4120)."),
+    ("GT_SetMAcc", "axis, macc", lambda c, axis, macc: c._motion(axis, "macc", macc, 0, _ACC_MAX),
+     "S-curve maximum acceleration, pulse/ms^2, 0..102400 (on Update) (L5626-5628)."),
+    ("GT_GetMAcc", "axis", lambda c, axis: c._read(axis, lambda a: c._regs().read_motion(a, "macc", c._k)),
+     "(rtn, S-curve maximum acceleration as set, pulse/ms^2) (L4554)."),
+    ("GT_SetJerk", "axis, jerk", lambda c, axis, jerk: c._motion(axis, "jerk", jerk, 0, _JERK_MAX),
+     "S-curve jerk, pulse/ms^3, 0..256000 (on Update) (L5518-5520)."),
+    ("GT_GetJerk", "axis", lambda c, axis: c._read(axis, lambda a: c._regs().read_motion(a, "jerk", c._k)),
+     "(rtn, jerk as set, pulse/ms^3) (L4407)."),
+    ("GT_Update", "axis", lambda c, axis: c._axis_cmd(axis, lambda a: c._card.update(1 << a)),
+     "Makes the axis's Set* parameters (Table 5-6 L1280-1296) effective at the next servo tick (L5895); refused as "
+     "a whole when a parameter may not change now (cmd bit 11) or is zero (cmd bit 1)."),
+    ("GT_MltiUpdt", "mask", lambda c, mask: c._card_cmd(lambda: c._card.update(int(mask) & ((1 << c.axes) - 1)),
+                                                        _int_in(mask, 0, 0xFFFF)),
+     "As GT_Update for the axes of ``mask`` (bit 0 = axis 1 ... bit 7 = axis 8), all in the same tick; mask 0 is an "
+     "error (cmd bit 2) (L5189-5228)."),
+    ("GT_SmthStp", "axis", lambda c, axis: c._axis_cmd(axis, c._card.smooth_stop),
+     "Smooth stop at the mode's acceleration, at once (decision V91: immediate, L1310-1312 and Example 7-2; ch12 "
+     "L5797 calls it update-effective)."),
+    ("GT_AbptStp", "axis", lambda c, axis: c._axis_cmd(axis, c._card.abrupt_stop),
+     "Abrupt stop: target and profile velocity 0 at once (L3307-3311, L1317)."),
+    ("GT_GetMode", "axis", lambda c, axis: c._read(axis, lambda a: _core.ge_mode_register(c._card.kernel, a)),
+     "(rtn, mode register) (Table 4-4 L938-945): bit 7 auto-stop; bits 13..11 000 T, 001 V, 010 S."),
+    # -- 7.4 position, velocity and error feedback ---------------------------------------------------------------
+    ("GT_ZeroPos", "axis", lambda c, axis: c._axis_cmd(axis, lambda a: (c._leave_crd(a), c._card.zero_pos(a))),
+     "Actual = target = profile = 0; at rest only (else rtn 1, cmd bit 11) (L5907-5913)."),
+    ("GT_SetAtlPos", "axis, pos", lambda c, axis, pos: c._axis_cmd(
+        axis, lambda a: (c._leave_crd(a), c._card.set_actual_pos(a, float(pos))), _int_in(pos, _POS_MIN, _POS_MAX),
+        "motion_param_overflow"),
+     "Actual = target = profile = ``pos``, whole pulses -2^30..2^30-1; at rest only (cmd bit 11) (L5457)."),
+    ("GT_GetAtlPos", "axis", lambda c, axis: c._read(axis, c._atl_pos),
+     "(rtn, actual position, pulse) (L4173); with the encoder off, the profile position (L4180)."),
+    ("GT_GetPrfPos", "axis", lambda c, axis: c._read(axis, lambda a: register32(c._card.profile_pos(a))),
+     "(rtn, profile position, pulse) (L4701)."),
+    ("GT_GetAtlErr", "axis", lambda c, axis: c._read(axis, lambda a: int(round(c._card.following_error(a)))),
+     "(rtn, following error profile - actual of the last tick, pulse) (L4144-4171)."),
+    ("GT_GetAtlVel", "axis", lambda c, axis: c._read(axis, lambda a: c._regs().actual_vel(a)),
+     "(rtn, actual velocity, pulse/ms): the encoder shaft's speed now in counts (V96) (L4203)."),
+    # -- 7.5 servo parameters (XV; on Update) ---------------------------------------------------------------------
+    ("GT_SetKp", "axis, kp", lambda c, axis, kp: c._set_law(axis, "kp", kp, _real_in(kp, 0, _GAIN_MAX)),
+     "Proportional gain, double 0..32767 (L5566-5570)."),
+    ("GT_SetKi", "axis, ki", lambda c, axis, ki: c._set_law(axis, "ki", ki, _real_in(ki, 0, _GAIN_MAX)),
+     "Integral gain, double 0..32767 (term Ki * SumE / 256, V87) (L5554-5558)."),
+    ("GT_SetKd", "axis, kd", lambda c, axis, kd: c._set_law(axis, "kd", kd, _real_in(kd, 0, _GAIN_MAX)),
+     "Derivative gain, double 0..32767 (L5542-5546)."),
+    ("GT_SetKvff", "axis, kvff", lambda c, axis, kvff: c._set_law(axis, "kvff", kvff, _real_in(kvff, 0, _GAIN_MAX)),
+     "Velocity feed-forward, double 0..32767, on the profile velocity per tick (V87) (L5614-5618)."),
+    ("GT_SetKaff", "axis, kaff", lambda c, axis, kaff: c._set_law(axis, "kaff", kaff, _real_in(kaff, 0, _GAIN_MAX)),
+     "Acceleration feed-forward, double 0..32767, on the profile acceleration per tick^2 (V87) (L5530-5534)."),
+    ("GT_SetILmt", "axis, ilmt", lambda c, axis, ilmt: c._set_law(axis, "ilmt", ilmt, _int_in(ilmt, 0, 32767)),
+     "Integral limit 0..32767 (default 32767; 0 clears the integral) (L5504-5510)."),
+    ("GT_SetMtrLmt", "axis, lmt", lambda c, axis, lmt: c._set_law(axis, "mtr_lmt", lmt, _int_in(lmt, 0, 32767)),
+     "Output saturation, DAC counts 0..32767 (default 32767 = 10 V) (L5688-5692)."),
+    ("GT_SetMtrBias", "axis, bias", lambda c, axis, bias: c._set_law(axis, "bias", bias,
+                                                                     _int_in(bias, -32768, 32767)),
+     "Zero-drift compensation, DAC counts -32768..32767 (L5648-5652)."),
+    ("GT_SetPosErr", "axis, limit", lambda c, axis, limit: c._axis_cmd(
+        axis, lambda a: c._card.stage_pos_err(a, float(limit)), _int_in(limit, 0, 32767)),
+     "Following-error limit 0..32767 pulse (default 32767) (L5712-5716)."),
+    ("GT_GetKp", "axis", lambda c, axis: c._get_law(axis, "kp"), "(rtn, Kp as set) (L4455)."),
+    ("GT_GetKi", "axis", lambda c, axis: c._get_law(axis, "ki"), "(rtn, Ki as set) (L4443)."),
+    ("GT_GetKd", "axis", lambda c, axis: c._get_law(axis, "kd"), "(rtn, Kd as set) (L4431)."),
+    ("GT_GetKvff", "axis", lambda c, axis: c._get_law(axis, "kvff"), "(rtn, Kvff as set) (L4498)."),
+    ("GT_GetKaff", "axis", lambda c, axis: c._get_law(axis, "kaff"), "(rtn, Kaff as set) (L4419)."),
+    ("GT_GetILmt", "axis", lambda c, axis: c._get_law(axis, "ilmt", int), "(rtn, integral limit as set) (L4383)."),
+    ("GT_GetMtrLmt", "axis", lambda c, axis: c._get_law(axis, "mtr_lmt", int),
+     "(rtn, output saturation as set, counts) (L4610)."),
+    ("GT_GetMtrBias", "axis", lambda c, axis: c._get_law(axis, "bias", int), "(rtn, bias as set, counts) (L4588)."),
+    ("GT_GetPosErr", "axis", lambda c, axis: c._read(axis, lambda a: int(c._card.staged(a)["pos_err"])),
+     "(rtn, following-error limit as set, pulse) (L4663)."),
+    ("GT_GetIntgr", "axis", lambda c, axis: c._read(axis, lambda a: int(max(-32768, min(32767, round(
+        c._card.integral(a)))))), "(rtn, error integral, as a short) (L4395-4405)."),
+    # -- 7.6 status -----------------------------------------------------------------------------------------------
+    ("GT_GetSts", "axis", lambda c, axis: c._read(axis, lambda a: _core.ge_axis_status(c._card.kernel, a, c.variant)),
+     "(rtn, axis status): PX 32 bits (Table 4-3 L902-932), SX 16 bits (Table 4-2 L879-900)."),
+    ("GT_ClrSts", "axis", lambda c, axis: c._axis_cmd(axis, lambda a: c._card.clear_events(
+        a, _core.ge_events_to_clear(0))),
+     "Clears status bits 0-7 (bit 4 stays while the error persists) (L3895-3899)."),
+    ("GT_RstSts", "axis, mask", lambda c, axis, mask: c._axis_cmd(axis, lambda a: c._card.clear_events(
+        a, _core.ge_events_to_clear(int(mask))), _int_in(mask, 0, 0xFFFF)),
+     "Clears the status bits 0-7 whose mask bit is 0; a 1 keeps the bit (L5423-5431)."),
+    # -- 7.7 capture ----------------------------------------------------------------------------------------------
+    ("GT_CaptHome", "axis", lambda c, axis: c._axis_cmd(axis, lambda a: c._card.arm_capture(a, "home")),
+     "Arms a one-shot capture of the actual position on the Home edge (status bit 14; bit 3 on capture); re-arming "
+     "before a capture or before GT_ClrSts is refused (cmd bit 5) (L3802-3812, L2334-2336)."),
+    ("GT_CaptIndex", "axis", lambda c, axis: c._axis_cmd(axis, lambda a: c._card.arm_capture(a, "index")),
+     "Arms a one-shot capture on the encoder index (status bit 15) (L3814-3826)."),
+    ("GT_CaptProb", "", lambda c: c._card_cmd(lambda: c._card.arm_probe()),
+     "Arms every axis's capture on the probe input EXI0, one shot; bit 3 of all axes on the edge (L3828-3862). PX "
+     "and SX (the command is \"for all GT series cards\", V92)."),
+    ("GT_GetCapt", "axis", lambda c, axis: c._read(axis, lambda a: int(round(c._card.capture_value(a)))),
+     "(rtn, captured actual position, pulse); holds until the next capture (L4243-4251)."),
+    # -- 6.6 data watch (dialects/_ge_watch.py on the card's sampler; L2464-2884, decisions V73-V75) -------------
+    ("GT_SetWatch", "config, size", lambda c, config, size: _ge_watch.GT_SetWatch(c, config, size),
+     "``GT_SetWatch(config[AXIS_NUM], size)``: config[k] the watched signals of axis k+1 (bit 0 profile position, 1 "
+     "actual position, 2 profile velocity, 3 actual velocity, 6 control voltage), ``size`` samples per block; 7 "
+     "when the block is too large for the watch memory or a reserved bit is set (L2786-2793)."),
+    ("GT_StartWatch", "n=0", lambda c, n: _ge_watch.GT_StartWatch(c, n),
+     "``GT_StartWatch(n)``: one sample every n+1 control periods (0: every period, L2558-2559, L2880)."),
+    ("GT_GetWatch", "buffer", lambda c, buffer: _ge_watch.GT_GetWatch(c, buffer),
+     "``GT_GetWatch(&buffer, &available)`` -> ``(rtn, available)``: 1 when a full block of ``size`` samples was "
+     "copied into the arrays attached to ``buffer`` (:class:`TWatchBuffer`), oldest block first (L2836-2870)."),
+    ("GT_StopWatch", "", lambda c: _ge_watch.GT_StopWatch(c), "``GT_StopWatch()``: stops the watch."),
+    # -- 7.8 digital I/O --------------------------------------------------------------------------------------------
+    ("GT_ExInpt", "", lambda c: c._get(lambda: c._regs().inputs()),
+     "(rtn, EXI0..EXI15 levels, bit n = EXIn) (L4074); the simulated levels of ``set_inputs``."),
+    ("GT_ExOpt", "value", lambda c, value: c._card_cmd(lambda: _core.ge_list(c._card.kernel).set_outputs(int(value)),
+                                                        _int_in(value, 0, 0xFFFF)),
+     "Writes EXO0..EXO15, bit n = EXOn (L4094-4118)."),
+    ("GT_GetLmtSwt", "", lambda c: c._get(lambda: c._regs().limit_levels()),
+     "(rtn, limit input levels): bit 2k Limit k+ (axis k+1), 2k+1 Limit k-; 1 = high = the switch is hit with the "
+     "default normally-closed wiring, whatever LmtSns says (L2448-2456, L4510-4552; as GT V21)."),
+    ("GT_GetHomeSwt", "", lambda c: c._get(lambda: c._regs().home_levels()),
+     "(rtn, Home input levels): bit k = Home k (axis k+1), 1 = high = the axis is inside its home switch (V97) "
+     "(L2458-2460, L4341-4381)."),
+    # -- [sx-path] path motion, buffer, look-ahead (SX; GE §6 L1393-2040, §12; ge.md §4, §7.9-7.11): one call each
+    # into the card's GE list module (vendor/googol/ge_list.hpp; V100-V112, GV1-GV4), arguments as doubles.
+    ("GT_LnXY", "x, y", lambda c, x, y: c._sx(lambda L: L.line(_nums(x, y), False)),
+     "Line to the absolute point (x, y), pulse (L4946); the feed is SetSynVel (L1407). Returns 3 for a zero length "
+     "or overflow (L280)."),
+    ("GT_LnXYZ", "x, y, z", lambda c, *p: c._sx(lambda L: L.line(_nums(*p), False)), "3-D line, pulse (L4980)."),
+    ("GT_LnXYZA", "x, y, z, a", lambda c, *p: c._sx(lambda L: L.line(_nums(*p), False)), "4-D line, pulse (L5010)."),
+    ("GT_LnXYG0", "x, y", lambda c, *p: c._sx(lambda L: L.line(_nums(*p), True)),
+     "Rapid line: a full profile from StrtVel to SynVel and back to rest, scaled by OverrideG0 (L1473-1477, L5036)."),
+    ("GT_LnXYZG0", "x, y, z", lambda c, *p: c._sx(lambda L: L.line(_nums(*p), True)), "3-D rapid line (L5075)."),
+    ("GT_LnXYZAG0", "x, y, z, a", lambda c, *p: c._sx(lambda L: L.line(_nums(*p), True)),
+     "4-D rapid line (L5113; printed as GT_LnXYZG0(x,y,z,a) at L5115, V110)."),
+    ("GT_ArcXY", "x_center, y_center, angle", lambda c, *p: c._sx(lambda L: L.arc_center("xy", *_nums(*p))),
+     "Arc about the absolute centre by ``angle`` degrees in [-360, 360], + = CCW seen from +Z (L1481-1486, "
+     "L3434-3443); the radius is the distance of the start point (2: radius 0)."),
+    ("GT_ArcYZ", "y_center, z_center, angle", lambda c, *p: c._sx(lambda L: L.arc_center("yz", *_nums(*p))),
+     "Arc in the YZ plane, seen from +X (L3519-3527)."),
+    ("GT_ArcZX", "z_center, x_center, angle", lambda c, *p: c._sx(lambda L: L.arc_center("zx", *_nums(*p))),
+     "Arc in the ZX plane, seen from +Y (L3593-3601)."),
+    ("GT_ArcXYP", "x_end, y_end, r, direction", lambda c, *p: c._sx(lambda L: L.arc_radius("xy", *_nums(*p))),
+     "Arc to the end point with signed radius: r > 0 the minor arc, r < 0 the major one; direction +1 CCW, -1 CW "
+     "(L3477-3483). 2: radius or chord 0; 5: chord > diameter (L280-282)."),
+    ("GT_ArcYZP", "y_end, z_end, r, direction", lambda c, *p: c._sx(lambda L: L.arc_radius("yz", *_nums(*p))),
+     "YZ arc by end point and radius (L3555-3561)."),
+    ("GT_ArcZXP", "z_end, x_end, r, direction", lambda c, *p: c._sx(lambda L: L.arc_radius("zx", *_nums(*p))),
+     "ZX arc by end point and radius (L3628-3636)."),
+    ("GT_SetSynVel", "vel", lambda c, vel: c._sx(lambda L: L.set_syn_vel(_num(vel))),
+     "Path feed, pulse/ms, for the following lines and arcs; bufferable (L1407-1409, L5770-5778); 4 for <= 0."),
+    ("GT_SetSynAcc", "acc", lambda c, acc: c._sx(lambda L: L.set_syn_acc(_num(acc))),
+     "Path acceleration of immediate motion, pulse/ms^2; illegal in buffer mode (bit 8, L1411-1413, L335)."),
+    ("GT_SetStrtVel", "vel", lambda c, vel: c._sx(lambda L: L.set_strt_vel(_num(vel))),
+     "Start/stop velocity, pulse/ms (default 0.5 = 500 Hz, L1395-1399, L5748-5756); meant for the set-up."),
+    ("GT_SetMaxVel", "vel", lambda c, vel: c._sx(lambda L: L.set_max_vel(_num(vel))),
+     "Feed clamp, pulse/ms (default 256, L1401-1405, L5638-5644)."),
+    ("GT_SetStpAcc", "acc", lambda c, acc: c._sx(lambda L: L.set_stp_acc(_num(acc))),
+     "Deceleration of abnormal stops and GT_EStpMtn, pulse/ms^2 (L1415-1419, L5736-5744)."),
+    ("GT_Override", "override", lambda c, override: c._sx(lambda L: L.set_override(_num(override), False)),
+     "Feed multiplier of all path motion but G0 and Mv, on the running segment and all later ones; the result is "
+     "clamped to MaxVel (L1952-1958, L5342-5352)."),
+    ("GT_OverrideG0", "override", lambda c, override: c._sx(lambda L: L.set_override(_num(override), True)),
+     "Multiplier of G0 lines and the Mv positioning (L5354-5362)."),
+    ("GT_SetDccVel", "vel", lambda c, vel: c._sx(lambda L: L.set_dcc_vel(_num(vel))),
+     "End velocity, pulse/ms, of the next buffered path segment (L5492-5500, L1679; V106). Buffer only."),
+    ("GT_MapCnt", "axis, count", lambda c, *p: c._sx(lambda L: L.map_cnt(*_nums(*p))),
+     "Work-coordinate offset of ``axis``, pulse: axis = coordinate + count (L1960-1971, L5179-5187); refused (bit "
+     "6) while an axis moves, the buffer is open, or out of range."),
+    ("GT_StrtList", "", lambda c: c._sx(lambda L: L.strt_list()),
+     "Opens and clears the buffer (buffer input mode, segment number 0); refused (bit 9) while buffered motion has "
+     "not stopped or the buffer is open (L1549, L5861-5865)."),
+    ("GT_MvXY", "x, y, vel, acc", lambda c, *p: c._sx(lambda L: L.mv(_nums(*p[:-2]), *_nums(*p[-2:]))),
+     "Buffer start point (x, y) pulse, feed vel pulse/ms and acceleration acc pulse/ms^2 of the buffer "
+     "(acceleration fixed); StrtMtn first goes there by a line that ends at rest (L1551-1555, L5232)."),
+    ("GT_MvXYZ", "x, y, z, vel, acc", lambda c, *p: c._sx(lambda L: L.mv(_nums(*p[:-2]), *_nums(*p[-2:]))),
+     "3-D buffer start point (L5277)."),
+    ("GT_MvXYZA", "x, y, z, a, vel, acc", lambda c, *p: c._sx(lambda L: L.mv(_nums(*p[:-2]), *_nums(*p[-2:]))),
+     "4-D buffer start point (L5291)."),
+    ("GT_EndList", "", lambda c: c._sx(lambda L: L.end_list()),
+     "Closes the buffer (only while open, else bit 9) (L1559-1571, L4037)."),
+    ("GT_AddList", "", lambda c: c._sx(lambda L: L.add_list()),
+     "Reopens a closed buffer; while open: bit 9 (L1559-1571, L3339)."),
+    ("GT_StrtMtn", "", lambda c: c._sx(lambda L: L.strt_mtn()),
+     "Runs the buffer: first the Mv line (ends at rest), then the segments; keeps executing while the host streams "
+     "more until EndList (L1640-1646, L5871-5875). Bit 9 while path motion runs."),
+    ("GT_StpMtn", "", lambda c: c._sx(lambda L: L.stp_mtn(False)),
+     "Smooth path stop at the feed acceleration; closes the buffer, keeps the breakpoint (L1648-1654, L5852)."),
+    ("GT_EStpMtn", "", lambda c: c._sx(lambda L: L.stp_mtn(True)),
+     "Path stop at StpAcc (SetStpAcc; 0: at once); closes the buffer, keeps the breakpoint (L1648, L4064)."),
+    ("GT_RestoreMtn", "", lambda c: c._sx(lambda L: L.restore_mtn()),
+     "Resumes a stopped buffer: a line from the present point to the breakpoint ending at the start velocity, then "
+     "the rest (L1656-1664, L5412). Bit 9 unless stopped with unexecuted segments."),
+    ("GT_BufIO", "io_status", lambda c, io_status: c._sx(lambda L: L.buf_io(_num(io_status))),
+     "Buffered write of all 16 outputs EXO0..15 between the previous segment's end and the next one's start; at "
+     "most two between motion commands (L3750-3756). -1 in immediate mode."),
+    ("GT_BufIOBit", "io_bit, bit_status", lambda c, *p: c._sx(lambda L: L.buf_io_bit(*_nums(*p))),
+     "Buffered write of one output, effective with the next path segment; of two in a row the one nearest the path "
+     "command wins (L3766-3776)."),
+    ("GT_Delay", "delay_time", lambda c, delay_time: c._sx(lambda L: L.delay(_num(delay_time))),
+     "Buffered dwell between two segments, ms (0 < t < 8192; V107); one between motion commands (L3944-3950)."),
+    ("GT_GetCrdSts", "", lambda c: c._sx(lambda L: (RTN_SUCCESS, L.crd_status()), read=True),
+     "(rtn, path status, 16 bits) (Table 4-5 L951-968): 0 no path motion (1 idle), 1 buffer closed, 4 segment "
+     "completed, 7 immediate input mode, 9 an axis fault stopped the path, 13 buffer empty."),
+    ("GT_GetPrfPnt", "", lambda c: c._sx(lambda L: (RTN_SUCCESS, L.point(0)), read=True),
+     "(rtn, [X, Y, Z] profile point, pulse, work coordinates) (L4675-4699; three values, V108)."),
+    ("GT_GetSegPnt", "", lambda c: c._sx(lambda L: (RTN_SUCCESS, L.point(1)), read=True),
+     "(rtn, [X, Y, Z] end point of the executing segment, pulse) (L4735-4743): the tail when idle."),
+    ("GT_GetBrkPnt", "", lambda c: c._sx(lambda L: (RTN_SUCCESS, L.point(2)), read=True),
+     "(rtn, [X, Y, Z] breakpoint of the last buffered stop, pulse, or None) (L4233-4241)."),
+    ("GT_GetMtnNm", "", lambda c: c._sx(lambda L: (RTN_SUCCESS, L.mtn_nm()), read=True),
+     "(rtn, segment number): Mv = 0, path segments from 1; holds when the buffer runs dry, while stopped, after the "
+     "last segment; StrtList clears it; wraps 32767 -> 1 (L2005-2017, L4578-4586; V109)."),
     # look-ahead module A (L1666-1727, Table 6-6; API L3370-3394, L3790-3800, L4879-4887)
-    def GT_InitLookAhead(self, t, acc_max, acc, vel, n, con) -> int:
-        """Module A: corner time t s, acc_max and acc mm/s^2 (acc < acc_max), feed vel mm/s, n segments, con
-        pulse/mm (L4879-4887). The path starts at the present profile point (in mm)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        try:
-            p = _core.GeLookAheadParams(t_s=float(t), acc_max=float(acc_max), acc=float(acc), vel=float(vel),
-                                        n=float(n), con=float(con))
-            offsets = self._path_state().offsets
-            start = [float(self._card.profile_pos(a)) - offsets[a] for a in range(min(3, len(self._card)))]
-            self._path_state().la = _core.GeLookAhead(p, [v / float(con) for v in start])
-        except (ValueError, TypeError):
-            return RTN_PARAMETER_ERROR
-        return RTN_SUCCESS
-
-    def GT_AddLookData(self, code, plane_group, r, x, y, z, vel, cx, cy, i, n, flag) -> int:
-        """Pushes one segment (mm, mm/s) to module A: code 0 G00, 1 G01, 2 G02 CW, 3 G03 CCW; plane_group 17 XY,
-        18 ZX, 19 YZ; i the slot (not used: the module keeps its own order, V111), n the user number, flag: stop
-        at its end. 0 accepted, 1 the point equals the previous one (L3370-3394, Table 6-8 L1709-1724)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        la = self._path_state().la
-        if la is None:
-            return self._crd_fault(8)
-        try:
-            return la.add_look_data(int(code), int(plane_group), float(r), float(x), float(y), float(z), float(vel),
-                                    float(cx), float(cy), int(n), bool(flag))
-        except (ValueError, TypeError):
-            return RTN_PARAMETER_ERROR
-
-    def GT_CalVel(self):
-        """(rtn, end velocity mm/s, user number) of the oldest segment not yet returned: rtn 0 more follow, 1 it was
-        the last (L3790-3800, L1725). Send the segment with GT_SetDccVel(vel * con / 1000)."""
-        if self._card is None:
-            return RTN_COMM_ERROR, 0.0, 0
-        la = self._path_state().la
-        if la is None or la.pending == 0:
-            self._crd_fault(8)
-            return RTN_COMMAND_ERROR, 0.0, 0
-        return tuple(la.cal_vel())
-
-    # look-ahead module B, the Ex family (Tables 6-9..6-12 L1729-1812; L5147-5177): the card's look-ahead window
-    # (PathGenerator.init_lookahead, the same planner as module A in pulse and ms) in front of the buffer (V111)
-    def GT_InitLookAheadEx(self, T, amax, am, n, con) -> int:
-        """Module B: corner time T s, amax and am mm/s^2 (am < amax), n >= 200 look-ahead segments, con pulse/mm
-        (L1729-1785, L4889-4895; also GT_InitLookAheadExx, V110)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if not _int_in(n, 200, 32766):
-            return RTN_PARAMETER_ERROR
-        try:
-            p = _core.GeLookAheadParams(t_s=float(T), acc_max=float(amax), acc=float(am), vel=1.0, n=float(n),
-                                        con=float(con))
-        except (ValueError, TypeError):
-            return RTN_PARAMETER_ERROR
-        self._path_state().ex = _GeLookAheadEx(p)
-        return RTN_SUCCESS
-
-    def GT_InitLookAheadExx(self, T, amax, am, n, con) -> int:
-        """The name ch12 and Example 6-4 use for GT_InitLookAheadEx (L1856, L4889; V110)."""
-        return vars(GeController)["GT_InitLookAheadEx"].__wrapped__(self, T, amax, am, n, con)
-
-    def _mv_ex(self, point_mm, vel) -> int:
-        if self._card is None:
-            return RTN_COMM_ERROR
-        st = self._path_state()
-        ex = st.ex
-        if ex is None:
-            return self._crd_fault(8)
-        c = ex.params.con
-        if not all(_real_in(v, -1e12, 1e12) and _real_in(float(v) * c, _POS_MIN, _POS_MAX) for v in point_mm):
-            return 3
-        if not _real_in(vel, 0, 1e9) or float(vel) <= 0:
-            return 4
-        if not st.open or st.mv:
-            return self._crd_fault(8)
-        st.dim, st.dirty = 3, True   # the look-ahead plans X, Y, Z (L1679): a 3-D crd
-        try:
-            path = self._path_generator(rebuild=True)
-        except (CardCommandRefused, MotionCommandRefused):
-            return self._crd_fault(8)
-        p = ex.params
-        path.init_lookahead(_core.LookAheadParams(t_ms=p.t_s * 1000.0, acc_max=p.acc_max * c / 1e6, n=p.n))
-        rtn = self._mv([float(v) * c for v in point_mm], float(vel) * c / 1000.0, p.acc * c / 1e6)
-        if rtn == RTN_SUCCESS:
-            ex.active = True
-            st.mv_dim = len(point_mm)
-        return rtn
-
-    def GT_MvXYEx(self, x, y, vel) -> int:
-        """Module B start point (x, y) mm at vel mm/s; right after StrtList (L1787-1789, L5269; printed as
-        GT_MvXYZEx(x,y,vel) at L5271, V110)."""
-        return self._mv_ex((x, y), vel)
-
-    def GT_MvXYZEx(self, x, y, z, vel) -> int:
-        """Module B 3-D start point, mm, mm/s (L5305)."""
-        return self._mv_ex((x, y, z), vel)
-
-    def _ex_gate(self, msg, number):
-        """(path, ex) when an Ex command may be buffered now, else (None, rtn) after filling msg."""
-        st = self._path_state()
-        ex = st.ex
-        if ex is None or not ex.active or not st.open or not self._card.ge_crd_exists():
-            msg.error, msg.mtnNum, msg.num = 8, int(number), 0
-            return None, self._crd_fault(8)
-        path = self._card.ge_path()
-        if path.window_size >= int(ex.params.n) and path.fifo_space < 1:
-            msg.error, msg.mtnNum, msg.num = 3, int(number), path.window_size
-            self._crd_fault(15)
-            return None, RTN_COMMAND_ERROR
-        return path, ex
-
-    def _ex_motion(self, msg, number, F, dcc, make, g0=False) -> int:
-        """One Ex motion command (mm, mm/s): into the card's look-ahead window; buffer full: rtn 1, msg.error 3,
-        nothing taken (re-send); the same point as before: rtn 1, msg.error 1 (L5147-5169)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        msg = msg if msg is not None else TLookAheadMsg()
-        if not _int_in(number, -2**31, 2**31 - 1) or not _int_in(dcc, 0, 1):
-            return RTN_PARAMETER_ERROR
-        if not (_real_in(F, 0, 1e9) and float(F) > 0):
-            return 4
-        path, ex = self._ex_gate(msg, number)
-        if path is None:
-            return ex
-        c = ex.params.con
-        tail = list(path.tail)
-        try:
-            seg = make([v / c for v in tail], c)
-        except ValueError as e:
-            msg.error, msg.mtnNum, msg.num = 8, int(number), 0
-            if isinstance(e, PathGeometryError):
-                return int(_core.ge_geometry_code(e.gt_code))  # a zero-length line is a duplicate point: 1 (L3374)
-            return RTN_PARAMETER_ERROR
-        if seg is None:
-            msg.error, msg.mtnNum, msg.num = 1, int(number), 0   # the point equals the previous one (L3374)
-            return RTN_COMMAND_ERROR
-        path.push_segment(seg, float(F) * c / 1000.0, ex.params.acc * c / 1e6, g0=g0, stop_at_end=bool(int(dcc)))
-        self._path_state().pushed += 1
-        self._path_state().ends.append(list(seg.end))
-        msg.error, msg.mtnNum, msg.num = 0, int(number), 0
-        return RTN_SUCCESS
-
-    def _ex_line(self, pts, F, dccFlag, CodeNum, pMsg, g0) -> int:
-        def make(tail_mm, c):
-            end = [v * c for v in tail_mm]
-            for k, v in enumerate(pts):
-                end[k] = float(v) * c
-            tail = [v * c for v in tail_mm]
-            if all(abs(a - b) < 0.5 for a, b in zip(end, tail)):
-                return None
-            return _core.PathSegment.line(tail, end)
-
-        return self._ex_motion(pMsg, CodeNum, F, dccFlag, make, g0)
-
-    def GT_LnXYEx(self, x, y, F, dccFlag, CodeNum, pMsg=None) -> int:
-        """Module B G01 line to (x, y) mm at F mm/s; dccFlag 1 stops at its end; CodeNum the user block number;
-        pMsg a TLookAheadMsg filled on error (L4972, Table 6-12 L1803-1812)."""
-        return self._ex_line((x, y), F, dccFlag, CodeNum, pMsg, False)
-
-    def GT_LnXYZEx(self, x, y, z, F, dccFlag, CodeNum, pMsg=None) -> int:
-        """Module B 3-D G01 line, mm, mm/s (L5067)."""
-        return self._ex_line((x, y, z), F, dccFlag, CodeNum, pMsg, False)
-
-    def GT_LnXYG0Ex(self, x, y, F, dccFlag, CodeNum, pMsg=None) -> int:
-        """Module B G00 rapid to (x, y) mm (starts and ends at rest) (L5103)."""
-        return self._ex_line((x, y), F, dccFlag, CodeNum, pMsg, True)
-
-    def GT_LnXYZG0Ex(self, x, y, z, F, dccFlag, CodeNum, pMsg=None) -> int:
-        """Module B 3-D G00 rapid, mm (L5139)."""
-        return self._ex_line((x, y, z), F, dccFlag, CodeNum, pMsg, True)
-
-    def _ex_arc(self, plane, c1, c2, angle, F, dccFlag, CodeNum, pMsg) -> int:
-        def make(tail_mm, c):
-            return _core.PathSegment.arc_center_angle([v * c for v in tail_mm], plane,
-                                                      (float(c1) * c, float(c2) * c), float(angle))
-
-        if not _real_in(angle, -360, 360):
-            return RTN_PARAMETER_ERROR if self._card is not None else RTN_COMM_ERROR
-        return self._ex_motion(pMsg, CodeNum, F, dccFlag, make)
-
-    def _ex_arcp(self, plane, e1, e2, r, direction, F, dccFlag, CodeNum, pMsg) -> int:
-        i, j = {"xy": (0, 1), "yz": (1, 2), "zx": (2, 0)}[plane]
-
-        def make(tail_mm, c):
-            tail = [v * c for v in tail_mm]
-            end = list(tail)
-            end[i], end[j] = float(e1) * c, float(e2) * c
-            return _core.PathSegment.arc_radius(tail, end, plane, float(r) * c, int(direction) == 1)
-
-        if not _int_in(direction, -1, 1) or int(direction) == 0:
-            return RTN_PARAMETER_ERROR if self._card is not None else RTN_COMM_ERROR
-        return self._ex_motion(pMsg, CodeNum, F, dccFlag, make)
-
-    def GT_ArcXYEx(self, x_center, y_center, angle, F, dccFlag, CodeNum, pMsg=None) -> int:
-        """Module B arc about the centre (mm) by angle degrees (> 0 CCW) (L3468)."""
-        return self._ex_arc("xy", x_center, y_center, angle, F, dccFlag, CodeNum, pMsg)
-
-    def GT_ArcYZEx(self, y_center, z_center, angle, F, dccFlag, CodeNum, pMsg=None) -> int:
-        """Module B YZ arc, centre + angle (L3545)."""
-        return self._ex_arc("yz", y_center, z_center, angle, F, dccFlag, CodeNum, pMsg)
-
-    def GT_ArcZXEx(self, z_center, x_center, angle, F, dccFlag, CodeNum, pMsg=None) -> int:
-        """Module B ZX arc, centre + angle (L3619; printed GT_ArcZYEx at L3621, V110)."""
-        return self._ex_arc("zx", z_center, x_center, angle, F, dccFlag, CodeNum, pMsg)
-
-    def GT_ArcXYPEx(self, x_end, y_end, r, direction, F, dccFlag, CodeNum, pMsg=None) -> int:
-        """Module B arc to the end point (mm), signed radius, direction 1 CCW / -1 CW (L3511)."""
-        return self._ex_arcp("xy", x_end, y_end, r, direction, F, dccFlag, CodeNum, pMsg)
-
-    def GT_ArcYZPEx(self, y_end, z_end, r, direction, F, dccFlag, CodeNum, pMsg=None) -> int:
-        """Module B YZ arc by end point and radius (L3583)."""
-        return self._ex_arcp("yz", y_end, z_end, r, direction, F, dccFlag, CodeNum, pMsg)
-
-    def GT_ArcZXPEx(self, z_end, x_end, r, direction, F, dccFlag, CodeNum, pMsg=None) -> int:
-        """Module B ZX arc by end point and radius (L3658; printed with (y_end, z_end) at L3660, V110)."""
-        return self._ex_arcp("zx", z_end, x_end, r, direction, F, dccFlag, CodeNum, pMsg)
-
-    def _ex_plain(self, push) -> int:
-        if self._card is None:
-            return RTN_COMM_ERROR
-        st = self._path_state()
-        if not st.open:
-            return RTN_COMM_ERROR      # immediate mode (L3758-3762)
-        msg = TLookAheadMsg()
-        path, ex = self._ex_gate(msg, 0)
-        if path is None:
-            return ex
-        push(path)
-        return RTN_SUCCESS
-
-    def GT_BufIOEx(self, value) -> int:
-        """Module B buffered write of the 16 outputs, in order with the Ex motion commands (L3758-3762); -1 in
-        immediate mode."""
-        if self._card is not None and not _int_in(value, 0, 0xFFFF):
-            return RTN_PARAMETER_ERROR
-        return self._ex_plain(lambda path: path.buf_io(0, 0xFFFF, int(value)))
-
-    def GT_BufIOBitEx(self, io_bit, bit_status) -> int:
-        """Module B buffered write of one output (L3778)."""
-        if self._card is not None and (not _int_in(io_bit, 0, 15) or not _int_in(bit_status, 0, 1)):
-            return RTN_PARAMETER_ERROR
-        return self._ex_plain(lambda path: path.buf_io(0, 1 << int(io_bit), int(bit_status) << int(io_bit)))
-
-    def GT_DelayEx(self, time) -> int:
-        """Module B buffered dwell, ms, 0 < t < 8192 (Table 6-10 L1761; V107)."""
-        if self._card is not None and not _int_in(time, 1, 8191):
-            return RTN_PARAMETER_ERROR
-        return self._ex_plain(lambda path: path.buf_delay(float(time)))
-
-    def GT_M30(self, pMsg=None) -> int:
-        """Flushes module B: moves the look-ahead window into the card buffer as space allows. 9 while commands
-        remain (msg.error 3: the buffer is full; let the card run and call again), 0 when all are in; then
-        GT_EndList (L1793-1795, L5171-5177)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        msg = pMsg if pMsg is not None else TLookAheadMsg()
-        st = self._path_state()
-        if st.ex is None or not st.ex.active or not st.open or not self._card.ge_crd_exists():
-            msg.error = 8
-            return self._crd_fault(8)
-        path = self._card.ge_path()
-        if path.flush():
-            msg.error, msg.num = 0, 0
-            return RTN_SUCCESS
-        msg.error, msg.num = 3, path.window_size
-        return 9
-
-    # -- analog inputs, spindle output, auxiliary encoders (ch10 L2890-3020; card_io) -------------------------------
-    def GT_GetAdc(self, channel):
-        """(rtn, input voltage of channel 1..8 as 12-bit counts): +10 V = 2047, 0 V = 0, -10 V = -2048 (Table 10-4,
-        L2930-2937), sampled at the last conversion: PX 4 kHz, SX 770 Hz x 8 / GT_SetAdcChn's channels (L2939-2943).
-        The voltages are the machine's, ``card_io.of(card).adc_volts`` (L4132-4142)."""
-        if self._card is None:
-            return RTN_COMM_ERROR, 0
-        if not _int_in(channel, 1, 8):
-            return self._param(-1), 0
-        rate = 4000.0 if self.variant == "PX" else 770.0 * 8 / self._slot.adc_chn
-        t = math.floor(self._card.tick * self._card.servo_period_s * rate) / rate
-        v = card_io.of(self._card).volts(int(channel) - 1, t)
-        return RTN_SUCCESS, max(-2048, min(2047, math.floor(v / 10.0 * 2048)))
-
-    def GT_SetAdcChn(self, channel) -> int:
-        """Number of A/D channels converted, 1..8 (SX; default 8, decision GF7): fewer channels, faster sampling,
-        one channel 8 x 770 Hz = 6.16 kHz (L5447-5455, L2941-2943)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if not _int_in(channel, 1, 8):
-            return self._param(-1)
-        self._slot.adc_chn = int(channel)
-        return RTN_SUCCESS
-
-    def GT_SetSpindleVel(self, vel) -> int:
-        """Spindle speed: the 16-bit spindle DAC, -32768..32767 for -10..+10 V, output from now on (SV,
-        L5724-5734); the machine reads ``card_io.of(card).spindle_volts`` (V = vel x 10 / 32768)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if not _int_in(vel, -32768, 32767):
-            return self._param(-1)
-        card_io.of(self._card).spindle_volts = int(vel) * 10.0 / 32768
-        return RTN_SUCCESS
-
-    def GT_CloseSpindle(self) -> int:
-        """Spindle output off: 0 V (SV, L3885-3893)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        card_io.of(self._card).spindle_volts = 0.0
-        return RTN_SUCCESS
-
-    def GT_EncPos(self, encoder):
-        """(rtn, position of auxiliary encoder 1 or 2, pulse) (SX, L4002-4023): the machine's
-        ``card_io.of(card).aux_encoders`` (whole counts)."""
-        if self._card is None:
-            return RTN_COMM_ERROR, 0
-        if not _int_in(encoder, 1, 2):
-            return self._param(-1), 0
-        enc = card_io.of(self._card).aux_encoders[int(encoder) - 1]
-        return RTN_SUCCESS, 0 if enc is None else enc.counts(self._card.tick * self._card.servo_period_s)
-
-    # -- not simulated (UNSUPPORTED) -------------------------------------------------------------------------------
-    def GT_HandWheel(self, axis, ratio) -> int:
-        """Returns 1: not simulated (UNSUPPORTED; SX, L4839-4853)."""
-        return self._not_simulated()
-
-    def GT_ExitHWheel(self) -> int:
-        """Returns 1: not simulated (UNSUPPORTED; SX, L4086-4092)."""
-        return self._not_simulated()
-
-    def GT_Axis(self, num) -> int:
-        """Returns 1: not in the GE command set (UNSUPPORTED)."""
-        return self._not_simulated()
+    ("GT_InitLookAhead", "t, acc_max, acc, vel, n, con", lambda c, *p: c._sx(lambda L: L.init_look_ahead(*_nums(*p))),
+     "Module A: corner time t s, acc_max and acc mm/s^2 (acc < acc_max), feed vel mm/s, n segments, con pulse/mm "
+     "(L4879-4887). The path starts at the present profile point (in mm)."),
+    ("GT_AddLookData", "code, plane_group, r, x, y, z, vel, cx, cy, i, n, flag",
+     lambda c, code, plane_group, r, x, y, z, vel, cx, cy, i, n, flag: c._sx(lambda L: L.add_look_data(
+         int(code), int(plane_group), *_nums(r, x, y, z, vel, cx, cy), int(n), bool(flag))),
+     "Pushes one segment (mm, mm/s) to module A: code 0 G00, 1 G01, 2 G02 CW, 3 G03 CCW; plane_group 17 XY, 18 ZX, "
+     "19 YZ; i the slot (not used: the module keeps its own order, V111), n the user number, flag: stop at its end. "
+     "0 accepted, 1 the point equals the previous one (L3370-3394, Table 6-8 L1709-1724)."),
+    ("GT_CalVel", "", lambda c: c._sx(lambda L: L.cal_vel()) if c._card is not None else (RTN_COMM_ERROR, 0.0, 0),
+     "(rtn, end velocity mm/s, user number) of the oldest segment not yet returned: rtn 0 more follow, 1 it was the "
+     "last (L3790-3800, L1725). Send the segment with GT_SetDccVel(vel * con / 1000)."),
+    # look-ahead module B, the Ex family (Tables 6-9..6-12 L1729-1812; L5147-5177; V111)
+    ("GT_InitLookAheadEx", "T, amax, am, n, con", lambda c, *p: c._sx(lambda L: L.init_look_ahead_ex(*_nums(*p))),
+     "Module B: corner time T s, amax and am mm/s^2 (am < amax), n >= 200 look-ahead segments, con pulse/mm "
+     "(L1729-1785, L4889-4895; also GT_InitLookAheadExx, V110)."),
+    ("GT_InitLookAheadExx", "T, amax, am, n, con", lambda c, *p: c._sx(lambda L: L.init_look_ahead_ex(*_nums(*p))),
+     "The name ch12 and Example 6-4 use for GT_InitLookAheadEx (L1856, L4889; V110)."),
+    ("GT_MvXYEx", "x, y, vel", lambda c, *p: c._sx(lambda L: L.mv_ex(_nums(*p[:-1]), _num(p[-1]))),
+     "Module B start point (x, y) mm at vel mm/s; right after StrtList (L1787-1789, L5269; printed as "
+     "GT_MvXYZEx(x,y,vel) at L5271, V110)."),
+    ("GT_MvXYZEx", "x, y, z, vel", lambda c, *p: c._sx(lambda L: L.mv_ex(_nums(*p[:-1]), _num(p[-1]))),
+     "Module B 3-D start point, mm, mm/s (L5305)."),
+    ("GT_LnXYEx", f"x, y, F, dccFlag, CodeNum, {_P}", lambda c, *p: c._ex(p[-1], lambda L, m: L.line_ex(
+        _nums(*p[:-4]), *_nums(*p[-4:-1]), False, m)),
+     "Module B G01 line to (x, y) mm at F mm/s; dccFlag 1 stops at its end; CodeNum the user block number; pMsg a "
+     "TLookAheadMsg filled on error (L4972, Table 6-12 L1803-1812)."),
+    ("GT_LnXYZEx", f"x, y, z, F, dccFlag, CodeNum, {_P}", lambda c, *p: c._ex(p[-1], lambda L, m: L.line_ex(
+        _nums(*p[:-4]), *_nums(*p[-4:-1]), False, m)), "Module B 3-D G01 line, mm, mm/s (L5067)."),
+    ("GT_LnXYG0Ex", f"x, y, F, dccFlag, CodeNum, {_P}", lambda c, *p: c._ex(p[-1], lambda L, m: L.line_ex(
+        _nums(*p[:-4]), *_nums(*p[-4:-1]), True, m)),
+     "Module B G00 rapid to (x, y) mm (starts and ends at rest) (L5103)."),
+    ("GT_LnXYZG0Ex", f"x, y, z, F, dccFlag, CodeNum, {_P}", lambda c, *p: c._ex(p[-1], lambda L, m: L.line_ex(
+        _nums(*p[:-4]), *_nums(*p[-4:-1]), True, m)), "Module B 3-D G00 rapid, mm (L5139)."),
+    ("GT_ArcXYEx", f"x_center, y_center, angle, F, dccFlag, CodeNum, {_P}", lambda c, *p: c._ex(
+        p[-1], lambda L, m: L.arc_center_ex("xy", *_nums(*p[:-1]), m)),
+     "Module B arc about the centre (mm) by angle degrees (> 0 CCW) (L3468)."),
+    ("GT_ArcYZEx", f"y_center, z_center, angle, F, dccFlag, CodeNum, {_P}", lambda c, *p: c._ex(
+        p[-1], lambda L, m: L.arc_center_ex("yz", *_nums(*p[:-1]), m)), "Module B YZ arc, centre + angle (L3545)."),
+    ("GT_ArcZXEx", f"z_center, x_center, angle, F, dccFlag, CodeNum, {_P}", lambda c, *p: c._ex(
+        p[-1], lambda L, m: L.arc_center_ex("zx", *_nums(*p[:-1]), m)),
+     "Module B ZX arc, centre + angle (L3619; printed GT_ArcZYEx at L3621, V110)."),
+    ("GT_ArcXYPEx", f"x_end, y_end, r, direction, F, dccFlag, CodeNum, {_P}", lambda c, *p: c._ex(
+        p[-1], lambda L, m: L.arc_radius_ex("xy", *_nums(*p[:-1]), m)),
+     "Module B arc to the end point (mm), signed radius, direction 1 CCW / -1 CW (L3511)."),
+    ("GT_ArcYZPEx", f"y_end, z_end, r, direction, F, dccFlag, CodeNum, {_P}", lambda c, *p: c._ex(
+        p[-1], lambda L, m: L.arc_radius_ex("yz", *_nums(*p[:-1]), m)),
+     "Module B YZ arc by end point and radius (L3583)."),
+    ("GT_ArcZXPEx", f"z_end, x_end, r, direction, F, dccFlag, CodeNum, {_P}", lambda c, *p: c._ex(
+        p[-1], lambda L, m: L.arc_radius_ex("zx", *_nums(*p[:-1]), m)),
+     "Module B ZX arc by end point and radius (L3658; printed with (y_end, z_end) at L3660, V110)."),
+    ("GT_BufIOEx", "value", lambda c, value: c._sx(lambda L: L.buf_io_ex(_num(value))),
+     "Module B buffered write of the 16 outputs, in order with the Ex motion commands (L3758-3762); -1 in "
+     "immediate mode."),
+    ("GT_BufIOBitEx", "io_bit, bit_status", lambda c, *p: c._sx(lambda L: L.buf_io_bit_ex(*_nums(*p))),
+     "Module B buffered write of one output (L3778)."),
+    ("GT_DelayEx", "time", lambda c, time: c._sx(lambda L: L.delay_ex(_num(time))),
+     "Module B buffered dwell, ms, 0 < t < 8192 (Table 6-10 L1761; V107)."),
+    ("GT_M30", _P, lambda c, pMsg: c._ex(pMsg, lambda L, m: L.m30(m)),
+     "Flushes module B: moves the look-ahead window into the card buffer as space allows. 9 while commands remain "
+     "(msg.error 3: the buffer is full; let the card run and call again), 0 when all are in; then GT_EndList "
+     "(L1793-1795, L5171-5177)."),
+    # -- analog inputs, spindle output, auxiliary encoders (ch10 L2890-3020; card_io) -----------------------------
+    ("GT_GetAdc", "channel", lambda c, channel: (RTN_COMM_ERROR, 0) if c._card is None else (
+        c._adc(channel) if _int_in(channel, 1, 8) else (c._param(-1), 0)),
+     "(rtn, input voltage of channel 1..8 as 12-bit counts): +10 V = 2047, 0 V = 0, -10 V = -2048 (Table 10-4, "
+     "L2930-2937), sampled at the last conversion: PX 4 kHz, SX 770 Hz x 8 / GT_SetAdcChn's channels (L2939-2943). "
+     "The voltages are the machine's, ``card_io.of(card).adc_volts`` (L4132-4142)."),
+    ("GT_SetAdcChn", "channel", lambda c, channel: c._ge(lambda r: r.set_adc_channels(_num(channel))),
+     "Number of A/D channels converted, 1..8 (SX; default 8, decision GF7): fewer channels, faster sampling, one "
+     "channel 8 x 770 Hz = 6.16 kHz (L5447-5455, L2941-2943)."),
+    ("GT_SetSpindleVel", "vel", lambda c, vel: c._card_cmd(lambda: setattr(
+        card_io.of(c._card), "spindle_volts", int(vel) * 10.0 / 32768), _int_in(vel, -32768, 32767)),
+     "Spindle speed: the 16-bit spindle DAC, -32768..32767 for -10..+10 V, output from now on (SV, L5724-5734); the "
+     "machine reads ``card_io.of(card).spindle_volts`` (V = vel x 10 / 32768)."),
+    ("GT_CloseSpindle", "", lambda c: c._card_cmd(lambda: setattr(card_io.of(c._card), "spindle_volts", 0.0)),
+     "Spindle output off: 0 V (SV, L3885-3893)."),
+    ("GT_EncPos", "encoder", lambda c, encoder: (RTN_COMM_ERROR, 0) if c._card is None else (
+        c._aux_encoder(encoder) if _int_in(encoder, 1, 2) else (c._param(-1), 0)),
+     "(rtn, position of auxiliary encoder 1 or 2, pulse) (SX, L4002-4023): the machine's "
+     "``card_io.of(card).aux_encoders`` (whole counts)."),
+    # -- not simulated (UNSUPPORTED) --------------------------------------------------------------------------------
+    ("GT_HandWheel", "axis, ratio", lambda c, axis, ratio: c._not_simulated(),
+     "Returns 1: not simulated (UNSUPPORTED; SX, L4839-4853)."),
+    ("GT_ExitHWheel", "", lambda c: c._not_simulated(), "Returns 1: not simulated (UNSUPPORTED; SX, L4086-4092)."),
+    ("GT_Axis", "num", lambda c, num: c._not_simulated(), "Returns 1: not in the GE command set (UNSUPPORTED)."),
+)
+for _row in _ROWS:
+    setattr(GeController, _row[0], _adapter(*_row))
+del _row
+_wrap_vendor_methods(GeController)  # the rows return the vendor's codes as the class's own methods do
 
 
 #: GE functions the simulation cannot carry out: each returns 1 (a read (1, 0)) (decision GF3).

@@ -1,4 +1,5 @@
 #include "servobench/vendor/googol/ge_status.hpp"
+#include "servobench/vendor/googol/ge_list.hpp"
 
 namespace servobench::vendor::googol {
 
@@ -89,6 +90,9 @@ std::uint16_t ge_command_status_bit(GeVariant variant, CommandFault fault) {
 }
 
 std::uint16_t ge_command_status(GeVariant variant, const Card& card) {
+  // SX: a path refusal names its own bit (8 path command, 9 buffer state, 15 buffer full; Table 2-4, V100)
+  const GeList* list = variant == GeVariant::SX ? ge_list_if_any(card) : nullptr;
+  if (list && list->command_bit()) return static_cast<std::uint16_t>(1u << *list->command_bit());
   return ge_command_status_bit(variant, card.last_fault());
 }
 

@@ -5,17 +5,18 @@
 // to PathSetup: start velocity (GT_SetStrtVel, default 0.5 pulse/ms, L1395-1399), the MaxVel clamp (GT_SetMaxVel,
 // default 256 pulse/ms, L1401-1405), the abnormal-stop deceleration (GT_SetStpAcc, used by GT_EStpMtn, L1648;
 // 0 = speed 0 at once), resume by a line to the breakpoint (GT_RestoreMtn, L1660). The list bookkeeping
-// (immediate / buffer mode, open / closed, Mv, segment number) is the dialect's (python/servobench/dialects/ge.py),
-// as the GT dialect keeps its own. Decisions V100-V112.
+// (immediate / buffer mode, open / closed, Mv, segment number, look-ahead module B) is vendor/googol/ge_list.hpp's
+// GeList module, which builds this crd. Decisions V100-V112, GV1-GV3.
 #pragma once
 
 #include <cstddef>
 #include <vector>
 
 #include "servobench/machine/card.hpp"
+#include "servobench/machine/card_modes.hpp"
 #include "servobench/motion/path_generator.hpp"
 
-namespace servobench::machine {
+namespace servobench::vendor::googol {
 
 // Slot 4 of the card's group slots (card_modes.hpp; slot 3 is the ADLINK interpolation group).
 constexpr std::size_t kGeCrdSlot = 4;
@@ -32,9 +33,9 @@ struct GeCrdSetup {
 
 // (Re)builds the GE crd at the present profile positions of axes 1..dim (dim 0: min(4, axis_count)): refused (CardCommandRefused,
 // return code 1) while the crd or one of its axes moves. Anything buffered in a previous crd is dropped.
-void ge_crd_setup(Card& card, const GeCrdSetup& setup);
+void ge_crd_setup(machine::Card& card, const GeCrdSetup& setup);
 // The GE crd's generator; refused when ge_crd_setup was never called on this card.
-motion::PathGenerator& ge_path(Card& card);
-bool ge_crd_exists(Card& card);
+motion::PathGenerator& ge_path(machine::Card& card);
+bool ge_crd_exists(machine::Card& card);
 
-}  // namespace servobench::machine
+}  // namespace servobench::vendor::googol

@@ -1,4 +1,4 @@
-#include "servobench/machine/card_group_ge.hpp"
+#include "servobench/vendor/googol/ge_crd.hpp"
 
 #include <algorithm>
 #include <memory>
@@ -7,7 +7,12 @@
 #include "servobench/machine/card_group.hpp"
 #include "servobench/machine/card_modes.hpp"
 
-namespace servobench::machine {
+namespace servobench::vendor::googol {
+
+using machine::Card;
+using machine::CardCommandRefused;
+using machine::CommandFault;
+using machine::PathGroup;
 
 void GeCrdSetup::validate() const {
   const char* o = "GeCrdSetup";
@@ -51,4 +56,4 @@ motion::PathGenerator& ge_path(Card& card) {
   return g->path();
 }
 
-}  // namespace servobench::machine
+}  // namespace servobench::vendor::googol
