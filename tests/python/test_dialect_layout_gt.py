@@ -55,6 +55,9 @@ AIMS = {"gt.py": 431}
 # program runs against, the ISA address the program set. Every register is the C++ GT module's.
 HANDLES = {"_card", "_cards", "_card_no", "_machine", "_isa_addr"}
 GT_FILES = ("gt.py", "_gt_system.py")
+# GTS: the look-ahead windows and the configuration registers are the card's GtsCard (decision GT11); the motion
+# program's threads (_gts_program.py) are the host's Python code and stay (GT12); gts.py is not thinned yet (GT13).
+GTS_FILES = ("gts.py", "_gts_config.py")
 
 
 def _tree(name: str) -> ast.Module:
@@ -67,7 +70,7 @@ def test_dialect_file_within_its_line_aim(name, aim):
     assert lines <= aim, f"{name}: {lines} lines, aim <= {aim} (40 % of the lines at issue 24)"
 
 
-@pytest.mark.parametrize("name", GT_FILES)
+@pytest.mark.parametrize("name", GT_FILES + GTS_FILES)
 def test_no_private_reach_into_the_card(name):
     """No ``x._card._y`` / ``card._card`` / ``kernel._y``: the dialect uses the Card's and the GT module's public
     API only."""
@@ -82,7 +85,7 @@ def test_no_private_reach_into_the_card(name):
     assert not bad, f"{name}: private reaches {bad}"
 
 
-@pytest.mark.parametrize("name", GT_FILES)
+@pytest.mark.parametrize("name", GT_FILES + GTS_FILES)
 def test_no_message_parsing(name):
     """No ``except ... as e`` whose handler reads ``str(e)`` / ``e.args``: codes are typed (return_code.hpp)."""
     bad = []
@@ -94,7 +97,7 @@ def test_no_message_parsing(name):
     assert not bad, f"{name}: exception text read at {bad}"
 
 
-@pytest.mark.parametrize("name", GT_FILES)
+@pytest.mark.parametrize("name", GT_FILES + GTS_FILES)
 def test_no_mutable_state_beyond_the_handles(name):
     """Every ``self.x = ...`` in the GT dialect sets a handle (HANDLES); no ``self.__dict__`` juggling, no
     ``self.x[k] = ...`` / ``self.x.update(...)`` on a dialect attribute: the registers live in the C++ module."""
@@ -132,3 +135,22 @@ def test_gt_registers_are_the_cards():
     g0 = _core.gt_card(cards[0].kernel)
     assert (c._axis, g0.axis, g0.limit_sense, g0.crd_registers()["vel"]) == (2, 2, 0b1010, 5.0)
     assert c.GT_Reset() == 0 and g0.limit_sense == 0 and g0.crd_registers()["vel"] == 0.0 and g0.axis == 2
+
+
+def test_gts_registers_are_the_cards():
+    """The GTS look-ahead window of a (crd, fifo) and the stop decelerations are the card's GtsCard registers: a
+    second controller opening the same card sees them; GT_Reset drops the windows."""
+    from servobench import Card, _core
+    from servobench.dialects import gts
+
+    card = Card(8)
+    a, b = gts.GtsController(), gts.GtsController()
+    assert a.GT_Open(card) == 0 and b.GT_Open(card) == 0
+    for k in (1, 2):
+        assert a.GT_AxisOn(k) == 0
+    prm = gts.TCrdPrm(dimension=2, profile=[1, 2, 0, 0, 0, 0, 0, 0], synVelMax=500, synAccMax=1)
+    assert a.GT_SetCrdPrm(1, prm) == 0
+    assert a.GT_InitLookAhead(1, 0, 5, 1, 200) == 0 and a.GT_SetStopDec(2, 0.5, 4) == 0
+    g = _core.gts_card(card.kernel)
+    assert g.lookahead(1, 0) == 200 and b.GT_GetStopDec(2) == (0, 0.5, 4.0)
+    assert b.GT_Reset() == 0 and g.lookahead(1, 0) == 0

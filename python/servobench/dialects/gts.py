@@ -108,10 +108,6 @@ class TCrdPrm:
 class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
     """One GUC-ECAT / iDEABOX program's view of a :class:`~servobench.Card` (its advanced functions)."""
 
-    def __init__(self):
-        super().__init__()
-        self._la = {}  # (crd, fifo) -> look-ahead window n (0 = off)
-
     # -- plumbing -------------------------------------------------------------------------------------------
     def _do(self, fn, *args) -> int:
         return self._googol_do(fn, *args)
@@ -155,13 +151,8 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
             return RTN_COMM_ERROR
         if not _int_in(crd, 1, 2) or not _int_in(fifo, 0, 1):
             return RTN_PARAMETER_ERROR
-        try:
-            pair = self._card.crd(int(crd))
-        except (CardCommandRefused, MotionCommandRefused):
-            return RTN_COMMAND_ERROR
-        if self._la.get((int(crd), int(fifo)), 0) > 0 and pair.coords.dim > 3:
-            return RTN_PARAMETER_ERROR
-        return self._do(push, pair.fifo(int(fifo)))
+        rtn = self._gts().check_push(int(crd), int(fifo))  # 1 crd not set up, 7 look-ahead on a 4-D crd
+        return rtn or self._do(push, self._fifo(crd, fifo))
 
     # -- system and basic axis calls used by the examples ---------------------------------------------------
     def GT_Open(self, card: Card | None = None, **axis_parts) -> int:
@@ -173,7 +164,6 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
         if card is None and not axis_parts:
             card = self._machine_card()
         self._card = card if card is not None else Card(8, **axis_parts)
-        self._la = {}
         return RTN_SUCCESS
 
     def GT_Close(self) -> int:
@@ -181,15 +171,12 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
         if self._card is None:
             return RTN_COMM_ERROR
         self._close_program()
-        for name in list(self._cfg()["hooks"]):
-            self._tick_hook(name, None)
         self._card = None
         return RTN_SUCCESS
 
     def GT_Reset(self) -> int:
         """Resets the controller (card reset: no crd, PVT or cam, drives off); the motion-program threads stop
         (the downloaded program stays until power-off, GUC L2245)."""
-        self._la = {}
         if self._card is not None:
             self._close_program()
         return self._do(lambda: self._card.reset())
@@ -238,9 +225,8 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
         """(rtn, profile velocity, pulse/ms)."""
         if not self._axis_ok(profile):
             return self._bad(), 0.0
-        exp = self._cfg()["prf_exp"].get(int(profile), 0)
-        if exp:  # GT_SetAxisPrfVelFilter: the mean over the last 2^exp ticks (iDEABOX L3801; GS9)
-            return self._get(lambda: self._filtered_vel(int(profile) - 1, 0, exp))
+        if self._gts().prf_vel_filter(int(profile) - 1):  # the mean over the last 2^exp ticks (L3801; GS9)
+            return self._get(lambda: self._gts().filtered_prf_vel(int(profile) - 1))
         return self._get(lambda: self._card.profile_vel(int(profile) - 1) / self._ms)
 
     def GT_GetEncPos(self, axis, count=1):
@@ -285,7 +271,7 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
             return RTN_PARAMETER_ERROR
         rtn = self.GT_SetTrapPrm(profile, acc, dec)
         if rtn == RTN_SUCCESS:
-            self._cfg()["jog"][int(profile)] = float(smooth)
+            self._gts().set_jog_smooth(int(profile) - 1, float(smooth))
         return rtn
 
     def GT_SetVel(self, profile, vel) -> int:
@@ -330,7 +316,7 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
                     if self._card.group_of(a) < 0:
                         self._card.abrupt_stop(a)
                 elif option & (1 << a) or self._card.moving(a):
-                    self._stop_axis(a, bool(option & (1 << a)))  # GT_SetStopDec decelerations (GS7)
+                    self._gts().stop_axis(a, bool(option & (1 << a)))  # GT_SetStopDec decelerations (GS7)
 
         return self._do(stop)
 
@@ -357,7 +343,7 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
             syn_vel_max=float(prm.synVelMax), syn_acc_max=float(prm.synAccMax), even_time_ms=float(prm.evenTime),
             set_origin=bool(prm.setOriginFlag), origin_pos=[float(p) for p in prm.originPos]))
         if rtn == RTN_SUCCESS:
-            self._la = {k: v for k, v in self._la.items() if k[0] != int(crd)}
+            self._gts().drop_lookahead(int(crd))
         return rtn
 
     def GT_GetCrdPrm(self, crd):
@@ -560,7 +546,7 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
         rtn = self._do(lambda: self._fifo(crd, fifo).init_lookahead(
             LookAheadParams(t_ms=float(T), acc_max=float(accMax), n=float(n))))
         if rtn == RTN_SUCCESS:
-            self._la[(int(crd), int(fifo))] = int(n)
+            self._gts().set_lookahead(int(crd), int(fifo), int(n))
         return rtn
 
     def GT_CrdData(self, crd, pCrdData=None, fifo=0) -> int:
@@ -620,7 +606,7 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
             pair = self._card.crd(int(crd))
             for k in (0, 1):
                 pair.fifo(k).set_stop_dec(float(decSmoothStop), float(decAbruptStop))
-            self._cfg()["crd_stop_dec"][int(crd)] = (float(decSmoothStop), float(decAbruptStop))
+            self._gts().set_crd_stop_dec(int(crd), float(decSmoothStop), float(decAbruptStop))
 
         return self._do(set_)
 
