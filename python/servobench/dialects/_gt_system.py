@@ -40,7 +40,8 @@ _INTR_EVENTS = {0: ("motion_complete",), 1: ("drive_alarm",), 2: ("breakpoint",)
                 4: ("following_error",), 5: ("pos_limit", "soft_pos_limit"), 6: ("neg_limit", "soft_neg_limit")}
 
 
-def gt_adapter(name: str, params: str, body, doc: str, returns: str | None = "int"):
+def gt_adapter(name: str, params: str, body, doc: str, returns: str | None = "int", owner: str = "GtController",
+               module: str = "servobench.dialects.gt"):
     """A GT_* method made from a table row: ``name(self, <params>)`` (the manual's parameter list, defaults and
     annotations as printed) calling ``body(self, *args)``; the docstring is the row's (units, the manual's line);
     ``returns`` "int" for a command returning its code (the vendor wrapper turns an exception into 7 or 1)."""
@@ -49,7 +50,7 @@ def gt_adapter(name: str, params: str, body, doc: str, returns: str | None = "in
     exec(f"def {name}(self{', ' if params else ''}{params}):\n    return _body(self{', ' if args else ''}{args})\n",
          ns)  # noqa: S102 -- a signature from the table, no user input
     fn = ns[name]
-    fn.__doc__, fn.__qualname__, fn.__module__ = doc, f"GtController.{name}", "servobench.dialects.gt"
+    fn.__doc__, fn.__qualname__, fn.__module__ = doc, f"{owner}.{name}", module
     if returns:
         fn.__annotations__["return"] = returns
     return fn
