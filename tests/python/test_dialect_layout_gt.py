@@ -64,7 +64,8 @@ def _tree(name: str) -> ast.Module:
     return ast.parse((DIALECTS / name).read_text(), filename=name)
 
 
-@pytest.mark.parametrize("name, aim", sorted(AIMS.items()))
+@pytest.mark.parametrize("name, aim", [*sorted(AIMS.items()), pytest.param(
+    "gts.py", 341, marks=pytest.mark.xfail(strict=True, reason="gts.py is 2/3 a table (695 lines): decision GT13"))])
 def test_dialect_file_within_its_line_aim(name, aim):
     lines = len((DIALECTS / name).read_text().splitlines())
     assert lines <= aim, f"{name}: {lines} lines, aim <= {aim} (40 % of the lines at issue 24)"

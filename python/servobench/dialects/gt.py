@@ -346,8 +346,7 @@ _ROWS = [
             "captured flag clear; V85): the probe latches each one's actual position and sets its status bit 3 "
             "(L3008-3049). Returns 1 (command status bit 8) when no axis could be armed. The probe input is the "
             "card's: ``card.set_probe_time(t_s)`` or ``card.set_probe_position(axis, pulse)``."),
-    gt_adapter("GT_HookIsr", "isr", lambda self, isr: self._gt().hook_isr(isr) if self._card is not None
-               else (_ for _ in ()).throw(TypeError("GT_HookIsr: no card open")),
+    gt_adapter("GT_HookIsr", "isr", lambda self, isr: self._gt().hook_isr(isr) if self._card is not None else None,
                "Hooks the host's interrupt service routine (a Python callable taking no argument; PCI DOS form, "
                "L4170-4186) and returns the previous one (None at first). The card calls it from :meth:`run` at the "
                "tick the interrupt is requested; inside it, GT_AxisI / GT_GetIntr / GT_RstIntr serve the request.",
