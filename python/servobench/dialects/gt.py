@@ -382,7 +382,7 @@ _ROWS = [
             "enabled condition persists (a limit still pressed) the card requests again at once (Table 8-1, "
             "L2235-2243; L4534-4555). Only with an interrupt pending, else command status bit 4."),
 ]
-for _fn in _ROWS:
+for _fn in [*_ROWS, _GtSystem.GT_Open]:  # GT_Open too: the API reference documents the controller's own methods
     setattr(GtController, _fn.__name__, _fn)
 
 _default = GtController()
