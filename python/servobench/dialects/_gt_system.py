@@ -1,14 +1,17 @@
 """The GT dialect's system and I/O commands (issue 25.3; GT manual seed 000, ch3 L480-780, ch9 L2514-2560, ch11):
 several cards in one PC (GT_SwitchtoCardNo / GT_GetCurrentCardNo), the ISA base address, the sample time, the
-encoder direction, the pulse-output form, the general I/O, the A/D inputs and the two auxiliary encoders; and
-the commands the simulation cannot carry out (:data:`UNSUPPORTED`). Mixed into
-:class:`~servobench.dialects.gt.GtController`; the machine side of the wiring is :mod:`servobench.card_io`."""
+encoder direction, the pulse-output form, the general I/O, the A/D inputs and the two auxiliary encoders; the
+commands the simulation cannot carry out (:data:`UNSUPPORTED`); and :func:`gt_adapter`, which makes a GT_* method
+from a table row. Mixed into :class:`~servobench.dialects.gt.GtController`. The registers are each card's GT module
+(``_core.gt_card(card.kernel).system``, ``vendor/googol/gt_card.hpp``); the machine side of the wiring is
+:mod:`servobench.card_io`. The controller keeps only the handles: which Card is card n, which one is current."""
 
 from __future__ import annotations
 
 import math
+import weakref
 
-from .. import card_io
+from .. import _core, card_io
 from ..card import Card
 
 RTN_SUCCESS, RTN_COMMAND_ERROR, RTN_PARAMETER_ERROR, RTN_COMM_ERROR = 0, 1, 7, -1
@@ -31,28 +34,75 @@ UNSUPPORTED: dict[str, str] = {
                              "the manual does not print (L2417)",
 }
 
-
-def _int_in(value, lo, hi) -> bool:
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        return False
-    return math.isfinite(v) and v == int(v) and lo <= v <= hi
+# Interrupt mask bits (GT_SetIntrMsk, L4763-4785) in the status-register layout (bit 5 = positive limit: V84) ->
+# the card events that set them: what the GT module's interrupt subscriptions watch.
+_INTR_EVENTS = {0: ("motion_complete",), 1: ("drive_alarm",), 2: ("breakpoint",), 3: ("captured",),
+                4: ("following_error",), 5: ("pos_limit", "soft_pos_limit"), 6: ("neg_limit", "soft_neg_limit")}
 
 
-# The dialect state that belongs to one card (swapped by GT_SwitchtoCardNo); the rest is the program's.
-_PER_CARD = ("_card", "_axis", "_lmt_sns", "_index", "_crd_state", "_intr_state", "_sys")
+def gt_adapter(name: str, params: str, body, doc: str, returns: str | None = "int", owner: str = "GtController",
+               module: str = "servobench.dialects.gt"):
+    """A GT_* method made from a table row: ``name(self, <params>)`` (the manual's parameter list, defaults and
+    annotations as printed) calling ``body(self, *args)``; the docstring is the row's (units, the manual's line);
+    ``returns`` "int" for a command returning its code (the vendor wrapper turns an exception into 7 or 1)."""
+    args = ", ".join(p.split("=")[0].split(":")[0].strip() for p in params.split(",") if p.strip())
+    ns = {"_body": body}
+    exec(f"def {name}(self{', ' if params else ''}{params}):\n    return _body(self{', ' if args else ''}{args})\n",
+         ns)  # noqa: S102 -- a signature from the table, no user input
+    fn = ns[name]
+    fn.__doc__, fn.__qualname__, fn.__module__ = doc, f"{owner}.{name}", module
+    if returns:
+        fn.__annotations__["return"] = returns
+    return fn
 
 
-def _fresh_sys() -> dict:
-    return {"enc_sns": 0, "step_pulse": [False] * 4, "adc_chn": 8, "enc_zero": [0, 0],
-            "capt": None}
+def _renew_subscriptions(card_ref) -> None:
+    """Renews the GT module's interrupt subscriptions on its card (Card.on_event) from its registers."""
+    card = card_ref()
+    if card is None:
+        return
+    g = _core.gt_card(card.kernel)
+    for sid in g.subscriptions:
+        card.remove_event(sid)
+    if g.timer_interrupt_mode:
+        subs = [card.on_event(lambda _c, _f: g.timer_interrupt(), timer_ticks=g.interrupt_timer)] \
+            if g.interrupt_timer > 0 else []
+    else:
+        subs = [card.on_event(lambda _c, _f: g.request_interrupt(), axis=k,
+                              events=[e for b, ev in _INTR_EVENTS.items() if bits >> b & 1 for e in ev])
+                for k, bits in enumerate(g.watched_bits()) if bits]
+    g.subscriptions = subs
 
 
 class _GtSystem:
     """Cards, addresses, sample time, encoders, pulse form, I/O, A/D and auxiliary encoders of GtController."""
 
+    def _gt(self):
+        """The current card's GT module (its registers: current axis, LmtSns, the list, the interrupts...)."""
+        return _core.gt_card(self._card.kernel)
+
     # -- several cards (L491, L545, L5130-5150, L3713-3725) -------------------------------------------------------
+    def GT_Open(self, card: Card | int | None = None, irq: int = 0, **axis_parts) -> int:
+        """Opens the card(s) (PCI form, L4381-4391): ``card``, else the machine :meth:`use_machine` set (one Card
+        or the PC's several GT cards, card 0 current, L5134-5140), else a new 4-axis :class:`~servobench.Card`
+        built from ``axis_parts``. The GT has 4 axes (L752-756). The ISA Windows form ``GT_Open(PortBase, irq)``
+        (Example 3-2, L519-523, L549-553) opens the machine's card whose base-address jumper is ``PortBase``
+        (``card_io.of(card).base_address``): 0, or -1 when no card answers there; irq 0 (none) or 10..15."""
+        if card is not None and not isinstance(card, Card):
+            if not _int_in(card, 0, 0xFFFF) or not (_int_in(irq, 10, 15) or irq == 0):
+                return RTN_PARAMETER_ERROR
+            return RTN_SUCCESS if self.GT_SetAddr(int(card)) == RTN_SUCCESS else RTN_COMM_ERROR
+        cards = [card] if card is not None else (self._machine_cards() if not axis_parts else [])
+        self._open_cards(cards or [Card(4, **axis_parts)])
+        return RTN_SUCCESS
+
+    def GT_Close(self) -> int:
+        """Closes the card(s) (L3051-3061)."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        self._cards, self._card = [], None
+        return RTN_SUCCESS
+
     def _open_cards(self, cards) -> None:
         for c in cards:
             if not isinstance(c, Card):
@@ -61,20 +111,9 @@ class _GtSystem:
                 raise ValueError(f"a GT card has 4 axes (GT L752-756); this Card has {len(c)}")
         if not 1 <= len(cards) <= _MAX_CARDS:
             raise ValueError(f"GT_Open: 1..{_MAX_CARDS} cards in one PC (card numbers 0..15, L5134), got {len(cards)}")
-        self._slots = [{"_card": c, "_axis": 0, "_lmt_sns": 0, "_index": [0] * 4, "_sys": _fresh_sys()}
-                       for c in cards]
-        self._card_no = 0
-        self._load_slot(0)
-
-    def _load_slot(self, n: int) -> None:
-        for k in _PER_CARD:
-            self.__dict__.pop(k, None)
-        self.__dict__.update(self._slots[n])
-        self._card_no = n
-
-    def _save_slot(self) -> None:
-        if getattr(self, "_slots", None):
-            self._slots[self._card_no] = {k: self.__dict__[k] for k in _PER_CARD if k in self.__dict__}
+        for c in cards:  # each card's module renews its interrupt subscriptions (weakly: the card owns the module)
+            _core.gt_card(c.kernel).set_resubscribe(lambda ref=weakref.ref(c): _renew_subscriptions(ref))
+        self._cards, self._card, self._card_no = list(cards), cards[0], 0
 
     def _machine_cards(self) -> list:
         """The cards of the machine :meth:`use_machine` set (a Card, a list of Cards -- the PC's GT cards in
@@ -96,12 +135,6 @@ class _GtSystem:
             return
         super().use_machine(machine)  # type: ignore[misc]
 
-    def _sys_state(self) -> dict:
-        st = self.__dict__.get("_sys")
-        if st is None:
-            st = self.__dict__["_sys"] = _fresh_sys()
-        return st
-
     def _io(self) -> card_io.CardIO:
         return card_io.of(self._card)
 
@@ -112,16 +145,14 @@ class _GtSystem:
         """Makes card ``card_no`` (0..15, numbered in the order the PC found them) current; every later GT call acts
         on it. 0 success, -1 failure: no card with that number (L5130-5150). In program mode the card switched to
         is first brought to the time of the one left (all cards of a PC run at once)."""
-        if not getattr(self, "_slots", None) or not _int_in(card_no, 0, _MAX_CARDS - 1) \
-                or int(card_no) >= len(self._slots):
+        cards = getattr(self, "_cards", [])
+        if not cards or not _int_in(card_no, 0, _MAX_CARDS - 1) or int(card_no) >= len(cards):
             return RTN_COMM_ERROR
         self._switch(int(card_no))
         return RTN_SUCCESS
 
     def _switch(self, n: int) -> None:
-        old = self._card
-        self._save_slot()
-        self._load_slot(n)
+        old, self._card, self._card_no = self._card, self._cards[n], n
         clock = getattr(self._card, "_clock", None)
         if old is not None and clock is not None and clock.mode == "program":
             lag_ms = (old.tick * old.servo_period_s - self._t_s()) * 1e3
@@ -130,7 +161,7 @@ class _GtSystem:
 
     def GT_GetCurrentCardNo(self) -> int:
         """The current card number 0..15, returned (not a status code) (L3713-3725); -1 with no card open."""
-        return self._card_no if getattr(self, "_slots", None) and self._card is not None else RTN_COMM_ERROR
+        return self._card_no if getattr(self, "_cards", None) and self._card is not None else RTN_COMM_ERROR
 
     # -- ISA base address (DOS, L506, L547-556, L3524-3549, L4597-4611) -------------------------------------------
     def GT_SetAddr(self, Address) -> int:
@@ -140,14 +171,12 @@ class _GtSystem:
         if not _int_in(Address, 0, 0xFFFF):
             return RTN_PARAMETER_ERROR
         self._isa_addr = int(Address)
-        cards = [s["_card"] for s in self._slots] if getattr(self, "_slots", None) else self._machine_cards()
-        if not cards:
-            cards = [Card(4)]
+        cards = list(getattr(self, "_cards", [])) or self._machine_cards() or [Card(4)]
         hit = [n for n, c in enumerate(cards) if card_io.of(c).base_address == int(Address)]
         if not hit:
-            self._slots, self._card = [], None
+            self._cards, self._card = [], None
             return RTN_COMM_ERROR
-        if not getattr(self, "_slots", None):
+        if not getattr(self, "_cards", None):
             self._open_cards(cards)
         self._switch(hit[0])
         return RTN_SUCCESS
@@ -164,16 +193,10 @@ class _GtSystem:
         (not simulated) for another one -- build the machine at the period the program sets (decision GF4)."""
         if self._card is None:
             return RTN_COMM_ERROR
-        try:
-            t = float(Timer)
-        except (TypeError, ValueError):
-            return self._param_error("illegal_control_param")
-        if not (math.isfinite(t) and _SMPL_TM_US[0] <= t <= _SMPL_TM_US[1]):
-            return self._param_error("illegal_control_param")
-        if not math.isclose(t * 1e-6, self._card.servo_period_s, rel_tol=1e-9):
-            self._card.record_fault(self._axis, "not_simulated")
-            return RTN_COMMAND_ERROR
-        return RTN_SUCCESS
+        rtn = self._gt().check(Timer, *_SMPL_TM_US, "real")
+        if rtn or math.isclose(float(Timer) * 1e-6, self._card.servo_period_s, rel_tol=1e-9):
+            return rtn
+        return self._gt().refuse("not_simulated")
 
     # -- encoder direction (L595-635, L3267-3300) ----------------------------------------------------------------
     def GT_EncSns(self, Sense) -> int:
@@ -183,27 +206,27 @@ class _GtSystem:
         nothing changed); the auxiliary encoders' counts are reversed as asked (decision GF5)."""
         if self._card is None:
             return RTN_COMM_ERROR
-        if not _int_in(Sense, 0, 0xFFFF) or int(Sense) & ~0x3F:
-            return self._param_error("illegal_control_param")
+        g = self._gt()
+        if g.check(Sense, 0, 0x3F):
+            return RTN_PARAMETER_ERROR
         if (int(Sense) ^ self._io().encoder_reversed) & 0xF:
-            self._card.record_fault(self._axis, "not_simulated")
-            return RTN_COMMAND_ERROR
-        st = self._sys_state()
+            return g.refuse("not_simulated")
+        st = g.system
         for n in (0, 1):  # the position read stays where it is when the direction flips
             before = self._aux_value(n)
-            st["enc_sns"] = (st["enc_sns"] & ~(1 << (4 + n))) | (int(Sense) & (1 << (4 + n)))
-            st["enc_zero"][n] += self._aux_value(n) - before
-        st["enc_sns"] = int(Sense)
+            st.enc_sns = (st.enc_sns & ~(1 << (4 + n))) | (int(Sense) & (1 << (4 + n)))
+            st.enc_zero = [z + (self._aux_value(n) - before) * (k == n) for k, z in enumerate(st.enc_zero)]
+        st.enc_sns = int(Sense)
         return RTN_SUCCESS
 
     # -- pulse output form (L664-672, L5104-5128) -----------------------------------------------------------------
     def _step(self, pulse: bool) -> int:
         if self._card is None:
             return RTN_COMM_ERROR
-        if type(self._card.axes[self._axis].drive).__name__ not in _PULSE_AXIS_DRIVES:
-            self._card.record_fault(self._axis, "invalid_in_mode")  # not in pulse output mode (L5108)
-            return RTN_COMMAND_ERROR
-        self._sys_state()["step_pulse"][self._axis] = pulse
+        g = self._gt()
+        if type(self._card.axes[g.axis].drive).__name__ not in _PULSE_AXIS_DRIVES:
+            return g.refuse("invalid_in_mode")  # not in pulse output mode (L5108)
+        g.system.step_pulse = [pulse if k == g.axis else p for k, p in enumerate(g.system.step_pulse)]
         return RTN_SUCCESS
 
     def GT_StepDir(self) -> int:
@@ -221,41 +244,41 @@ class _GtSystem:
         ``axis`` (1..4) of the current card."""
         if not _int_in(axis, 1, 4):
             raise ValueError(f"pulse_form.axis = {axis!r} must be 1..4")
-        return "cw_ccw" if self._sys_state()["step_pulse"][int(axis) - 1] else "pulse_dir"
+        return "cw_ccw" if self._gt().system.step_pulse[int(axis) - 1] else "pulse_dir"
 
     # -- general I/O (ch9 L2514-2560, L3375-3440) -----------------------------------------------------------------
     def GT_ExInpt(self):
         """(rtn, EXI0..EXI15 levels, bit n = EXIn) (L3375-3401): the machine's ``card_io.of(card).inputs``."""
-        return self._get(lambda: self._io().input_word(self._t_s()))
+        return (RTN_COMM_ERROR, 0) if self._card is None else (RTN_SUCCESS, self._io().input_word(self._t_s()))
 
     def GT_ExOpt(self, Data) -> int:
         """Writes EXO0..EXO15, bit n = EXOn (L3409-3440); the machine reads ``card_io.of(card).outputs``."""
         if self._card is None:
             return RTN_COMM_ERROR
-        if not _int_in(Data, 0, 0xFFFF):
-            return self._param_error("illegal_control_param")
-        self._io().outputs = int(Data)
-        return RTN_SUCCESS
+        rtn = self._gt().check(Data, 0, 0xFFFF)
+        if not rtn:
+            self._io().outputs = int(Data)
+        return rtn
 
     def GT_SetTime(self, value) -> int:
         """Width of the output pulse on CN7 pin 23, 0..65535 for 0..16 ms (L5042-5050): recorded as
         ``card_io.of(card).pulse_width_s`` = value x 16 ms / 65535 (decision GF6)."""
         if self._card is None:
             return RTN_COMM_ERROR
-        if not _int_in(value, 0, 65535):
-            return self._param_error("illegal_control_param")
-        self._io().pulse_width_s = int(value) * 16e-3 / 65535
-        return RTN_SUCCESS
+        rtn = self._gt().check(value, 0, 65535)
+        if not rtn:
+            self._io().pulse_width_s = int(value) * 16e-3 / 65535
+        return rtn
 
     # -- A/D (L3498-3520, L4585-4595) -----------------------------------------------------------------------------
     def GT_SetAdcChn(self, value) -> int:
         """Number of A/D channels converted, 1..8 (default 8, decision GF7) (L4585-4595)."""
         if self._card is None:
             return RTN_COMM_ERROR
-        if not _int_in(value, 1, 8):
-            return self._param_error("illegal_control_param")
-        self._sys_state()["adc_chn"] = int(value)
-        return RTN_SUCCESS
+        rtn = self._gt().check(value, 1, 8)
+        if not rtn:
+            self._gt().system.adc_chn = int(value)
+        return rtn
 
     def GT_GetAdc(self, Channel):
         """(rtn, A/D result of channel 1..8): 0..2047 for 0..+10 V, 2048..4095 for -0..-10 V (code = 2048 abs(V) / 10,
@@ -263,10 +286,10 @@ class _GtSystem:
         beyond GT_SetAdcChn's number."""
         if self._card is None:
             return RTN_COMM_ERROR, 0
-        if not _int_in(Channel, 1, self._sys_state()["adc_chn"]):
-            return self._param_error("illegal_control_param"), 0
-        t = math.floor(self._t_s() * _ADC_RATE_HZ) / _ADC_RATE_HZ
-        v = self._io().volts(int(Channel) - 1, t)
+        rtn = self._gt().check(Channel, 1, self._gt().system.adc_chn)
+        if rtn:
+            return rtn, 0
+        v = self._io().volts(int(Channel) - 1, math.floor(self._t_s() * _ADC_RATE_HZ) / _ADC_RATE_HZ)
         code = min(2047, int(abs(v) / 10.0 * 2048))
         return RTN_SUCCESS, code if v >= 0 else 2048 + code
 
@@ -276,114 +299,95 @@ class _GtSystem:
         return 0 if enc is None else enc.counts(t_s)
 
     def _aux_sign(self, n: int) -> int:
-        flip = (self._io().encoder_reversed ^ self._sys_state()["enc_sns"]) >> (4 + n) & 1
+        flip = (self._io().encoder_reversed ^ self._gt().system.enc_sns) >> (4 + n) & 1
         return -1 if flip else 1
 
     def _aux_value(self, n: int, t_s: float | None = None) -> int:
         t = self._t_s() if t_s is None else t_s
-        return self._aux_sign(n) * self._aux_raw(n, t) - self._sys_state()["enc_zero"][n]
+        return self._aux_sign(n) * self._aux_raw(n, t) - self._gt().system.enc_zero[n]
 
-    def _enc_num(self, num):
-        return int(num) - 1 if _int_in(num, 1, 2) else None
+    def _enc_read(self, num, read):
+        """(rtn, read(encoder 0/1)) for auxiliary encoder ``num`` 1 or 2; 7 for another number."""
+        if self._card is None:
+            return RTN_COMM_ERROR, 0
+        rtn = self._gt().check(num, 1, 2)
+        return (rtn, 0) if rtn else (RTN_SUCCESS, read(int(num) - 1))
 
     def GT_EncPos(self, Enc_Num):
         """(rtn, position of auxiliary encoder 1 or 2, pulse) (L3241-3262)."""
-        if self._card is None:
-            return RTN_COMM_ERROR, 0
-        n = self._enc_num(Enc_Num)
-        if n is None:
-            return self._param_error("illegal_control_param"), 0
-        return RTN_SUCCESS, self._aux_value(n)
+        return self._enc_read(Enc_Num, self._aux_value)
 
     def GT_EncVel(self, Enc_Num):
         """(rtn, velocity of auxiliary encoder 1 or 2, pulse/ST): its count change over the last sample time
         (L3302-3323)."""
-        if self._card is None:
-            return RTN_COMM_ERROR, 0
-        n = self._enc_num(Enc_Num)
-        if n is None:
-            return self._param_error("illegal_control_param"), 0
-        t, ts = self._t_s(), self._card.servo_period_s
-        return RTN_SUCCESS, float(self._aux_value(n, t) - self._aux_value(n, max(0.0, t - ts)))
+        t = self._t_s() if self._card is not None else 0.0
+        ts = self._card.servo_period_s if self._card is not None else 0.0
+        return self._enc_read(Enc_Num, lambda n: float(self._aux_value(n, t) - self._aux_value(n, max(0.0, t - ts))))
 
     def GT_ClrEncPos(self, EncNum) -> int:
         """Sets the position of auxiliary encoder 1 or 2 to 0 (L3124-3136); 0 success, -1 failure (a number other
         than 1, 2)."""
-        if self._card is None:
+        if self._card is None or not _int_in(EncNum, 1, 2):
             return RTN_COMM_ERROR
-        n = self._enc_num(EncNum)
-        if n is None:
-            return RTN_COMM_ERROR
-        self._sys_state()["enc_zero"][n] += self._aux_value(n)
+        st, n = self._gt().system, int(EncNum) - 1
+        st.enc_zero = [z + self._aux_value(n) * (k == n) for k, z in enumerate(st.enc_zero)]
         return RTN_SUCCESS
 
     def GT_SetEncCapt(self) -> int:
         """Arms the INDEX capture of auxiliary encoder 1 and clears its captured flag (L4733-4747)."""
         if self._card is None:
             return RTN_COMM_ERROR
-        st = self._sys_state()
-        prev = st["capt"]["value"] if st["capt"] else 0
-        st["capt"] = {"armed": True, "tick": self._card.tick, "raw": self._aux_raw(0, self._t_s()), "value": prev,
-                      "captured": False}
+        st = self._gt().system
+        st.capt_set, st.capt_armed, st.capt_captured = True, True, False
+        st.capt_tick, st.capt_raw = self._card.tick, self._aux_raw(0, self._t_s())
         return RTN_SUCCESS
 
-    def _capt_scan(self) -> dict | None:
+    def _capt_scan(self):
         """Looks at auxiliary encoder 1 tick by tick since the last look for its first index mark."""
-        cap = self._sys_state()["capt"]
-        if cap is None or not cap["armed"]:
-            return cap
-        enc = self._io().aux_encoders[0]
-        ts = self._card.servo_period_s
-        for k in range(cap["tick"] + 1, self._card.tick + 1):
+        st = self._gt().system
+        if not st.capt_armed:
+            return st
+        enc, ts = self._io().aux_encoders[0], self._card.servo_period_s
+        for k in range(st.capt_tick + 1, self._card.tick + 1):
             raw = self._aux_raw(0, k * ts)
-            mark = enc.index_between(cap["raw"], raw) if enc is not None else None
-            cap["raw"], cap["tick"] = raw, k
+            mark = enc.index_between(st.capt_raw, raw) if enc is not None else None
+            st.capt_raw, st.capt_tick = raw, k
             if mark is not None:
-                cap.update(armed=False, captured=True,
-                           value=self._aux_sign(0) * mark - self._sys_state()["enc_zero"][0])
+                st.capt_armed, st.capt_captured = False, True
+                st.capt_value = self._aux_sign(0) * mark - st.enc_zero[0]
                 break
-        cap["tick"] = max(cap["tick"], self._card.tick)
-        return cap
+        st.capt_tick = max(st.capt_tick, self._card.tick)
+        return st
 
     def GT_GetEncSts(self):
         """(rtn, auxiliary encoder capture status): bit 3 = the INDEX mark was captured since GT_SetEncCapt
         (L3741-3753)."""
-        if self._card is None:
-            return RTN_COMM_ERROR, 0
-        cap = self._capt_scan()
-        return RTN_SUCCESS, 0x8 if cap is not None and cap["captured"] else 0
+        return (RTN_COMM_ERROR, 0) if self._card is None else (RTN_SUCCESS, 0x8 if self._capt_scan().capt_captured
+                                                               else 0)
 
     def GT_GetEncCapt(self):
         """(rtn, position of auxiliary encoder 1 at the captured INDEX mark, pulse); the previous value while
         nothing is captured (L3727-3739)."""
-        if self._card is None:
-            return RTN_COMM_ERROR, 0
-        cap = self._capt_scan()
-        return RTN_SUCCESS, cap["value"] if cap is not None else 0
+        return (RTN_COMM_ERROR, 0) if self._card is None else (RTN_SUCCESS, self._capt_scan().capt_value)
 
-    # -- not simulated (UNSUPPORTED) -------------------------------------------------------------------------------
-    def _unsupported(self, read: bool = False):
-        if self._card is None:
-            return (RTN_COMM_ERROR, 0) if read else RTN_COMM_ERROR
-        self._card.record_fault(self._axis, "not_simulated")
-        return (RTN_COMMAND_ERROR, 0) if read else RTN_COMMAND_ERROR
 
-    def GT_BrkOn(self, *args) -> int:
-        """Not simulated (UNSUPPORTED): returns 1."""
-        return self._unsupported()
+def _int_in(value, lo, hi) -> bool:
+    """Whether `value` is a whole number in lo..hi (the handle arguments: card number, address, IRQ)."""
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        return False
+    return math.isfinite(v) and v == int(v) and lo <= v <= hi
 
-    def GT_HomeSense(self, *args) -> int:
-        """Not simulated (UNSUPPORTED): returns 1."""
-        return self._unsupported()
 
-    def GT_SetLmt(self, *args) -> int:
-        """Not simulated (UNSUPPORTED): returns 1."""
-        return self._unsupported()
+def _unsupported(name: str, read: bool):
+    def body(self, *args):
+        rtn = RTN_COMM_ERROR if self._card is None else self._gt().refuse("not_simulated")
+        return (rtn, 0) if read else rtn
 
-    def GT_SetBgCommandSet(self, *args) -> int:
-        """Not simulated (UNSUPPORTED): returns 1."""
-        return self._unsupported()
+    return gt_adapter(name, "*args", body, f"Not simulated (UNSUPPORTED): returns {'(1, 0)' if read else '1'}. "
+                      f"{UNSUPPORTED[name]}.", returns=None if read else "int")
 
-    def GT_GetBgCommandResult(self, *args):
-        """Not simulated (UNSUPPORTED): returns (1, 0)."""
-        return self._unsupported(read=True)
+
+for _name in UNSUPPORTED:
+    setattr(_GtSystem, _name, _unsupported(_name, _name.startswith("GT_Get")))

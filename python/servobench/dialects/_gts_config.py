@@ -3,25 +3,24 @@ L5450-5495, L7056-7091), the read-backs (GT_GetTrapPrm, GT_GetJogPrm, GT_GetStop
 EtherCAT / configuration-file calls of the iDEABOX examples (L611, L625) and the iDEABOX ``...Mx`` forms
 (``CardNo`` first, L3825), as a mixin of :class:`~servobench.dialects.gts.GtsController`.
 
-Behaviour stays the Card's (alarm enable, limit enable and polarity, stops); what the card does not hold (stop
-decelerations, stop inputs, the filter windows, the GPI polarity) is kept here per controller and applied at the
-reads and at ``GT_Stop``, through a per-tick hook (:meth:`_tick_hook`) only while something needs it. Units:
-pulse, ms, pulse/ms, pulse/ms^2; axes from 1. Decisions GS1-GS18 (docs/decisions.md, Session 10)."""
+Behaviour stays the Card's (alarm enable, limit enable and polarity, stops); what the kernel does not hold (stop
+decelerations, stop inputs, the filter windows and their history, the GPI levels and polarity, the jog smoothing)
+is the card's GUC/iDEABOX module (``_core.gts_card(card.kernel)``, ``vendor/googol/gts_card.hpp``), which checks
+the stop inputs and records the velocity history at the end of every tick. Units: pulse, ms, pulse/ms,
+pulse/ms^2; axes from 1. Decisions GS1-GS18 (docs/decisions.md, Session 10), GT11-GT13 (Session 11)."""
 
 from __future__ import annotations
 
 import math
-from collections import deque
 from dataclasses import dataclass
 
-from .._core import CardCommandRefused
+from .. import _core
 from ._controller import GOOGOL_COMMAND_ERROR, GOOGOL_COMM_ERROR, GOOGOL_PARAMETER_ERROR, GOOGOL_SUCCESS
 
 # Digital input types of GT_GetDi / GT_SetStopIo (GUC L253-266): MC_GPI 4, MC_ARRIVE 5 (GTS-400-PX, L259).
 MC_LIMIT_POSITIVE, MC_LIMIT_NEGATIVE, MC_ALARM, MC_HOME, MC_GPI, MC_ARRIVE = 0, 1, 2, 3, 4, 5
 # GT_FollowSwitchNowEx methods (iDEABOX L5427-5429).
 FOLLOW_SWITCH_SEGMENT, FOLLOW_SWITCH_TABLE = 1, 2
-_FILTER_EXP_MAX = 7  # window 2^n, n 0..7 (iDEABOX L3795-3797, L5462)
 
 #: Calls the simulation cannot carry out: defined, return the manual's code, listed with the reason.
 UNSUPPORTED_CONFIG = {
@@ -58,42 +57,12 @@ def _int_in(v, lo, hi) -> bool:
     return math.isfinite(x) and x == int(x) and lo <= x <= hi
 
 
-def _pos(v, hi=32767.0) -> bool:
-    """0 < v <= hi (the manuals' (0, 32767] decelerations, GUC L240-243)."""
-    try:
-        x = float(v)
-    except (TypeError, ValueError):
-        return False
-    return math.isfinite(x) and 0 < x <= hi
-
-
 class GtsConfigMixin:
     """System configuration, velocity filters, read-backs and the Mx forms (see the module docstring)."""
 
-    # -- per-controller state the card does not hold ------------------------------------------------------------
-    def _cfg(self) -> dict:
-        st = self.__dict__.get("_cfg_state")
-        if st is None or st["card"] is not self._card:
-            st = self.__dict__["_cfg_state"] = {
-                "card": self._card, "gpi": 0, "gpi_sns": 0, "stop_dec": {}, "crd_stop_dec": {}, "stop_io": {},
-                "prf_exp": {}, "enc_exp": {}, "hist": None, "hooks": {}, "sid": None, "jog": {}, "trap": {}}
-        return st
-
-    def _tick_hook(self, name: str, fn) -> None:
-        """Registers ``fn(card)`` to run after every servo tick (``None`` removes it); one card timer event
-        (:meth:`~servobench.Card.on_event`, ``timer_ticks=1``) carries all hooks while any is set."""
-        st = self._cfg()
-        hooks = st["hooks"]
-        if fn is None:
-            hooks.pop(name, None)
-        else:
-            hooks[name] = fn
-        card = self._card
-        if hooks and st["sid"] is None:
-            st["sid"] = card.on_event(lambda c, _ev: [h(c) for h in list(hooks.values())], timer_ticks=1)
-        elif not hooks and st["sid"] is not None:
-            card.remove_event(st["sid"])
-            st["sid"] = None
+    def _gts(self):
+        """The open card's GUC/iDEABOX module (its registers: stop decelerations and inputs, filters, GPI...)."""
+        return _core.gts_card(self._card.kernel)
 
     def _ok_axis(self, axis) -> bool:
         return self._card is not None and _int_in(axis, 1, len(self._card))
@@ -110,7 +79,7 @@ class GtsConfigMixin:
             raise ValueError(f"set_inputs.bits = {bits!r} is outside the allowed range 0..0xFFFF (GPI 1..16)")
         if self._card is None:
             raise RuntimeError("set_inputs: no card is open (GT_Open first)")
-        self._cfg()["gpi"] = int(bits)
+        self._gts().set_inputs(int(bits))
 
     # -- GUC §3.1 system configuration ---------------------------------------------------------------------------
     def GT_AlarmOn(self, axis) -> int:
@@ -192,24 +161,7 @@ class GtsConfigMixin:
         L267-276)."""
         if self._card is None:
             return GOOGOL_COMM_ERROR
-        if not _int_in(sense, 0, 0xFFFF):
-            return GOOGOL_PARAMETER_ERROR
-        self._cfg()["gpi_sns"] = int(sense)
-        return GOOGOL_SUCCESS
-
-    def _di_word(self, diType) -> int:
-        c = self._card
-        n = min(8, len(c))
-        if diType == MC_GPI:
-            st = self._cfg()
-            return st["gpi"] ^ st["gpi_sns"]
-        if diType == MC_LIMIT_POSITIVE:  # 1 = the limit triggers (its polarity applied, GT_LmtSns)
-            return sum(int(c.pos_limit_input(k)) << k for k in range(n))
-        if diType == MC_LIMIT_NEGATIVE:
-            return sum(int(c.neg_limit_input(k)) << k for k in range(n))
-        if diType == MC_ALARM:  # the latched drive-alarm event (status bit 1)
-            return sum(int(c.events(k) >> 1 & 1) << k for k in range(n))
-        raise CardCommandRefused("MC_HOME / MC_ARRIVE inputs are not wired in the simulated machine")
+        return self._gts().set_gpi_sense(sense)
 
     def GT_GetDi(self, diType):
         """(rtn, input word): MC_LIMIT_POSITIVE / MC_LIMIT_NEGATIVE bit k = the limit of axis k+1 triggers,
@@ -219,7 +171,8 @@ class GtsConfigMixin:
             return GOOGOL_COMM_ERROR, 0
         if diType not in (MC_LIMIT_POSITIVE, MC_LIMIT_NEGATIVE, MC_ALARM, MC_HOME, MC_GPI, MC_ARRIVE):
             return GOOGOL_PARAMETER_ERROR, 0
-        return self._get(lambda: int(self._di_word(diType)))
+        word = self._gts().input_word(diType)
+        return (GOOGOL_COMMAND_ERROR, 0) if word is None else (GOOGOL_SUCCESS, word)
 
     def GT_SetAdcFilter(self, adc, filterTime) -> int:
         """ADC input filter, adc 1..8, filterTime 1..50 (GUC L207, L278-280; GTS-400-PX only): the simulated card
@@ -237,56 +190,21 @@ class GtsConfigMixin:
         instead of its acc / at once (decision GS7)."""
         if not self._ok_axis(profile):
             return self._code()
-        if not _pos(decSmoothStop) or not _pos(decAbruptStop):
-            return GOOGOL_PARAMETER_ERROR
-        self._cfg()["stop_dec"][int(profile)] = (float(decSmoothStop), float(decAbruptStop))
-        return GOOGOL_SUCCESS
+        return self._gts().set_stop_dec(profile, decSmoothStop, decAbruptStop)
 
     def GT_GetStopDec(self, profile):
         """(rtn, decSmoothStop, decAbruptStop) pulse/ms^2 set by GT_SetStopDec; (0, 0) before (GUC L204,
         L244-247)."""
         if not self._ok_axis(profile):
             return self._code(), 0.0, 0.0
-        return (GOOGOL_SUCCESS,) + self._cfg()["stop_dec"].get(int(profile), (0.0, 0.0))
+        return (GOOGOL_SUCCESS,) + tuple(self._gts().stop_dec(int(profile) - 1))
 
     def GT_GetCrdStopDec(self, crd):
         """(rtn, decSmoothStop, decAbruptStop) pulse/ms^2 of ``crd`` 1..2 set by GT_SetCrdStopDec; (0, 0) before
         (GUC L362, L710-712; iDEABOX L5551-5560)."""
         if self._card is None or not _int_in(crd, 1, 2):
             return self._code(), 0.0, 0.0
-        return (GOOGOL_SUCCESS,) + self._cfg()["crd_stop_dec"].get(int(crd), (0.0, 0.0))
-
-    def _stop_axis(self, a: int, abrupt: bool) -> None:
-        """GT_Stop of one point-to-point / jog axis: at its GT_SetStopDec deceleration when set, else the card's
-        smooth stop (the move's acc) or abrupt stop (at once)."""
-        dec = self._cfg()["stop_dec"].get(a + 1)
-        if dec is None or not self._card.moving(a):
-            if abrupt:
-                self._card.abrupt_stop(a)
-            else:
-                self._card.stage_smooth_stop(a)
-                self._card.update(1 << a)
-            return
-        acc = self._card.staged(a)["acc"]
-        self._card.stage_acc(a, dec[1 if abrupt else 0] * self._ms ** 2)
-        self._card.stage_smooth_stop(a)
-        self._card.update(1 << a)
-        if acc > 0:  # the move's acc again for the next move (staged, committed by its update)
-            self._card.stage_acc(a, acc)
-
-    def _stop_io_hook(self, card) -> None:
-        st = self._cfg()
-        for axis, (stop_type, in_type, index) in list(st["stop_io"].items()):
-            a = axis - 1
-            try:
-                active = self._di_word(in_type) >> (index - 1) & 1
-            except CardCommandRefused:
-                continue
-            if active and (card.moving(a) or card.mode(a) not in ("t_curve", "jog")):
-                if card.mode(a) in ("t_curve", "s_curve", "jog") and card.group_of(a) < 0:
-                    self._stop_axis(a, stop_type == 0)
-                elif card.group_of(a) < 0:
-                    card.abrupt_stop(a)
+        return (GOOGOL_SUCCESS,) + tuple(self._gts().crd_stop_dec(int(crd)))
 
     def GT_SetStopIo(self, axis, stopType, inputType, inputIndex) -> int:
         """Maps an input to a stop of ``axis`` 1..8: stopType 0 emergency / 1 smooth; inputType MC_LIMIT_POSITIVE,
@@ -295,15 +213,7 @@ class GtsConfigMixin:
         MC_ARRIVE: 1 (not wired, GS6)."""
         if not self._ok_axis(axis) or not _int_in(axis, 1, 8):
             return self._code()
-        hi = 16 if inputType == MC_GPI else 8
-        if stopType not in (0, 1) or inputType not in (0, 1, 2, 3, 4, 5) or not _int_in(inputIndex, 1, hi):
-            return GOOGOL_PARAMETER_ERROR
-        if inputType in (MC_HOME, MC_ARRIVE):
-            return GOOGOL_COMMAND_ERROR
-        st = self._cfg()
-        st["stop_io"][int(axis)] = (int(stopType), int(inputType), int(inputIndex))
-        self._tick_hook("stop_io", self._stop_io_hook)
-        return GOOGOL_SUCCESS
+        return self._gts().set_stop_io(axis, stopType, inputType, inputIndex)
 
     # -- read-backs of the profile parameters ------------------------------------------------------------------
     def GT_GetTrapPrm(self, profile):
@@ -321,64 +231,32 @@ class GtsConfigMixin:
         if not self._ok_axis(profile):
             return self._code(), None
         a = int(profile) - 1
-        smooth = self._cfg()["jog"].get(int(profile), 0.0)
+        smooth = self._gts().jog_smooth(a)
         acc = self._card.staged(a)["acc"] / self._ms ** 2
         return GOOGOL_SUCCESS, TJogPrmExt(acc=acc, dec=acc, smooth=smooth)
 
     # -- iDEABOX velocity filters (§4.5 L3773-3801) ---------------------------------------------------------------
-    def _hist_hook(self, card) -> None:
-        h = self._cfg()["hist"]
-        h.append(tuple((card.profile_vel(k), card.actual_pos(k)) for k in range(len(card))))
-
-    def _history(self):
-        st = self._cfg()
-        if st["hist"] is None:
-            st["hist"] = deque(maxlen=(1 << _FILTER_EXP_MAX) + 1)
-            self._hist_hook(self._card)
-            self._tick_hook("vel_history", self._hist_hook)
-        return st["hist"]
-
-    def _filtered_vel(self, a: int, which: int, exp: int) -> float:
-        """pulse/ms: the mean velocity over the last 2^exp ticks (the moving-average window, L3795-3797), over the
-        ticks recorded so far while the history is shorter. which 0: the profile velocity (the mean of its
-        per-tick values); 1: the encoder velocity (actual-position change over the window / its ticks)."""
-        h = self._history()
-        if which == 0:
-            n = min(1 << exp, len(h))
-            return sum(h[-1 - k][a][0] for k in range(n)) / (n * self._ms) if n else 0.0
-        n = min(1 << exp, len(h) - 1)
-        if n <= 0:
-            return 0.0
-        return (h[-1][a][1] - h[-1 - n][a][1]) / (n * self._ms)
-
-    def _set_filter(self, key, axis, exp) -> int:
-        if not self._ok_axis(axis) or not _int_in(exp, 0, _FILTER_EXP_MAX):
-            return self._code()
-        self._cfg()[key][int(axis)] = int(exp)
-        self._history()
-        return GOOGOL_SUCCESS
-
     def GT_SetAxisPrfVelFilter(self, axis, filterNumExp) -> int:
         """Profile-velocity filter of ``axis``: window 2^filterNumExp ticks, filterNumExp 0..7 (iDEABOX L3801,
         L7075-7091). GT_GetPrfVel then reads the mean over that window (decision GS9)."""
-        return self._set_filter("prf_exp", axis, filterNumExp)
+        return self._gts().set_prf_vel_filter(axis, filterNumExp) if self._ok_axis(axis) else self._code()
 
     def GT_GetAxisPrfVelFilter(self, axis):
         """(rtn, filterNumExp) of the profile-velocity filter, 0 by default (iDEABOX L5474-5495)."""
         if not self._ok_axis(axis):
             return self._code(), 0
-        return GOOGOL_SUCCESS, self._cfg()["prf_exp"].get(int(axis), 0)
+        return GOOGOL_SUCCESS, self._gts().prf_vel_filter(int(axis) - 1)
 
     def GT_SetAxisEncVelFilter(self, axis, filterNumExp) -> int:
         """Encoder-velocity filter of ``axis``: window 2^filterNumExp ticks, 0..7 (iDEABOX L3793-3797,
         L7056-7071). GT_GetEncVel then reads the mean over that window (GS9)."""
-        return self._set_filter("enc_exp", axis, filterNumExp)
+        return self._gts().set_enc_vel_filter(axis, filterNumExp) if self._ok_axis(axis) else self._code()
 
     def GT_GetAxisEncVelFilter(self, axis):
         """(rtn, filterNumExp) of the encoder-velocity filter, 0 by default (iDEABOX L5450-5470)."""
         if not self._ok_axis(axis):
             return self._code(), 0
-        return GOOGOL_SUCCESS, self._cfg()["enc_exp"].get(int(axis), 0)
+        return GOOGOL_SUCCESS, self._gts().enc_vel_filter(int(axis) - 1)
 
     def GT_GetEncVel(self, axis, count=1):
         """(rtn, encoder velocity, pulse/ms): the actual-position change over the last 2^n ticks / 2^n
@@ -387,7 +265,7 @@ class GtsConfigMixin:
         if not self._ok_axis(axis):
             return self._code(), 0.0
         a = int(axis) - 1
-        return self._get(lambda: self._filtered_vel(a, 1, self._cfg()["enc_exp"].get(a + 1, 0)))
+        return self._get(lambda: self._gts().filtered_enc_vel(a))
 
     # -- iDEABOX EtherCAT and configuration file ------------------------------------------------------------------
     def GT_IsEcatReady(self):

@@ -97,6 +97,17 @@ class GtsProgramMixin:
                                                "pages": [dict() for _ in range(N_PAGES)], "current": None}
         return st
 
+    def _tick_hook(self, name: str, fn) -> None:
+        """Runs ``fn(card)`` after every servo tick while the program's threads run (``None`` stops it): one card
+        timer event (:meth:`~servobench.Card.on_event`, ``timer_ticks=1``). ``name`` is "threads" (the only
+        per-tick work left in Python: the motion program is the host's Python code, decision GT12)."""
+        st = self._mp()
+        if fn is not None and st.get("sid") is None:
+            st["sid"] = self._card.on_event(lambda c, _ev: fn(c), timer_ticks=1)
+        elif fn is None and st.get("sid") is not None:
+            self._card.remove_event(st["sid"])
+            st["sid"] = None
+
     def _close_program(self) -> None:
         """Stops every thread (GT_Close / GT_Reset / a new download)."""
         st = self._mp()

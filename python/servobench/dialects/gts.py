@@ -41,6 +41,7 @@ from ..card import Card
 from ._controller import DialectController, export_functions, register32, wrap32  # noqa: F401
 from ._gts_config import (FOLLOW_SWITCH_SEGMENT, FOLLOW_SWITCH_TABLE, MC_ARRIVE, UNSUPPORTED_CONFIG,  # noqa: F401
                           GtsConfigMixin, TJogPrmExt, TTrapPrm, attach_mx_forms)
+from ._gt_system import gt_adapter
 from ._gts_program import UNSUPPORTED_PROGRAM, GtsProgramMixin, TCompileInfo, TThreadSts, TVarInfo  # noqa: F401
 
 # Return codes (GUC Tab 2-1 L165-180; iDEABOX Table 3-1 L333-361).
@@ -108,10 +109,6 @@ class TCrdPrm:
 class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
     """One GUC-ECAT / iDEABOX program's view of a :class:`~servobench.Card` (its advanced functions)."""
 
-    def __init__(self):
-        super().__init__()
-        self._la = {}  # (crd, fifo) -> look-ahead window n (0 = off)
-
     # -- plumbing -------------------------------------------------------------------------------------------
     def _do(self, fn, *args) -> int:
         return self._googol_do(fn, *args)
@@ -155,13 +152,18 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
             return RTN_COMM_ERROR
         if not _int_in(crd, 1, 2) or not _int_in(fifo, 0, 1):
             return RTN_PARAMETER_ERROR
-        try:
-            pair = self._card.crd(int(crd))
-        except (CardCommandRefused, MotionCommandRefused):
-            return RTN_COMMAND_ERROR
-        if self._la.get((int(crd), int(fifo)), 0) > 0 and pair.coords.dim > 3:
+        rtn = self._gts().check_push(int(crd), int(fifo))  # 1 crd not set up, 7 look-ahead on a 4-D crd
+        return rtn or self._do(push, self._fifo(crd, fifo))
+
+    def _outside(self, crd, axis, ok, push, fifo) -> int:
+        """A buffered command of an axis outside the crd (GUC L647, L1052-1060): 7 for a bad value or axis or an
+        axis of the crd itself, else :meth:`_push`."""
+        if self._card is None:
+            return RTN_COMM_ERROR
+        if not ok or not _int_in(axis, 1, min(8, len(self._card))) \
+                or (_int_in(crd, 1, 2) and self._card.group_of(int(axis) - 1) == int(crd) - 1):
             return RTN_PARAMETER_ERROR
-        return self._do(push, pair.fifo(int(fifo)))
+        return self._push(crd, fifo, push)
 
     # -- system and basic axis calls used by the examples ---------------------------------------------------
     def GT_Open(self, card: Card | None = None, **axis_parts) -> int:
@@ -173,7 +175,6 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
         if card is None and not axis_parts:
             card = self._machine_card()
         self._card = card if card is not None else Card(8, **axis_parts)
-        self._la = {}
         return RTN_SUCCESS
 
     def GT_Close(self) -> int:
@@ -181,79 +182,15 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
         if self._card is None:
             return RTN_COMM_ERROR
         self._close_program()
-        for name in list(self._cfg()["hooks"]):
-            self._tick_hook(name, None)
         self._card = None
         return RTN_SUCCESS
 
     def GT_Reset(self) -> int:
         """Resets the controller (card reset: no crd, PVT or cam, drives off); the motion-program threads stop
         (the downloaded program stays until power-off, GUC L2245)."""
-        self._la = {}
         if self._card is not None:
             self._close_program()
         return self._do(lambda: self._card.reset())
-
-    def GT_AxisOn(self, axis) -> int:
-        """Enables the drive of ``axis`` (1..)."""
-        if not self._axis_ok(axis):
-            return self._bad()
-        return self._do(self._card.axis_on, int(axis) - 1)
-
-    def GT_AxisOff(self, axis) -> int:
-        """Disables the drive of ``axis``."""
-        if not self._axis_ok(axis):
-            return self._bad()
-        return self._do(self._card.axis_off, int(axis) - 1)
-
-    def GT_ClrSts(self, axis, count=1) -> int:
-        """Clears the latched status of ``count`` axes from ``axis`` (iDEABOX L629)."""
-        if not self._axis_ok(axis) or not _int_in(count, 1, len(self._card) - int(axis) + 1):
-            return self._bad()
-        return self._do(lambda: [self._card.clear_events(a, 0xFFF) for a in range(int(axis) - 1, int(axis) - 1 + int(count))])
-
-    def GT_ZeroPos(self, axis, count=1) -> int:
-        """Actual (encoder) = target = profile position = 0 on ``count`` axes from ``axis`` (pulse), the mechanism
-        unmoved. iDEABOX L647/L848 only call it (``GT_ZeroPos(axis, 1)``); the meaning is the Googol one (GT
-        L5196-5206, GE L5907-5913; decision VF3): at rest only. Returns 0; 1 with nothing changed if any of the
-        axes moves, runs a sequence, or is in gear or a coordinate system; 7 for a bad axis or count."""
-        if not self._axis_ok(axis) or not _int_in(count, 1, len(self._card) - int(axis) + 1):
-            return self._bad()
-        return self._do(self._card.zero_pos_range, int(axis) - 1, int(count))
-
-    def GT_GetSts(self, axis, count=1):
-        """(rtn, status) of ``axis``: the card's status word (GT layout; bit 10 = 0x400 the profile moves, the
-        only bit the GUC seed uses, L2643-2645; decision V60)."""
-        if not self._axis_ok(axis):
-            return self._bad(), 0
-        return self._get(lambda: _core.gt_axis_status(self._card.kernel, int(axis) - 1))
-
-    def GT_GetPrfPos(self, profile, count=1):
-        """(rtn, profile position, pulse)."""
-        if not self._axis_ok(profile):
-            return self._bad(), 0.0
-        return self._get(lambda: wrap32(self._card.profile_pos(int(profile) - 1)))
-
-    def GT_GetPrfVel(self, profile, count=1):
-        """(rtn, profile velocity, pulse/ms)."""
-        if not self._axis_ok(profile):
-            return self._bad(), 0.0
-        exp = self._cfg()["prf_exp"].get(int(profile), 0)
-        if exp:  # GT_SetAxisPrfVelFilter: the mean over the last 2^exp ticks (iDEABOX L3801; GS9)
-            return self._get(lambda: self._filtered_vel(int(profile) - 1, 0, exp))
-        return self._get(lambda: self._card.profile_vel(int(profile) - 1) / self._ms)
-
-    def GT_GetEncPos(self, axis, count=1):
-        """(rtn, encoder (actual) position, pulse)."""
-        if not self._axis_ok(axis):
-            return self._bad(), 0.0
-        return self._get(lambda: wrap32(self._card.actual_pos(int(axis) - 1)))
-
-    def GT_PrfTrap(self, profile) -> int:
-        """Point-to-point (trapezoid) mode (refused while moving)."""
-        if not self._axis_ok(profile):
-            return self._bad()
-        return self._do(self._card.set_mode, int(profile) - 1, "t_curve")
 
     def GT_SetTrapPrm(self, profile, acc, dec=None, velStart=0, smoothTime=0) -> int:
         """TTrapPrm acc (and dec), pulse/ms^2 > 0, as scalars or a :class:`TTrapPrm` as ``acc`` (GUC L2898-2908
@@ -268,12 +205,6 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
             return RTN_PARAMETER_ERROR
         return self._do(self._card.stage_acc, int(profile) - 1, float(acc) * self._ms ** 2)
 
-    def GT_PrfJog(self, profile) -> int:
-        """Jog mode (refused while moving)."""
-        if not self._axis_ok(profile):
-            return self._bad()
-        return self._do(self._card.set_mode, int(profile) - 1, "jog")
-
     def GT_SetJogPrm(self, profile, acc, dec=None, smooth=0) -> int:
         """Jog acc (dec taken equal, V61), pulse/ms^2 > 0, smooth 0..1 (recorded, GS17): scalars or a
         :class:`TJogPrmExt` as ``acc`` (iDEABOX Ex 4-1 L726-730 passes the struct)."""
@@ -285,28 +216,8 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
             return RTN_PARAMETER_ERROR
         rtn = self.GT_SetTrapPrm(profile, acc, dec)
         if rtn == RTN_SUCCESS:
-            self._cfg()["jog"][int(profile)] = float(smooth)
+            self._gts().set_jog_smooth(int(profile) - 1, float(smooth))
         return rtn
-
-    def GT_SetVel(self, profile, vel) -> int:
-        """Target velocity, pulse/ms (signed in jog mode) (staged)."""
-        if not self._axis_ok(profile) or _num(vel) is None:
-            return self._bad()
-        return self._do(self._card.stage_vel, int(profile) - 1, float(vel) * self._ms)
-
-    def GT_SetPos(self, profile, pos) -> int:
-        """Target position, pulse (staged)."""
-        if not self._axis_ok(profile) or not _int_in(pos, _POS_MIN, _POS_MAX):
-            return self._bad()
-        return self._do(self._card.stage_pos, int(profile) - 1, float(pos))
-
-    def GT_Update(self, mask) -> int:
-        """Starts the staged motion of the masked axes (bit k = axis k+1)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if not _int_in(mask, 1, (1 << len(self._card)) - 1):
-            return RTN_PARAMETER_ERROR
-        return self._do(self._card.update, int(mask))
 
     def GT_Stop(self, mask, option=0) -> int:
         """Stops the masked axes (bit k = axis k+1) and coordinate systems (bit 12 = crd 1, 13 = crd 2, iDEABOX
@@ -330,7 +241,7 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
                     if self._card.group_of(a) < 0:
                         self._card.abrupt_stop(a)
                 elif option & (1 << a) or self._card.moving(a):
-                    self._stop_axis(a, bool(option & (1 << a)))  # GT_SetStopDec decelerations (GS7)
+                    self._gts().stop_axis(a, bool(option & (1 << a)))  # GT_SetStopDec decelerations (GS7)
 
         return self._do(stop)
 
@@ -357,7 +268,7 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
             syn_vel_max=float(prm.synVelMax), syn_acc_max=float(prm.synAccMax), even_time_ms=float(prm.evenTime),
             set_origin=bool(prm.setOriginFlag), origin_pos=[float(p) for p in prm.originPos]))
         if rtn == RTN_SUCCESS:
-            self._la = {k: v for k, v in self._la.items() if k[0] != int(crd)}
+            self._gts().drop_lookahead(int(crd))
         return rtn
 
     def GT_GetCrdPrm(self, crd):
@@ -383,31 +294,6 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
         return self._push(crd, fifo, lambda f: f.line([float(p) for p in end], float(vel), float(acc),
                                                       float(vel_end), g0))
 
-    def GT_LnXY(self, crd, x, y, synVel, synAcc, velEnd=0, fifo=0) -> int:
-        """Line to (x, y) absolute, pulse; synVel pulse/ms, synAcc pulse/ms^2, velEnd (ignored under look-ahead)
-        (GUC L449-481; iDEABOX L5881)."""
-        return self._ln(crd, (x, y), synVel, synAcc, velEnd, fifo, False)
-
-    def GT_LnXYZ(self, crd, x, y, z, synVel, synAcc, velEnd=0, fifo=0) -> int:
-        """3-D line (iDEABOX L5975)."""
-        return self._ln(crd, (x, y, z), synVel, synAcc, velEnd, fifo, False)
-
-    def GT_LnXYZA(self, crd, x, y, z, a, synVel, synAcc, velEnd=0, fifo=0) -> int:
-        """4-D line (iDEABOX L6026); no look-ahead on a 4-D crd (7)."""
-        return self._ln(crd, (x, y, z, a), synVel, synAcc, velEnd, fifo, False)
-
-    def GT_LnXYG0(self, crd, x, y, synVel, synAcc, fifo=0) -> int:
-        """G0 line: ends at rest even under look-ahead (GUC L322-327, iDEABOX L1594-1606)."""
-        return self._ln(crd, (x, y), synVel, synAcc, 0, fifo, True)
-
-    def GT_LnXYZG0(self, crd, x, y, z, synVel, synAcc, fifo=0) -> int:
-        """3-D G0 line."""
-        return self._ln(crd, (x, y, z), synVel, synAcc, 0, fifo, True)
-
-    def GT_LnXYZAG0(self, crd, x, y, z, a, synVel, synAcc, fifo=0) -> int:
-        """4-D G0 line."""
-        return self._ln(crd, (x, y, z, a), synVel, synAcc, 0, fifo, True)
-
     def _arc(self, crd, plane, p1, p2, shape, circle_dir, vel, acc, vel_end, fifo):
         if self._card is None:
             return RTN_COMM_ERROR
@@ -429,126 +315,6 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
 
         return self._push(crd, fifo, push)
 
-    def GT_ArcXYR(self, crd, x, y, radius, circleDir, synVel, synAcc, velEnd=0, fifo=0) -> int:
-        """XY arc to (x, y) with radius (> 0: <= 180 deg, < 0: > 180 deg), circleDir 0 CW / 1 CCW; 7 when no such
-        arc exists (GUC L509-587, L892, L906; iDEABOX L3874)."""
-        return self._arc(crd, "xy", x, y, (radius,), circleDir, synVel, synAcc, velEnd, fifo)
-
-    def GT_ArcXYC(self, crd, x, y, xCenter, yCenter, circleDir, synVel, synAcc, velEnd=0, fifo=0) -> int:
-        """XY arc to (x, y) about the centre offset (xCenter, yCenter) from the start; end = start is a full
-        circle (GUC L904; iDEABOX L3812)."""
-        return self._arc(crd, "xy", x, y, (xCenter, yCenter), circleDir, synVel, synAcc, velEnd, fifo)
-
-    def GT_ArcYZR(self, crd, y, z, radius, circleDir, synVel, synAcc, velEnd=0, fifo=0) -> int:
-        """YZ arc, radius form (iDEABOX L4002)."""
-        return self._arc(crd, "yz", y, z, (radius,), circleDir, synVel, synAcc, velEnd, fifo)
-
-    def GT_ArcYZC(self, crd, y, z, yCenter, zCenter, circleDir, synVel, synAcc, velEnd=0, fifo=0) -> int:
-        """YZ arc, centre form (iDEABOX L3941)."""
-        return self._arc(crd, "yz", y, z, (yCenter, zCenter), circleDir, synVel, synAcc, velEnd, fifo)
-
-    def GT_ArcZXR(self, crd, z, x, radius, circleDir, synVel, synAcc, velEnd=0, fifo=0) -> int:
-        """ZX arc, radius form (iDEABOX L4131)."""
-        return self._arc(crd, "zx", z, x, (radius,), circleDir, synVel, synAcc, velEnd, fifo)
-
-    def GT_ArcZXC(self, crd, z, x, zCenter, xCenter, circleDir, synVel, synAcc, velEnd=0, fifo=0) -> int:
-        """ZX arc, centre form (iDEABOX L4070)."""
-        return self._arc(crd, "zx", z, x, (zCenter, xCenter), circleDir, synVel, synAcc, velEnd, fifo)
-
-    def GT_BufIO(self, crd, doType, doMask, doValue, fifo=0) -> int:
-        """Buffered digital output: MC_GPO / MC_ENABLE / MC_CLEAR, bits of doValue where doMask is 1 (GUC
-        L588-597)."""
-        if doType not in _DO_TYPE or not _int_in(doMask, 0, 0xFFFF) or not _int_in(doValue, 0, 0xFFFF):
-            return self._bad()
-        return self._push(crd, fifo, lambda f: f.buf_io(_DO_TYPE[doType], int(doMask), int(doValue)))
-
-    def GT_BufDelay(self, crd, delayTime, fifo=0) -> int:
-        """Buffered dwell, ms, 0..16383 (GUC L598-602)."""
-        if not _int_in(delayTime, 0, 16383):
-            return self._bad()
-        return self._push(crd, fifo, lambda f: f.buf_delay(float(delayTime)))
-
-    def GT_BufDA(self, crd, chn, daValue, fifo=0) -> int:
-        """Buffered analog output, channel 1..8, -32768..32767 (GUC L603-608)."""
-        if not _int_in(chn, 1, 8) or not _int_in(daValue, -32768, 32767):
-            return self._bad()
-        return self._push(crd, fifo, lambda f: f.buf_da(int(chn), float(daValue)))
-
-    def GT_BufLmtsOn(self, crd, axis, limitType=-1, fifo=0) -> int:
-        """Buffered limit enable: limitType 0 positive, 1 negative, -1 both (GUC L609-624)."""
-        if not _int_in(axis, 1, 8) or limitType not in (-1, 0, 1):
-            return self._bad()
-        return self._push(crd, fifo, lambda f: f.buf_lmts(int(axis), int(limitType), True))
-
-    def GT_BufLmtsOff(self, crd, axis, limitType=-1, fifo=0) -> int:
-        """Buffered limit disable."""
-        if not _int_in(axis, 1, 8) or limitType not in (-1, 0, 1):
-            return self._bad()
-        return self._push(crd, fifo, lambda f: f.buf_lmts(int(axis), int(limitType), False))
-
-    def GT_BufSetStopIo(self, crd, axis, stopType, inputType, inputIndex, fifo=0) -> int:
-        """Buffered stop-input mapping: stopType 0 emergency / 1 smooth, inputType 0..4, index 1..8 (GPI 1..16)
-        (GUC L625-645)."""
-        hi = 16 if inputType == MC_GPI else 8
-        if not _int_in(axis, 1, 8) or stopType not in (0, 1) or inputType not in (0, 1, 2, 3, 4) \
-                or not _int_in(inputIndex, 1, hi):
-            return self._bad()
-        return self._push(crd, fifo, lambda f: f.buf_set_stop_io(int(axis), int(stopType), int(inputType),
-                                                                 int(inputIndex)))
-
-    def GT_BufMove(self, crd, moveAxis, pos, vel, acc, modal, fifo=0) -> int:
-        """Buffered point-to-point move of an axis outside the crd to the absolute ``pos`` (pulse) at vel
-        (pulse/ms) and acc (pulse/ms^2); modal 1 blocks the FIFO until it ends (GUC L646-656, L1052-1055)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if not _int_in(moveAxis, 1, min(8, len(self._card))) or not _int_in(pos, -2**31, 2**31 - 1) \
-                or not _open_in(vel, 0, math.inf) or not _open_in(acc, 0, math.inf) or modal not in (0, 1):
-            return RTN_PARAMETER_ERROR
-        if _int_in(crd, 1, 2) and self._card.group_of(int(moveAxis) - 1) == int(crd) - 1:
-            return RTN_PARAMETER_ERROR  # not a crd axis (GUC L647)
-        return self._push(crd, fifo, lambda f: f.buf_move(int(moveAxis), float(pos), float(vel), float(acc),
-                                                          bool(modal)))
-
-    def GT_BufGear(self, crd, gearAxis, pos, fifo=0) -> int:
-        """Buffered follow of the next segment by an axis outside the crd over the relative ``pos`` (pulse)
-        (GUC L657-661, L1058-1060)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if not _int_in(gearAxis, 1, min(8, len(self._card))) or not _int_in(pos, -2**31, 2**31 - 1):
-            return RTN_PARAMETER_ERROR
-        if _int_in(crd, 1, 2) and self._card.group_of(int(gearAxis) - 1) == int(crd) - 1:
-            return RTN_PARAMETER_ERROR
-        return self._push(crd, fifo, lambda f: f.buf_gear(int(gearAxis), float(pos)))
-
-    def GT_SetUserSegNum(self, crd, segNum, fifo=0) -> int:
-        """Buffered user segment number (GUC L662-665)."""
-        if not _int_in(segNum, -2**31, 2**31 - 1):
-            return self._bad()
-        return self._push(crd, fifo, lambda f: f.set_user_seg_num(int(segNum)))
-
-    def _fifo_get(self, crd, fifo, fn):
-        if self._card is None or not self._crd_args_ok(crd, fifo):
-            return self._bad(), 0
-        return self._get(lambda: fn(self._fifo(crd, fifo)))
-
-    def GT_GetUserSegNum(self, crd, fifo=0):
-        """(rtn, user segment number) (GUC L666-670)."""
-        return self._fifo_get(crd, fifo, lambda f: int(f.state.user_seg_num))
-
-    def GT_GetRemainderSegNum(self, crd, fifo=0):
-        """(rtn, segments not finished) (GUC L671-675)."""
-        return self._fifo_get(crd, fifo, lambda f: int(f.remaining_segments))
-
-    def GT_CrdSpace(self, crd, fifo=0):
-        """(rtn, free FIFO entries) (GUC L979)."""
-        return self._fifo_get(crd, fifo, lambda f: int(f.fifo_space))
-
-    def GT_CrdClear(self, crd, fifo=0) -> int:
-        """Clears a FIFO and its segment count (refused while it moves) (GUC L697-699, L855-857)."""
-        if self._card is None or not self._crd_args_ok(crd, fifo):
-            return self._bad()
-        return self._do(lambda: self._fifo(crd, fifo).clear())
-
     def GT_InitLookAhead(self, crd, fifo, T, accMax, n, pLookAheadBuf=None) -> int:
         """Look-ahead on a FIFO: corner time T (ms), accMax (pulse/ms^2), window n segments (0 = off) (GUC
         L725-732, L908-995; iDEABOX L5848-5879). The buffer argument is accepted and not used."""
@@ -560,7 +326,7 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
         rtn = self._do(lambda: self._fifo(crd, fifo).init_lookahead(
             LookAheadParams(t_ms=float(T), acc_max=float(accMax), n=float(n))))
         if rtn == RTN_SUCCESS:
-            self._la[(int(crd), int(fifo))] = int(n)
+            self._gts().set_lookahead(int(crd), int(fifo), int(n))
         return rtn
 
     def GT_CrdData(self, crd, pCrdData=None, fifo=0) -> int:
@@ -576,65 +342,6 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
         except (CardCommandRefused, MotionCommandRefused):
             return RTN_COMMAND_ERROR
         return RTN_SUCCESS if ok else RTN_COMMAND_ERROR
-
-    def GT_CrdStart(self, mask, option=0) -> int:
-        """Starts (or resumes) the masked crds (bit 0 crd 1, bit 1 crd 2) on FIFO0 or, option bit set, FIFO1;
-        1 when a crd is not set up, the other FIFO moves, FIFO0 resumes away from its breakpoint (GUC L1005,
-        iDEABOX L4560) or the e-stop / an alarm is active (GUC L684-690; iDEABOX L4527-4566)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if not _int_in(mask, 1, 3) or not _int_in(option, 0, 3):
-            return RTN_PARAMETER_ERROR
-        return self._do(self._card.crd_start, int(mask), int(option))
-
-    def GT_CrdStatus(self, crd, fifo=0):
-        """(rtn, run, segment): run 1 while the FIFO interpolates, segment = segments completed since the crd was
-        set up or cleared (GUC L692-700; iDEABOX L4574-4599)."""
-        if self._card is None or not self._crd_args_ok(crd, fifo):
-            return self._bad(), 0, 0
-        return self._get(lambda: tuple(self._card.crd_status(int(crd), int(fifo))), 2)
-
-    def GT_SetOverride(self, crd, synVelRatio) -> int:
-        """Feed override (0, 1] (GUC L701-703; iDEABOX L7419-7441)."""
-        if self._card is None or not _int_in(crd, 1, 2):
-            return self._bad()
-        x = _num(synVelRatio)
-        if x is None or not 0 < x <= 1:
-            return RTN_PARAMETER_ERROR
-
-        def set_():
-            pair = self._card.crd(int(crd))
-            pair.fifo(0).set_override(x)
-            pair.fifo(1).set_override(x)
-
-        return self._do(set_)
-
-    def GT_SetCrdStopDec(self, crd, decSmoothStop, decAbruptStop) -> int:
-        """Path stop decelerations, (0, 32767) pulse/ms^2 each (GUC L704-709; iDEABOX L7182-7201)."""
-        if self._card is None or not _int_in(crd, 1, 2):
-            return self._bad()
-        if not _open_in(decSmoothStop, 0, 32767) or not _open_in(decAbruptStop, 0, 32767):
-            return RTN_PARAMETER_ERROR
-
-        def set_():
-            pair = self._card.crd(int(crd))
-            for k in (0, 1):
-                pair.fifo(k).set_stop_dec(float(decSmoothStop), float(decAbruptStop))
-            self._cfg()["crd_stop_dec"][int(crd)] = (float(decSmoothStop), float(decAbruptStop))
-
-        return self._do(set_)
-
-    def GT_GetCrdPos(self, crd):
-        """(rtn, [dimension] crd coordinates, pulse) (GUC L5499-5519; crd = profile - origin)."""
-        if self._card is None or not _int_in(crd, 1, 2):
-            return self._bad(), []
-        return self._get(lambda: list(self._card.crd_pos(int(crd))))
-
-    def GT_GetCrdVel(self, crd):
-        """(rtn, path speed, pulse/ms) (iDEABOX L5581-5595)."""
-        if self._card is None or not _int_in(crd, 1, 2):
-            return self._bad(), 0.0
-        return self._get(lambda: float(self._card.crd_vel(int(crd))))
 
     # -- PVT (GUC §4.2 L1116-2100, iDEABOX §4.4) ------------------------------------------------------------
     def _table(self, tableId, build) -> int:
@@ -654,12 +361,6 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
         if len(a) != int(count):
             raise ValueError(f"the arrays hold fewer than count = {count} values")
         return a
-
-    def GT_PrfPvt(self, profile) -> int:
-        """PVT mode (refused while moving) (GUC L1141; iDEABOX L6201)."""
-        if not self._axis_ok(profile):
-            return self._bad()
-        return self._do(self._card.set_pvt, int(profile) - 1)
 
     def GT_PvtTable(self, tableId, count, pTime, pPos, pVel) -> int:
         """PVT data (ms, pulse, pulse/ms), replaces the table (GUC L1169; iDEABOX L6404)."""
@@ -718,170 +419,250 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
         except ValueError:
             return RTN_PARAMETER_ERROR, None
 
-    def GT_PvtTableSelect(self, profile, tableId) -> int:
-        """Selects the table (at rest at once, while moving at the end of the pass); 1 on an empty table (GUC
-        L1279, L1308; iDEABOX L7030-7048)."""
-        if not self._axis_ok(profile) or not _int_in(tableId, 1, 32):
-            return self._bad()
-        return self._do(self._card.pvt_select, int(profile) - 1, int(tableId))
-
-    def GT_SetPvtLoop(self, profile, loop) -> int:
-        """Passes, 0 = infinite (GUC L1150, L1312; iDEABOX L7443)."""
-        if not self._axis_ok(profile) or not _int_in(loop, 0, 2**31 - 1):
-            return self._bad()
-        return self._do(self._card.pvt_loop, int(profile) - 1, float(loop))
-
-    def GT_GetPvtLoop(self, profile):
-        """(rtn, passes done, loop setting) (GUC L1156-1159; iDEABOX L5765-5779)."""
-        if not self._axis_ok(profile):
-            return self._bad(), 0, 0
-        return self._get(lambda: tuple(self._card.pvt_loop_status(int(profile) - 1)), 2)
-
-    def GT_PvtStart(self, mask) -> int:
-        """Starts the masked axes (bit k = axis k+1) on the same tick; 1 on an empty table or an axis not in PVT
-        mode (GUC L1279-1310; iDEABOX L6305-6321)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if not _int_in(mask, 1, (1 << len(self._card)) - 1):
-            return RTN_PARAMETER_ERROR
-        return self._do(self._card.pvt_start, int(mask))
-
-    def GT_PvtStatus(self, profile, count=1):
-        """(rtn, table id, PVT time ms) (GUC L1285-1289; iDEABOX L6374-6390)."""
-        if not self._axis_ok(profile):
-            return self._bad(), 0, 0.0
-        return self._get(lambda: tuple(self._card.pvt_status(int(profile) - 1)), 2)
-
     # -- FollowEx (iDEABOX §2.1 L394-929, API L4612-5448, L7212-7417) --------------------------------------
-    def _setup(self, profile, **changes) -> int:
-        a = int(profile) - 1
-        return self._do(lambda: self._card.follow_configure(a, self._card.follow(a).setup.replace(**changes)))
 
-    def GT_PrfFollowEx(self, profile, dir=0) -> int:
-        """FollowEx mode, dir 0 both master directions, 1 positive only, -1 negative only (L6173-6199). The master
-        is axis 1 (axis 2 for profile 1) until GT_SetFollowMasterEx (decision V62)."""
-        if not self._axis_ok(profile) or dir not in (-1, 0, 1):
-            return self._bad()
-        a = int(profile) - 1
-        return self._do(self._card.set_follow, a, _core.FollowExSetup(dir=float(dir)), 1 if a == 0 else 0)
+# -- the table: name, parameters, argument checks (one per parameter, None = unchecked), the call, the manual ----------
+# A check is _AX (axis/profile 1..axes), _MASK (1..2^axes-1), ("int", lo, hi), ("open", lo, hi) (lo < v < hi),
+# ("oc", lo, hi) (lo < v <= hi), ("num",) (finite) or a tuple of the allowed values; a failed check returns 7 (-1
+# without a card); a read row returns its failure placeholders after the code.
+_AX, _MASK, _CRD, _FIFO, _NUM = "axis", "mask", ("int", 1, 2), ("int", 0, 1), ("num",)
+_I32 = ("int", -2**31, 2**31 - 1)
 
-    def GT_SetFollowMasterEx(self, profile, masterIndex, masterType=FOLLOW_MASTER_PROFILE, masterItem=0) -> int:
-        """Master axis and signal: type 1 encoder, 2 profile, 3 axis (item 0 planned / 1 encoder); masterIndex !=
-        profile (L7316-7363)."""
-        if not self._axis_ok(profile) or not self._axis_ok(masterIndex) or masterType not in (1, 2, 3) \
-                or masterItem not in (0, 1):
-            return self._bad()
-        rtn = self._do(self._card.follow_set_master, int(profile) - 1, int(masterIndex) - 1)
-        return rtn if rtn else self._setup(profile, master_type=float(masterType), master_item=float(masterItem))
 
-    def GT_GetFollowMasterEx(self, profile):
-        """(rtn, masterIndex, masterType, masterItem)."""
-        if not self._axis_ok(profile):
-            return self._bad(), 0, 0, 0
+def _check(self, spec, value, args) -> bool:
+    n = len(self._card)
+    if callable(spec):
+        return spec(n, value, args)
+    if spec == _AX:
+        return _int_in(value, 1, n)
+    if spec == _MASK:
+        return _int_in(value, 1, (1 << n) - 1)
+    kind = spec[0] if spec and isinstance(spec[0], str) else "in"
+    x = _num(value) if kind != "in" else None
+    return {"int": lambda: _int_in(value, *spec[1:]), "open": lambda: _open_in(value, *spec[1:]),
+            "oc": lambda: x is not None and spec[1] < x <= spec[2], "num": lambda: x is not None,
+            "in": lambda: value in spec}[kind]()
 
-        def get():
-            a = int(profile) - 1
-            s = self._card.follow(a).setup
-            return self._card.follow_master(a) + 1, int(s.master_type), int(s.master_item)
 
-        return self._get(get, 3)
+def _row(name, params, checks, call, doc, read=None):
+    """A GTS method: checks, then ``call(self, card, *args)`` run the Googol way (a command's code, or a read's
+    (0, value...)); ``read`` the failure placeholders of a read (None: a command)."""
+    def body(self, *args):
+        if self._card is None or not all(s is None or _check(self, s, a, args) for s, a in zip(checks, args)):
+            code = RTN_COMM_ERROR if self._card is None else RTN_PARAMETER_ERROR
+            return code if read is None else (code, *read)
+        if read is None:
+            return self._do(lambda: call(self, self._card, *args))
+        return self._get(lambda: call(self, self._card, *args), len(read))
 
-    def GT_SetFollowMemoryEx(self, profile, memory) -> int:
-        """FIFO size: 0 16 segments, 1 512, 2 GT_SetFollowExMaxSegment (before any data, L489-514)."""
-        if not self._axis_ok(profile) or memory not in (0, 1, 2):
-            return self._bad()
-        return self._setup(profile, memory=float(memory))
+    return gt_adapter(name, params, body, doc, "int" if read is None else None, "GtsController",
+                      "servobench.dialects.gts")
 
-    def GT_GetFollowMemoryEx(self, profile):
-        """(rtn, memory)."""
-        if not self._axis_ok(profile):
-            return self._bad(), 0
-        return self._get(lambda: int(self._card.follow(int(profile) - 1).setup.memory))
 
-    def GT_SetFollowExMaxSegment(self, profile, maxsegment) -> int:
-        """Dynamic FIFO size, 1..2147483647 (L497-501, L7254)."""
-        if not self._axis_ok(profile) or not _int_in(maxsegment, 1, 2**31 - 1):
-            return self._bad()
-        return self._setup(profile, max_segment=float(maxsegment))
+def _raw(name, params, body, doc):
+    """A GTS command whose body checks its own arguments (a path or buffered command over _ln / _arc / _push)."""
+    return gt_adapter(name, params, body, doc, "int", "GtsController", "servobench.dialects.gts")
 
-    def GT_FollowClearEx(self, profile, fifo=0) -> int:
-        """Clears a FIFO (refused while it is in use) (L4612-4619)."""
-        if not self._axis_ok(profile) or fifo not in (0, 1):
-            return self._bad()
-        return self._do(lambda: self._card.follow(int(profile) - 1).clear(int(fifo)))
 
-    def GT_FollowDataPercentEx(self, profile, masterSegment, slaveSegment, type=FOLLOW_SEGMENT_NORMAL, percent=0,
-                               fifo=0) -> int:
-        """One segment, cumulative master/slave positions from the follow start (decision M30), type NORMAL /
-        EVEN / STOP / CONTINUE, percent 0..100; 1 when the FIFO is full (the data is lost, L532-534, L4740)."""
-        if not self._axis_ok(profile) or type not in (0, 1, 2, 3) or fifo not in (0, 1):
-            return self._bad()
-        return self._do(lambda: self._card.follow(int(profile) - 1).data_percent(
-            float(masterSegment), float(slaveSegment), int(type), float(percent), int(fifo)))
+def _follow(c, profile, **changes):
+    a = int(profile) - 1
+    c.follow_configure(a, c.follow(a).setup.replace(**changes))
 
-    def GT_FollowDataCompleteEx(self, profile, fifo, n, pMasterSegment, pSlaveSegment, pA=None, pB=None, pC=None,
-                                velRatioBegin=0.0, velRatioEnd=0.0) -> int:
-        """Complete data: n knots (cumulative), clamped C2 spline with the end ratios (L4644-4677); pA/pB/pC are
-        the manual's work arrays (not used)."""
-        if not self._axis_ok(profile) or fifo not in (0, 1) or not _int_in(n, 2, 2**31 - 1):
-            return self._bad()
-        return self._do(lambda: self._card.follow(int(profile) - 1).data_complete(
-            self._arr(pMasterSegment, n), self._arr(pSlaveSegment, n), float(velRatioBegin), float(velRatioEnd),
-            int(fifo)))
 
-    def GT_FollowSpaceEx(self, profile, fifo=0):
-        """(rtn, free segments) (L4796)."""
-        if not self._axis_ok(profile) or fifo not in (0, 1):
-            return self._bad(), 0
-        return self._get(lambda: int(self._card.follow(int(profile) - 1).space(int(fifo))))
-
-    def GT_SetFollowEventEx(self, profile, event, masterDir=1, pos=0) -> int:
-        """Start event: 1 START, 2 PASS (the master crosses pos moving in masterDir +-1) (L536-542, L7212-7240)."""
-        if not self._axis_ok(profile) or event not in (1, 2) or masterDir not in (-1, 1) \
-                or not _int_in(pos, -2**31, 2**31 - 1):
-            return self._bad()
-        return self._setup(profile, event=float(event), master_dir=float(masterDir), event_pos=float(pos))
-
-    def GT_GetFollowEventEx(self, profile):
-        """(rtn, event, masterDir, pos)."""
-        if not self._axis_ok(profile):
-            return self._bad(), 0, 0, 0
-
-        def get():
-            s = self._card.follow(int(profile) - 1).setup
-            return int(s.event), int(s.master_dir), int(s.event_pos)
-
-        return self._get(get, 3)
-
-    def GT_SetFollowLoopEx(self, profile, loop) -> int:
-        """Passes; < 1 = infinite (L7287-7302)."""
-        if not self._axis_ok(profile) or not _int_in(loop, -32768, 32767):
-            return self._bad()
-        return self._setup(profile, loop=float(loop))
-
-    def GT_GetFollowLoopEx(self, profile):
-        """(rtn, completed passes) (L5649-5661)."""
-        if not self._axis_ok(profile):
-            return self._bad(), 0
-        return self._get(lambda: int(self._card.follow(int(profile) - 1).loop_count))
-
-    def GT_FollowStartEx(self, mask, option=0) -> int:
-        """Starts the masked slaves (bit k = axis k+1) on FIFO 0 or, option bit set, FIFO 1 (L4827-4916); 1 for an
-        axis not in FollowEx mode, already following, or with an empty FIFO."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if not _int_in(mask, 1, (1 << len(self._card)) - 1) or not _int_in(option, 0, (1 << len(self._card)) - 1):
-            return RTN_PARAMETER_ERROR
-        return self._do(self._card.follow_start, int(mask), int(option))
-
-    def GT_FollowSwitchEx(self, mask) -> int:
-        """Switches the masked slaves to their other FIFO at the end of the pass; only while moving, the other FIFO
-        must hold data (L5196-5293)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if not _int_in(mask, 1, (1 << len(self._card)) - 1):
-            return RTN_PARAMETER_ERROR
-        return self._do(self._card.follow_switch, int(mask))
+_COUNT = (lambda n, v, args: _int_in(v, 1, n - int(args[0]) + 1))  # count axes from axis
+_SEG = "crd, x, y, synVel, synAcc, velEnd=0, fifo=0"
+_ROWS = [
+    _row("GT_AxisOn", "axis", (_AX,), lambda s, c, a: c.axis_on(int(a) - 1), "Enables the drive of ``axis`` (1..)."),
+    _row("GT_AxisOff", "axis", (_AX,), lambda s, c, a: c.axis_off(int(a) - 1), "Disables the drive of ``axis``."),
+    _row("GT_ClrSts", "axis, count=1", (_AX, _COUNT), lambda s, c, a, n: [c.clear_events(k, 0xFFF) for k in
+                                                                          range(int(a) - 1, int(a) - 1 + int(n))],
+         "Clears the latched status of ``count`` axes from ``axis`` (iDEABOX L629)."),
+    _row("GT_ZeroPos", "axis, count=1", (_AX, _COUNT), lambda s, c, a, n: c.zero_pos_range(int(a) - 1, int(n)),
+         "Actual (encoder) = target = profile position = 0 on ``count`` axes from ``axis`` (pulse), the mechanism "
+         "unmoved (iDEABOX L647/L848; the Googol meaning, GT L5196-5206, GE L5907-5913; decision VF3): at rest "
+         "only. 1 with nothing changed if any of the axes moves, runs a sequence, or is in gear or a crd; 7 for a "
+         "bad axis or count."),
+    _row("GT_GetSts", "axis, count=1", (_AX, None), lambda s, c, a, n: _core.gt_axis_status(c.kernel, int(a) - 1),
+         "(rtn, status) of ``axis``: the card's status word (GT layout; bit 10 = 0x400 the profile moves, the only "
+         "bit the GUC seed uses, L2643-2645; decision V60).", (0,)),
+    _row("GT_GetPrfPos", "profile, count=1", (_AX, None), lambda s, c, p, n: wrap32(c.profile_pos(int(p) - 1)),
+         "(rtn, profile position, pulse).", (0.0,)),
+    _row("GT_GetPrfVel", "profile, count=1", (_AX, None),
+         lambda s, c, p, n: s._gts().filtered_prf_vel(int(p) - 1) if s._gts().prf_vel_filter(int(p) - 1)
+         else c.profile_vel(int(p) - 1) / s._ms,
+         "(rtn, profile velocity, pulse/ms); with GT_SetAxisPrfVelFilter the mean over the last 2^exp ticks "
+         "(iDEABOX L3801; GS9).", (0.0,)),
+    _row("GT_GetEncPos", "axis, count=1", (_AX, None), lambda s, c, a, n: wrap32(c.actual_pos(int(a) - 1)),
+         "(rtn, encoder (actual) position, pulse).", (0.0,)),
+    _row("GT_PrfTrap", "profile", (_AX,), lambda s, c, p: c.set_mode(int(p) - 1, "t_curve"),
+         "Point-to-point (trapezoid) mode (refused while moving)."),
+    _row("GT_PrfJog", "profile", (_AX,), lambda s, c, p: c.set_mode(int(p) - 1, "jog"), "Jog mode (refused while "
+         "moving)."),
+    _row("GT_SetVel", "profile, vel", (_AX, _NUM), lambda s, c, p, v: c.stage_vel(int(p) - 1, float(v) * s._ms),
+         "Target velocity, pulse/ms (signed in jog mode) (staged)."),
+    _row("GT_SetPos", "profile, pos", (_AX, ("int", _POS_MIN, _POS_MAX)),
+         lambda s, c, p, x: c.stage_pos(int(p) - 1, float(x)), "Target position, pulse (staged)."),
+    _row("GT_Update", "mask", (_MASK,), lambda s, c, m: c.update(int(m)), "Starts the staged motion of the masked "
+         "axes (bit k = axis k+1)."),
+    # coordinate systems (GUC §4.1 L313-1114, iDEABOX §4.3)
+    _raw("GT_LnXY", _SEG, lambda s, crd, x, y, v, a, ve, f: s._ln(crd, (x, y), v, a, ve, f, False),
+         "Line to (x, y) absolute, pulse; synVel pulse/ms, synAcc pulse/ms^2, velEnd (ignored under look-ahead) "
+         "(GUC L449-481; iDEABOX L5881)."),
+    _raw("GT_LnXYZ", "crd, x, y, z, synVel, synAcc, velEnd=0, fifo=0",
+         lambda s, crd, x, y, z, v, a, ve, f: s._ln(crd, (x, y, z), v, a, ve, f, False), "3-D line (iDEABOX L5975)."),
+    _raw("GT_LnXYZA", "crd, x, y, z, a, synVel, synAcc, velEnd=0, fifo=0",
+         lambda s, crd, x, y, z, w, v, a, ve, f: s._ln(crd, (x, y, z, w), v, a, ve, f, False),
+         "4-D line (iDEABOX L6026); no look-ahead on a 4-D crd (7)."),
+    _raw("GT_LnXYG0", "crd, x, y, synVel, synAcc, fifo=0",
+         lambda s, crd, x, y, v, a, f: s._ln(crd, (x, y), v, a, 0, f, True),
+         "G0 line: ends at rest even under look-ahead (GUC L322-327, iDEABOX L1594-1606)."),
+    _raw("GT_LnXYZG0", "crd, x, y, z, synVel, synAcc, fifo=0",
+         lambda s, crd, x, y, z, v, a, f: s._ln(crd, (x, y, z), v, a, 0, f, True), "3-D G0 line."),
+    _raw("GT_LnXYZAG0", "crd, x, y, z, a, synVel, synAcc, fifo=0",
+         lambda s, crd, x, y, z, w, v, a, f: s._ln(crd, (x, y, z, w), v, a, 0, f, True), "4-D G0 line."),
+    *[_raw(f"GT_Arc{pl.upper()}R", f"crd, {u}, {w}, radius, circleDir, synVel, synAcc, velEnd=0, fifo=0",
+           (lambda plane: lambda s, crd, p1, p2, r, d, v, a, ve, f: s._arc(crd, plane, p1, p2, (r,), d, v, a, ve,
+                                                                             f))(pl),
+           f"{pl.upper()} arc to the end point with radius (> 0: <= 180 deg, < 0: > 180 deg), circleDir 0 CW / 1 "
+           f"CCW; 7 when no such arc exists (GUC L509-587, L892, L906; iDEABOX L{line}).")
+      for pl, u, w, line in (("xy", "x", "y", 3874), ("yz", "y", "z", 4002), ("zx", "z", "x", 4131))],
+    *[_raw(f"GT_Arc{pl.upper()}C", f"crd, {u}, {w}, {u}Center, {w}Center, circleDir, synVel, synAcc, velEnd=0, fifo=0",
+           (lambda plane: lambda s, crd, p1, p2, c1, c2, d, v, a, ve, f: s._arc(crd, plane, p1, p2, (c1, c2), d, v,
+                                                                                  a, ve, f))(pl),
+           f"{pl.upper()} arc to the end point about the centre offset from the start; end = start is a full "
+           f"circle (GUC L904; iDEABOX L{line}).")
+      for pl, u, w, line in (("xy", "x", "y", 3812), ("yz", "y", "z", 3941), ("zx", "z", "x", 4070))],
+    _raw("GT_BufIO", "crd, doType, doMask, doValue, fifo=0",
+         lambda s, crd, t, m, v, f: s._bad() if t not in _DO_TYPE or not (_int_in(m, 0, 0xFFFF) and _int_in(
+             v, 0, 0xFFFF)) else s._push(crd, f, lambda q: q.buf_io(_DO_TYPE[t], int(m), int(v))),
+         "Buffered digital output: MC_GPO / MC_ENABLE / MC_CLEAR, bits of doValue where doMask is 1 (GUC "
+         "L588-597)."),
+    _raw("GT_BufDelay", "crd, delayTime, fifo=0", lambda s, crd, t, f: s._bad() if not _int_in(t, 0, 16383)
+         else s._push(crd, f, lambda q: q.buf_delay(float(t))), "Buffered dwell, ms, 0..16383 (GUC L598-602)."),
+    _raw("GT_BufDA", "crd, chn, daValue, fifo=0", lambda s, crd, ch, v, f: s._bad() if not (
+        _int_in(ch, 1, 8) and _int_in(v, -32768, 32767)) else s._push(crd, f, lambda q: q.buf_da(int(ch), float(v))),
+         "Buffered analog output, channel 1..8, -32768..32767 (GUC L603-608)."),
+    *[_raw(f"GT_BufLmts{w}", "crd, axis, limitType=-1, fifo=0", (lambda on: lambda s, crd, a, t, f: s._bad() if not (
+        _int_in(a, 1, 8) and t in (-1, 0, 1)) else s._push(crd, f, lambda q: q.buf_lmts(int(a), int(t), on)))(on),
+           f"Buffered limit {'enable' if on else 'disable'}: limitType 0 positive, 1 negative, -1 both (GUC "
+           "L609-624).") for w, on in (("On", True), ("Off", False))],
+    _raw("GT_BufSetStopIo", "crd, axis, stopType, inputType, inputIndex, fifo=0",
+         lambda s, crd, a, st, it, ix, f: s._bad() if not (_int_in(a, 1, 8) and st in (0, 1) and it in range(5) and
+                                                           _int_in(ix, 1, 16 if it == MC_GPI else 8))
+         else s._push(crd, f, lambda q: q.buf_set_stop_io(int(a), int(st), int(it), int(ix))),
+         "Buffered stop-input mapping: stopType 0 emergency / 1 smooth, inputType 0..4, index 1..8 (GPI 1..16) "
+         "(GUC L625-645)."),
+    _raw("GT_BufMove", "crd, moveAxis, pos, vel, acc, modal, fifo=0",
+         lambda s, crd, a, p, v, ac, m, f: s._outside(crd, a, (_int_in(p, -2**31, 2**31 - 1) and _open_in(v, 0, math.inf)
+                                                               and _open_in(ac, 0, math.inf) and m in (0, 1)),
+                                                     lambda q: q.buf_move(int(a), float(p), float(v), float(ac),
+                                                                          bool(m)), f),
+         "Buffered point-to-point move of an axis outside the crd to the absolute ``pos`` (pulse) at vel (pulse/ms) "
+         "and acc (pulse/ms^2); modal 1 blocks the FIFO until it ends (GUC L646-656, L1052-1055)."),
+    _raw("GT_BufGear", "crd, gearAxis, pos, fifo=0",
+         lambda s, crd, a, p, f: s._outside(crd, a, _int_in(p, -2**31, 2**31 - 1),
+                                            lambda q: q.buf_gear(int(a), float(p)), f),
+         "Buffered follow of the next segment by an axis outside the crd over the relative ``pos`` (pulse) (GUC "
+         "L657-661, L1058-1060)."),
+    _raw("GT_SetUserSegNum", "crd, segNum, fifo=0", lambda s, crd, n, f: s._bad() if not _int_in(n, -2**31, 2**31 - 1)
+         else s._push(crd, f, lambda q: q.set_user_seg_num(int(n))), "Buffered user segment number (GUC L662-665)."),
+    _row("GT_GetUserSegNum", "crd, fifo=0", (_CRD, _FIFO), lambda s, c, crd, f: int(s._fifo(crd, f).state.user_seg_num),
+         "(rtn, user segment number) (GUC L666-670).", (0,)),
+    _row("GT_GetRemainderSegNum", "crd, fifo=0", (_CRD, _FIFO),
+         lambda s, c, crd, f: int(s._fifo(crd, f).remaining_segments), "(rtn, segments not finished) (GUC L671-675).",
+         (0,)),
+    _row("GT_CrdSpace", "crd, fifo=0", (_CRD, _FIFO), lambda s, c, crd, f: int(s._fifo(crd, f).fifo_space),
+         "(rtn, free FIFO entries) (GUC L979).", (0,)),
+    _row("GT_CrdClear", "crd, fifo=0", (_CRD, _FIFO), lambda s, c, crd, f: s._fifo(crd, f).clear(),
+         "Clears a FIFO and its segment count (refused while it moves) (GUC L697-699, L855-857)."),
+    _row("GT_CrdStart", "mask, option=0", (("int", 1, 3), ("int", 0, 3)), lambda s, c, m, o: c.crd_start(int(m), int(o)),
+         "Starts (or resumes) the masked crds (bit 0 crd 1, bit 1 crd 2) on FIFO0 or, option bit set, FIFO1; 1 when "
+         "a crd is not set up, the other FIFO moves, FIFO0 resumes away from its breakpoint (GUC L1005, iDEABOX "
+         "L4560) or the e-stop / an alarm is active (GUC L684-690; iDEABOX L4527-4566)."),
+    _row("GT_CrdStatus", "crd, fifo=0", (_CRD, _FIFO), lambda s, c, crd, f: tuple(c.crd_status(int(crd), int(f))),
+         "(rtn, run, segment): run 1 while the FIFO interpolates, segment = segments completed since the crd was set "
+         "up or cleared (GUC L692-700; iDEABOX L4574-4599).", (0, 0)),
+    _row("GT_SetOverride", "crd, synVelRatio", (_CRD, ("oc", 0, 1)),
+         lambda s, c, crd, r: [c.crd(int(crd)).fifo(k).set_override(float(r)) for k in (0, 1)],
+         "Feed override (0, 1] (GUC L701-703; iDEABOX L7419-7441)."),
+    _row("GT_SetCrdStopDec", "crd, decSmoothStop, decAbruptStop", (_CRD, ("open", 0, 32767), ("open", 0, 32767)),
+         lambda s, c, crd, d1, d2: ([c.crd(int(crd)).fifo(k).set_stop_dec(float(d1), float(d2)) for k in (0, 1)],
+                                    s._gts().set_crd_stop_dec(int(crd), float(d1), float(d2))),
+         "Path stop decelerations, (0, 32767) pulse/ms^2 each (GUC L704-709; iDEABOX L7182-7201)."),
+    _row("GT_GetCrdPos", "crd", (_CRD,), lambda s, c, crd: list(c.crd_pos(int(crd))),
+         "(rtn, [dimension] crd coordinates, pulse) (GUC L5499-5519; crd = profile - origin).", ([],)),
+    _row("GT_GetCrdVel", "crd", (_CRD,), lambda s, c, crd: float(c.crd_vel(int(crd))),
+         "(rtn, path speed, pulse/ms) (iDEABOX L5581-5595).", (0.0,)),
+    # PVT (GUC §4.2 L1116-2100, iDEABOX §4.4)
+    _row("GT_PrfPvt", "profile", (_AX,), lambda s, c, p: c.set_pvt(int(p) - 1),
+         "PVT mode (refused while moving) (GUC L1141; iDEABOX L6201)."),
+    _row("GT_PvtTableSelect", "profile, tableId", (_AX, ("int", 1, 32)), lambda s, c, p, t: c.pvt_select(int(p) - 1,
+                                                                                                         int(t)),
+         "Selects the table (at rest at once, while moving at the end of the pass); 1 on an empty table (GUC L1279, "
+         "L1308; iDEABOX L7030-7048)."),
+    _row("GT_SetPvtLoop", "profile, loop", (_AX, ("int", 0, 2**31 - 1)),
+         lambda s, c, p, n: c.pvt_loop(int(p) - 1, float(n)), "Passes, 0 = infinite (GUC L1150, L1312; iDEABOX L7443)."),
+    _row("GT_GetPvtLoop", "profile", (_AX,), lambda s, c, p: tuple(c.pvt_loop_status(int(p) - 1)),
+         "(rtn, passes done, loop setting) (GUC L1156-1159; iDEABOX L5765-5779).", (0, 0)),
+    _row("GT_PvtStart", "mask", (_MASK,), lambda s, c, m: c.pvt_start(int(m)),
+         "Starts the masked axes (bit k = axis k+1) on the same tick; 1 on an empty table or an axis not in PVT mode "
+         "(GUC L1279-1310; iDEABOX L6305-6321)."),
+    _row("GT_PvtStatus", "profile, count=1", (_AX, None), lambda s, c, p, n: tuple(c.pvt_status(int(p) - 1)),
+         "(rtn, table id, PVT time ms) (GUC L1285-1289; iDEABOX L6374-6390).", (0, 0.0)),
+    # FollowEx (iDEABOX §2.1 L394-929, API L4612-5448, L7212-7417)
+    _row("GT_PrfFollowEx", "profile, dir=0", (_AX, (-1, 0, 1)),
+         lambda s, c, p, d: c.set_follow(int(p) - 1, _core.FollowExSetup(dir=float(d)), 1 if int(p) == 1 else 0),
+         "FollowEx mode, dir 0 both master directions, 1 positive only, -1 negative only (L6173-6199). The master is "
+         "axis 1 (axis 2 for profile 1) until GT_SetFollowMasterEx (decision V62)."),
+    _row("GT_SetFollowMasterEx", "profile, masterIndex, masterType=2, masterItem=0", (_AX, _AX, (1, 2, 3), (0, 1)),
+         lambda s, c, p, m, t, i: (c.follow_set_master(int(p) - 1, int(m) - 1),
+                                   _follow(c, p, master_type=float(t), master_item=float(i))),
+         "Master axis and signal: type 1 encoder, 2 profile, 3 axis (item 0 planned / 1 encoder); masterIndex != "
+         "profile (L7316-7363)."),
+    _row("GT_GetFollowMasterEx", "profile", (_AX,), lambda s, c, p: (
+        c.follow_master(int(p) - 1) + 1, int(c.follow(int(p) - 1).setup.master_type),
+        int(c.follow(int(p) - 1).setup.master_item)), "(rtn, masterIndex, masterType, masterItem).", (0, 0, 0)),
+    _row("GT_SetFollowMemoryEx", "profile, memory", (_AX, (0, 1, 2)), lambda s, c, p, m: _follow(c, p, memory=float(m)),
+         "FIFO size: 0 16 segments, 1 512, 2 GT_SetFollowExMaxSegment (before any data, L489-514)."),
+    _row("GT_GetFollowMemoryEx", "profile", (_AX,), lambda s, c, p: int(c.follow(int(p) - 1).setup.memory),
+         "(rtn, memory).", (0,)),
+    _row("GT_SetFollowExMaxSegment", "profile, maxsegment", (_AX, ("int", 1, 2**31 - 1)),
+         lambda s, c, p, m: _follow(c, p, max_segment=float(m)), "Dynamic FIFO size, 1..2147483647 (L497-501, L7254)."),
+    _row("GT_FollowClearEx", "profile, fifo=0", (_AX, (0, 1)), lambda s, c, p, f: c.follow(int(p) - 1).clear(int(f)),
+         "Clears a FIFO (refused while it is in use) (L4612-4619)."),
+    _row("GT_FollowDataPercentEx", "profile, masterSegment, slaveSegment, type=0, percent=0, fifo=0",
+         (_AX, None, None, (0, 1, 2, 3), None, (0, 1)), lambda s, c, p, m, sl, t, pc, f: c.follow(int(p) - 1)
+         .data_percent(float(m), float(sl), int(t), float(pc), int(f)),
+         "One segment, cumulative master/slave positions from the follow start (decision M30), type NORMAL / EVEN / "
+         "STOP / CONTINUE, percent 0..100; 1 when the FIFO is full (the data is lost, L532-534, L4740)."),
+    _row("GT_FollowDataCompleteEx", "profile, fifo, n, pMasterSegment, pSlaveSegment, pA=None, pB=None, pC=None, "
+         "velRatioBegin=0.0, velRatioEnd=0.0", (_AX, (0, 1), ("int", 2, 2**31 - 1)),
+         lambda s, c, p, f, n, ms, ss, pa, pb, pc, vb, ve: c.follow(int(p) - 1).data_complete(
+             s._arr(ms, n), s._arr(ss, n), float(vb), float(ve), int(f)),
+         "Complete data: n knots (cumulative), clamped C2 spline with the end ratios (L4644-4677); pA/pB/pC are the "
+         "manual's work arrays (not used)."),
+    _row("GT_FollowSpaceEx", "profile, fifo=0", (_AX, (0, 1)), lambda s, c, p, f: int(c.follow(int(p) - 1).space(int(f))),
+         "(rtn, free segments) (L4796).", (0,)),
+    _row("GT_SetFollowEventEx", "profile, event, masterDir=1, pos=0", (_AX, (1, 2), (-1, 1), _I32),
+         lambda s, c, p, e, d, x: _follow(c, p, event=float(e), master_dir=float(d), event_pos=float(x)),
+         "Start event: 1 START, 2 PASS (the master crosses pos moving in masterDir +-1) (L536-542, L7212-7240)."),
+    _row("GT_GetFollowEventEx", "profile", (_AX,), lambda s, c, p: (
+        int(c.follow(int(p) - 1).setup.event), int(c.follow(int(p) - 1).setup.master_dir),
+        int(c.follow(int(p) - 1).setup.event_pos)), "(rtn, event, masterDir, pos).", (0, 0, 0)),
+    _row("GT_SetFollowLoopEx", "profile, loop", (_AX, ("int", -32768, 32767)),
+         lambda s, c, p, n: _follow(c, p, loop=float(n)), "Passes; < 1 = infinite (L7287-7302)."),
+    _row("GT_GetFollowLoopEx", "profile", (_AX,), lambda s, c, p: int(c.follow(int(p) - 1).loop_count),
+         "(rtn, completed passes) (L5649-5661).", (0,)),
+    _row("GT_FollowStartEx", "mask, option=0", (_MASK, lambda n, v, a: _int_in(v, 0, (1 << n) - 1)),
+         lambda s, c, m, o: c.follow_start(int(m), int(o)),
+         "Starts the masked slaves (bit k = axis k+1) on FIFO 0 or, option bit set, FIFO 1 (L4827-4916); 1 for an "
+         "axis not in FollowEx mode, already following, or with an empty FIFO."),
+    _row("GT_FollowSwitchEx", "mask", (_MASK,), lambda s, c, m: c.follow_switch(int(m)),
+         "Switches the masked slaves to their other FIFO at the end of the pass; only while moving, the other FIFO "
+         "must hold data (L5196-5293)."),
+]
+for _fn in _ROWS:
+    setattr(GtsController, _fn.__name__, _fn)
 
 
 attach_mx_forms(GtsController)
