@@ -47,7 +47,6 @@ class _ApsMore:
     def _more_init(self):
         self._board_prm = {PRS_EMG_LOGIC: 0, **{p: -1 for p in range(PRB_PWM0_MAP_DO, PRB_PWM3_MAP_DO + 1)}}
         self._do_word = 0
-        self._timer = {"value": 0, "since": self._card.tick}
         self._wdt = {"period": 0, "action": 0, "deadline": None, "sub": None, "fired": False}
         self._vao_prm = {}
         for n in range(8):
@@ -56,7 +55,6 @@ class _ApsMore:
         self._vao_tables: dict[int, tuple] = {}
         self._vao_table_of = [0, 0]      # active table of VAO controllers 0..1
         self._vao_on = [False, False]    # APS_start_vao
-        self._tgr.update({0x20: 1, 0x21: 0, 0x22: 0, 0x23: 0})   # TIMR_ITV, TIMR_DIR, TIMR_RING_EN, TIMR_EN
 
     def _more_close(self):
         sub = self._wdt["sub"] if hasattr(self, "_wdt") else None
@@ -136,45 +134,20 @@ class _ApsMore:
         i = self._axis(Axis_ID)
         return (self._bad(), 0) if i is None else (ERR_NoError, _reg32(self._card.profile_pos(i)))
 
-    # -- compare timer (L3363-3378; TIMR_* of APS_set_trigger_param) ---------------------------------------------
-    def _timer_now(self) -> int:
-        """The timer counter now: while TIMR_EN, +-1 every TIMR_ITV servo ticks (TIMR_DIR 0 up, 1 down; AF15),
-        wrapping at 32 bits with TIMR_RING_EN, else held at the I32 limits."""
-        t, g = self._timer, self._tgr
-        if not g.get(0x23, 0):
-            return t["value"]
-        n = (self._card.tick - t["since"]) // max(1, g.get(0x20, 1))
-        v = t["value"] + (-n if g.get(0x21, 0) else n)
-        if g.get(0x22, 0):
-            return _reg32(v)
-        return max(-2**31, min(2**31 - 1, v))
-
-    def _timer_param(self, p: int, v: int) -> int:
-        """APS_set_trigger_param for TIMR_ITV (0x20, servo ticks 1..2^31-1), TIMR_DIR (0x21, 0 up / 1 down),
-        TIMR_RING_EN (0x22, 0/1), TIMR_EN (0x23, 0/1)."""
-        ok = 1 <= v <= 2**31 - 1 if p == 0x20 else v in (0, 1)
-        if not ok:
-            return ERR_ParametersInvalid
-        self._timer = {"value": self._timer_now(), "since": self._card.tick}
-        self._tgr[p] = v
-        return ERR_NoError
-
+    # -- compare timer (L3363-3378; TIMR_* of APS_set_trigger_param): vendor/adlink/aps_scope.hpp's (AF15) ------
     def APS_get_timer_counter(self, Board_ID, TmrCh):
         """``APS_get_timer_counter(I32 Board_ID, I32 TmrCh, I32 *Cnt)`` -> ``(rtn, Cnt)`` (L3376): the compare
-        timer (TmrCh 0, the card's one timer)."""
+        timer (TmrCh 0, the card's one timer): while TIMR_EN, +-1 every TIMR_ITV servo ticks (TIMR_DIR 0 up,
+        1 down), wrapping at 32 bits with TIMR_RING_EN, else held at the I32 limits."""
         if not self._board(Board_ID):
             return self._bad(), 0
-        return (ERR_NoError, self._timer_now()) if _num(TmrCh) == 0 else (ERR_ParametersInvalid, 0)
+        return (ERR_NoError, self._scope().timer_counter()) if _num(TmrCh) == 0 else (ERR_ParametersInvalid, 0)
 
     def APS_set_timer_counter(self, Board_ID, TmrCh, Cnt) -> int:
         """``APS_set_timer_counter(I32 Board_ID, I32 TmrCh, I32 Cnt)`` (L3378): sets the timer counter (I32)."""
         if not self._board(Board_ID):
             return self._bad()
-        v = _int(Cnt)
-        if _num(TmrCh) != 0 or v is None or not -2**31 <= v < 2**31:
-            return ERR_ParametersInvalid
-        self._timer = {"value": v, "since": self._card.tick}
-        return ERR_NoError
+        return self._scope().set_timer_counter(Cnt) if _num(TmrCh) == 0 else ERR_ParametersInvalid
 
     # -- watchdog (L4025-4084) ----------------------------------------------------------------------------------
     def _wdt_ok(self, Board_ID, TimerNo):

@@ -2,7 +2,7 @@
 :class:`~servobench.dialects.aps.ApsController` (mixed in), decisions AF5-AF12.
 
 A point table is a buffered continuous interpolation of a fixed axis array: the dialect translates it onto the
-card's ADLINK interpolation group (``Card.aps_interp``, machine/card_group_adlink.hpp), hosted with 50 pending
+card's ADLINK interpolation group (``Card.aps_interp``, vendor/adlink/adlink_group.hpp), hosted with 50 pending
 points (L3796) and flagged as a point table (MTS PTB while it runs, L3656). The moves go in with the table's own
 motion parameters (the _all form: the speeds of APS_pt_set_vm/ve/acc/dec/s) and its transition mode
 (APS_pt_set_trans_*: the card's modes 4-7 of L3117-3143); the first point holds the group (MF_WAIT) until

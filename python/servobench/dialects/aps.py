@@ -961,27 +961,7 @@ PID_CMD_POS_COUNT, PID_CMD_VEL_COUNT, PID_CMD_ACC_COUNT, PID_ERR_POS_COUNT = 0x4
 PID_KP_CALC_COUNT, PID_KI_CALC_COUNT, PID_KD_CALC_COUNT, PID_KVFF_CALC_COUNT = 0x44, 0x45, 0x46, 0x47
 PID_KAFF_CALC_COUNT, PID_CALC_COUNT, BIQUAD_0_CALC_COUNT, BIQUAD_1_CALC_COUNT = 0x48, 0x49, 0x4A, 0x4B
 PID_ERR_POS_SUM_COUNT, PID_LAST_ERR_POS_COUNT, PID_ERR_POS_DIFF_COUNT = 0x4C, 0x4D, 0x4E
-# source -> (sampler signal, scale (x 1/Ts for pulse/s), integer?, bit of the word or None)
-_SAMP = {
-    SAMP_COM_POS: ("pos", 1, True, None), SAMP_FBK_POS: ("actual_pos", 1, True, None),
-    SAMP_CMD_VEL: ("prf_vel", "1/Ts", True, None), SAMP_FBK_VEL: ("fbk_vel", "1/Ts", True, None),
-    SAMP_MIO: ("mio", 1, True, None), SAMP_MSTS: ("msts", 1, True, None),
-    SAMP_MSTS_ACC: ("msts", 1, True, 2), SAMP_MSTS_MV: ("msts", 1, True, 1), SAMP_MSTS_DEC: ("msts", 1, True, 3),
-    SAMP_MSTS_CSTP: ("msts", 1, True, 0), SAMP_MSTS_MDN: ("msts", 1, True, 5), SAMP_MIO_INP: ("mio", 1, True, 6),
-    SAMP_MIO_ORG: ("mio", 1, True, 3), SAMP_CONTROL_VOL: ("volts", 1000, True, None),
-    SAMP_ENCODER_RAW: ("fb_pos", 1, True, None), SAMP_ERROR_POS: ("error", 1, True, None),
-    SAMP_COM_POS_F64: ("pos", 1, False, None), SAMP_FBK_POS_F64: ("actual_pos", 1, False, None),
-    SAMP_CMD_VEL_F64: ("prf_vel", "1/Ts", False, None), SAMP_FBK_VEL_F64: ("fbk_vel", "1/Ts", False, None),
-    SAMP_CONTROL_VOL_F64: ("volts", 1000, False, None), SAMP_ERR_POS_F64: ("error", 1, False, None),
-    PID_CMD_POS_COUNT: ("cmd_pos", 1, True, None), PID_CMD_VEL_COUNT: ("cmd_vel", 1, True, None),
-    PID_CMD_ACC_COUNT: ("cmd_acc", 1, True, None), PID_ERR_POS_COUNT: ("error", 1, True, None),
-    PID_KP_CALC_COUNT: ("p", 1, True, None), PID_KI_CALC_COUNT: ("i", 1, True, None),
-    PID_KD_CALC_COUNT: ("d", 1, True, None), PID_KVFF_CALC_COUNT: ("vff", 1, True, None),
-    PID_KAFF_CALC_COUNT: ("aff", 1, True, None), PID_CALC_COUNT: ("u", 1, True, None),
-    BIQUAD_0_CALC_COUNT: ("biquad0", 1, True, None), BIQUAD_1_CALC_COUNT: ("biquad1", 1, True, None),
-    PID_ERR_POS_SUM_COUNT: ("error_sum", 1, True, None), PID_LAST_ERR_POS_COUNT: ("error_prev", 1, True, None),
-    PID_ERR_POS_DIFF_COUNT: ("error_diff", 1, True, None),
-}
+# The sources' signals, units and bits are the C++ module's table (vendor/adlink/aps_scope.cpp, Tables 4-5/4-6).
 #: One sample of APS_wait_trigger_sampling (STR_SAMP_DATA_4CH {I32 tick; I32 data[4]}; data F64 here, V78).
 STR_SAMP_DATA_4CH = np.dtype([("tick", np.int64), ("data", np.float64, (4,))])
 
@@ -995,7 +975,6 @@ TGR_TRG0_TGL, TGR_TRG1_TGL, TGR_TRG2_TGL, TGR_TRG3_TGL = 0x1C, 0x1D, 0x1E, 0x1F
 TIMR_ITV, TIMR_DIR, TIMR_RING_EN, TIMR_EN = 0x20, 0x21, 0x22, 0x23
 TRG_SRC_MANUAL, TRG_SRC_TCMP0, TRG_SRC_TCMP1, TRG_SRC_LCMP0, TRG_SRC_LCMP1 = 0x1, 0x2, 0x4, 0x8, 0x10
 TGR_SRC_COMMAND = 0x10  # a comparator source value 0x10 + n compares axis n's command position (V76)
-_PWD_UNIT_S = 100e-9    # TGR_TRGx_PWD unit: 100 ns, the manual's minimum width (L383; V77)
 
 # Interrupt factors (L4120-4200): axis items 0-7, system item 8.
 IALM, IPEL, IMEL, IORG, IEZ, IINP, IEMG, ICSTP, IVM, IACC, IDEC, IMDN, IASTP = 0, 1, 2, 3, 4, 5, 6, 8, 9, 10, 11, 12, 13
@@ -1012,100 +991,30 @@ class _ApsScope:
     """The sampling, trigger and interrupt functions of :class:`ApsController` (mixed in)."""
 
     def _scope_init(self):
-        c = self._card
-        ticks_per_ms = max(1, int(round(1e-3 / c.servo_period_s)))
-        self._samp = {SAMP_PA_RATE: ticks_per_ms, SAMP_PA_EDGE: 2, SAMP_PA_LEVEL: 0, SAMP_PA_TRIGCH: 0,
-                      SAMP_PA_SRC_CH0: SAMP_COM_POS, SAMP_PA_SRC_CH1: SAMP_FBK_POS, SAMP_PA_SRC_CH2: SAMP_ERROR_POS,
-                      SAMP_PA_SRC_CH3: SAMP_CONTROL_VOL}
-        self._tgr = {p: 0 for p in range(0x00, 0x20)}
-        self._tgr.update({TGR_TCMP0_DIR: 1, TGR_TCMP1_DIR: 1, TGR_LCMP1_SRC: 1, TGR_TCMP1_SRC: 1})
-        for t in range(4):
-            self._tgr[TGR_TRG0_PWD + t] = 1
+        self._scope().power_on()              # sampling, trigger and timer registers: the C++ module's (AV2)
         self._int_main = False
         self._int_factors: set[int] = set()   # enabled int_no
         self._int_signaled: dict[int, bool] = {}
         self._int_subs: list[int] = []
 
+    def _scope(self):
+        """The card's ADLINK scope module (vendor/adlink/aps_scope.hpp): the sampling/trigger/timer registers."""
+        return _core.aps_scope(self._card.kernel)
+
     def _board(self, Board_ID) -> bool:
         return self._card is not None and _num(Board_ID) == 0
 
-    # -- data sampling (L3544-3665) --------------------------------------------------------------------------
+    # -- data sampling (L3544-3665): the registers and the run are vendor/adlink/aps_scope.hpp's ------------------
     def APS_set_sampling_param(self, Board_ID, ParaNum, ParaDat) -> int:
         """``APS_set_sampling_param(Board_ID, ParaNum, ParaDat)``: SAMP_PA_RATE (a sample every N servo ticks,
         1..65535; default the ticks of 1 ms, L3548), SAMP_PA_EDGE (0 rising, 1 falling, 2 no trigger: start at
         once, the default; V80), SAMP_PA_LEVEL (in the trigger channel's unit), SAMP_PA_TRIGCH (0..3),
         SAMP_PA_SRC_CH0..3 (axis << 8 | source: SAMP_* of Table 4-5, PID_* of Table 4-6)."""
-        if not self._board(Board_ID):
-            return self._bad()
-        p, v = _num(ParaNum), _num(ParaDat)
-        if p not in self._samp or v is None or v != int(v):
-            return ERR_ParametersInvalid
-        v = int(v)
-        ok = {SAMP_PA_RATE: 1 <= v <= 65535, SAMP_PA_EDGE: v in (0, 1, 2), SAMP_PA_LEVEL: abs(v) <= _POS_MAX,
-              SAMP_PA_TRIGCH: 0 <= v <= 3}.get(p)
-        if ok is None:  # a source
-            src, axis = v & SAMP_PARAM_MASK, (v & SAMP_AXIS_MASK) >> 8
-            if v & ~(SAMP_AXIS_MASK | SAMP_PARAM_MASK) or axis >= len(self._card):
-                return ERR_ParametersInvalid
-            if src not in _SAMP:
-                return ERR_FunctionNotAvailable  # gantry, PWM, VAO, point table: not simulated
-            ok = True
-        if not ok:
-            return ERR_ParametersInvalid
-        self._samp[p] = v
-        return ERR_NoError
+        return self._scope().set_sampling_param(ParaNum, ParaDat) if self._board(Board_ID) else self._bad()
 
     def APS_get_sampling_param(self, Board_ID, ParaNum):
         """``APS_get_sampling_param(Board_ID, ParaNum, &ParaDat)`` -> ``(rtn, ParaDat)``."""
-        if not self._board(Board_ID):
-            return self._bad(), 0
-        p = _num(ParaNum)
-        return (ERR_NoError, self._samp[p]) if p in self._samp else (ERR_ParametersInvalid, 0)
-
-    def _samp_channels(self):
-        out = []
-        for k in range(4):
-            v = self._samp[SAMP_PA_SRC_CH0 + k]
-            out.append(((v & SAMP_AXIS_MASK) >> 8, _SAMP[v & SAMP_PARAM_MASK]))
-        return out
-
-    def _samp_start(self, Board_ID, Length, PreTrgLen, TimeOutMs):
-        """Validates and starts the sampler; returns an error code or None."""
-        if not self._board(Board_ID):
-            return self._bad()
-        n, pre, tmo = _num(Length), _num(PreTrgLen), _num(TimeOutMs)
-        if None in (n, pre, tmo) or n != int(n) or not 1 <= n <= 1e6 or pre != int(pre) or not 0 <= pre < n:
-            return ERR_ParametersInvalid
-        if tmo != int(tmo) or (tmo < 0 and tmo != -1):
-            return ERR_ParametersInvalid
-        c = self._card
-        chans = self._samp_channels()
-        edge = self._samp[SAMP_PA_EDGE]
-        if edge == 2 and pre > 0:
-            return ERR_ParametersInvalid
-        trig_ch = self._samp[SAMP_PA_TRIGCH]
-        name, scale, _integer, bit = chans[trig_ch][1]
-        if edge != 2 and bit is not None:
-            return ERR_FunctionNotAvailable  # a level on one status bit: trigger on the word instead (V80)
-        ts = c.servo_period_s
-        factor = 1.0 / ts if scale == "1/Ts" else float(scale)
-        c.sample([(a, sig[0]) for a, sig in chans], every_ticks=self._samp[SAMP_PA_RATE], depth=int(n),
-                 trigger=("rising", "falling", "immediate")[edge], trigger_channel=trig_ch,
-                 level=self._samp[SAMP_PA_LEVEL] / factor, pretrigger=int(pre))
-        self._samp_run = {"chans": chans, "n": int(n), "until": c.tick + int(round(
-            (_WAIT_FOREVER_S if tmo == -1 else tmo * 1e-3) / ts)), "out": np.zeros(int(n), dtype=STR_SAMP_DATA_4CH)}
-        return None
-
-    def _samp_fill(self, data, out, chans):
-        ts = self._card.servo_period_s
-        m = len(data)
-        out["tick"][:m] = data.ticks
-        for k, (_a, (_sig, sc, integer, b)) in enumerate(chans):
-            v = data.values[:, k] * (1.0 / ts if sc == "1/Ts" else sc)
-            if b is not None:
-                v = (v.astype(np.int64) >> b) & 1
-            out["data"][:m, k] = np.rint(v) if integer else v
-        return m
+        return self._scope().sampling_param(ParaNum) if self._board(Board_ID) else (self._bad(), 0)
 
     def APS_wait_trigger_sampling(self, Board_ID, Length, PreTrgLen, TimeOutMs):
         """``APS_wait_trigger_sampling(Board_ID, Length, PreTrgLen, TimeOutMs, STR_SAMP_DATA_4CH *DataArr)`` ->
@@ -1114,52 +1023,35 @@ class _ApsScope:
         the card until the block is full or ``TimeOutMs`` simulated ms passed (-1: V83) -> ERR_TimeOut, no data.
         DataArr: a NumPy array of :data:`STR_SAMP_DATA_4CH` (``tick`` = card tick of the sample; ``data`` the
         channels in their units: pulse, pulse/s, mV, bits; whole numbers for the I32 sources)."""
-        bad = self._samp_start(Board_ID, Length, PreTrgLen, TimeOutMs)
-        if bad is not None:
-            return bad, None
-        c, run = self._card, self._samp_run
-        c.run_until(lambda k: k._card.sampler_blocks > 0, max_ticks=max(0, run["until"] - c.tick),
+        rtn, data = self.APS_wait_trigger_sampling_async(Board_ID, Length, PreTrgLen, TimeOutMs)
+        if rtn != ERR_NoError:
+            return rtn, None
+        s, c = self._scope(), self._card
+        c.run_until(lambda _c: s.sampling_block_ready(), max_ticks=s.sampling_ticks_left(),
                     chunk=max(1, int(round(1e-3 / c.servo_period_s))))
-        data = c.scope_data()
-        if data is None:
-            c._card.sampler_stop()
-            return ERR_TimeOut, None
-        self._samp_fill(data, run["out"], run["chans"])
-        return ERR_NoError, run["out"]
+        rtn = s.finish_sampling()
+        return rtn, (data if rtn == ERR_NoError else None)
 
     def APS_wait_trigger_sampling_async(self, Board_ID, Length, PreTrgLen, TimeOutMs):
         """``APS_wait_trigger_sampling_async(...)`` -> ``(rtn, DataArr)``: starts the same sampling and returns at
         once; the card fills ``DataArr`` as it runs (the samples taken so far are copied into it at each
         APS_get_sampling_count call, V78); after ``TimeOutMs`` of card time without a full block the sampling
         stops."""
-        bad = self._samp_start(Board_ID, Length, PreTrgLen, TimeOutMs)
-        if bad is not None:
-            return bad, None
-        return ERR_NoError, self._samp_run["out"]
+        if not self._board(Board_ID):
+            return self._bad(), None
+        rtn = self._scope().start_sampling(Length, PreTrgLen, TimeOutMs)
+        return rtn, (self._scope().sampling_buffer() if rtn == ERR_NoError else None)
 
     def APS_get_sampling_count(self, Board_ID):
         """``APS_get_sampling_count(Board_ID, &SampCnt)`` -> ``(rtn, samples in DataArr)`` of the running or
         finished asynchronous sampling (the pre-trigger samples count once the trigger came)."""
-        if not self._board(Board_ID):
-            return self._bad(), 0
-        run, c = getattr(self, "_samp_run", None), self._card
-        if run is None:
-            return ERR_NoError, 0
-        if c._card.sampler_blocks > 0:
-            run["done"] = self._samp_fill(c.scope_data(), run["out"], run["chans"])
-        if "done" in run:
-            return ERR_NoError, run["done"]
-        if c.tick >= run["until"]:
-            c._card.sampler_stop()
-        if c.sampler_state != "filling":
-            return ERR_NoError, 0
-        return ERR_NoError, self._samp_fill(c.scope_data(partial=True), run["out"], run["chans"])
+        return (ERR_NoError, self._scope().sampling_count()) if self._board(Board_ID) else (self._bad(), 0)
 
     def APS_stop_wait_sampling(self, Board_ID) -> int:
         """``APS_stop_wait_sampling(Board_ID)``: stops the sampling; DataArr keeps what was copied."""
         if not self._board(Board_ID):
             return self._bad()
-        self._card.kernel.sampler_stop()
+        self._scope().stop_sampling()
         return ERR_NoError
 
     # -- position compare trigger (L3348-3435) ------------------------------------------------------------------
@@ -1167,62 +1059,17 @@ class _ApsScope:
         v = _num(ch)
         return v is not None and v == int(v) and 0 <= v < (2 if len(self._card) == 4 else 4)
 
-    def _apply_trigger(self):
-        c = self._card
-        for comp, p in enumerate((TGR_LCMP0_SRC, TGR_LCMP1_SRC, TGR_TCMP0_SRC, TGR_TCMP1_SRC)):
-            v = self._tgr[p]
-            c.compare_set_source(comp, v & 0xF, bool(v & TGR_SRC_COMMAND))
-        for ch in range(2):
-            c.compare_set_table_direction(ch, {0: -1, 1: 1, 2: 0}[self._tgr[TGR_TCMP0_DIR + ch]])
-        for t in range(4):
-            c.compare_set_output(t, self._tgr[TGR_TRG0_SRC + t], self._tgr[TGR_TRG0_PWD + t] * _PWD_UNIT_S,
-                                 bool(self._tgr[TGR_TRG0_LOGIC + t]), bool(self._tgr[TGR_TRG0_TGL + t]))
-        c.compare_enable(self._tgr[TGR_TRG_EN])
-
     def APS_set_trigger_param(self, Board_ID, Param_No, Param_Val) -> int:
         """``APS_set_trigger_param(Board_ID, Param_No, Param_Val)``: TGR_LCMPx_SRC / TGR_TCMPx_SRC (axis n = its
         encoder, TGR_SRC_COMMAND + n its command position; V76), TGR_TCMPx_DIR (0 negative, 1 positive, 2 both),
         TGR_TRG_EN (bit x: TRGx on), TGR_TRGx_SRC (TRG_SRC_* bits, V77), TGR_TRGx_PWD (x 100 ns, 1..10^7),
         TGR_TRGx_LOGIC (0 active high, 1 active low), TGR_TRGx_TGL (0 pulse, 1 level toggle), the timer TIMR_ITV /
         TIMR_DIR / TIMR_RING_EN / TIMR_EN (APS_get_timer_counter, AF15). PCI-8254 (4 axes): TRG0-1 only."""
-        if not self._board(Board_ID):
-            return self._bad()
-        p, v = _num(Param_No), _num(Param_Val)
-        if p not in self._tgr or v is None or v != int(v):
-            return ERR_ParametersInvalid
-        if p in (TIMR_ITV, TIMR_DIR, TIMR_RING_EN, TIMR_EN):
-            return self._timer_param(int(p), int(v))
-        p, v = int(p), int(v)
-        n_trg = 2 if len(self._card) == 4 else 4
-        if p <= TGR_TCMP1_SRC:
-            ok = (v & ~TGR_SRC_COMMAND) < len(self._card) and 0 <= v
-        elif p in (TGR_TCMP0_DIR, TGR_TCMP1_DIR):
-            ok = v in (0, 1, 2)
-        elif p == TGR_TRG_EN:
-            ok = 0 <= v < (1 << n_trg)
-        elif p >= TGR_TRG0_SRC:
-            t = (p - TGR_TRG0_SRC) % 4
-            kind = (p - TGR_TRG0_SRC) // 4
-            ok = t < n_trg and ((0 <= v <= 31) if kind == 0 else (1 <= v <= 10**7) if kind == 1 else v in (0, 1))
-        else:
-            ok = False
-        if not ok:
-            return ERR_ParametersInvalid
-        old = self._tgr[p]
-        self._tgr[p] = v
-        try:
-            self._apply_trigger()
-        except ValueError:
-            self._tgr[p] = old
-            return ERR_ParametersInvalid
-        return ERR_NoError
+        return self._scope().set_trigger_param(Param_No, Param_Val) if self._board(Board_ID) else self._bad()
 
     def APS_get_trigger_param(self, Board_ID, Param_No):
         """``APS_get_trigger_param(Board_ID, Param_No, &Param_Val)`` -> ``(rtn, Param_Val)``."""
-        if not self._board(Board_ID):
-            return self._bad(), 0
-        p = _num(Param_No)
-        return (ERR_NoError, self._tgr[p]) if p in self._tgr else (ERR_ParametersInvalid, 0)
+        return self._scope().trigger_param(Param_No) if self._board(Board_ID) else (self._bad(), 0)
 
     def APS_set_trigger_linear(self, Board_ID, LCmpCh, StartPoint, RepeatTimes, Interval) -> int:
         """``APS_set_trigger_linear(Board_ID, LCmpCh, StartPoint, RepeatTimes, Interval)``: LCMP0/1 compares the

@@ -1,0 +1,74 @@
+// The ADLINK vendor module's scope registers (vendor/adlink/aps_scope.hpp): sampling, trigger parameters, compare
+// timer. Thin: every method returns the APS code as an int (getters: (code, value)); servobench.dialects.aps
+// adapts the APS_* names to them. Registered in module.cpp.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <memory>
+#include <vector>
+
+#include "servobench/machine/card.hpp"
+#include "servobench/vendor/adlink/aps_scope.hpp"
+
+namespace servobench::bindings {
+
+namespace py = pybind11;
+using vendor::adlink::AdlinkCode;
+using vendor::adlink::ApsSample;
+using vendor::adlink::ApsScope;
+
+namespace {
+
+int code(AdlinkCode c) { return static_cast<int>(c); }
+
+// The run's DataArr as a NumPy array of STR_SAMP_DATA_4CH over the module's buffer (kept alive by the array).
+py::object buffer_array(const ApsScope& s) {
+  auto buf = s.sampling_buffer();
+  if (!buf) return py::none();
+  auto* keep = new std::shared_ptr<std::vector<ApsSample>>(buf);
+  py::capsule base(keep, [](void* p) { delete static_cast<std::shared_ptr<std::vector<ApsSample>>*>(p); });
+  return py::array_t<ApsSample>({static_cast<py::ssize_t>(buf->size())}, {static_cast<py::ssize_t>(sizeof(ApsSample))},
+                                buf->data(), base);
+}
+
+}  // namespace
+
+void bind_vendor_adlink(py::module_& m) {
+  PYBIND11_NUMPY_DTYPE(ApsSample, tick, data);
+  py::class_<ApsScope>(m, "ApsScope",
+                       "The ADLINK scope registers of a card (vendor/adlink/aps_scope.hpp): sampling (L3544-3665), "
+                       "trigger parameters (L3348-3435), compare timer (L3363-3378). Get it with aps_scope(card).")
+      .def("power_on", &ApsScope::power_on, "the registers at their APS_initial values; no sampling run")
+      .def("set_sampling_param", [](ApsScope& s, double p, double v) { return code(s.set_sampling_param(p, v)); },
+           py::arg("para"), py::arg("value"), "SAMP_PA_* register; returns the APS code")
+      .def("sampling_param", [](const ApsScope& s, double p) {
+             int v = 0;
+             const int c = code(s.sampling_param(p, v));
+             return py::make_tuple(c, v);
+           }, py::arg("para"), "(code, value) of a SAMP_PA_* register")
+      .def("start_sampling", [](ApsScope& s, double n, double pre, double tmo) { return code(s.start_sampling(n, pre, tmo)); },
+           py::arg("length"), py::arg("pretrigger"), py::arg("timeout_ms"),
+           "starts a block of length samples (pretrigger before the trigger), time-out in ms of card time (-1: 1 h)")
+      .def("sampling_block_ready", &ApsScope::sampling_block_ready, "the block is full")
+      .def("sampling_ticks_left", &ApsScope::sampling_ticks_left, "servo ticks until the sampling time-out")
+      .def("finish_sampling", [](ApsScope& s) { return code(s.finish_sampling()); },
+           "the full block into DataArr (ERR_NoError) or the sampler stopped (ERR_TimeOut)")
+      .def("sampling_count", &ApsScope::sampling_count, "samples copied into DataArr so far")
+      .def("stop_sampling", &ApsScope::stop_sampling)
+      .def("sampling_buffer", &buffer_array, "DataArr: NumPy array of STR_SAMP_DATA_4CH (None before a run)")
+      .def("set_trigger_param", [](ApsScope& s, double p, double v) { return code(s.set_trigger_param(p, v)); },
+           py::arg("para"), py::arg("value"), "TGR_* / TIMR_* register; returns the APS code")
+      .def("trigger_param", [](const ApsScope& s, double p) {
+             int v = 0;
+             const int c = code(s.trigger_param(p, v));
+             return py::make_tuple(c, v);
+           }, py::arg("para"), "(code, value) of a TGR_* / TIMR_* register")
+      .def("timer_counter", &ApsScope::timer_counter, "the compare timer's count now")
+      .def("set_timer_counter", [](ApsScope& s, double v) { return code(s.set_timer_counter(v)); }, py::arg("value"),
+           "sets the timer count (I32)");
+  m.def("aps_scope", [](machine::Card& k) -> ApsScope& { return vendor::adlink::aps_scope(k); }, py::arg("card"),
+        py::return_value_policy::reference_internal,
+        "the card's ADLINK scope module (created on first use, owned by the card)");
+}
+
+}  // namespace servobench::bindings
