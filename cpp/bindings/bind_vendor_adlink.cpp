@@ -1,19 +1,23 @@
-// The ADLINK vendor module's scope registers (vendor/adlink/aps_scope.hpp): sampling, trigger parameters, compare
-// timer. Thin: every method returns the APS code as an int (getters: (code, value)); servobench.dialects.aps
+// The ADLINK vendor module's scope registers (vendor/adlink/aps_scope.hpp: sampling, trigger parameters, compare
+// timer) and host interrupts (vendor/adlink/aps_interrupts.hpp). Thin: every method returns the APS code as an int (getters: (code, value)); servobench.dialects.aps
 // adapts the APS_* names to them. Registered in module.cpp.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "servobench/machine/card.hpp"
+#include "servobench/vendor/adlink/aps_interrupts.hpp"
 #include "servobench/vendor/adlink/aps_scope.hpp"
 
 namespace servobench::bindings {
 
 namespace py = pybind11;
 using vendor::adlink::AdlinkCode;
+using vendor::adlink::ApsInterrupts;
 using vendor::adlink::ApsSample;
 using vendor::adlink::ApsScope;
 
@@ -69,6 +73,35 @@ void bind_vendor_adlink(py::module_& m) {
   m.def("aps_scope", [](machine::Card& k) -> ApsScope& { return vendor::adlink::aps_scope(k); }, py::arg("card"),
         py::return_value_policy::reference_internal,
         "the card's ADLINK scope module (created on first use, owned by the card)");
+  py::class_<ApsInterrupts>(m, "ApsInterrupts",
+                            "The ADLINK host interrupts of a card (vendor/adlink/aps_interrupts.hpp, L4090-4330): the "
+                            "main switch, the factors, the signaled flags. Get it with aps_interrupts(card).")
+      .def("power_on", &ApsInterrupts::power_on, "main switch off, no factor, no interrupt number known")
+      .def("set_main", [](ApsInterrupts& s, double on) { return code(s.set_main(on)); }, py::arg("enable"))
+      .def("set_factor", &ApsInterrupts::set_factor, py::arg("item"), py::arg("factor"), py::arg("enable"),
+           "the interrupt number (item x 32 + bit) or a negative APS code")
+      .def("factor_enabled", [](const ApsInterrupts& s, double item, double f) {
+             int on = 0;
+             const int c = code(s.factor_enabled(item, f, on));
+             return py::make_tuple(c, on);
+           }, py::arg("item"), py::arg("factor"))
+      .def("msts_mask", &ApsInterrupts::msts_mask, py::arg("axis"))
+      .def("mio_mask", &ApsInterrupts::mio_mask, py::arg("axis"))
+      .def("system_mask", &ApsInterrupts::system_mask)
+      .def("fired", &ApsInterrupts::fired, py::arg("axis"), py::arg("word"), py::arg("bits"),
+           "a watched event fired (Card.on_event): signals the enabled factors it matches")
+      .def("set_signaled", [](ApsInterrupts& s, double no, bool on) { return code(s.set_signaled(no, on)); },
+           py::arg("int_no"), py::arg("on"))
+      .def("begin_wait", [](ApsInterrupts& s, double n, const std::vector<double>& nos, double all, double tmo) {
+             long long ticks = 0;
+             const int c = code(s.begin_wait(n, nos, all, tmo, ticks));
+             return py::make_tuple(c, ticks);
+           }, py::arg("count"), py::arg("nos"), py::arg("wait_all"), py::arg("time_out_ms"),
+           "(code, ticks the wait may run)")
+      .def("wait_done", &ApsInterrupts::wait_done, "the wait's numbers are signaled (all / any)");
+  m.def("aps_interrupts", [](machine::Card& k) -> ApsInterrupts& { return vendor::adlink::aps_interrupts(k); },
+        py::arg("card"), py::return_value_policy::reference_internal,
+        "the card's ADLINK interrupt module (created on first use, owned by the card)");
 }
 
 }  // namespace servobench::bindings

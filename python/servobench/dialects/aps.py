@@ -980,22 +980,15 @@ TGR_SRC_COMMAND = 0x10  # a comparator source value 0x10 + n compares axis n's c
 IALM, IPEL, IMEL, IORG, IEZ, IINP, IEMG, ICSTP, IVM, IACC, IDEC, IMDN, IASTP = 0, 1, 2, 3, 4, 5, 6, 8, 9, 10, 11, 12, 13
 ISPEL, ISMEL, IPRED, IPOSTD = 15, 16, 18, 19
 ISYS_EMG, ILCF0, ILCF1, IFCF0, IFCF1, IMOV, IHOV = 0, 1, 2, 3, 4, 5, 6
-# axis factor bit -> (watch word, bit of that word)
-_AXIS_FACTORS = {IALM: ("mio", 0), IPEL: ("mio", 1), IMEL: ("mio", 2), IORG: ("mio", 3), IEZ: ("mio", 5), IINP: ("mio", 6),
-                 IEMG: ("mio", 4), ICSTP: ("msts", 0), IVM: ("msts", 1), IACC: ("msts", 2), IDEC: ("msts", 3),
-                 IMDN: ("msts", 5), IASTP: ("msts", 16), ISPEL: ("mio", 11), ISMEL: ("mio", 12)}
-_WAIT_FOREVER_S = 3600.0  # Time_Out -1 waits at most one simulated hour (V83)
 
 
 class _ApsScope:
     """The sampling, trigger and interrupt functions of :class:`ApsController` (mixed in)."""
 
     def _scope_init(self):
-        self._scope().power_on()              # sampling, trigger and timer registers: the C++ module's (AV2)
-        self._int_main = False
-        self._int_factors: set[int] = set()   # enabled int_no
-        self._int_signaled: dict[int, bool] = {}
-        self._int_subs: list[int] = []
+        self._scope().power_on()  # sampling, trigger and timer registers: the C++ module's (AV2)
+        self._ints().power_on()   # interrupt table (AV4)
+        self._int_subs: list[int] = []  # the card's event subscriptions of the interrupt watch (handles)
 
     def _scope(self):
         """The card's ADLINK scope module (vendor/adlink/aps_scope.hpp): the sampling/trigger/timer registers."""
@@ -1138,51 +1131,26 @@ class _ApsScope:
         v = self._card.compare_next_point(base + int(_num(ch)))
         return ERR_NoError, (0 if math.isnan(v) else int(v))
 
-    # -- host interrupts (L4090-4330) ---------------------------------------------------------------------------
-    def _int_no(self, item: int, factor: int) -> int:
-        return item * 32 + factor
+    # -- host interrupts (L4090-4330): the table is vendor/adlink/aps_interrupts.hpp's (AV4) ------------------------
+    def _ints(self):
+        """The card's ADLINK interrupt module (main switch, factors, signaled flags, the wait)."""
+        return _core.aps_interrupts(self._card.kernel)
 
     def _rewatch(self):
-        c = self._card
+        """Subscribes the module's watch masks to the card's events (the subscriptions go with APS_close)."""
+        c, m = self._card, self._ints()
         for sid in self._int_subs:
             c.remove_event(sid)
-        self._int_subs = []
-        if not self._int_factors:
-            return
-        msts, mio = [0] * len(c), [0] * len(c)
-        system = 0
-        for no in self._int_factors:
-            item, f = divmod(no, 32)
-            if item == 8:
-                system |= 1 << f if f <= 4 else 0
-            else:
-                word, bit = _AXIS_FACTORS[f]
-                (msts if word == "msts" else mio)[item] |= 1 << bit
-        handler = self._on_int
-        ids = [c.on_event(handler, axis=a, msts=msts[a], mio=mio[a]) for a in range(len(c)) if msts[a] or mio[a]]
-        if system:
-            ids.append(c.on_event(handler, system=system))
-        self._int_subs = ids
-
-    def _on_int(self, _card, fired):
-        if not self._int_main:
-            return
-        for no in self._int_factors:
-            item, f = divmod(no, 32)
-            if item == 8 and fired.word == "system" and fired.bits >> f & 1:
-                self._int_signaled[no] = True
-            elif item == fired.axis and item < 8:
-                word, bit = _AXIS_FACTORS[f]
-                if word == fired.word and fired.bits >> bit & 1:
-                    self._int_signaled[no] = True
+        handler = lambda _card, f: m.fired(f.axis, f.word, f.bits)  # noqa: E731
+        self._int_subs = [c.on_event(handler, axis=a, msts=m.msts_mask(a), mio=m.mio_mask(a)) for a in range(len(c))
+                          if m.msts_mask(a) or m.mio_mask(a)]
+        if m.system_mask():
+            self._int_subs.append(c.on_event(handler, system=m.system_mask()))
 
     def APS_int_enable(self, Board_ID, Enable) -> int:
         """``APS_int_enable(Board_ID, Enable)``: the main interrupt switch (1 on, 0 off); no event signals while
         off."""
-        if not self._board(Board_ID) or Enable not in (0, 1):
-            return self._bad()
-        self._int_main = bool(Enable)
-        return ERR_NoError
+        return self._ints().set_main(Enable) if self._board(Board_ID) else self._bad()
 
     def APS_set_int_factor(self, Board_ID, Item_No, Factor_No, Enable) -> int:
         """``I32 APS_set_int_factor(Board_ID, Item_No, Factor_No, Enable)`` -> the interrupt number (item x 32 +
@@ -1193,55 +1161,17 @@ class _ApsScope:
         is read as its bit (L4271-4274, V82)."""
         if not self._board(Board_ID):
             return self._bad()
-        item, f, en = _num(Item_No), _num(Factor_No), _num(Enable)
-        if None in (item, f, en) or item != int(item) or f != int(f) or en not in (0, 1):
-            return ERR_ParametersInvalid
-        item, f = int(item), int(f)
-        if f > 31 and f & (f - 1) == 0:
-            f = f.bit_length() - 1
-        if not 0 <= f <= 31 or not 0 <= item <= 10:
-            return ERR_ParametersInvalid
-        if item in (9, 10):
-            return ERR_FunctionNotAvailable
-        if item < 8:
-            if item >= len(self._card):
-                return ERR_ParametersInvalid
-            if f not in _AXIS_FACTORS:
-                return ERR_FunctionNotAvailable if f in (IPRED, IPOSTD) else ERR_ParametersInvalid
-        elif f > IHOV:
-            return ERR_ParametersInvalid
-        no = self._int_no(item, f)
-        if en:
-            self._int_factors.add(no)
-            self._int_signaled.setdefault(no, False)
-        else:
-            self._int_factors.discard(no)
+        no = self._ints().set_factor(Item_No, Factor_No, Enable)
         self._rewatch()
         return no
 
     def APS_get_int_factor(self, Board_ID, Item_No, Factor_No):
         """``APS_get_int_factor(Board_ID, Item_No, Factor_No, &Enable)`` -> ``(rtn, Enable)``."""
-        if not self._board(Board_ID):
-            return self._bad(), 0
-        item, f = _num(Item_No), _num(Factor_No)
-        if None in (item, f) or item != int(item) or f != int(f):
-            return ERR_ParametersInvalid, 0
-        f = int(f)
-        if f > 31 and f & (f - 1) == 0:
-            f = f.bit_length() - 1
-        return ERR_NoError, int(self._int_no(int(item), f) in self._int_factors)
+        return self._ints().factor_enabled(Item_No, Factor_No) if self._board(Board_ID) else (self._bad(), 0)
 
     def APS_int_no_to_handle(self, Int_No):
         """``HANDLE APS_int_no_to_handle(Int_No)``: the simulation's handle is the interrupt number itself."""
         return int(Int_No)
-
-    def _int_check(self, Int_No):
-        v = _num(Int_No)
-        if self._card is None:
-            return ERR_DeviceNotInitial
-        if v is None or v != int(v) or int(v) not in self._int_signaled:
-            return ERR_ParametersInvalid
-        return None
 
     def APS_wait_single_int(self, Int_No, Time_Out) -> int:
         """``APS_wait_single_int(Int_No, Time_Out)``: runs the card until the interrupt is signaled (at once if it
@@ -1252,44 +1182,22 @@ class _ApsScope:
     def APS_wait_multiple_int(self, Int_Count, Int_No_Array, Wait_All, Time_Out) -> int:
         """``APS_wait_multiple_int(Int_Count, *Int_No_Array, Wait_All, Time_Out)``: as APS_wait_single_int for
         the first Int_Count numbers, until all (Wait_All 1) or any (0) are signaled."""
-        n, tmo = _num(Int_Count), _num(Time_Out)
-        try:
-            nos = list(Int_No_Array)[: int(n)] if n is not None and n == int(n) and n >= 1 else None
-        except TypeError:
-            nos = None
         if self._card is None:
             return ERR_DeviceNotInitial
-        if not nos or len(nos) != int(n) or Wait_All not in (0, 1) or tmo is None or tmo != int(tmo) or \
-                (tmo < 0 and tmo != -1):
-            return ERR_ParametersInvalid
-        for no in nos:
-            bad = self._int_check(no)
-            if bad is not None:
-                return bad
-        nos = [int(no) for no in nos]
-        if not self._int_main or any(no not in self._int_factors for no in nos):
-            return ERR_InterruptNotEnable
-        agg = all if Wait_All else any
-        ts = self._card.servo_period_s
-        limit = int(round((_WAIT_FOREVER_S if tmo == -1 else tmo * 1e-3) / ts))
-        self._card.run_until_fired(lambda: agg(self._int_signaled[no] for no in nos), limit)
-        return ERR_NoError if agg(self._int_signaled[no] for no in nos) else ERR_TimeOut
+        m = self._ints()
+        rtn, ticks = m.begin_wait(Int_Count, list(Int_No_Array), Wait_All, Time_Out)
+        if rtn != ERR_NoError:
+            return rtn
+        self._card.run_until_fired(m.wait_done, ticks)
+        return ERR_NoError if m.wait_done() else ERR_TimeOut
 
     def APS_reset_int(self, Int_No) -> int:
         """``APS_reset_int(Int_No)``: back to non-signaled (L4270)."""
-        bad = self._int_check(Int_No)
-        if bad is not None:
-            return bad
-        self._int_signaled[int(Int_No)] = False
-        return ERR_NoError
+        return ERR_DeviceNotInitial if self._card is None else self._ints().set_signaled(Int_No, False)
 
     def APS_set_int(self, Int_No) -> int:
         """``APS_set_int(Int_No)``: signals the interrupt by software."""
-        bad = self._int_check(Int_No)
-        if bad is not None:
-            return bad
-        self._int_signaled[int(Int_No)] = True
-        return ERR_NoError
+        return ERR_DeviceNotInitial if self._card is None else self._ints().set_signaled(Int_No, True)
 
 
 for _mixin in (_ApsScope, _ApsPointTable, _ApsMore):  # the blocks' functions are ApsController methods
