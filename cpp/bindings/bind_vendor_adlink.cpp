@@ -1,5 +1,5 @@
 // The ADLINK vendor module's scope registers (vendor/adlink/aps_scope.hpp: sampling, trigger parameters, compare
-// timer) and host interrupts (vendor/adlink/aps_interrupts.hpp). Thin: every method returns the APS code as an int (getters: (code, value)); servobench.dialects.aps
+// timer), host interrupts (vendor/adlink/aps_interrupts.hpp) and the PRA_* table (vendor/adlink/aps_parameters.hpp). Thin: every method returns the APS code as an int (getters: (code, value)); servobench.dialects.aps
 // adapts the APS_* names to them. Registered in module.cpp.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -11,6 +11,7 @@
 
 #include "servobench/machine/card.hpp"
 #include "servobench/vendor/adlink/aps_interrupts.hpp"
+#include "servobench/vendor/adlink/aps_parameters.hpp"
 #include "servobench/vendor/adlink/aps_scope.hpp"
 
 namespace servobench::bindings {
@@ -18,6 +19,7 @@ namespace servobench::bindings {
 namespace py = pybind11;
 using vendor::adlink::AdlinkCode;
 using vendor::adlink::ApsInterrupts;
+using vendor::adlink::ApsParameters;
 using vendor::adlink::ApsSample;
 using vendor::adlink::ApsScope;
 
@@ -102,6 +104,31 @@ void bind_vendor_adlink(py::module_& m) {
   m.def("aps_interrupts", [](machine::Card& k) -> ApsInterrupts& { return vendor::adlink::aps_interrupts(k); },
         py::arg("card"), py::return_value_policy::reference_internal,
         "the card's ADLINK interrupt module (created on first use, owned by the card)");
+  py::class_<ApsParameters>(m, "ApsParameters",
+                            "The ADLINK PRA_* axis parameters of a card (vendor/adlink/aps_parameters.hpp): stored "
+                            "motion / home / jog / gear parameters, the others written through. Get it with "
+                            "aps_parameters(card).")
+      .def("power_on", &ApsParameters::power_on, "every axis back to the defaults (APS_initial)")
+      .def("set", [](ApsParameters& s, std::size_t i, double para, double v) { return code(s.set(i, para, v)); },
+           py::arg("axis"), py::arg("para"), py::arg("value"), "APS_set_axis_param_f: the APS code")
+      .def("get", [](const ApsParameters& s, std::size_t i, double para) {
+             double v = 0.0;
+             const int c = code(s.get(i, para, v));
+             return py::make_tuple(c, v);
+           }, py::arg("axis"), py::arg("para"), "APS_get_axis_param_f: (code, value)")
+      .def("motion", [](const ApsParameters& s, std::size_t i) { return s.axis(i).motion; }, py::arg("axis"),
+           "PRA_SF/ACC/DEC/VS/VM/VE/SD_DEC as an AdlinkPtp (not validated: replace() validates)")
+      .def("home", [](const ApsParameters& s, std::size_t i) { return s.axis(i).home; }, py::arg("axis"),
+           "PRA_HOME_* as an AdlinkHome (not validated)")
+      .def("jog", [](const ApsParameters& s, std::size_t i) { return s.axis(i).jog; }, py::arg("axis"),
+           "PRA_JG_* as an AdlinkJog (not validated)")
+      .def("gear", [](const ApsParameters& s, std::size_t i) {
+             const auto& r = s.axis(i);
+             return py::make_tuple(r.gear_master, r.gear_ratio, r.gear_rate);
+           }, py::arg("axis"), "(PRA_GEAR_MASTER, PRA_GEAR_RATIO, PRA_GEAR_ENGAGE_RATE ratio/s)");
+  m.def("aps_parameters", [](machine::Card& k) -> ApsParameters& { return vendor::adlink::aps_parameters(k); },
+        py::arg("card"), py::return_value_policy::reference_internal,
+        "the card's ADLINK PRA_* parameter table (created on first use, owned by the card)");
 }
 
 }  // namespace servobench::bindings

@@ -23,7 +23,7 @@ import math
 import numpy as np
 
 from .. import _core
-from .._core import AdlinkHome, AdlinkJog, AdlinkPtp, ApsServoLaw, BlendMode, CardCommandRefused, MotionCommandRefused
+from .._core import AdlinkPtp, ApsServoLaw, BlendMode, CardCommandRefused, MotionCommandRefused
 from ..card import Card
 from ._aps_more import (PRB_EMG_LOGIC, PRB_PWM0_MAP_DO, PRB_PWM1_MAP_DO, PRB_PWM2_MAP_DO,  # noqa: F401
                         PRB_PWM3_MAP_DO, PRS_EMG_LOGIC, VAO_TABLE_INPUT_TYPE, VAO_TABLE_OUTPUT_TYPE,
@@ -115,35 +115,10 @@ MIO_SPEL, MIO_SMEL = 11, 12
 STOP_NORMAL, STOP_EMG, STOP_ALM, STOP_SVNO, STOP_PEL, STOP_MEL, STOP_SPEL, STOP_SMEL = 0, 1, 2, 3, 4, 5, 6, 7
 STOP_ERROR_LEVEL = 13  # the manual prints 6 (L4023), colliding with STOP_SPEL; APS_define.h has 13 (V41)
 
-# PRA_* parameters of the servo law: ApsServoLaw field, allowed range, integer?
-_LAW = {
-    PRA_KP_GAIN: ("kp", 0, 65535), PRA_KI_GAIN: ("ki", 0, 65535), PRA_KD_GAIN: ("kd", 0, 65535),
-    PRA_KVFF_GAIN: ("kvff", 0, 65535), PRA_KAFF_GAIN: ("kaff", 0, 65535),
-    PRA_KP_SHIFT: ("kp_shift", -31, 31), PRA_KI_SHIFT: ("ki_shift", -31, 31), PRA_KD_SHIFT: ("kd_shift", -31, 31),
-    PRA_KVFF_SHIFT: ("kvff_shift", -31, 31), PRA_KAFF_SHIFT: ("kaff_shift", -31, 31),
-    PRA_PID_SHIFT: ("pid_shift", -31, 31), PRA_INTEGRAL_LIMIT: ("integral_limit", 0, 2147483647),
-    PRA_SERVO_V_BIAS: ("v_bias", 0, 10), PRA_SERVO_V_LIMIT: ("v_limit", 0, 10), PRA_SERVO_V_INVERSE: ("v_inverse", 0, 1),
-}
-_INTEGER_LAW = {PRA_KP_GAIN, PRA_KI_GAIN, PRA_KD_GAIN, PRA_KVFF_GAIN, PRA_KAFF_GAIN, PRA_KP_SHIFT, PRA_KI_SHIFT,
-                PRA_KD_SHIFT, PRA_KVFF_SHIFT, PRA_KAFF_SHIFT, PRA_PID_SHIFT, PRA_INTEGRAL_LIMIT, PRA_SERVO_V_INVERSE}
-# PRA_* motion parameters: AdlinkPtp field, range (V48: defaults of the manual's home example, L2295-2303).
-_MOTION = {PRA_SD_DEC: ("sd_dec", 0.0, 1e12), PRA_SF: ("sf", 0.0, 1.0), PRA_ACC: ("acc", 0.0, 1e12),
-           PRA_DEC: ("dec", 0.0, 1e12), PRA_VS: ("vs", 0.0, 1e9), PRA_VM: ("vm", 0.0, 1e9), PRA_VE: ("ve", 0.0, 1e9)}
+# The PRA_* ranges, defaults and where each acts are the C++ parameter table's (vendor/adlink/aps_parameters.hpp,
+# AV5); the speeds an APS_ptp_all call gives (pulse/s, pulse/s^2, S-factor) are checked against these:
+_SPEEDS = {"vs": (0.0, 1e9), "ve": (0.0, 1e9), "acc": (0.0, 1e12), "dec": (0.0, 1e12), "sf": (0.0, 1.0)}
 _POS_MAX = 2147483647
-_MOTION_DEFAULTS = {"sd_dec": 1e6, "sf": 0.0, "acc": 1e6, "dec": 1e6, "vs": 0.0, "vm": 1e5, "ve": 0.0}
-# PRA_HOME_* (AdlinkHome field, range); defaults are the manual's home example (L2295-2303; V27).
-_HOME = {PRA_HOME_MODE: ("mode", 0, 2), PRA_HOME_DIR: ("dir", 0, 1), PRA_HOME_CURVE: ("curve", 0.0, 1.0),
-         PRA_HOME_ACC: ("acc", 0.0, 1e12), PRA_HOME_VM: ("vm", 0.0, 1e9), PRA_HOME_SHIFT: ("shift", -_POS_MAX, _POS_MAX),
-         PRA_HOME_EZA: ("eza", 0, 1), PRA_HOME_VO: ("vo", 0.0, 1e9), PRA_HOME_POS: ("pos", -_POS_MAX, _POS_MAX)}
-_INTEGER_HOME = {PRA_HOME_MODE, PRA_HOME_DIR, PRA_HOME_EZA, PRA_HOME_SHIFT, PRA_HOME_POS}
-_HOME_DEFAULTS = {"mode": 0, "dir": 1, "curve": 0.0, "acc": 1e6, "vm": 1e5, "vo": 5e4, "shift": 0, "eza": 0, "pos": 0}
-# PRA_JG_* (AdlinkJog field, range); defaults V29.
-_JOG = {PRA_JG_MODE: ("mode", 0, 1), PRA_JG_DIR: ("dir", 0, 1), PRA_JG_SF: ("sf", 0.0, 1.0),
-        PRA_JG_ACC: ("acc", 0.0, 1e12), PRA_JG_DEC: ("dec", 0.0, 1e12), PRA_JG_VM: ("vm", 0.0, 1e9),
-        PRA_JG_OFFSET: ("offset", 0.0, _POS_MAX), PRA_JG_DELAY: ("delay_us", 0.0, 1e7)}
-_INTEGER_JOG = {PRA_JG_MODE, PRA_JG_DIR}
-_JOG_DEFAULTS = {"mode": 0, "dir": 1, "sf": 0.0, "acc": 1e6, "dec": 1e6, "vm": 1e5, "offset": 1000, "delay_us": 0}
-_JOG_DI = (PRA_JG_MAP_DI_EN, PRA_JG_P_JOG_DI, PRA_JG_N_JOG_DI, PRA_JG_JOG_DI)
 MF_WAIT = 0x100           # APS_ptp Option bit 8: wait for APS_move_trigger (L3249, L3686-3691)
 # Interpolation Option bits 12-15, the "Buffer mode" field (L3686-3691) = the transition "Flag" (L3085): the
 # values of APS_define.h ITP_OPT_* (V114); the field value f is mode f + 1 of L3085-3143.
@@ -151,11 +126,6 @@ ITP_OPT_ABORT_BLEND, ITP_OPT_ABORT_FORCE, ITP_OPT_ABORT_STOP = 0x0000, 0x1000, 0
 ITP_OPT_BUFFERED, ITP_OPT_BLEND_DEC, ITP_OPT_BLEND_RES_DIST, ITP_OPT_BLEND_PCNT = 0x3000, 0x4000, 0x5000, 0x6000
 _BLEND_MODES = (BlendMode.ABORT_BLEND, BlendMode.ABORT_FORCED, BlendMode.ABORT_STOP, BlendMode.BUFFERED,
                 BlendMode.BLEND_DECEL, BlendMode.BLEND_DISTANCE, BlendMode.BLEND_PERCENT)
-_GEAR = {PRA_GEAR_MASTER: ("master", 0, 7), PRA_GEAR_ENGAGE_RATE: ("rate", 0.0, 1e9),
-         PRA_GEAR_RATIO: ("ratio", -1e6, 1e6), PRA_GANTRY_PROTECT_1: ("protect_1", 0, _POS_MAX),
-         PRA_GANTRY_PROTECT_2: ("protect_2", 0, _POS_MAX)}
-_INTEGER_GEAR = {PRA_GEAR_MASTER, PRA_GANTRY_PROTECT_1, PRA_GANTRY_PROTECT_2}
-_GEAR_DEFAULTS = {"master": 0, "rate": 0.0, "ratio": 1.0, "protect_1": 0, "protect_2": 0}  # V120
 # Latched limit events of the card (CARD_EVENTS bits): ADLINK limits are level inputs (V31).
 _LIMIT_EVENTS = {"pos_limit": 5, "neg_limit": 6, "soft_pos_limit": 8, "soft_neg_limit": 9}
 _IGNORED = {"emergency_stop_active", "direction_inhibited", "drive_alarm_active"}  # L3931-4010
@@ -174,14 +144,6 @@ class ApsController(DialectController):
 
     _PARAMETER_ERROR = ERR_ParametersInvalid   # what an APS_* function returns instead of raising (issue 21.2)
     _COMMAND_ERROR = ERR_FunctionNotAvailable
-
-    def __init__(self):
-        super().__init__()
-        self._motion: list[dict] = []
-        self._home: list[dict] = []
-        self._jog: list[dict] = []
-        self._el_mode: list[int] = []
-        self._gear: list[dict] = []
 
     # -- plumbing ----------------------------------------------------------------------------------------------
     def _axis(self, axis_id):
@@ -206,10 +168,13 @@ class ApsController(DialectController):
             return ERR_ParametersInvalid
         return ERR_NoError
 
+    def _prm(self):
+        """The card's PRA_* parameter table (vendor/adlink/aps_parameters.hpp)."""
+        return _core.aps_parameters(self._card.kernel)
+
     def _params(self, axis: int, **override) -> AdlinkPtp:
-        p = dict(self._motion[axis])
-        p.update(override)
-        return AdlinkPtp(**p)
+        """The axis's PRA_* motion parameters with ``override`` (validated: ValueError)."""
+        return self._prm().motion(axis).replace(**override)
 
     # -- simulation helpers ------------------------------------------------------------------------------------
     def Sleep(self, ms: float):
@@ -232,12 +197,8 @@ class ApsController(DialectController):
         if len(card) not in (4, 8):
             return ERR_ParametersInvalid, 0
         self._card = card
-        self._motion = [dict(_MOTION_DEFAULTS) for _ in range(len(card))]
-        self._home = [dict(_HOME_DEFAULTS) for _ in range(len(card))]
-        self._jog = [dict(_JOG_DEFAULTS) for _ in range(len(card))]
-        self._el_mode = [0] * len(card)
+        self._prm().power_on()  # the PRA_* table (AV5)
         self._scope_init()  # sampling, trigger, interrupts (issue 10.3)
-        self._gear = [dict(_GEAR_DEFAULTS) for _ in range(len(card))]
         self._pt_init()     # point tables (AF5-AF12)
         self._more_init()   # counters, watchdog, VAO, board parameters (AF13-AF21)
         return ERR_NoError, 1
@@ -266,99 +227,12 @@ class ApsController(DialectController):
         limits and PRA_ERR_POS_LEVEL at once."""
         i = self._axis(Axis_ID)
         v = _num(Data)
-        if i is None or v is None:
-            return self._bad()
-        c = self._card
-        para = _num(AxisPara)
-        if para in _LAW:
-            field, lo, hi = _LAW[para]
-            if not lo <= v <= hi or (para in _INTEGER_LAW and v != int(v)):
-                return ERR_ParametersInvalid
-            law = c.staged(i)["law"]
-            if not isinstance(law, ApsServoLaw):
-                return ERR_FunctionNotAvailable  # an axis with the GT law has no PRA gains
-            value = bool(v) if field == "v_inverse" else v
-            return self._do(lambda: (c.stage_law(i, law.replace(**{field: value})), c.update(1 << i)))
-        if para in _MOTION:
-            field, lo, hi = _MOTION[para]
-            if not lo <= v <= hi:
-                return ERR_ParametersInvalid
-            self._motion[i][field] = v
-            if para == PRA_SD_DEC and v > 0:
-                c.set_limit_stop_mode(i, bool(self._el_mode[i]), v)
-            return ERR_NoError
-        if para in _GEAR:
-            return self._set_gear_param(i, para, v)
-        for table, integers, store in ((_HOME, _INTEGER_HOME, self._home), (_JOG, _INTEGER_JOG, self._jog)):
-            if para in table:
-                field, lo, hi = table[para]
-                if not lo <= v <= hi or (para in integers and v != int(v)):
-                    return ERR_ParametersInvalid
-                store[i][field] = v
-                return ERR_NoError
-        if para in _JOG_DI:  # DI-linked jog is not simulated: only "off" (0) is accepted (V30)
-            return ERR_NoError if v == 0 else ERR_FunctionNotAvailable
-        if para == PRA_EL_MODE:
-            if v not in (0, 1):
-                return ERR_ParametersInvalid
-            self._el_mode[i] = int(v)
-            return self._do(c.set_limit_stop_mode, i, bool(v), self._motion[i]["sd_dec"] or 1e6)
-        if para in (PRA_PRE_EVENT_DIST, PRA_POST_EVENT_DIST):
-            if v != int(v) or not 0 <= v <= _POS_MAX:
-                return ERR_ParametersInvalid
-            pre, post = c.move_event_distances(i)
-            return self._do(c.set_move_event_distances, i, v if para == PRA_PRE_EVENT_DIST else pre,
-                            v if para == PRA_POST_EVENT_DIST else post)
-        if para == PRA_ERR_POS_LEVEL:
-            if v != int(v) or not 0 <= v <= _POS_MAX:
-                return ERR_ParametersInvalid
-            return self._do(c.set_error_level, i, v)
-        if para in (PRA_EL_LOGIC, PRA_SPEL_EN, PRA_SMEL_EN):
-            if v not in (0, 1):
-                return ERR_ParametersInvalid
-            field = {PRA_EL_LOGIC: ("pos_active_low", "neg_active_low"), PRA_SPEL_EN: ("soft_pos_enabled",),
-                     PRA_SMEL_EN: ("soft_neg_enabled",)}[para]
-            return self._do(c.set_limits, i, c.limits(i).replace(**{f: bool(v) for f in field}))
-        if para in (PRA_SPEL_POS, PRA_SMEL_POS):
-            if v != int(v) or abs(v) > _POS_MAX:
-                return ERR_ParametersInvalid
-            field = "soft_pos_pulse" if para == PRA_SPEL_POS else "soft_neg_pulse"
-            return self._do(c.set_limits, i, c.limits(i).replace(**{field: v}))
-        return ERR_ParametersInvalid
+        return self._bad() if i is None or v is None else self._prm().set(i, AxisPara, v)
 
     def APS_get_axis_param_f(self, Axis_ID, AxisPara):
         """``APS_get_axis_param_f(Axis_ID, AxisPara, &Data)`` -> ``(rtn, data)`` (F64)."""
         i = self._axis(Axis_ID)
-        if i is None:
-            return self._bad(), 0.0
-        c = self._card
-        para = _num(AxisPara)
-        if para in _LAW:
-            law = c.staged(i)["law"]
-            if not isinstance(law, ApsServoLaw):
-                return ERR_FunctionNotAvailable, 0.0
-            return ERR_NoError, float(getattr(law, _LAW[para][0]))
-        if para in _MOTION:
-            return ERR_NoError, float(self._motion[i][_MOTION[para][0]])
-        if para in _HOME:
-            return ERR_NoError, float(self._home[i][_HOME[para][0]])
-        if para in _JOG:
-            return ERR_NoError, float(self._jog[i][_JOG[para][0]])
-        if para in _GEAR:
-            return ERR_NoError, float(self._gear[i][_GEAR[para][0]])
-        if para in _JOG_DI:
-            return ERR_NoError, 0.0
-        if para == PRA_EL_MODE:
-            return ERR_NoError, float(self._el_mode[i])
-        if para in (PRA_PRE_EVENT_DIST, PRA_POST_EVENT_DIST):
-            return ERR_NoError, float(c.move_event_distances(i)[0 if para == PRA_PRE_EVENT_DIST else 1])
-        lim = c.limits(i)
-        table = {PRA_ERR_POS_LEVEL: lambda: c.error_level(i), PRA_EL_LOGIC: lambda: lim.pos_active_low,
-                 PRA_SPEL_EN: lambda: lim.soft_pos_enabled, PRA_SMEL_EN: lambda: lim.soft_neg_enabled,
-                 PRA_SPEL_POS: lambda: lim.soft_pos_pulse, PRA_SMEL_POS: lambda: lim.soft_neg_pulse}
-        if para in table:
-            return ERR_NoError, float(table[para]())
-        return ERR_ParametersInvalid, 0.0
+        return (self._bad(), 0.0) if i is None else self._prm().get(i, AxisPara)
 
     def APS_get_axis_param(self, Axis_ID, AxisPara):
         """``APS_get_axis_param(Axis_ID, AxisPara, &Data)`` -> ``(rtn, data)`` (I32: the value truncated)."""
@@ -396,7 +270,7 @@ class ApsController(DialectController):
         if vm is None or not 0 < vm <= 1e9:
             return ERR_ParametersInvalid
         for k, v in speeds.items():
-            field, lo, hi = next(t for t in _MOTION.values() if t[0] == k)
+            lo, hi = _SPEEDS[k]
             if v is None or not lo <= v <= hi:
                 return ERR_ParametersInvalid
         try:
@@ -446,7 +320,7 @@ class ApsController(DialectController):
         if isinstance(r, int):
             return r
         i, target, wait = r
-        return self._ptp(i, target, self._motion[i]["vm"], wait)
+        return self._ptp(i, target, self._prm().motion(i).vm, wait)
 
     def APS_ptp_v(self, Axis_ID, Option, Position, Vm, Wait=None) -> int:
         """``APS_ptp_v(Axis_ID, Option, F64 Position, F64 Vm, ASYNCALL *Wait)``: :func:`APS_ptp` at the given
@@ -501,10 +375,8 @@ class ApsController(DialectController):
         i = self._axis(Axis_ID)
         if i is None:
             return self._bad()
-        h = dict(self._home[i])
-        h["eza"] = bool(h["eza"])
         try:
-            p = AdlinkHome(**h)
+            p = self._prm().home(i).replace()  # validated before anything changes
         except ValueError:
             return ERR_ParametersInvalid
         self._release_limits(i)
@@ -523,7 +395,7 @@ class ApsController(DialectController):
         if On and not c.jog_on(i):
             if not c.jogging(i):
                 try:
-                    p = AdlinkJog(**self._jog[i])
+                    p = self._prm().jog(i).replace()
                 except ValueError:
                     return ERR_ParametersInvalid
                 self._release_limits(i)
@@ -600,21 +472,6 @@ class ApsController(DialectController):
             return True
         return False
 
-    def _set_gear_param(self, i: int, para, v: float) -> int:
-        field, lo, hi = _GEAR[para]
-        if not lo <= v <= hi or (para in _INTEGER_GEAR and v != int(v)):
-            return ERR_ParametersInvalid
-        if para == PRA_GEAR_MASTER and v >= len(self._card):
-            return ERR_ParametersInvalid
-        g = self._gear[i]
-        c = self._card
-        if para == PRA_GEAR_MASTER and c.mode(i) == "gear" and not c.gear_halted(i):
-            return ERR_FunctionNotAvailable  # the master of an engaged gear does not change (V119)
-        g[field] = v
-        if para == PRA_GEAR_RATIO and c.mode(i) == "gear" and not c.gear_halted(i):
-            return self._do(c.gear_ramp_to, i, v, g["rate"] * c.servo_period_s)  # on the fly, ramped (L3311)
-        return ERR_NoError
-
     def APS_start_gear(self, Axis_ID, Mode) -> int:
         """``APS_start_gear(Axis_ID, Mode)`` (the manual prints ``APS_start_gear(slave axis ID)``, L3311; the Mode
         argument is the library's, V119): 1 engages the standard gear of slave ``Axis_ID`` on PRA_GEAR_MASTER, the
@@ -631,11 +488,11 @@ class ApsController(DialectController):
             return self._do(c.set_mode, i, "t_curve")
         if Mode == 2:
             return ERR_FunctionNotAvailable
-        g = self._gear[i]
-        if int(g["master"]) == i:
+        master, ratio, rate = self._prm().gear(i)
+        if int(master) == i:
             return ERR_ParametersInvalid
         self._release_modes(i)
-        return self._do(c.set_gear_ramp, i, int(g["master"]), g["ratio"], g["rate"] * c.servo_period_s)
+        return self._do(c.set_gear_ramp, i, int(master), ratio, rate * c.servo_period_s)
 
     def _interp(self, ids, option, kind, trans, vm=None, speeds=None, **geom) -> int:
         """One interpolation command: validates the axis array and Option, builds the move, hands it to the card
@@ -679,7 +536,7 @@ class ApsController(DialectController):
             if None in vals.values():
                 return ERR_ParametersInvalid
             try:
-                all_ = AdlinkPtp(**vals, sd_dec=self._motion[arr[0]]["sd_dec"])
+                all_ = AdlinkPtp(**vals, sd_dec=self._prm().motion(arr[0]).sd_dec)
             except ValueError:
                 return ERR_ParametersInvalid
         v = 0.0 if vm is None else _num(vm)
