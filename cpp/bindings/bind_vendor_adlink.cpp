@@ -1,5 +1,6 @@
 // The ADLINK vendor module's scope registers (vendor/adlink/aps_scope.hpp: sampling, trigger parameters, compare
-// timer), host interrupts (vendor/adlink/aps_interrupts.hpp) and the PRA_* table (vendor/adlink/aps_parameters.hpp). Thin: every method returns the APS code as an int (getters: (code, value)); servobench.dialects.aps
+// timer), host interrupts (aps_interrupts.hpp), the PRA_* table (aps_parameters.hpp) and the board outputs
+// (aps_outputs.hpp: DO, board parameters, VAO). Thin: every method returns the APS code as an int (getters: (code, value)); servobench.dialects.aps
 // adapts the APS_* names to them. Registered in module.cpp.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -11,6 +12,7 @@
 
 #include "servobench/machine/card.hpp"
 #include "servobench/vendor/adlink/aps_interrupts.hpp"
+#include "servobench/vendor/adlink/aps_outputs.hpp"
 #include "servobench/vendor/adlink/aps_parameters.hpp"
 #include "servobench/vendor/adlink/aps_scope.hpp"
 
@@ -19,6 +21,7 @@ namespace servobench::bindings {
 namespace py = pybind11;
 using vendor::adlink::AdlinkCode;
 using vendor::adlink::ApsInterrupts;
+using vendor::adlink::ApsOutputs;
 using vendor::adlink::ApsParameters;
 using vendor::adlink::ApsSample;
 using vendor::adlink::ApsScope;
@@ -129,6 +132,49 @@ void bind_vendor_adlink(py::module_& m) {
   m.def("aps_parameters", [](machine::Card& k) -> ApsParameters& { return vendor::adlink::aps_parameters(k); },
         py::arg("card"), py::return_value_policy::reference_internal,
         "the card's ADLINK PRA_* parameter table (created on first use, owned by the card)");
+  py::class_<ApsOutputs>(m, "ApsOutputs",
+                         "The ADLINK board outputs of a card (vendor/adlink/aps_outputs.hpp): DO0..7, board "
+                         "parameters, VAO tables (L3436-3542). Get it with aps_outputs(card).")
+      .def("power_on", &ApsOutputs::power_on, "outputs off, no PWM mapping, VAO tables empty (APS_initial)")
+      .def("write_do", [](ApsOutputs& s, double g, double d) { return code(s.write_do(g, d)); }, py::arg("group"),
+           py::arg("data"))
+      .def("read_do", [](const ApsOutputs& s, double g) {
+             int d = 0;
+             const int c = code(s.read_do(g, d));
+             return py::make_tuple(c, d);
+           }, py::arg("group"), "(code, DO0..7 as bits)")
+      .def("set_do_bit", &ApsOutputs::set_do_bit, py::arg("channel"), py::arg("on"))
+      .def("all_do_off", &ApsOutputs::all_do_off)
+      .def("set_board_param", [](ApsOutputs& s, double p, double v) { return code(s.set_board_param(p, v)); },
+           py::arg("para"), py::arg("value"))
+      .def("board_param", [](const ApsOutputs& s, double p) {
+             int v = 0;
+             const int c = code(s.board_param(p, v));
+             return py::make_tuple(c, v);
+           }, py::arg("para"))
+      .def("set_vao_param", [](ApsOutputs& s, double p, double v) { return code(s.set_vao_param(p, v)); },
+           py::arg("para"), py::arg("value"))
+      .def("set_vao_table", [](ApsOutputs& s, double n, double vmin, double dv, double cnt, const std::vector<double>& pw) {
+             return code(s.set_vao_table(n, vmin, dv, cnt, pw));
+           }, py::arg("table"), py::arg("min_velocity"), py::arg("interval"), py::arg("count"), py::arg("powers"))
+      .def("switch_vao_table", [](ApsOutputs& s, double n) { return code(s.switch_vao_table(n)); }, py::arg("table"))
+      .def("select_vao", &ApsOutputs::select_vao, py::arg("ctrl"), py::arg("table"))
+      .def("start_vao", [](ApsOutputs& s, double ch, double en) { return code(s.start_vao(ch, en)); },
+           py::arg("channel"), py::arg("enable"))
+      .def("all_pwm_off", &ApsOutputs::all_pwm_off)
+      .def("vao_output", [](const ApsOutputs& s, int ctrl) {
+             const vendor::adlink::VaoOutput o = s.vao_output(ctrl);
+             py::dict d;
+             d["on"] = o.on;
+             d["table"] = o.table;
+             d["speed"] = o.speed;
+             d["power"] = o.power;
+             d["unit"] = o.unit;
+             return d;
+           }, py::arg("ctrl"), "on, table, speed (pulse/s), power (the output type's unit), unit");
+  m.def("aps_outputs", [](machine::Card& k) -> ApsOutputs& { return vendor::adlink::aps_outputs(k); },
+        py::arg("card"), py::return_value_policy::reference_internal,
+        "the card's ADLINK output module (created on first use, owned by the card)");
 }
 
 }  // namespace servobench::bindings

@@ -154,9 +154,9 @@ class _ApsPointTable:
         while t.applied < started:
             for kind, a, b in t.actions.pop(t.applied, ()):
                 if kind == "do":
-                    self._set_do_bit(a, b)
+                    self._outs().set_do_bit(a, bool(b))
                 else:
-                    self._vao_select(a, b)
+                    self._outs().select_vao(a, b)
             t.applied += 1
         return info, started
 

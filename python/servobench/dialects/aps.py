@@ -560,6 +560,10 @@ class ApsController(DialectController):
         reference axis whose PRA_VS/VM/VE/ACC/DEC/SF give the vector profile (L2819-2855). Option bit 0
         relative, bit 8 MF_WAIT, bits 12-15 the transition mode (ITP_OPT_*); TransPara the residual distance
         (pulse) or percent of the blend modes. ``Wait`` must be None/0."""
+        return self._line(Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Wait)
+
+    def _line(self, Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Wait, **speeds) -> int:
+        """APS_line / _v / _all: the first Dimension axes and positions, then :meth:`_interp`."""
         d = _num(Dimension)
         if Wait not in (None, 0) or d is None or d != int(d):
             return self._bad()
@@ -569,36 +573,18 @@ class ApsController(DialectController):
             return ERR_ParametersInvalid
         if len(ids) != d or len(pos) != d:
             return ERR_ParametersInvalid
-        return self._interp(ids, Option, "line", TransPara, target=pos)
+        return self._interp(ids, Option, "line", TransPara, target=pos, **speeds)
 
     def APS_line_v(self, Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Vm, Wait=None) -> int:
         """``APS_line_v(..., F64 *TransPara, F64 Vm, ASYNCALL *Wait)``: :func:`APS_line` at vector speed Vm."""
-        d = _num(Dimension)
-        if Wait not in (None, 0) or d is None or d != int(d):
-            return self._bad()
-        try:
-            ids, pos = list(Axis_ID_Array)[: int(d)], list(PositionArray)[: int(d)]
-        except TypeError:
-            return ERR_ParametersInvalid
-        if len(ids) != d or len(pos) != d:
-            return ERR_ParametersInvalid
-        return self._interp(ids, Option, "line", TransPara, vm=Vm, target=pos)
+        return self._line(Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Wait, vm=Vm)
 
     def APS_line_all(self, Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Vs, Vm, Ve, Acc, Dec, SFac,
                      Wait=None) -> int:
         """``APS_line_all(..., F64 *TransPara, F64 Vs, F64 Vm, F64 Ve, F64 Acc, F64 Dec, F64 SFac, ASYNCALL
         *Wait)``: :func:`APS_line` with every speed of the vector profile given (the PRA values unchanged)."""
-        d = _num(Dimension)
-        if Wait not in (None, 0) or d is None or d != int(d):
-            return self._bad()
-        try:
-            ids, pos = list(Axis_ID_Array)[: int(d)], list(PositionArray)[: int(d)]
-        except TypeError:
-            return ERR_ParametersInvalid
-        if len(ids) != d or len(pos) != d:
-            return ERR_ParametersInvalid
-        return self._interp(ids, Option, "line", TransPara, vm=Vm,
-                            speeds=dict(vs=Vs, vm=Vm, ve=Ve, acc=Acc, dec=Dec, sf=SFac), target=pos)
+        return self._line(Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Wait, vm=Vm,
+                          speeds=dict(vs=Vs, vm=Vm, ve=Ve, acc=Acc, dec=Dec, sf=SFac))
 
     def APS_absolute_linear_move(self, Dimension, Axis_ID_Array, Position_Array, Max_Linear_Speed) -> int:
         """``APS_absolute_linear_move(I32 Dimension, I32 *Axis_ID_Array, I32 *Position_Array, I32
