@@ -14,7 +14,7 @@ FILES = ("aps.py", "_aps_more.py", "_aps_pt.py")
 # The aim of issue 24.3: aps.py <= 40 % of its 1441 lines when the issue was filed, the private modules counted too.
 AIM_APS_LINES = 576
 # Lines reached (session 11): a ceiling that only comes down (the dialect does not grow back).
-CEILING = {"aps.py": 1085, "_aps_more.py": 307, "_aps_pt.py": 471}
+CEILING = {"aps.py": 1037, "_aps_more.py": 307, "_aps_pt.py": 471}
 # The dialect's mutable attributes still in Python (session 11 left them: AV8); the C++ module holds the rest.
 STILL_IN_PYTHON = {
     "_card", "_machine",                                        # the handle (may stay)

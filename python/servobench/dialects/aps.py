@@ -18,6 +18,7 @@ in the manual): :func:`run` (ticks), :func:`Sleep` (ms, as the manual's examples
 
 from __future__ import annotations
 
+import inspect
 import math
 
 import numpy as np
@@ -624,120 +625,6 @@ class ApsController(DialectController):
             return ERR_ParametersInvalid
         return self._interp(ids, Option, kind, TransPara, vm=vm, speeds=speeds, **geom)
 
-    @staticmethod
-    def _all(Vs, Vm, Ve, Acc, Dec, SFac):
-        return dict(vs=Vs, vm=Vm, ve=Ve, acc=Acc, dec=Dec, sf=SFac)
-
-    def APS_arc2_ca(self, Axis_ID_Array, Option, CenterArray, Angle, TransPara=0.0, Wait=None) -> int:
-        """``APS_arc2_ca(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 Angle, F64 *TransPara, ASYNCALL
-        *Wait)`` (L2978; V113): a 2-D arc about the centre by Angle degrees (+ CCW, ``|Angle|`` > 360 = laps)."""
-        return self._arc("arc2_ca", Axis_ID_Array, 2, Option, TransPara, Wait, center=CenterArray, angle_deg=Angle)
-
-    def APS_arc2_ca_v(self, Axis_ID_Array, Option, CenterArray, Angle, TransPara, Vm, Wait=None) -> int:
-        """:func:`APS_arc2_ca` at vector speed Vm."""
-        return self._arc("arc2_ca", Axis_ID_Array, 2, Option, TransPara, Wait, vm=Vm, center=CenterArray,
-                         angle_deg=Angle)
-
-    def APS_arc2_ca_all(self, Axis_ID_Array, Option, CenterArray, Angle, TransPara, Vs, Vm, Ve, Acc, Dec, SFac,
-                        Wait=None) -> int:
-        """:func:`APS_arc2_ca` with every speed given."""
-        return self._arc("arc2_ca", Axis_ID_Array, 2, Option, TransPara, Wait, vm=Vm,
-                         speeds=self._all(Vs, Vm, Ve, Acc, Dec, SFac), center=CenterArray, angle_deg=Angle)
-
-    def APS_arc2_ce(self, Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara=0.0, Wait=None) -> int:
-        """``APS_arc2_ce(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *EndArray, I16 Dir, F64
-        *TransPara, ASYNCALL *Wait)`` (L2981): a 2-D arc to an exact end point, Angle = theta + Dir*360
-        (L2943-2958); exactly 180 deg or 360 deg is ERR_ParametersInvalid (L2930-2933)."""
-        return self._arc("arc2_ce", Axis_ID_Array, 2, Option, TransPara, Wait, center=CenterArray, target=EndArray,
-                         dir=Dir)
-
-    def APS_arc2_ce_v(self, Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara, Vm, Wait=None) -> int:
-        """:func:`APS_arc2_ce` at vector speed Vm."""
-        return self._arc("arc2_ce", Axis_ID_Array, 2, Option, TransPara, Wait, vm=Vm, center=CenterArray,
-                         target=EndArray, dir=Dir)
-
-    def APS_arc2_ce_all(self, Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara, Vs, Vm, Ve, Acc, Dec,
-                        SFac, Wait=None) -> int:
-        """:func:`APS_arc2_ce` with every speed given."""
-        return self._arc("arc2_ce", Axis_ID_Array, 2, Option, TransPara, Wait, vm=Vm,
-                         speeds=self._all(Vs, Vm, Ve, Acc, Dec, SFac), center=CenterArray, target=EndArray, dir=Dir)
-
-    def APS_arc3_ca(self, Axis_ID_Array, Option, CenterArray, NormalArray, Angle, TransPara=0.0, Wait=None) -> int:
-        """``APS_arc3_ca(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *NormalArray, F64 Angle, F64
-        *TransPara, ASYNCALL *Wait)`` (L2899): a 3-D arc, right-hand rule about the normal (Gram-Schmidt, L2911)."""
-        return self._arc("arc3_ca", Axis_ID_Array, 3, Option, TransPara, Wait, center=CenterArray,
-                         normal=NormalArray, angle_deg=Angle)
-
-    def APS_arc3_ca_v(self, Axis_ID_Array, Option, CenterArray, NormalArray, Angle, TransPara, Vm, Wait=None) -> int:
-        """:func:`APS_arc3_ca` at vector speed Vm."""
-        return self._arc("arc3_ca", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm, center=CenterArray,
-                         normal=NormalArray, angle_deg=Angle)
-
-    def APS_arc3_ca_all(self, Axis_ID_Array, Option, CenterArray, NormalArray, Angle, TransPara, Vs, Vm, Ve, Acc,
-                        Dec, SFac, Wait=None) -> int:
-        """:func:`APS_arc3_ca` with every speed given."""
-        return self._arc("arc3_ca", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm,
-                         speeds=self._all(Vs, Vm, Ve, Acc, Dec, SFac), center=CenterArray, normal=NormalArray,
-                         angle_deg=Angle)
-
-    def APS_arc3_ce(self, Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara=0.0, Wait=None) -> int:
-        """``APS_arc3_ce(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *EndArray, I16 Dir, F64
-        *TransPara, ASYNCALL *Wait)`` (L2900): a 3-D arc to an exact end point (no half or full circle)."""
-        return self._arc("arc3_ce", Axis_ID_Array, 3, Option, TransPara, Wait, center=CenterArray, target=EndArray,
-                         dir=Dir)
-
-    def APS_arc3_ce_v(self, Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara, Vm, Wait=None) -> int:
-        """:func:`APS_arc3_ce` at vector speed Vm."""
-        return self._arc("arc3_ce", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm, center=CenterArray,
-                         target=EndArray, dir=Dir)
-
-    def APS_arc3_ce_all(self, Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara, Vs, Vm, Ve, Acc, Dec,
-                        SFac, Wait=None) -> int:
-        """:func:`APS_arc3_ce` with every speed given."""
-        return self._arc("arc3_ce", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm,
-                         speeds=self._all(Vs, Vm, Ve, Acc, Dec, SFac), center=CenterArray, target=EndArray, dir=Dir)
-
-    def APS_sprial_ca(self, Axis_ID_Array, Option, CenterArray, NormalArray, Angle, DeltaH, FinalR, TransPara=0.0,
-                      Wait=None) -> int:
-        """``APS_sprial_ca(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *NormalArray, F64 Angle, F64
-        DeltaH, F64 FinalR, F64 *TransPara, ASYNCALL *Wait)`` (the manual's spelling, L3047; V113): a conical
-        spiral, rise DeltaH along the normal, radius to FinalR (L3001-3035)."""
-        return self._arc("spiral_ca", Axis_ID_Array, 3, Option, TransPara, Wait, center=CenterArray,
-                         normal=NormalArray, angle_deg=Angle, height=DeltaH, final_radius=FinalR)
-
-    def APS_sprial_ca_v(self, Axis_ID_Array, Option, CenterArray, NormalArray, Angle, DeltaH, FinalR, TransPara, Vm,
-                        Wait=None) -> int:
-        """:func:`APS_sprial_ca` at vector speed Vm."""
-        return self._arc("spiral_ca", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm, center=CenterArray,
-                         normal=NormalArray, angle_deg=Angle, height=DeltaH, final_radius=FinalR)
-
-    def APS_sprial_ca_all(self, Axis_ID_Array, Option, CenterArray, NormalArray, Angle, DeltaH, FinalR, TransPara,
-                          Vs, Vm, Ve, Acc, Dec, SFac, Wait=None) -> int:
-        """:func:`APS_sprial_ca` with every speed given."""
-        return self._arc("spiral_ca", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm,
-                         speeds=self._all(Vs, Vm, Ve, Acc, Dec, SFac), center=CenterArray, normal=NormalArray,
-                         angle_deg=Angle, height=DeltaH, final_radius=FinalR)
-
-    def APS_sprial_ce(self, Axis_ID_Array, Option, CenterArray, NormalArray, EndArray, Dir, TransPara=0.0,
-                      Wait=None) -> int:
-        """``APS_sprial_ce(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *NormalArray, F64 *EndArray, I16
-        Dir, F64 *TransPara, ASYNCALL *Wait)`` (L3050): a spiral to an exact end point (L3037-3063)."""
-        return self._arc("spiral_ce", Axis_ID_Array, 3, Option, TransPara, Wait, center=CenterArray,
-                         normal=NormalArray, target=EndArray, dir=Dir)
-
-    def APS_sprial_ce_v(self, Axis_ID_Array, Option, CenterArray, NormalArray, EndArray, Dir, TransPara, Vm,
-                        Wait=None) -> int:
-        """:func:`APS_sprial_ce` at vector speed Vm."""
-        return self._arc("spiral_ce", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm, center=CenterArray,
-                         normal=NormalArray, target=EndArray, dir=Dir)
-
-    def APS_sprial_ce_all(self, Axis_ID_Array, Option, CenterArray, NormalArray, EndArray, Dir, TransPara, Vs, Vm,
-                          Ve, Acc, Dec, SFac, Wait=None) -> int:
-        """:func:`APS_sprial_ce` with every speed given."""
-        return self._arc("spiral_ce", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm,
-                         speeds=self._all(Vs, Vm, Ve, Acc, Dec, SFac), center=CenterArray, normal=NormalArray,
-                         target=EndArray, dir=Dir)
-
     # -- [/interpolation and gear] ----------------------------------------------------------------------------------
 
     # -- positions -------------------------------------------------------------------------------------------------
@@ -1042,6 +929,71 @@ class _ApsScope:
         """``APS_set_int(Int_No)``: signals the interrupt by software."""
         return ERR_DeviceNotInitial if self._card is None else self._ints().set_signaled(Int_No, True)
 
+
+# The arc and spiral commands (L2899-3063; argument lists V113) as rows: manual name -> (Card.aps_interp kind, axes,
+# the manual's geometry arguments -> aps_interp keywords, what the manual says). Each row makes three functions with
+# the manual's signatures: NAME (PRA speeds), NAME_v (at vector speed Vm, pulse/s), NAME_all (every speed given:
+# Vs/Vm/Ve pulse/s, Acc/Dec pulse/s^2, SFac 0..1). Positions in pulse, angles in degrees; Option and TransPara as
+# APS_line; ``Wait`` must be None/0.
+_ARCS = {
+    "APS_arc2_ca": ("arc2_ca", 2, {"CenterArray": "center", "Angle": "angle_deg"},
+                    "``APS_arc2_ca(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 Angle, F64 *TransPara, "
+                    "ASYNCALL *Wait)`` (L2978): a 2-D arc about the centre by Angle degrees (+ CCW, ``|Angle|`` > 360 "
+                    "= laps)."),
+    "APS_arc2_ce": ("arc2_ce", 2, {"CenterArray": "center", "EndArray": "target", "Dir": "dir"},
+                    "``APS_arc2_ce(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *EndArray, I16 Dir, F64 "
+                    "*TransPara, ASYNCALL *Wait)`` (L2981): a 2-D arc to an exact end point, Angle = theta + Dir*360 "
+                    "(L2943-2958); exactly 180 deg or 360 deg is ERR_ParametersInvalid (L2930-2933)."),
+    "APS_arc3_ca": ("arc3_ca", 3, {"CenterArray": "center", "NormalArray": "normal", "Angle": "angle_deg"},
+                    "``APS_arc3_ca(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *NormalArray, F64 Angle, "
+                    "F64 *TransPara, ASYNCALL *Wait)`` (L2899): a 3-D arc, right-hand rule about the normal "
+                    "(Gram-Schmidt, L2911)."),
+    "APS_arc3_ce": ("arc3_ce", 3, {"CenterArray": "center", "EndArray": "target", "Dir": "dir"},
+                    "``APS_arc3_ce(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *EndArray, I16 Dir, F64 "
+                    "*TransPara, ASYNCALL *Wait)`` (L2900): a 3-D arc to an exact end point (no half or full "
+                    "circle)."),
+    "APS_sprial_ca": ("spiral_ca", 3, {"CenterArray": "center", "NormalArray": "normal", "Angle": "angle_deg",
+                                       "DeltaH": "height", "FinalR": "final_radius"},
+                      "``APS_sprial_ca(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *NormalArray, F64 "
+                      "Angle, F64 DeltaH, F64 FinalR, F64 *TransPara, ASYNCALL *Wait)`` (the manual's spelling, "
+                      "L3047): a conical spiral, rise DeltaH along the normal, radius to FinalR (L3001-3035)."),
+    "APS_sprial_ce": ("spiral_ce", 3, {"CenterArray": "center", "NormalArray": "normal", "EndArray": "target",
+                                       "Dir": "dir"},
+                      "``APS_sprial_ce(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *NormalArray, F64 "
+                      "*EndArray, I16 Dir, F64 *TransPara, ASYNCALL *Wait)`` (L3050): a spiral to an exact end point "
+                      "(L3037-3063)."),
+}
+_SPEED_ARGS = {"_v": ("Vm",), "_all": ("Vs", "Vm", "Ve", "Acc", "Dec", "SFac")}
+
+
+def _arc_function(name: str, suffix: str, kind: str, dim: int, geom: dict, doc: str):
+    """One ApsController method of an _ARCS row: the manual's signature, one call of ``_arc``."""
+    P = inspect.Parameter
+    extra = _SPEED_ARGS.get(suffix, ())
+    params = [P(n, P.POSITIONAL_OR_KEYWORD) for n in ("self", "Axis_ID_Array", "Option", *geom)]
+    params.append(P("TransPara", P.POSITIONAL_OR_KEYWORD, **({} if suffix else {"default": 0.0})))
+    params += [P(n, P.POSITIONAL_OR_KEYWORD) for n in extra] + [P("Wait", P.POSITIONAL_OR_KEYWORD, default=None)]
+    sig = inspect.Signature(params, return_annotation="int")
+
+    def method(*args, **kwargs):
+        a = sig.bind(*args, **kwargs)
+        a.apply_defaults()
+        v = a.arguments
+        speeds = dict(zip(("vs", "vm", "ve", "acc", "dec", "sf"), (v[k] for k in extra))) if suffix == "_all" else None
+        return v["self"]._arc(kind, v["Axis_ID_Array"], dim, v["Option"], v["TransPara"], v["Wait"], vm=v.get("Vm"),
+                              speeds=speeds, **{key: v[arg] for arg, key in geom.items()})
+
+    method.__name__ = method.__qualname__ = name + suffix
+    method.__signature__ = sig  # type: ignore[attr-defined]
+    method.__annotations__ = {"return": "int"}
+    method.__doc__ = doc if not suffix else (f":func:`{name}` at vector speed Vm (pulse/s)." if suffix == "_v" else
+                                             f":func:`{name}` with every speed given (the PRA values unchanged).")
+    return method
+
+
+for _name, (_kind, _dim, _geom, _doc) in _ARCS.items():
+    for _suffix in ("", "_v", "_all"):
+        setattr(ApsController, _name + _suffix, _arc_function(_name, _suffix, _kind, _dim, _geom, _doc))
 
 for _mixin in (_ApsScope, _ApsPointTable, _ApsMore):  # the blocks' functions are ApsController methods
     for _name, _fn in list(vars(_mixin).items()):
