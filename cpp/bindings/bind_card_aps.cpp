@@ -1,6 +1,6 @@
 // The ADLINK module of the Card (vendor/adlink/adlink_axes.hpp: immediate moves, trigger, limit stop mode, distance
 // events, error level, in-position band, homing and jog sequences), the interpolation group
-// (machine/card_group_adlink.hpp) and the gear engage ramp: thin, axes 0-based; servobench.dialects.aps translates.
+// (vendor/adlink/adlink_group.hpp) and the gear engage ramp: thin, axes 0-based; servobench.dialects.aps translates.
 // The module's methods stay methods of Card (the Python API of the card is unchanged). Called from bind_card.cpp.
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -13,9 +13,9 @@
 #include "card_axis.hpp"
 #include "servobench/common/validate.hpp"
 #include "servobench/machine/card.hpp"
-#include "servobench/machine/card_group_adlink.hpp"
 #include "servobench/machine/card_modes.hpp"
 #include "servobench/vendor/adlink/adlink_axes.hpp"
+#include "servobench/vendor/adlink/adlink_group.hpp"
 
 namespace servobench::bindings {
 
@@ -102,7 +102,7 @@ void bind_card_aps(py::class_<Card>& c, py::module_& m) {
                          double final_radius, Flag relative, motion::BlendMode mode, double blend, double vm,
                          const motion::AdlinkPtpParams* all, Flag wait, double dwell_s, double buffer_size,
                          Flag point_table) {
-         machine::AdlinkGroupMove mv;
+         vendor::adlink::AdlinkGroupMove mv;
          for (AxisIndex a : array) mv.array.push_back(card_axis(k, a));
          mv.params = params;
          mv.spec.kind = kind_of(kind);
@@ -126,7 +126,7 @@ void bind_card_aps(py::class_<Card>& c, py::module_& m) {
          check_range("Card.aps_interp", "buffer_size", buffer_size, 1, 1e6, "pending moves");
          mv.buffer_size = buffer_size;
          mv.point_table = point_table;
-         machine::adlink_group_move(k, mv);
+         vendor::adlink::adlink_group_move(k, mv);
        }, py::arg("array"), py::arg("params"), py::arg("kind"), py::kw_only(),
        py::arg("target") = std::vector<double>{}, py::arg("center") = std::vector<double>{},
        py::arg("normal") = std::vector<double>{}, py::arg("angle_deg") = 0.0, py::arg("dir") = 0,
@@ -139,11 +139,11 @@ void bind_card_aps(py::class_<Card>& c, py::module_& m) {
        "point_table: an APS_pt_* table, MTS PTB), buffered with its transition mode while the same array moves")
       .def("aps_interp_trigger", [](Card& k, double mask) {
              check_integer("Card", "mask", mask, 0, 4294967295.0);
-             return machine::adlink_group_trigger(k, static_cast<std::uint32_t>(mask));
+             return vendor::adlink::adlink_group_trigger(k, static_cast<std::uint32_t>(mask));
            }, py::arg("mask"), "starts a waiting (MF_WAIT) interpolation whose reference axis is in mask")
       .def("aps_interp_info", [](Card& k) {
              py::dict d;
-             const machine::AdlinkGroup* g = machine::adlink_group(k);
+             const vendor::adlink::AdlinkGroup* g = vendor::adlink::adlink_group(k);
              d["set_up"] = g != nullptr;
              if (g == nullptr) return d;
              std::vector<std::size_t> arr = g->array();
@@ -169,9 +169,9 @@ void bind_card_aps(py::class_<Card>& c, py::module_& m) {
            }, py::arg("axis"), py::arg("ratio"), py::arg("rate_per_tick"), "on-the-fly ratio change, ramped")
       .def("gear_ratio", [](Card& k, AxisIndex i) { return k.modes().gear_ratio(card_axis(k, i)); }, py::arg("axis"),
            "the gear ratio in effect now");
-  m.def("aps_group_motion_status", [](const Card& k, AxisIndex i) { return machine::aps_group_motion_status(k, card_axis(k, i)); },
+  m.def("aps_group_motion_status", [](const Card& k, AxisIndex i) { return vendor::adlink::aps_group_motion_status(k, card_axis(k, i)); },
         py::arg("card"), py::arg("axis"), "APS_motion_status with the interpolation group's view (WAIT, BLD, MDN)");
-  m.def("aps_group_stop_code", [](const Card& k, AxisIndex i) { return machine::aps_group_stop_code(k, card_axis(k, i)); },
+  m.def("aps_group_stop_code", [](const Card& k, AxisIndex i) { return vendor::adlink::aps_group_stop_code(k, card_axis(k, i)); },
         py::arg("card"), py::arg("axis"), "APS_get_stop_code with a group fault's code on every group axis");
 }
 

@@ -88,7 +88,9 @@ void bind_card_codes(py::module_& m) {
       .value("ERR_DeviceAlreadyInitialed", vendor::adlink::AdlinkCode::DeviceAlreadyInitialed)
       .value("ERR_ParametersInvalid", vendor::adlink::AdlinkCode::ParametersInvalid)
       .value("ERR_FunctionNotAvailable", vendor::adlink::AdlinkCode::FunctionNotAvailable)
-      .value("ERR_DistantNotEnough", vendor::adlink::AdlinkCode::DistantNotEnough);
+      .value("ERR_DistantNotEnough", vendor::adlink::AdlinkCode::DistantNotEnough)
+      .value("ERR_InterruptNotEnable", vendor::adlink::AdlinkCode::InterruptNotEnable)
+      .value("ERR_TimeOut", vendor::adlink::AdlinkCode::TimeOut);
 }
 
 }  // namespace servobench::bindings

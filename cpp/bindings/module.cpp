@@ -25,6 +25,7 @@ void bind_batch(py::module_& m);
 void bind_vendor_ge(py::module_& m);  // bind_vendor_ge.cpp: the GE list module (vendor/googol/ge_list.hpp)
 void bind_vendor_gt(py::module_& m);
 void bind_vendor_gts(py::module_& m);
+void bind_vendor_adlink(py::module_& m);  // bind_vendor_adlink.cpp: the ADLINK vendor module
 }  // namespace servobench::bindings
 
 PYBIND11_MODULE(_core, m) {
@@ -52,6 +53,7 @@ PYBIND11_MODULE(_core, m) {
   servobench::bindings::bind_vendor_ge(m);
   servobench::bindings::bind_vendor_gt(m);
   servobench::bindings::bind_vendor_gts(m);
+  servobench::bindings::bind_vendor_adlink(m);
   // Last: every function's signature readable by inspect.signature() (help(), IPython completion; decision Y3).
   // Not while pybind11-stubgen reads the module at build time (CMakeLists.txt sets SERVOBENCH_STUBGEN): it takes a
   // text signature over the docstring's typed line, and the stubs need the types.

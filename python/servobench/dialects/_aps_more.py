@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import math
 
+from .. import _core
+
 ERR_NoError, ERR_DeviceNotInitial, ERR_ParametersInvalid, ERR_FunctionNotAvailable = 0, -4, -10, -13
 
 # Board parameters (L1623, Table 4-4 L3527-3533).
@@ -24,8 +26,6 @@ VAO_TABLE_PWM_Config = VAO_TABLE_PWM_CONFIG  # the manual's spelling (L3462)
 # Watchdog action bits (L4072-4074).
 WDT_ACTION_SERVO_OFF, WDT_ACTION_DO_OFF, WDT_ACTION_PWM_OFF = 0x1, 0x2, 0x4
 _WDT_UNIT_S = 0.1             # time_out unit, s ("10*100 ms = 1 sec", L4070)
-_VAO_LIMITS = {1: (0, 2000), 2: (3, 50e6), 3: (3, 50e6)}          # power range per output type (L3489-3495)
-_VAO_CONFIG = {1: (3, 50e6), 2: (20, 335544320), 3: (1, 2000)}    # VAO_TABLE_PWM_Config (L3462-3474, L3508)
 
 
 def _num(v):
@@ -45,18 +45,12 @@ class _ApsMore:
     """The functions of this module's docstring (mixed into ApsController)."""
 
     def _more_init(self):
-        self._board_prm = {PRS_EMG_LOGIC: 0, **{p: -1 for p in range(PRB_PWM0_MAP_DO, PRB_PWM3_MAP_DO + 1)}}
-        self._do_word = 0
-        self._timer = {"value": 0, "since": self._card.tick}
+        self._outs().power_on()  # DO word, board parameters, VAO: vendor/adlink/aps_outputs.hpp (AV9)
         self._wdt = {"period": 0, "action": 0, "deadline": None, "sub": None, "fired": False}
-        self._vao_prm = {}
-        for n in range(8):
-            self._vao_prm.update({VAO_TABLE_OUTPUT_TYPE + 2 * n: 1, VAO_TABLE_INPUT_TYPE + 2 * n: 0,
-                                  VAO_TABLE_PWM_CONFIG + n: 100, VAO_TABLE_SRC + n: 0x01})
-        self._vao_tables: dict[int, tuple] = {}
-        self._vao_table_of = [0, 0]      # active table of VAO controllers 0..1
-        self._vao_on = [False, False]    # APS_start_vao
-        self._tgr.update({0x20: 1, 0x21: 0, 0x22: 0, 0x23: 0})   # TIMR_ITV, TIMR_DIR, TIMR_RING_EN, TIMR_EN
+
+    def _outs(self):
+        """The card's ADLINK output module (DO0..7, board parameters, VAO tables)."""
+        return _core.aps_outputs(self._card.kernel)
 
     def _more_close(self):
         sub = self._wdt["sub"] if hasattr(self, "_wdt") else None
@@ -136,45 +130,20 @@ class _ApsMore:
         i = self._axis(Axis_ID)
         return (self._bad(), 0) if i is None else (ERR_NoError, _reg32(self._card.profile_pos(i)))
 
-    # -- compare timer (L3363-3378; TIMR_* of APS_set_trigger_param) ---------------------------------------------
-    def _timer_now(self) -> int:
-        """The timer counter now: while TIMR_EN, +-1 every TIMR_ITV servo ticks (TIMR_DIR 0 up, 1 down; AF15),
-        wrapping at 32 bits with TIMR_RING_EN, else held at the I32 limits."""
-        t, g = self._timer, self._tgr
-        if not g.get(0x23, 0):
-            return t["value"]
-        n = (self._card.tick - t["since"]) // max(1, g.get(0x20, 1))
-        v = t["value"] + (-n if g.get(0x21, 0) else n)
-        if g.get(0x22, 0):
-            return _reg32(v)
-        return max(-2**31, min(2**31 - 1, v))
-
-    def _timer_param(self, p: int, v: int) -> int:
-        """APS_set_trigger_param for TIMR_ITV (0x20, servo ticks 1..2^31-1), TIMR_DIR (0x21, 0 up / 1 down),
-        TIMR_RING_EN (0x22, 0/1), TIMR_EN (0x23, 0/1)."""
-        ok = 1 <= v <= 2**31 - 1 if p == 0x20 else v in (0, 1)
-        if not ok:
-            return ERR_ParametersInvalid
-        self._timer = {"value": self._timer_now(), "since": self._card.tick}
-        self._tgr[p] = v
-        return ERR_NoError
-
+    # -- compare timer (L3363-3378; TIMR_* of APS_set_trigger_param): vendor/adlink/aps_scope.hpp's (AF15) ------
     def APS_get_timer_counter(self, Board_ID, TmrCh):
         """``APS_get_timer_counter(I32 Board_ID, I32 TmrCh, I32 *Cnt)`` -> ``(rtn, Cnt)`` (L3376): the compare
-        timer (TmrCh 0, the card's one timer)."""
+        timer (TmrCh 0, the card's one timer): while TIMR_EN, +-1 every TIMR_ITV servo ticks (TIMR_DIR 0 up,
+        1 down), wrapping at 32 bits with TIMR_RING_EN, else held at the I32 limits."""
         if not self._board(Board_ID):
             return self._bad(), 0
-        return (ERR_NoError, self._timer_now()) if _num(TmrCh) == 0 else (ERR_ParametersInvalid, 0)
+        return (ERR_NoError, self._scope().timer_counter()) if _num(TmrCh) == 0 else (ERR_ParametersInvalid, 0)
 
     def APS_set_timer_counter(self, Board_ID, TmrCh, Cnt) -> int:
         """``APS_set_timer_counter(I32 Board_ID, I32 TmrCh, I32 Cnt)`` (L3378): sets the timer counter (I32)."""
         if not self._board(Board_ID):
             return self._bad()
-        v = _int(Cnt)
-        if _num(TmrCh) != 0 or v is None or not -2**31 <= v < 2**31:
-            return ERR_ParametersInvalid
-        self._timer = {"value": v, "since": self._card.tick}
-        return ERR_NoError
+        return self._scope().set_timer_counter(Cnt) if _num(TmrCh) == 0 else ERR_ParametersInvalid
 
     # -- watchdog (L4025-4084) ----------------------------------------------------------------------------------
     def _wdt_ok(self, Board_ID, TimerNo):
@@ -208,9 +177,9 @@ class _ApsMore:
                 if card.servo_on(i):
                     card.axis_off(i)
         if act & WDT_ACTION_DO_OFF:
-            self._do_word = 0
+            self._outs().all_do_off()
         if act & WDT_ACTION_PWM_OFF:
-            self._vao_on = [False, False]
+            self._outs().all_pwm_off()
 
     def APS_wdt_set_action_event(self, Board_ID, TimerNo, EventByBit) -> int:
         """``APS_wdt_set_action_event(board_id, timer_no, EventByBit)`` (L4037, L4071-4074): what the time-out
@@ -257,56 +226,31 @@ class _ApsMore:
                                                            self._card.servo_period_s))
         return ERR_NoError
 
-    # -- digital outputs (APS library; what the point table and the watchdog write) ------------------------------
-    def _set_do_bit(self, ch: int, on: int) -> None:
-        self._do_word = (self._do_word | (1 << ch)) if on else (self._do_word & ~(1 << ch))
-
+    # -- digital outputs, board parameters, VAO: adapters over vendor/adlink/aps_outputs.hpp (AV9) -----------------
     def APS_write_d_output(self, Board_ID, DO_Group, DO_Data) -> int:
         """``APS_write_d_output(Board_ID, DO_Group, DO_Data)`` (APS library): the digital outputs DO0..7 (group 0)
         as bits."""
-        if not self._board(Board_ID):
-            return self._bad()
-        v = _int(DO_Data)
-        if _num(DO_Group) != 0 or v is None or not 0 <= v <= 0xFF:
-            return ERR_ParametersInvalid
-        self._do_word = v
-        return ERR_NoError
+        return self._outs().write_do(DO_Group, DO_Data) if self._board(Board_ID) else self._bad()
 
     def APS_read_d_output(self, Board_ID, DO_Group):
         """``APS_read_d_output(Board_ID, DO_Group, &DO_Data)`` -> ``(rtn, DO0..7 as bits)`` (APS library), with the
         point tables' instruction commands of the moves started so far carried out."""
         if not self._board(Board_ID):
             return self._bad(), 0
-        if _num(DO_Group) != 0:
-            return ERR_ParametersInvalid, 0
         for t in self._pt.values():
             self._pt_sync(t)
-        return ERR_NoError, self._do_word
+        return self._outs().read_do(DO_Group)
 
-    # -- board parameters and drive mode (L1498, L1623, L3520-3533) ---------------------------------------------
     def APS_set_board_param(self, Board_ID, BOD_Param_No, BOD_Param) -> int:
         """``APS_set_board_param(Board_ID, BOD_Param_No, BOD_Param)`` (L3520): PRB_PWMx_MAP_DO (110h-113h): -1 no
         mapping, else bits 0-7 the DO channel and bit 8 the logic (1: DO on enables PWMx, 0: DO on disables it,
         L3530); PRS_EMG_LOGIC (00h, L1623): only 0 (the simulated EMG input is the active state; inverting its
         wiring is not simulated, AF17)."""
-        if not self._board(Board_ID):
-            return self._bad()
-        p, v = _int(BOD_Param_No), _int(BOD_Param)
-        if p not in self._board_prm or v is None:
-            return ERR_ParametersInvalid
-        if p == PRS_EMG_LOGIC:
-            return ERR_NoError if v == 0 else (ERR_FunctionNotAvailable if v == 1 else ERR_ParametersInvalid)
-        if v != -1 and not (0 <= v <= 0x1FF and (v & 0xFF) <= 7):
-            return ERR_ParametersInvalid
-        self._board_prm[p] = v
-        return ERR_NoError
+        return self._outs().set_board_param(BOD_Param_No, BOD_Param) if self._board(Board_ID) else self._bad()
 
     def APS_get_board_param(self, Board_ID, BOD_Param_No):
         """``APS_get_board_param(Board_ID, BOD_Param_No, &BOD_Param)`` -> ``(rtn, BOD_Param)`` (APS library)."""
-        if not self._board(Board_ID):
-            return self._bad(), 0
-        p = _int(BOD_Param_No)
-        return (ERR_NoError, self._board_prm[p]) if p in self._board_prm else (ERR_ParametersInvalid, 0)
+        return self._outs().board_param(BOD_Param_No) if self._board(Board_ID) else (self._bad(), 0)
 
     def APS_get_eep_curr_drv_ctrl_mode(self, Board_ID):
         """``APS_get_eep_curr_drv_ctrl_mode(Board_ID, &ModeInBit)`` -> ``(rtn, ModeInBit)`` (L1498): bit k = 1:
@@ -316,7 +260,6 @@ class _ApsMore:
             return self._bad(), 0
         return ERR_NoError, (1 << len(self._card)) - 1
 
-    # -- VAO: velocity -> PWM power tables (L3436-3542) ----------------------------------------------------------
     def APS_set_vao_param(self, Board_ID, Param_No, Param_Val) -> int:
         """``APS_set_vao_param(Board_ID, Param_No, Param_Val)`` (L3461, L3504-3512) for table N = 0..7:
         VAO_TABLE_OUTPUT_TYPE + 2N (1 PWM duty, 2 frequency at fixed width, 3 frequency at fixed duty),
@@ -324,27 +267,7 @@ class _ApsMore:
         speed; set it to 1 as the manual's examples do, L3537-3539), VAO_TABLE_PWM_Config + N (mode 1: Hz
         3..50e6; 2: ns 20..335544320; 3: duty x 0.05 %, 1..2000),
         VAO_TABLE_SRC + N (axis bits)."""
-        if not self._board(Board_ID):
-            return self._bad()
-        p, v = _int(Param_No), _int(Param_Val)
-        if p not in self._vao_prm or v is None:
-            return ERR_ParametersInvalid
-        if p < 0x10:
-            if p % 2 == 0:
-                ok = v in (1, 2, 3)
-            else:
-                if v == 0:
-                    return ERR_FunctionNotAvailable
-                ok = v == 1
-        elif p < 0x20:
-            lo, hi = _VAO_CONFIG[self._vao_prm[VAO_TABLE_OUTPUT_TYPE + 2 * (p - 0x10)]]
-            ok = lo <= v <= hi
-        else:
-            ok = 1 <= v < (1 << len(self._card))
-        if not ok:
-            return ERR_ParametersInvalid
-        self._vao_prm[p] = v
-        return ERR_NoError
+        return self._outs().set_vao_param(Param_No, Param_Val) if self._board(Board_ID) else self._bad()
 
     def APS_set_vao_table(self, Board_ID, Table_No, MinVelocity, VelInterval, TotalPoints, MappingDataArray) -> int:
         """``APS_set_vao_table(Board_ID, Table_No, I32 MinVelocity, I32 VelInterval, I32 TotalPoints, I32
@@ -353,48 +276,18 @@ class _ApsMore:
         unit and range, L3489-3495)."""
         if not self._board(Board_ID):
             return self._bad()
-        n, vmin, dv, cnt = _int(Table_No), _int(MinVelocity), _int(VelInterval), _int(TotalPoints)
-        if n not in range(8) or vmin is None or dv is None or cnt is None or vmin < 0 or dv <= 0 \
-                or not 1 <= cnt <= 32:
-            return ERR_ParametersInvalid
-        try:
-            powers = [_num(x) for x in list(MappingDataArray)[:cnt]]
-        except TypeError:
-            return ERR_ParametersInvalid
-        lo, hi = _VAO_LIMITS[self._vao_prm[VAO_TABLE_OUTPUT_TYPE + 2 * n]]
-        if len(powers) != cnt or None in powers or any(not lo <= x <= hi for x in powers):
-            return ERR_ParametersInvalid
-        self._vao_tables[n] = (float(vmin), float(dv), powers)
-        return ERR_NoError
-
-    def _vao_select(self, ctrl: int, table: int) -> None:
-        self._vao_table_of[ctrl] = table
+        return self._outs().set_vao_table(Table_No, MinVelocity, VelInterval, TotalPoints, list(MappingDataArray))
 
     def APS_switch_vao_table(self, Board_ID, Table_No) -> int:
         """``APS_switch_vao_table(Board_ID, Table_No)`` (L3540): VAO controller 0 uses table 0..7 from now (the
         library call names no controller; controller 1 switches through APS_pt_ext_set_table_no, AF21)."""
-        if not self._board(Board_ID):
-            return self._bad()
-        n = _int(Table_No)
-        if n not in range(8):
-            return ERR_ParametersInvalid
-        self._vao_select(0, n)
-        return ERR_NoError
+        return self._outs().switch_vao_table(Table_No) if self._board(Board_ID) else self._bad()
 
     def APS_start_vao(self, Board_ID, Output_Ch, Enable) -> int:
         """``APS_start_vao(Board_ID, Output_Ch, Enable)`` (L3501): turns the PWM output of VAO controller
         ``Output_Ch`` (0..1 = PWM0..1, AF21) on (1) or off (0); its active table must be set
         (ERR_FunctionNotAvailable otherwise)."""
-        if not self._board(Board_ID):
-            return self._bad()
-        ch, en = _int(Output_Ch), _int(Enable)
-        if ch not in (0, 1) or en not in (0, 1):
-            return ERR_ParametersInvalid
-        n = self._vao_table_of[ch]
-        if en and (n not in self._vao_tables or self._vao_prm[VAO_TABLE_INPUT_TYPE + 2 * n] != 1):
-            return ERR_FunctionNotAvailable  # no table, or a table on the feedback speed (AF19)
-        self._vao_on[ch] = bool(en)
-        return ERR_NoError
+        return self._outs().start_vao(Output_Ch, Enable) if self._board(Board_ID) else self._bad()
 
     def vao_output(self, ctrl: int) -> dict:
         """Simulation helper (not in the manual): what PWM ``ctrl`` (0..1) outputs now: ``on`` (APS_start_vao,
@@ -406,21 +299,7 @@ class _ApsMore:
             raise ValueError(f"vao_output.ctrl = {ctrl!r} must be 0 or 1 (the VAO controllers)")
         for t in self._pt.values():
             self._pt_sync(t)
-        n = self._vao_table_of[ctrl]
-        c = self._card
-        src = self._vao_prm[VAO_TABLE_SRC + n]
-        speed = math.sqrt(sum((c.profile_vel(a) / c.servo_period_s) ** 2 for a in range(len(c)) if src >> a & 1))
-        m = self._board_prm[PRB_PWM0_MAP_DO + ctrl]
-        do_ok = m == -1 or (bool(self._do_word >> (m & 0xFF) & 1) == bool(m >> 8 & 1))
-        on = self._vao_on[ctrl] and do_ok and n in self._vao_tables and self._vao_prm[VAO_TABLE_INPUT_TYPE + 2 * n] == 1
-        power = 0.0
-        if on:
-            vmin, dv, pw = self._vao_tables[n]
-            x = (speed - vmin) / dv
-            k = min(max(int(math.floor(x)), 0), len(pw) - 1)
-            power = pw[-1] if k >= len(pw) - 1 else pw[k] + (pw[k + 1] - pw[k]) * min(max(x - k, 0.0), 1.0)
-        unit = "0.05 %" if self._vao_prm[VAO_TABLE_OUTPUT_TYPE + 2 * n] == 1 else "Hz"
-        return {"on": on, "table": n, "speed": speed, "power": power, "unit": unit}
+        return self._outs().vao_output(ctrl)
 
 
 def _reg32(v: float) -> int:

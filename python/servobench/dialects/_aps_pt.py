@@ -2,7 +2,7 @@
 :class:`~servobench.dialects.aps.ApsController` (mixed in), decisions AF5-AF12.
 
 A point table is a buffered continuous interpolation of a fixed axis array: the dialect translates it onto the
-card's ADLINK interpolation group (``Card.aps_interp``, machine/card_group_adlink.hpp), hosted with 50 pending
+card's ADLINK interpolation group (``Card.aps_interp``, vendor/adlink/adlink_group.hpp), hosted with 50 pending
 points (L3796) and flagged as a point table (MTS PTB while it runs, L3656). The moves go in with the table's own
 motion parameters (the _all form: the speeds of APS_pt_set_vm/ve/acc/dec/s) and its transition mode
 (APS_pt_set_trans_*: the card's modes 4-7 of L3117-3143); the first point holds the group (MF_WAIT) until
@@ -109,11 +109,11 @@ class _Table:
     """What the program memory keeps for one point table (L3808-3811): its axes and the parameters the next
     movement commands use."""
 
-    def __init__(self, axes, params: dict):
+    def __init__(self, axes, params):
         self.axes = axes
         self.relative = False
-        self.vm, self.ve = params["vm"], 0.0
-        self.acc, self.dec, self.sf = params["acc"], params["dec"], params["sf"]
+        self.vm, self.ve = params.vm, 0.0
+        self.acc, self.dec, self.sf = params.acc, params.dec, params.sf
         self.mode, self.blend = BlendMode.BUFFERED, 0.0
         self.last_ve = 0.0         # the VE the previous move ends with: the next one starts at it (AF7)
         self.ext: list = []        # instruction commands waiting for the next movement command
@@ -154,9 +154,9 @@ class _ApsPointTable:
         while t.applied < started:
             for kind, a, b in t.actions.pop(t.applied, ()):
                 if kind == "do":
-                    self._set_do_bit(a, b)
+                    self._outs().set_do_bit(a, bool(b))
                 else:
-                    self._vao_select(a, b)
+                    self._outs().select_vao(a, b)
             t.applied += 1
         return info, started
 
@@ -178,7 +178,7 @@ class _ApsPointTable:
             return ERR_ParametersInvalid
         if self._pt or any(self._card.moving(a) for a in axes):
             return ERR_FunctionNotAvailable
-        self._pt[int(PtbId)] = _Table(axes, self._motion[axes[0]])
+        self._pt[int(PtbId)] = _Table(axes, self._prm().motion(axes[0]))
         return ERR_NoError
 
     def APS_pt_disable(self, Board_ID, PtbId) -> int:
@@ -380,7 +380,7 @@ class _ApsPointTable:
         vs = 0.0 if first else min(t.last_ve, t.vm)
         try:
             speeds = AdlinkPtp(vs=vs, vm=t.vm, ve=min(ve, t.vm), acc=t.acc, dec=t.dec, sf=t.sf,
-                               sd_dec=self._motion[t.axes[0]]["sd_dec"])
+                               sd_dec=self._prm().motion(t.axes[0]).sd_dec)
             params = [self._params(a) for a in t.axes]
             c.aps_interp(t.axes, params, kind, relative=t.relative and not dwell, mode=t.mode, blend=t.blend,
                          vm=t.vm, all=speeds, wait=first and not t.started, buffer_size=PT_BUFFER_POINTS,

@@ -18,12 +18,13 @@ in the manual): :func:`run` (ticks), :func:`Sleep` (ms, as the manual's examples
 
 from __future__ import annotations
 
+import inspect
 import math
 
 import numpy as np
 
 from .. import _core
-from .._core import AdlinkHome, AdlinkJog, AdlinkPtp, ApsServoLaw, BlendMode, CardCommandRefused, MotionCommandRefused
+from .._core import AdlinkPtp, ApsServoLaw, BlendMode, CardCommandRefused, MotionCommandRefused
 from ..card import Card
 from ._aps_more import (PRB_EMG_LOGIC, PRB_PWM0_MAP_DO, PRB_PWM1_MAP_DO, PRB_PWM2_MAP_DO,  # noqa: F401
                         PRB_PWM3_MAP_DO, PRS_EMG_LOGIC, VAO_TABLE_INPUT_TYPE, VAO_TABLE_OUTPUT_TYPE,
@@ -115,35 +116,10 @@ MIO_SPEL, MIO_SMEL = 11, 12
 STOP_NORMAL, STOP_EMG, STOP_ALM, STOP_SVNO, STOP_PEL, STOP_MEL, STOP_SPEL, STOP_SMEL = 0, 1, 2, 3, 4, 5, 6, 7
 STOP_ERROR_LEVEL = 13  # the manual prints 6 (L4023), colliding with STOP_SPEL; APS_define.h has 13 (V41)
 
-# PRA_* parameters of the servo law: ApsServoLaw field, allowed range, integer?
-_LAW = {
-    PRA_KP_GAIN: ("kp", 0, 65535), PRA_KI_GAIN: ("ki", 0, 65535), PRA_KD_GAIN: ("kd", 0, 65535),
-    PRA_KVFF_GAIN: ("kvff", 0, 65535), PRA_KAFF_GAIN: ("kaff", 0, 65535),
-    PRA_KP_SHIFT: ("kp_shift", -31, 31), PRA_KI_SHIFT: ("ki_shift", -31, 31), PRA_KD_SHIFT: ("kd_shift", -31, 31),
-    PRA_KVFF_SHIFT: ("kvff_shift", -31, 31), PRA_KAFF_SHIFT: ("kaff_shift", -31, 31),
-    PRA_PID_SHIFT: ("pid_shift", -31, 31), PRA_INTEGRAL_LIMIT: ("integral_limit", 0, 2147483647),
-    PRA_SERVO_V_BIAS: ("v_bias", 0, 10), PRA_SERVO_V_LIMIT: ("v_limit", 0, 10), PRA_SERVO_V_INVERSE: ("v_inverse", 0, 1),
-}
-_INTEGER_LAW = {PRA_KP_GAIN, PRA_KI_GAIN, PRA_KD_GAIN, PRA_KVFF_GAIN, PRA_KAFF_GAIN, PRA_KP_SHIFT, PRA_KI_SHIFT,
-                PRA_KD_SHIFT, PRA_KVFF_SHIFT, PRA_KAFF_SHIFT, PRA_PID_SHIFT, PRA_INTEGRAL_LIMIT, PRA_SERVO_V_INVERSE}
-# PRA_* motion parameters: AdlinkPtp field, range (V48: defaults of the manual's home example, L2295-2303).
-_MOTION = {PRA_SD_DEC: ("sd_dec", 0.0, 1e12), PRA_SF: ("sf", 0.0, 1.0), PRA_ACC: ("acc", 0.0, 1e12),
-           PRA_DEC: ("dec", 0.0, 1e12), PRA_VS: ("vs", 0.0, 1e9), PRA_VM: ("vm", 0.0, 1e9), PRA_VE: ("ve", 0.0, 1e9)}
+# The PRA_* ranges, defaults and where each acts are the C++ parameter table's (vendor/adlink/aps_parameters.hpp,
+# AV5); the speeds an APS_ptp_all call gives (pulse/s, pulse/s^2, S-factor) are checked against these:
+_SPEEDS = {"vs": (0.0, 1e9), "ve": (0.0, 1e9), "acc": (0.0, 1e12), "dec": (0.0, 1e12), "sf": (0.0, 1.0)}
 _POS_MAX = 2147483647
-_MOTION_DEFAULTS = {"sd_dec": 1e6, "sf": 0.0, "acc": 1e6, "dec": 1e6, "vs": 0.0, "vm": 1e5, "ve": 0.0}
-# PRA_HOME_* (AdlinkHome field, range); defaults are the manual's home example (L2295-2303; V27).
-_HOME = {PRA_HOME_MODE: ("mode", 0, 2), PRA_HOME_DIR: ("dir", 0, 1), PRA_HOME_CURVE: ("curve", 0.0, 1.0),
-         PRA_HOME_ACC: ("acc", 0.0, 1e12), PRA_HOME_VM: ("vm", 0.0, 1e9), PRA_HOME_SHIFT: ("shift", -_POS_MAX, _POS_MAX),
-         PRA_HOME_EZA: ("eza", 0, 1), PRA_HOME_VO: ("vo", 0.0, 1e9), PRA_HOME_POS: ("pos", -_POS_MAX, _POS_MAX)}
-_INTEGER_HOME = {PRA_HOME_MODE, PRA_HOME_DIR, PRA_HOME_EZA, PRA_HOME_SHIFT, PRA_HOME_POS}
-_HOME_DEFAULTS = {"mode": 0, "dir": 1, "curve": 0.0, "acc": 1e6, "vm": 1e5, "vo": 5e4, "shift": 0, "eza": 0, "pos": 0}
-# PRA_JG_* (AdlinkJog field, range); defaults V29.
-_JOG = {PRA_JG_MODE: ("mode", 0, 1), PRA_JG_DIR: ("dir", 0, 1), PRA_JG_SF: ("sf", 0.0, 1.0),
-        PRA_JG_ACC: ("acc", 0.0, 1e12), PRA_JG_DEC: ("dec", 0.0, 1e12), PRA_JG_VM: ("vm", 0.0, 1e9),
-        PRA_JG_OFFSET: ("offset", 0.0, _POS_MAX), PRA_JG_DELAY: ("delay_us", 0.0, 1e7)}
-_INTEGER_JOG = {PRA_JG_MODE, PRA_JG_DIR}
-_JOG_DEFAULTS = {"mode": 0, "dir": 1, "sf": 0.0, "acc": 1e6, "dec": 1e6, "vm": 1e5, "offset": 1000, "delay_us": 0}
-_JOG_DI = (PRA_JG_MAP_DI_EN, PRA_JG_P_JOG_DI, PRA_JG_N_JOG_DI, PRA_JG_JOG_DI)
 MF_WAIT = 0x100           # APS_ptp Option bit 8: wait for APS_move_trigger (L3249, L3686-3691)
 # Interpolation Option bits 12-15, the "Buffer mode" field (L3686-3691) = the transition "Flag" (L3085): the
 # values of APS_define.h ITP_OPT_* (V114); the field value f is mode f + 1 of L3085-3143.
@@ -151,11 +127,6 @@ ITP_OPT_ABORT_BLEND, ITP_OPT_ABORT_FORCE, ITP_OPT_ABORT_STOP = 0x0000, 0x1000, 0
 ITP_OPT_BUFFERED, ITP_OPT_BLEND_DEC, ITP_OPT_BLEND_RES_DIST, ITP_OPT_BLEND_PCNT = 0x3000, 0x4000, 0x5000, 0x6000
 _BLEND_MODES = (BlendMode.ABORT_BLEND, BlendMode.ABORT_FORCED, BlendMode.ABORT_STOP, BlendMode.BUFFERED,
                 BlendMode.BLEND_DECEL, BlendMode.BLEND_DISTANCE, BlendMode.BLEND_PERCENT)
-_GEAR = {PRA_GEAR_MASTER: ("master", 0, 7), PRA_GEAR_ENGAGE_RATE: ("rate", 0.0, 1e9),
-         PRA_GEAR_RATIO: ("ratio", -1e6, 1e6), PRA_GANTRY_PROTECT_1: ("protect_1", 0, _POS_MAX),
-         PRA_GANTRY_PROTECT_2: ("protect_2", 0, _POS_MAX)}
-_INTEGER_GEAR = {PRA_GEAR_MASTER, PRA_GANTRY_PROTECT_1, PRA_GANTRY_PROTECT_2}
-_GEAR_DEFAULTS = {"master": 0, "rate": 0.0, "ratio": 1.0, "protect_1": 0, "protect_2": 0}  # V120
 # Latched limit events of the card (CARD_EVENTS bits): ADLINK limits are level inputs (V31).
 _LIMIT_EVENTS = {"pos_limit": 5, "neg_limit": 6, "soft_pos_limit": 8, "soft_neg_limit": 9}
 _IGNORED = {"emergency_stop_active", "direction_inhibited", "drive_alarm_active"}  # L3931-4010
@@ -174,14 +145,6 @@ class ApsController(DialectController):
 
     _PARAMETER_ERROR = ERR_ParametersInvalid   # what an APS_* function returns instead of raising (issue 21.2)
     _COMMAND_ERROR = ERR_FunctionNotAvailable
-
-    def __init__(self):
-        super().__init__()
-        self._motion: list[dict] = []
-        self._home: list[dict] = []
-        self._jog: list[dict] = []
-        self._el_mode: list[int] = []
-        self._gear: list[dict] = []
 
     # -- plumbing ----------------------------------------------------------------------------------------------
     def _axis(self, axis_id):
@@ -206,10 +169,13 @@ class ApsController(DialectController):
             return ERR_ParametersInvalid
         return ERR_NoError
 
+    def _prm(self):
+        """The card's PRA_* parameter table (vendor/adlink/aps_parameters.hpp)."""
+        return _core.aps_parameters(self._card.kernel)
+
     def _params(self, axis: int, **override) -> AdlinkPtp:
-        p = dict(self._motion[axis])
-        p.update(override)
-        return AdlinkPtp(**p)
+        """The axis's PRA_* motion parameters with ``override`` (validated: ValueError)."""
+        return self._prm().motion(axis).replace(**override)
 
     # -- simulation helpers ------------------------------------------------------------------------------------
     def Sleep(self, ms: float):
@@ -232,12 +198,8 @@ class ApsController(DialectController):
         if len(card) not in (4, 8):
             return ERR_ParametersInvalid, 0
         self._card = card
-        self._motion = [dict(_MOTION_DEFAULTS) for _ in range(len(card))]
-        self._home = [dict(_HOME_DEFAULTS) for _ in range(len(card))]
-        self._jog = [dict(_JOG_DEFAULTS) for _ in range(len(card))]
-        self._el_mode = [0] * len(card)
+        self._prm().power_on()  # the PRA_* table (AV5)
         self._scope_init()  # sampling, trigger, interrupts (issue 10.3)
-        self._gear = [dict(_GEAR_DEFAULTS) for _ in range(len(card))]
         self._pt_init()     # point tables (AF5-AF12)
         self._more_init()   # counters, watchdog, VAO, board parameters (AF13-AF21)
         return ERR_NoError, 1
@@ -266,99 +228,12 @@ class ApsController(DialectController):
         limits and PRA_ERR_POS_LEVEL at once."""
         i = self._axis(Axis_ID)
         v = _num(Data)
-        if i is None or v is None:
-            return self._bad()
-        c = self._card
-        para = _num(AxisPara)
-        if para in _LAW:
-            field, lo, hi = _LAW[para]
-            if not lo <= v <= hi or (para in _INTEGER_LAW and v != int(v)):
-                return ERR_ParametersInvalid
-            law = c.staged(i)["law"]
-            if not isinstance(law, ApsServoLaw):
-                return ERR_FunctionNotAvailable  # an axis with the GT law has no PRA gains
-            value = bool(v) if field == "v_inverse" else v
-            return self._do(lambda: (c.stage_law(i, law.replace(**{field: value})), c.update(1 << i)))
-        if para in _MOTION:
-            field, lo, hi = _MOTION[para]
-            if not lo <= v <= hi:
-                return ERR_ParametersInvalid
-            self._motion[i][field] = v
-            if para == PRA_SD_DEC and v > 0:
-                c.set_limit_stop_mode(i, bool(self._el_mode[i]), v)
-            return ERR_NoError
-        if para in _GEAR:
-            return self._set_gear_param(i, para, v)
-        for table, integers, store in ((_HOME, _INTEGER_HOME, self._home), (_JOG, _INTEGER_JOG, self._jog)):
-            if para in table:
-                field, lo, hi = table[para]
-                if not lo <= v <= hi or (para in integers and v != int(v)):
-                    return ERR_ParametersInvalid
-                store[i][field] = v
-                return ERR_NoError
-        if para in _JOG_DI:  # DI-linked jog is not simulated: only "off" (0) is accepted (V30)
-            return ERR_NoError if v == 0 else ERR_FunctionNotAvailable
-        if para == PRA_EL_MODE:
-            if v not in (0, 1):
-                return ERR_ParametersInvalid
-            self._el_mode[i] = int(v)
-            return self._do(c.set_limit_stop_mode, i, bool(v), self._motion[i]["sd_dec"] or 1e6)
-        if para in (PRA_PRE_EVENT_DIST, PRA_POST_EVENT_DIST):
-            if v != int(v) or not 0 <= v <= _POS_MAX:
-                return ERR_ParametersInvalid
-            pre, post = c.move_event_distances(i)
-            return self._do(c.set_move_event_distances, i, v if para == PRA_PRE_EVENT_DIST else pre,
-                            v if para == PRA_POST_EVENT_DIST else post)
-        if para == PRA_ERR_POS_LEVEL:
-            if v != int(v) or not 0 <= v <= _POS_MAX:
-                return ERR_ParametersInvalid
-            return self._do(c.set_error_level, i, v)
-        if para in (PRA_EL_LOGIC, PRA_SPEL_EN, PRA_SMEL_EN):
-            if v not in (0, 1):
-                return ERR_ParametersInvalid
-            field = {PRA_EL_LOGIC: ("pos_active_low", "neg_active_low"), PRA_SPEL_EN: ("soft_pos_enabled",),
-                     PRA_SMEL_EN: ("soft_neg_enabled",)}[para]
-            return self._do(c.set_limits, i, c.limits(i).replace(**{f: bool(v) for f in field}))
-        if para in (PRA_SPEL_POS, PRA_SMEL_POS):
-            if v != int(v) or abs(v) > _POS_MAX:
-                return ERR_ParametersInvalid
-            field = "soft_pos_pulse" if para == PRA_SPEL_POS else "soft_neg_pulse"
-            return self._do(c.set_limits, i, c.limits(i).replace(**{field: v}))
-        return ERR_ParametersInvalid
+        return self._bad() if i is None or v is None else self._prm().set(i, AxisPara, v)
 
     def APS_get_axis_param_f(self, Axis_ID, AxisPara):
         """``APS_get_axis_param_f(Axis_ID, AxisPara, &Data)`` -> ``(rtn, data)`` (F64)."""
         i = self._axis(Axis_ID)
-        if i is None:
-            return self._bad(), 0.0
-        c = self._card
-        para = _num(AxisPara)
-        if para in _LAW:
-            law = c.staged(i)["law"]
-            if not isinstance(law, ApsServoLaw):
-                return ERR_FunctionNotAvailable, 0.0
-            return ERR_NoError, float(getattr(law, _LAW[para][0]))
-        if para in _MOTION:
-            return ERR_NoError, float(self._motion[i][_MOTION[para][0]])
-        if para in _HOME:
-            return ERR_NoError, float(self._home[i][_HOME[para][0]])
-        if para in _JOG:
-            return ERR_NoError, float(self._jog[i][_JOG[para][0]])
-        if para in _GEAR:
-            return ERR_NoError, float(self._gear[i][_GEAR[para][0]])
-        if para in _JOG_DI:
-            return ERR_NoError, 0.0
-        if para == PRA_EL_MODE:
-            return ERR_NoError, float(self._el_mode[i])
-        if para in (PRA_PRE_EVENT_DIST, PRA_POST_EVENT_DIST):
-            return ERR_NoError, float(c.move_event_distances(i)[0 if para == PRA_PRE_EVENT_DIST else 1])
-        lim = c.limits(i)
-        table = {PRA_ERR_POS_LEVEL: lambda: c.error_level(i), PRA_EL_LOGIC: lambda: lim.pos_active_low,
-                 PRA_SPEL_EN: lambda: lim.soft_pos_enabled, PRA_SMEL_EN: lambda: lim.soft_neg_enabled,
-                 PRA_SPEL_POS: lambda: lim.soft_pos_pulse, PRA_SMEL_POS: lambda: lim.soft_neg_pulse}
-        if para in table:
-            return ERR_NoError, float(table[para]())
-        return ERR_ParametersInvalid, 0.0
+        return (self._bad(), 0.0) if i is None else self._prm().get(i, AxisPara)
 
     def APS_get_axis_param(self, Axis_ID, AxisPara):
         """``APS_get_axis_param(Axis_ID, AxisPara, &Data)`` -> ``(rtn, data)`` (I32: the value truncated)."""
@@ -396,7 +271,7 @@ class ApsController(DialectController):
         if vm is None or not 0 < vm <= 1e9:
             return ERR_ParametersInvalid
         for k, v in speeds.items():
-            field, lo, hi = next(t for t in _MOTION.values() if t[0] == k)
+            lo, hi = _SPEEDS[k]
             if v is None or not lo <= v <= hi:
                 return ERR_ParametersInvalid
         try:
@@ -446,7 +321,7 @@ class ApsController(DialectController):
         if isinstance(r, int):
             return r
         i, target, wait = r
-        return self._ptp(i, target, self._motion[i]["vm"], wait)
+        return self._ptp(i, target, self._prm().motion(i).vm, wait)
 
     def APS_ptp_v(self, Axis_ID, Option, Position, Vm, Wait=None) -> int:
         """``APS_ptp_v(Axis_ID, Option, F64 Position, F64 Vm, ASYNCALL *Wait)``: :func:`APS_ptp` at the given
@@ -501,10 +376,8 @@ class ApsController(DialectController):
         i = self._axis(Axis_ID)
         if i is None:
             return self._bad()
-        h = dict(self._home[i])
-        h["eza"] = bool(h["eza"])
         try:
-            p = AdlinkHome(**h)
+            p = self._prm().home(i).replace()  # validated before anything changes
         except ValueError:
             return ERR_ParametersInvalid
         self._release_limits(i)
@@ -523,7 +396,7 @@ class ApsController(DialectController):
         if On and not c.jog_on(i):
             if not c.jogging(i):
                 try:
-                    p = AdlinkJog(**self._jog[i])
+                    p = self._prm().jog(i).replace()
                 except ValueError:
                     return ERR_ParametersInvalid
                 self._release_limits(i)
@@ -600,21 +473,6 @@ class ApsController(DialectController):
             return True
         return False
 
-    def _set_gear_param(self, i: int, para, v: float) -> int:
-        field, lo, hi = _GEAR[para]
-        if not lo <= v <= hi or (para in _INTEGER_GEAR and v != int(v)):
-            return ERR_ParametersInvalid
-        if para == PRA_GEAR_MASTER and v >= len(self._card):
-            return ERR_ParametersInvalid
-        g = self._gear[i]
-        c = self._card
-        if para == PRA_GEAR_MASTER and c.mode(i) == "gear" and not c.gear_halted(i):
-            return ERR_FunctionNotAvailable  # the master of an engaged gear does not change (V119)
-        g[field] = v
-        if para == PRA_GEAR_RATIO and c.mode(i) == "gear" and not c.gear_halted(i):
-            return self._do(c.gear_ramp_to, i, v, g["rate"] * c.servo_period_s)  # on the fly, ramped (L3311)
-        return ERR_NoError
-
     def APS_start_gear(self, Axis_ID, Mode) -> int:
         """``APS_start_gear(Axis_ID, Mode)`` (the manual prints ``APS_start_gear(slave axis ID)``, L3311; the Mode
         argument is the library's, V119): 1 engages the standard gear of slave ``Axis_ID`` on PRA_GEAR_MASTER, the
@@ -631,11 +489,11 @@ class ApsController(DialectController):
             return self._do(c.set_mode, i, "t_curve")
         if Mode == 2:
             return ERR_FunctionNotAvailable
-        g = self._gear[i]
-        if int(g["master"]) == i:
+        master, ratio, rate = self._prm().gear(i)
+        if int(master) == i:
             return ERR_ParametersInvalid
         self._release_modes(i)
-        return self._do(c.set_gear_ramp, i, int(g["master"]), g["ratio"], g["rate"] * c.servo_period_s)
+        return self._do(c.set_gear_ramp, i, int(master), ratio, rate * c.servo_period_s)
 
     def _interp(self, ids, option, kind, trans, vm=None, speeds=None, **geom) -> int:
         """One interpolation command: validates the axis array and Option, builds the move, hands it to the card
@@ -679,7 +537,7 @@ class ApsController(DialectController):
             if None in vals.values():
                 return ERR_ParametersInvalid
             try:
-                all_ = AdlinkPtp(**vals, sd_dec=self._motion[arr[0]]["sd_dec"])
+                all_ = AdlinkPtp(**vals, sd_dec=self._prm().motion(arr[0]).sd_dec)
             except ValueError:
                 return ERR_ParametersInvalid
         v = 0.0 if vm is None else _num(vm)
@@ -703,6 +561,10 @@ class ApsController(DialectController):
         reference axis whose PRA_VS/VM/VE/ACC/DEC/SF give the vector profile (L2819-2855). Option bit 0
         relative, bit 8 MF_WAIT, bits 12-15 the transition mode (ITP_OPT_*); TransPara the residual distance
         (pulse) or percent of the blend modes. ``Wait`` must be None/0."""
+        return self._line(Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Wait)
+
+    def _line(self, Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Wait, **speeds) -> int:
+        """APS_line / _v / _all: the first Dimension axes and positions, then :meth:`_interp`."""
         d = _num(Dimension)
         if Wait not in (None, 0) or d is None or d != int(d):
             return self._bad()
@@ -712,36 +574,18 @@ class ApsController(DialectController):
             return ERR_ParametersInvalid
         if len(ids) != d or len(pos) != d:
             return ERR_ParametersInvalid
-        return self._interp(ids, Option, "line", TransPara, target=pos)
+        return self._interp(ids, Option, "line", TransPara, target=pos, **speeds)
 
     def APS_line_v(self, Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Vm, Wait=None) -> int:
         """``APS_line_v(..., F64 *TransPara, F64 Vm, ASYNCALL *Wait)``: :func:`APS_line` at vector speed Vm."""
-        d = _num(Dimension)
-        if Wait not in (None, 0) or d is None or d != int(d):
-            return self._bad()
-        try:
-            ids, pos = list(Axis_ID_Array)[: int(d)], list(PositionArray)[: int(d)]
-        except TypeError:
-            return ERR_ParametersInvalid
-        if len(ids) != d or len(pos) != d:
-            return ERR_ParametersInvalid
-        return self._interp(ids, Option, "line", TransPara, vm=Vm, target=pos)
+        return self._line(Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Wait, vm=Vm)
 
     def APS_line_all(self, Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Vs, Vm, Ve, Acc, Dec, SFac,
                      Wait=None) -> int:
         """``APS_line_all(..., F64 *TransPara, F64 Vs, F64 Vm, F64 Ve, F64 Acc, F64 Dec, F64 SFac, ASYNCALL
         *Wait)``: :func:`APS_line` with every speed of the vector profile given (the PRA values unchanged)."""
-        d = _num(Dimension)
-        if Wait not in (None, 0) or d is None or d != int(d):
-            return self._bad()
-        try:
-            ids, pos = list(Axis_ID_Array)[: int(d)], list(PositionArray)[: int(d)]
-        except TypeError:
-            return ERR_ParametersInvalid
-        if len(ids) != d or len(pos) != d:
-            return ERR_ParametersInvalid
-        return self._interp(ids, Option, "line", TransPara, vm=Vm,
-                            speeds=dict(vs=Vs, vm=Vm, ve=Ve, acc=Acc, dec=Dec, sf=SFac), target=pos)
+        return self._line(Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Wait, vm=Vm,
+                          speeds=dict(vs=Vs, vm=Vm, ve=Ve, acc=Acc, dec=Dec, sf=SFac))
 
     def APS_absolute_linear_move(self, Dimension, Axis_ID_Array, Position_Array, Max_Linear_Speed) -> int:
         """``APS_absolute_linear_move(I32 Dimension, I32 *Axis_ID_Array, I32 *Position_Array, I32
@@ -780,120 +624,6 @@ class ApsController(DialectController):
         if len(ids) != dim:
             return ERR_ParametersInvalid
         return self._interp(ids, Option, kind, TransPara, vm=vm, speeds=speeds, **geom)
-
-    @staticmethod
-    def _all(Vs, Vm, Ve, Acc, Dec, SFac):
-        return dict(vs=Vs, vm=Vm, ve=Ve, acc=Acc, dec=Dec, sf=SFac)
-
-    def APS_arc2_ca(self, Axis_ID_Array, Option, CenterArray, Angle, TransPara=0.0, Wait=None) -> int:
-        """``APS_arc2_ca(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 Angle, F64 *TransPara, ASYNCALL
-        *Wait)`` (L2978; V113): a 2-D arc about the centre by Angle degrees (+ CCW, ``|Angle|`` > 360 = laps)."""
-        return self._arc("arc2_ca", Axis_ID_Array, 2, Option, TransPara, Wait, center=CenterArray, angle_deg=Angle)
-
-    def APS_arc2_ca_v(self, Axis_ID_Array, Option, CenterArray, Angle, TransPara, Vm, Wait=None) -> int:
-        """:func:`APS_arc2_ca` at vector speed Vm."""
-        return self._arc("arc2_ca", Axis_ID_Array, 2, Option, TransPara, Wait, vm=Vm, center=CenterArray,
-                         angle_deg=Angle)
-
-    def APS_arc2_ca_all(self, Axis_ID_Array, Option, CenterArray, Angle, TransPara, Vs, Vm, Ve, Acc, Dec, SFac,
-                        Wait=None) -> int:
-        """:func:`APS_arc2_ca` with every speed given."""
-        return self._arc("arc2_ca", Axis_ID_Array, 2, Option, TransPara, Wait, vm=Vm,
-                         speeds=self._all(Vs, Vm, Ve, Acc, Dec, SFac), center=CenterArray, angle_deg=Angle)
-
-    def APS_arc2_ce(self, Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara=0.0, Wait=None) -> int:
-        """``APS_arc2_ce(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *EndArray, I16 Dir, F64
-        *TransPara, ASYNCALL *Wait)`` (L2981): a 2-D arc to an exact end point, Angle = theta + Dir*360
-        (L2943-2958); exactly 180 deg or 360 deg is ERR_ParametersInvalid (L2930-2933)."""
-        return self._arc("arc2_ce", Axis_ID_Array, 2, Option, TransPara, Wait, center=CenterArray, target=EndArray,
-                         dir=Dir)
-
-    def APS_arc2_ce_v(self, Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara, Vm, Wait=None) -> int:
-        """:func:`APS_arc2_ce` at vector speed Vm."""
-        return self._arc("arc2_ce", Axis_ID_Array, 2, Option, TransPara, Wait, vm=Vm, center=CenterArray,
-                         target=EndArray, dir=Dir)
-
-    def APS_arc2_ce_all(self, Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara, Vs, Vm, Ve, Acc, Dec,
-                        SFac, Wait=None) -> int:
-        """:func:`APS_arc2_ce` with every speed given."""
-        return self._arc("arc2_ce", Axis_ID_Array, 2, Option, TransPara, Wait, vm=Vm,
-                         speeds=self._all(Vs, Vm, Ve, Acc, Dec, SFac), center=CenterArray, target=EndArray, dir=Dir)
-
-    def APS_arc3_ca(self, Axis_ID_Array, Option, CenterArray, NormalArray, Angle, TransPara=0.0, Wait=None) -> int:
-        """``APS_arc3_ca(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *NormalArray, F64 Angle, F64
-        *TransPara, ASYNCALL *Wait)`` (L2899): a 3-D arc, right-hand rule about the normal (Gram-Schmidt, L2911)."""
-        return self._arc("arc3_ca", Axis_ID_Array, 3, Option, TransPara, Wait, center=CenterArray,
-                         normal=NormalArray, angle_deg=Angle)
-
-    def APS_arc3_ca_v(self, Axis_ID_Array, Option, CenterArray, NormalArray, Angle, TransPara, Vm, Wait=None) -> int:
-        """:func:`APS_arc3_ca` at vector speed Vm."""
-        return self._arc("arc3_ca", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm, center=CenterArray,
-                         normal=NormalArray, angle_deg=Angle)
-
-    def APS_arc3_ca_all(self, Axis_ID_Array, Option, CenterArray, NormalArray, Angle, TransPara, Vs, Vm, Ve, Acc,
-                        Dec, SFac, Wait=None) -> int:
-        """:func:`APS_arc3_ca` with every speed given."""
-        return self._arc("arc3_ca", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm,
-                         speeds=self._all(Vs, Vm, Ve, Acc, Dec, SFac), center=CenterArray, normal=NormalArray,
-                         angle_deg=Angle)
-
-    def APS_arc3_ce(self, Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara=0.0, Wait=None) -> int:
-        """``APS_arc3_ce(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *EndArray, I16 Dir, F64
-        *TransPara, ASYNCALL *Wait)`` (L2900): a 3-D arc to an exact end point (no half or full circle)."""
-        return self._arc("arc3_ce", Axis_ID_Array, 3, Option, TransPara, Wait, center=CenterArray, target=EndArray,
-                         dir=Dir)
-
-    def APS_arc3_ce_v(self, Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara, Vm, Wait=None) -> int:
-        """:func:`APS_arc3_ce` at vector speed Vm."""
-        return self._arc("arc3_ce", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm, center=CenterArray,
-                         target=EndArray, dir=Dir)
-
-    def APS_arc3_ce_all(self, Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara, Vs, Vm, Ve, Acc, Dec,
-                        SFac, Wait=None) -> int:
-        """:func:`APS_arc3_ce` with every speed given."""
-        return self._arc("arc3_ce", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm,
-                         speeds=self._all(Vs, Vm, Ve, Acc, Dec, SFac), center=CenterArray, target=EndArray, dir=Dir)
-
-    def APS_sprial_ca(self, Axis_ID_Array, Option, CenterArray, NormalArray, Angle, DeltaH, FinalR, TransPara=0.0,
-                      Wait=None) -> int:
-        """``APS_sprial_ca(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *NormalArray, F64 Angle, F64
-        DeltaH, F64 FinalR, F64 *TransPara, ASYNCALL *Wait)`` (the manual's spelling, L3047; V113): a conical
-        spiral, rise DeltaH along the normal, radius to FinalR (L3001-3035)."""
-        return self._arc("spiral_ca", Axis_ID_Array, 3, Option, TransPara, Wait, center=CenterArray,
-                         normal=NormalArray, angle_deg=Angle, height=DeltaH, final_radius=FinalR)
-
-    def APS_sprial_ca_v(self, Axis_ID_Array, Option, CenterArray, NormalArray, Angle, DeltaH, FinalR, TransPara, Vm,
-                        Wait=None) -> int:
-        """:func:`APS_sprial_ca` at vector speed Vm."""
-        return self._arc("spiral_ca", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm, center=CenterArray,
-                         normal=NormalArray, angle_deg=Angle, height=DeltaH, final_radius=FinalR)
-
-    def APS_sprial_ca_all(self, Axis_ID_Array, Option, CenterArray, NormalArray, Angle, DeltaH, FinalR, TransPara,
-                          Vs, Vm, Ve, Acc, Dec, SFac, Wait=None) -> int:
-        """:func:`APS_sprial_ca` with every speed given."""
-        return self._arc("spiral_ca", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm,
-                         speeds=self._all(Vs, Vm, Ve, Acc, Dec, SFac), center=CenterArray, normal=NormalArray,
-                         angle_deg=Angle, height=DeltaH, final_radius=FinalR)
-
-    def APS_sprial_ce(self, Axis_ID_Array, Option, CenterArray, NormalArray, EndArray, Dir, TransPara=0.0,
-                      Wait=None) -> int:
-        """``APS_sprial_ce(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *NormalArray, F64 *EndArray, I16
-        Dir, F64 *TransPara, ASYNCALL *Wait)`` (L3050): a spiral to an exact end point (L3037-3063)."""
-        return self._arc("spiral_ce", Axis_ID_Array, 3, Option, TransPara, Wait, center=CenterArray,
-                         normal=NormalArray, target=EndArray, dir=Dir)
-
-    def APS_sprial_ce_v(self, Axis_ID_Array, Option, CenterArray, NormalArray, EndArray, Dir, TransPara, Vm,
-                        Wait=None) -> int:
-        """:func:`APS_sprial_ce` at vector speed Vm."""
-        return self._arc("spiral_ce", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm, center=CenterArray,
-                         normal=NormalArray, target=EndArray, dir=Dir)
-
-    def APS_sprial_ce_all(self, Axis_ID_Array, Option, CenterArray, NormalArray, EndArray, Dir, TransPara, Vs, Vm,
-                          Ve, Acc, Dec, SFac, Wait=None) -> int:
-        """:func:`APS_sprial_ce` with every speed given."""
-        return self._arc("spiral_ce", Axis_ID_Array, 3, Option, TransPara, Wait, vm=Vm,
-                         speeds=self._all(Vs, Vm, Ve, Acc, Dec, SFac), center=CenterArray, normal=NormalArray,
-                         target=EndArray, dir=Dir)
 
     # -- [/interpolation and gear] ----------------------------------------------------------------------------------
 
@@ -961,27 +691,7 @@ PID_CMD_POS_COUNT, PID_CMD_VEL_COUNT, PID_CMD_ACC_COUNT, PID_ERR_POS_COUNT = 0x4
 PID_KP_CALC_COUNT, PID_KI_CALC_COUNT, PID_KD_CALC_COUNT, PID_KVFF_CALC_COUNT = 0x44, 0x45, 0x46, 0x47
 PID_KAFF_CALC_COUNT, PID_CALC_COUNT, BIQUAD_0_CALC_COUNT, BIQUAD_1_CALC_COUNT = 0x48, 0x49, 0x4A, 0x4B
 PID_ERR_POS_SUM_COUNT, PID_LAST_ERR_POS_COUNT, PID_ERR_POS_DIFF_COUNT = 0x4C, 0x4D, 0x4E
-# source -> (sampler signal, scale (x 1/Ts for pulse/s), integer?, bit of the word or None)
-_SAMP = {
-    SAMP_COM_POS: ("pos", 1, True, None), SAMP_FBK_POS: ("actual_pos", 1, True, None),
-    SAMP_CMD_VEL: ("prf_vel", "1/Ts", True, None), SAMP_FBK_VEL: ("fbk_vel", "1/Ts", True, None),
-    SAMP_MIO: ("mio", 1, True, None), SAMP_MSTS: ("msts", 1, True, None),
-    SAMP_MSTS_ACC: ("msts", 1, True, 2), SAMP_MSTS_MV: ("msts", 1, True, 1), SAMP_MSTS_DEC: ("msts", 1, True, 3),
-    SAMP_MSTS_CSTP: ("msts", 1, True, 0), SAMP_MSTS_MDN: ("msts", 1, True, 5), SAMP_MIO_INP: ("mio", 1, True, 6),
-    SAMP_MIO_ORG: ("mio", 1, True, 3), SAMP_CONTROL_VOL: ("volts", 1000, True, None),
-    SAMP_ENCODER_RAW: ("fb_pos", 1, True, None), SAMP_ERROR_POS: ("error", 1, True, None),
-    SAMP_COM_POS_F64: ("pos", 1, False, None), SAMP_FBK_POS_F64: ("actual_pos", 1, False, None),
-    SAMP_CMD_VEL_F64: ("prf_vel", "1/Ts", False, None), SAMP_FBK_VEL_F64: ("fbk_vel", "1/Ts", False, None),
-    SAMP_CONTROL_VOL_F64: ("volts", 1000, False, None), SAMP_ERR_POS_F64: ("error", 1, False, None),
-    PID_CMD_POS_COUNT: ("cmd_pos", 1, True, None), PID_CMD_VEL_COUNT: ("cmd_vel", 1, True, None),
-    PID_CMD_ACC_COUNT: ("cmd_acc", 1, True, None), PID_ERR_POS_COUNT: ("error", 1, True, None),
-    PID_KP_CALC_COUNT: ("p", 1, True, None), PID_KI_CALC_COUNT: ("i", 1, True, None),
-    PID_KD_CALC_COUNT: ("d", 1, True, None), PID_KVFF_CALC_COUNT: ("vff", 1, True, None),
-    PID_KAFF_CALC_COUNT: ("aff", 1, True, None), PID_CALC_COUNT: ("u", 1, True, None),
-    BIQUAD_0_CALC_COUNT: ("biquad0", 1, True, None), BIQUAD_1_CALC_COUNT: ("biquad1", 1, True, None),
-    PID_ERR_POS_SUM_COUNT: ("error_sum", 1, True, None), PID_LAST_ERR_POS_COUNT: ("error_prev", 1, True, None),
-    PID_ERR_POS_DIFF_COUNT: ("error_diff", 1, True, None),
-}
+# The sources' signals, units and bits are the C++ module's table (vendor/adlink/aps_scope.cpp, Tables 4-5/4-6).
 #: One sample of APS_wait_trigger_sampling (STR_SAMP_DATA_4CH {I32 tick; I32 data[4]}; data F64 here, V78).
 STR_SAMP_DATA_4CH = np.dtype([("tick", np.int64), ("data", np.float64, (4,))])
 
@@ -995,117 +705,39 @@ TGR_TRG0_TGL, TGR_TRG1_TGL, TGR_TRG2_TGL, TGR_TRG3_TGL = 0x1C, 0x1D, 0x1E, 0x1F
 TIMR_ITV, TIMR_DIR, TIMR_RING_EN, TIMR_EN = 0x20, 0x21, 0x22, 0x23
 TRG_SRC_MANUAL, TRG_SRC_TCMP0, TRG_SRC_TCMP1, TRG_SRC_LCMP0, TRG_SRC_LCMP1 = 0x1, 0x2, 0x4, 0x8, 0x10
 TGR_SRC_COMMAND = 0x10  # a comparator source value 0x10 + n compares axis n's command position (V76)
-_PWD_UNIT_S = 100e-9    # TGR_TRGx_PWD unit: 100 ns, the manual's minimum width (L383; V77)
 
 # Interrupt factors (L4120-4200): axis items 0-7, system item 8.
 IALM, IPEL, IMEL, IORG, IEZ, IINP, IEMG, ICSTP, IVM, IACC, IDEC, IMDN, IASTP = 0, 1, 2, 3, 4, 5, 6, 8, 9, 10, 11, 12, 13
 ISPEL, ISMEL, IPRED, IPOSTD = 15, 16, 18, 19
 ISYS_EMG, ILCF0, ILCF1, IFCF0, IFCF1, IMOV, IHOV = 0, 1, 2, 3, 4, 5, 6
-# axis factor bit -> (watch word, bit of that word)
-_AXIS_FACTORS = {IALM: ("mio", 0), IPEL: ("mio", 1), IMEL: ("mio", 2), IORG: ("mio", 3), IEZ: ("mio", 5), IINP: ("mio", 6),
-                 IEMG: ("mio", 4), ICSTP: ("msts", 0), IVM: ("msts", 1), IACC: ("msts", 2), IDEC: ("msts", 3),
-                 IMDN: ("msts", 5), IASTP: ("msts", 16), ISPEL: ("mio", 11), ISMEL: ("mio", 12)}
-_WAIT_FOREVER_S = 3600.0  # Time_Out -1 waits at most one simulated hour (V83)
 
 
 class _ApsScope:
     """The sampling, trigger and interrupt functions of :class:`ApsController` (mixed in)."""
 
     def _scope_init(self):
-        c = self._card
-        ticks_per_ms = max(1, int(round(1e-3 / c.servo_period_s)))
-        self._samp = {SAMP_PA_RATE: ticks_per_ms, SAMP_PA_EDGE: 2, SAMP_PA_LEVEL: 0, SAMP_PA_TRIGCH: 0,
-                      SAMP_PA_SRC_CH0: SAMP_COM_POS, SAMP_PA_SRC_CH1: SAMP_FBK_POS, SAMP_PA_SRC_CH2: SAMP_ERROR_POS,
-                      SAMP_PA_SRC_CH3: SAMP_CONTROL_VOL}
-        self._tgr = {p: 0 for p in range(0x00, 0x20)}
-        self._tgr.update({TGR_TCMP0_DIR: 1, TGR_TCMP1_DIR: 1, TGR_LCMP1_SRC: 1, TGR_TCMP1_SRC: 1})
-        for t in range(4):
-            self._tgr[TGR_TRG0_PWD + t] = 1
-        self._int_main = False
-        self._int_factors: set[int] = set()   # enabled int_no
-        self._int_signaled: dict[int, bool] = {}
-        self._int_subs: list[int] = []
+        self._scope().power_on()  # sampling, trigger and timer registers: the C++ module's (AV2)
+        self._ints().power_on()   # interrupt table (AV4)
+        self._int_subs: list[int] = []  # the card's event subscriptions of the interrupt watch (handles)
+
+    def _scope(self):
+        """The card's ADLINK scope module (vendor/adlink/aps_scope.hpp): the sampling/trigger/timer registers."""
+        return _core.aps_scope(self._card.kernel)
 
     def _board(self, Board_ID) -> bool:
         return self._card is not None and _num(Board_ID) == 0
 
-    # -- data sampling (L3544-3665) --------------------------------------------------------------------------
+    # -- data sampling (L3544-3665): the registers and the run are vendor/adlink/aps_scope.hpp's ------------------
     def APS_set_sampling_param(self, Board_ID, ParaNum, ParaDat) -> int:
         """``APS_set_sampling_param(Board_ID, ParaNum, ParaDat)``: SAMP_PA_RATE (a sample every N servo ticks,
         1..65535; default the ticks of 1 ms, L3548), SAMP_PA_EDGE (0 rising, 1 falling, 2 no trigger: start at
         once, the default; V80), SAMP_PA_LEVEL (in the trigger channel's unit), SAMP_PA_TRIGCH (0..3),
         SAMP_PA_SRC_CH0..3 (axis << 8 | source: SAMP_* of Table 4-5, PID_* of Table 4-6)."""
-        if not self._board(Board_ID):
-            return self._bad()
-        p, v = _num(ParaNum), _num(ParaDat)
-        if p not in self._samp or v is None or v != int(v):
-            return ERR_ParametersInvalid
-        v = int(v)
-        ok = {SAMP_PA_RATE: 1 <= v <= 65535, SAMP_PA_EDGE: v in (0, 1, 2), SAMP_PA_LEVEL: abs(v) <= _POS_MAX,
-              SAMP_PA_TRIGCH: 0 <= v <= 3}.get(p)
-        if ok is None:  # a source
-            src, axis = v & SAMP_PARAM_MASK, (v & SAMP_AXIS_MASK) >> 8
-            if v & ~(SAMP_AXIS_MASK | SAMP_PARAM_MASK) or axis >= len(self._card):
-                return ERR_ParametersInvalid
-            if src not in _SAMP:
-                return ERR_FunctionNotAvailable  # gantry, PWM, VAO, point table: not simulated
-            ok = True
-        if not ok:
-            return ERR_ParametersInvalid
-        self._samp[p] = v
-        return ERR_NoError
+        return self._scope().set_sampling_param(ParaNum, ParaDat) if self._board(Board_ID) else self._bad()
 
     def APS_get_sampling_param(self, Board_ID, ParaNum):
         """``APS_get_sampling_param(Board_ID, ParaNum, &ParaDat)`` -> ``(rtn, ParaDat)``."""
-        if not self._board(Board_ID):
-            return self._bad(), 0
-        p = _num(ParaNum)
-        return (ERR_NoError, self._samp[p]) if p in self._samp else (ERR_ParametersInvalid, 0)
-
-    def _samp_channels(self):
-        out = []
-        for k in range(4):
-            v = self._samp[SAMP_PA_SRC_CH0 + k]
-            out.append(((v & SAMP_AXIS_MASK) >> 8, _SAMP[v & SAMP_PARAM_MASK]))
-        return out
-
-    def _samp_start(self, Board_ID, Length, PreTrgLen, TimeOutMs):
-        """Validates and starts the sampler; returns an error code or None."""
-        if not self._board(Board_ID):
-            return self._bad()
-        n, pre, tmo = _num(Length), _num(PreTrgLen), _num(TimeOutMs)
-        if None in (n, pre, tmo) or n != int(n) or not 1 <= n <= 1e6 or pre != int(pre) or not 0 <= pre < n:
-            return ERR_ParametersInvalid
-        if tmo != int(tmo) or (tmo < 0 and tmo != -1):
-            return ERR_ParametersInvalid
-        c = self._card
-        chans = self._samp_channels()
-        edge = self._samp[SAMP_PA_EDGE]
-        if edge == 2 and pre > 0:
-            return ERR_ParametersInvalid
-        trig_ch = self._samp[SAMP_PA_TRIGCH]
-        name, scale, _integer, bit = chans[trig_ch][1]
-        if edge != 2 and bit is not None:
-            return ERR_FunctionNotAvailable  # a level on one status bit: trigger on the word instead (V80)
-        ts = c.servo_period_s
-        factor = 1.0 / ts if scale == "1/Ts" else float(scale)
-        c.sample([(a, sig[0]) for a, sig in chans], every_ticks=self._samp[SAMP_PA_RATE], depth=int(n),
-                 trigger=("rising", "falling", "immediate")[edge], trigger_channel=trig_ch,
-                 level=self._samp[SAMP_PA_LEVEL] / factor, pretrigger=int(pre))
-        self._samp_run = {"chans": chans, "n": int(n), "until": c.tick + int(round(
-            (_WAIT_FOREVER_S if tmo == -1 else tmo * 1e-3) / ts)), "out": np.zeros(int(n), dtype=STR_SAMP_DATA_4CH)}
-        return None
-
-    def _samp_fill(self, data, out, chans):
-        ts = self._card.servo_period_s
-        m = len(data)
-        out["tick"][:m] = data.ticks
-        for k, (_a, (_sig, sc, integer, b)) in enumerate(chans):
-            v = data.values[:, k] * (1.0 / ts if sc == "1/Ts" else sc)
-            if b is not None:
-                v = (v.astype(np.int64) >> b) & 1
-            out["data"][:m, k] = np.rint(v) if integer else v
-        return m
+        return self._scope().sampling_param(ParaNum) if self._board(Board_ID) else (self._bad(), 0)
 
     def APS_wait_trigger_sampling(self, Board_ID, Length, PreTrgLen, TimeOutMs):
         """``APS_wait_trigger_sampling(Board_ID, Length, PreTrgLen, TimeOutMs, STR_SAMP_DATA_4CH *DataArr)`` ->
@@ -1114,52 +746,35 @@ class _ApsScope:
         the card until the block is full or ``TimeOutMs`` simulated ms passed (-1: V83) -> ERR_TimeOut, no data.
         DataArr: a NumPy array of :data:`STR_SAMP_DATA_4CH` (``tick`` = card tick of the sample; ``data`` the
         channels in their units: pulse, pulse/s, mV, bits; whole numbers for the I32 sources)."""
-        bad = self._samp_start(Board_ID, Length, PreTrgLen, TimeOutMs)
-        if bad is not None:
-            return bad, None
-        c, run = self._card, self._samp_run
-        c.run_until(lambda k: k._card.sampler_blocks > 0, max_ticks=max(0, run["until"] - c.tick),
+        rtn, data = self.APS_wait_trigger_sampling_async(Board_ID, Length, PreTrgLen, TimeOutMs)
+        if rtn != ERR_NoError:
+            return rtn, None
+        s, c = self._scope(), self._card
+        c.run_until(lambda _c: s.sampling_block_ready(), max_ticks=s.sampling_ticks_left(),
                     chunk=max(1, int(round(1e-3 / c.servo_period_s))))
-        data = c.scope_data()
-        if data is None:
-            c._card.sampler_stop()
-            return ERR_TimeOut, None
-        self._samp_fill(data, run["out"], run["chans"])
-        return ERR_NoError, run["out"]
+        rtn = s.finish_sampling()
+        return rtn, (data if rtn == ERR_NoError else None)
 
     def APS_wait_trigger_sampling_async(self, Board_ID, Length, PreTrgLen, TimeOutMs):
         """``APS_wait_trigger_sampling_async(...)`` -> ``(rtn, DataArr)``: starts the same sampling and returns at
         once; the card fills ``DataArr`` as it runs (the samples taken so far are copied into it at each
         APS_get_sampling_count call, V78); after ``TimeOutMs`` of card time without a full block the sampling
         stops."""
-        bad = self._samp_start(Board_ID, Length, PreTrgLen, TimeOutMs)
-        if bad is not None:
-            return bad, None
-        return ERR_NoError, self._samp_run["out"]
+        if not self._board(Board_ID):
+            return self._bad(), None
+        rtn = self._scope().start_sampling(Length, PreTrgLen, TimeOutMs)
+        return rtn, (self._scope().sampling_buffer() if rtn == ERR_NoError else None)
 
     def APS_get_sampling_count(self, Board_ID):
         """``APS_get_sampling_count(Board_ID, &SampCnt)`` -> ``(rtn, samples in DataArr)`` of the running or
         finished asynchronous sampling (the pre-trigger samples count once the trigger came)."""
-        if not self._board(Board_ID):
-            return self._bad(), 0
-        run, c = getattr(self, "_samp_run", None), self._card
-        if run is None:
-            return ERR_NoError, 0
-        if c._card.sampler_blocks > 0:
-            run["done"] = self._samp_fill(c.scope_data(), run["out"], run["chans"])
-        if "done" in run:
-            return ERR_NoError, run["done"]
-        if c.tick >= run["until"]:
-            c._card.sampler_stop()
-        if c.sampler_state != "filling":
-            return ERR_NoError, 0
-        return ERR_NoError, self._samp_fill(c.scope_data(partial=True), run["out"], run["chans"])
+        return (ERR_NoError, self._scope().sampling_count()) if self._board(Board_ID) else (self._bad(), 0)
 
     def APS_stop_wait_sampling(self, Board_ID) -> int:
         """``APS_stop_wait_sampling(Board_ID)``: stops the sampling; DataArr keeps what was copied."""
         if not self._board(Board_ID):
             return self._bad()
-        self._card.kernel.sampler_stop()
+        self._scope().stop_sampling()
         return ERR_NoError
 
     # -- position compare trigger (L3348-3435) ------------------------------------------------------------------
@@ -1167,62 +782,17 @@ class _ApsScope:
         v = _num(ch)
         return v is not None and v == int(v) and 0 <= v < (2 if len(self._card) == 4 else 4)
 
-    def _apply_trigger(self):
-        c = self._card
-        for comp, p in enumerate((TGR_LCMP0_SRC, TGR_LCMP1_SRC, TGR_TCMP0_SRC, TGR_TCMP1_SRC)):
-            v = self._tgr[p]
-            c.compare_set_source(comp, v & 0xF, bool(v & TGR_SRC_COMMAND))
-        for ch in range(2):
-            c.compare_set_table_direction(ch, {0: -1, 1: 1, 2: 0}[self._tgr[TGR_TCMP0_DIR + ch]])
-        for t in range(4):
-            c.compare_set_output(t, self._tgr[TGR_TRG0_SRC + t], self._tgr[TGR_TRG0_PWD + t] * _PWD_UNIT_S,
-                                 bool(self._tgr[TGR_TRG0_LOGIC + t]), bool(self._tgr[TGR_TRG0_TGL + t]))
-        c.compare_enable(self._tgr[TGR_TRG_EN])
-
     def APS_set_trigger_param(self, Board_ID, Param_No, Param_Val) -> int:
         """``APS_set_trigger_param(Board_ID, Param_No, Param_Val)``: TGR_LCMPx_SRC / TGR_TCMPx_SRC (axis n = its
         encoder, TGR_SRC_COMMAND + n its command position; V76), TGR_TCMPx_DIR (0 negative, 1 positive, 2 both),
         TGR_TRG_EN (bit x: TRGx on), TGR_TRGx_SRC (TRG_SRC_* bits, V77), TGR_TRGx_PWD (x 100 ns, 1..10^7),
         TGR_TRGx_LOGIC (0 active high, 1 active low), TGR_TRGx_TGL (0 pulse, 1 level toggle), the timer TIMR_ITV /
         TIMR_DIR / TIMR_RING_EN / TIMR_EN (APS_get_timer_counter, AF15). PCI-8254 (4 axes): TRG0-1 only."""
-        if not self._board(Board_ID):
-            return self._bad()
-        p, v = _num(Param_No), _num(Param_Val)
-        if p not in self._tgr or v is None or v != int(v):
-            return ERR_ParametersInvalid
-        if p in (TIMR_ITV, TIMR_DIR, TIMR_RING_EN, TIMR_EN):
-            return self._timer_param(int(p), int(v))
-        p, v = int(p), int(v)
-        n_trg = 2 if len(self._card) == 4 else 4
-        if p <= TGR_TCMP1_SRC:
-            ok = (v & ~TGR_SRC_COMMAND) < len(self._card) and 0 <= v
-        elif p in (TGR_TCMP0_DIR, TGR_TCMP1_DIR):
-            ok = v in (0, 1, 2)
-        elif p == TGR_TRG_EN:
-            ok = 0 <= v < (1 << n_trg)
-        elif p >= TGR_TRG0_SRC:
-            t = (p - TGR_TRG0_SRC) % 4
-            kind = (p - TGR_TRG0_SRC) // 4
-            ok = t < n_trg and ((0 <= v <= 31) if kind == 0 else (1 <= v <= 10**7) if kind == 1 else v in (0, 1))
-        else:
-            ok = False
-        if not ok:
-            return ERR_ParametersInvalid
-        old = self._tgr[p]
-        self._tgr[p] = v
-        try:
-            self._apply_trigger()
-        except ValueError:
-            self._tgr[p] = old
-            return ERR_ParametersInvalid
-        return ERR_NoError
+        return self._scope().set_trigger_param(Param_No, Param_Val) if self._board(Board_ID) else self._bad()
 
     def APS_get_trigger_param(self, Board_ID, Param_No):
         """``APS_get_trigger_param(Board_ID, Param_No, &Param_Val)`` -> ``(rtn, Param_Val)``."""
-        if not self._board(Board_ID):
-            return self._bad(), 0
-        p = _num(Param_No)
-        return (ERR_NoError, self._tgr[p]) if p in self._tgr else (ERR_ParametersInvalid, 0)
+        return self._scope().trigger_param(Param_No) if self._board(Board_ID) else (self._bad(), 0)
 
     def APS_set_trigger_linear(self, Board_ID, LCmpCh, StartPoint, RepeatTimes, Interval) -> int:
         """``APS_set_trigger_linear(Board_ID, LCmpCh, StartPoint, RepeatTimes, Interval)``: LCMP0/1 compares the
@@ -1291,51 +861,26 @@ class _ApsScope:
         v = self._card.compare_next_point(base + int(_num(ch)))
         return ERR_NoError, (0 if math.isnan(v) else int(v))
 
-    # -- host interrupts (L4090-4330) ---------------------------------------------------------------------------
-    def _int_no(self, item: int, factor: int) -> int:
-        return item * 32 + factor
+    # -- host interrupts (L4090-4330): the table is vendor/adlink/aps_interrupts.hpp's (AV4) ------------------------
+    def _ints(self):
+        """The card's ADLINK interrupt module (main switch, factors, signaled flags, the wait)."""
+        return _core.aps_interrupts(self._card.kernel)
 
     def _rewatch(self):
-        c = self._card
+        """Subscribes the module's watch masks to the card's events (the subscriptions go with APS_close)."""
+        c, m = self._card, self._ints()
         for sid in self._int_subs:
             c.remove_event(sid)
-        self._int_subs = []
-        if not self._int_factors:
-            return
-        msts, mio = [0] * len(c), [0] * len(c)
-        system = 0
-        for no in self._int_factors:
-            item, f = divmod(no, 32)
-            if item == 8:
-                system |= 1 << f if f <= 4 else 0
-            else:
-                word, bit = _AXIS_FACTORS[f]
-                (msts if word == "msts" else mio)[item] |= 1 << bit
-        handler = self._on_int
-        ids = [c.on_event(handler, axis=a, msts=msts[a], mio=mio[a]) for a in range(len(c)) if msts[a] or mio[a]]
-        if system:
-            ids.append(c.on_event(handler, system=system))
-        self._int_subs = ids
-
-    def _on_int(self, _card, fired):
-        if not self._int_main:
-            return
-        for no in self._int_factors:
-            item, f = divmod(no, 32)
-            if item == 8 and fired.word == "system" and fired.bits >> f & 1:
-                self._int_signaled[no] = True
-            elif item == fired.axis and item < 8:
-                word, bit = _AXIS_FACTORS[f]
-                if word == fired.word and fired.bits >> bit & 1:
-                    self._int_signaled[no] = True
+        handler = lambda _card, f: m.fired(f.axis, f.word, f.bits)  # noqa: E731
+        self._int_subs = [c.on_event(handler, axis=a, msts=m.msts_mask(a), mio=m.mio_mask(a)) for a in range(len(c))
+                          if m.msts_mask(a) or m.mio_mask(a)]
+        if m.system_mask():
+            self._int_subs.append(c.on_event(handler, system=m.system_mask()))
 
     def APS_int_enable(self, Board_ID, Enable) -> int:
         """``APS_int_enable(Board_ID, Enable)``: the main interrupt switch (1 on, 0 off); no event signals while
         off."""
-        if not self._board(Board_ID) or Enable not in (0, 1):
-            return self._bad()
-        self._int_main = bool(Enable)
-        return ERR_NoError
+        return self._ints().set_main(Enable) if self._board(Board_ID) else self._bad()
 
     def APS_set_int_factor(self, Board_ID, Item_No, Factor_No, Enable) -> int:
         """``I32 APS_set_int_factor(Board_ID, Item_No, Factor_No, Enable)`` -> the interrupt number (item x 32 +
@@ -1346,55 +891,17 @@ class _ApsScope:
         is read as its bit (L4271-4274, V82)."""
         if not self._board(Board_ID):
             return self._bad()
-        item, f, en = _num(Item_No), _num(Factor_No), _num(Enable)
-        if None in (item, f, en) or item != int(item) or f != int(f) or en not in (0, 1):
-            return ERR_ParametersInvalid
-        item, f = int(item), int(f)
-        if f > 31 and f & (f - 1) == 0:
-            f = f.bit_length() - 1
-        if not 0 <= f <= 31 or not 0 <= item <= 10:
-            return ERR_ParametersInvalid
-        if item in (9, 10):
-            return ERR_FunctionNotAvailable
-        if item < 8:
-            if item >= len(self._card):
-                return ERR_ParametersInvalid
-            if f not in _AXIS_FACTORS:
-                return ERR_FunctionNotAvailable if f in (IPRED, IPOSTD) else ERR_ParametersInvalid
-        elif f > IHOV:
-            return ERR_ParametersInvalid
-        no = self._int_no(item, f)
-        if en:
-            self._int_factors.add(no)
-            self._int_signaled.setdefault(no, False)
-        else:
-            self._int_factors.discard(no)
+        no = self._ints().set_factor(Item_No, Factor_No, Enable)
         self._rewatch()
         return no
 
     def APS_get_int_factor(self, Board_ID, Item_No, Factor_No):
         """``APS_get_int_factor(Board_ID, Item_No, Factor_No, &Enable)`` -> ``(rtn, Enable)``."""
-        if not self._board(Board_ID):
-            return self._bad(), 0
-        item, f = _num(Item_No), _num(Factor_No)
-        if None in (item, f) or item != int(item) or f != int(f):
-            return ERR_ParametersInvalid, 0
-        f = int(f)
-        if f > 31 and f & (f - 1) == 0:
-            f = f.bit_length() - 1
-        return ERR_NoError, int(self._int_no(int(item), f) in self._int_factors)
+        return self._ints().factor_enabled(Item_No, Factor_No) if self._board(Board_ID) else (self._bad(), 0)
 
     def APS_int_no_to_handle(self, Int_No):
         """``HANDLE APS_int_no_to_handle(Int_No)``: the simulation's handle is the interrupt number itself."""
         return int(Int_No)
-
-    def _int_check(self, Int_No):
-        v = _num(Int_No)
-        if self._card is None:
-            return ERR_DeviceNotInitial
-        if v is None or v != int(v) or int(v) not in self._int_signaled:
-            return ERR_ParametersInvalid
-        return None
 
     def APS_wait_single_int(self, Int_No, Time_Out) -> int:
         """``APS_wait_single_int(Int_No, Time_Out)``: runs the card until the interrupt is signaled (at once if it
@@ -1405,45 +912,88 @@ class _ApsScope:
     def APS_wait_multiple_int(self, Int_Count, Int_No_Array, Wait_All, Time_Out) -> int:
         """``APS_wait_multiple_int(Int_Count, *Int_No_Array, Wait_All, Time_Out)``: as APS_wait_single_int for
         the first Int_Count numbers, until all (Wait_All 1) or any (0) are signaled."""
-        n, tmo = _num(Int_Count), _num(Time_Out)
-        try:
-            nos = list(Int_No_Array)[: int(n)] if n is not None and n == int(n) and n >= 1 else None
-        except TypeError:
-            nos = None
         if self._card is None:
             return ERR_DeviceNotInitial
-        if not nos or len(nos) != int(n) or Wait_All not in (0, 1) or tmo is None or tmo != int(tmo) or \
-                (tmo < 0 and tmo != -1):
-            return ERR_ParametersInvalid
-        for no in nos:
-            bad = self._int_check(no)
-            if bad is not None:
-                return bad
-        nos = [int(no) for no in nos]
-        if not self._int_main or any(no not in self._int_factors for no in nos):
-            return ERR_InterruptNotEnable
-        agg = all if Wait_All else any
-        ts = self._card.servo_period_s
-        limit = int(round((_WAIT_FOREVER_S if tmo == -1 else tmo * 1e-3) / ts))
-        self._card.run_until_fired(lambda: agg(self._int_signaled[no] for no in nos), limit)
-        return ERR_NoError if agg(self._int_signaled[no] for no in nos) else ERR_TimeOut
+        m = self._ints()
+        rtn, ticks = m.begin_wait(Int_Count, list(Int_No_Array), Wait_All, Time_Out)
+        if rtn != ERR_NoError:
+            return rtn
+        self._card.run_until_fired(m.wait_done, ticks)
+        return ERR_NoError if m.wait_done() else ERR_TimeOut
 
     def APS_reset_int(self, Int_No) -> int:
         """``APS_reset_int(Int_No)``: back to non-signaled (L4270)."""
-        bad = self._int_check(Int_No)
-        if bad is not None:
-            return bad
-        self._int_signaled[int(Int_No)] = False
-        return ERR_NoError
+        return ERR_DeviceNotInitial if self._card is None else self._ints().set_signaled(Int_No, False)
 
     def APS_set_int(self, Int_No) -> int:
         """``APS_set_int(Int_No)``: signals the interrupt by software."""
-        bad = self._int_check(Int_No)
-        if bad is not None:
-            return bad
-        self._int_signaled[int(Int_No)] = True
-        return ERR_NoError
+        return ERR_DeviceNotInitial if self._card is None else self._ints().set_signaled(Int_No, True)
 
+
+# The arc and spiral commands (L2899-3063; argument lists V113) as rows: manual name -> (Card.aps_interp kind, axes,
+# the manual's geometry arguments -> aps_interp keywords, what the manual says). Each row makes three functions with
+# the manual's signatures: NAME (PRA speeds), NAME_v (at vector speed Vm, pulse/s), NAME_all (every speed given:
+# Vs/Vm/Ve pulse/s, Acc/Dec pulse/s^2, SFac 0..1). Positions in pulse, angles in degrees; Option and TransPara as
+# APS_line; ``Wait`` must be None/0.
+_ARCS = {
+    "APS_arc2_ca": ("arc2_ca", 2, {"CenterArray": "center", "Angle": "angle_deg"},
+                    "``APS_arc2_ca(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 Angle, F64 *TransPara, "
+                    "ASYNCALL *Wait)`` (L2978): a 2-D arc about the centre by Angle degrees (+ CCW, ``|Angle|`` > 360 "
+                    "= laps)."),
+    "APS_arc2_ce": ("arc2_ce", 2, {"CenterArray": "center", "EndArray": "target", "Dir": "dir"},
+                    "``APS_arc2_ce(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *EndArray, I16 Dir, F64 "
+                    "*TransPara, ASYNCALL *Wait)`` (L2981): a 2-D arc to an exact end point, Angle = theta + Dir*360 "
+                    "(L2943-2958); exactly 180 deg or 360 deg is ERR_ParametersInvalid (L2930-2933)."),
+    "APS_arc3_ca": ("arc3_ca", 3, {"CenterArray": "center", "NormalArray": "normal", "Angle": "angle_deg"},
+                    "``APS_arc3_ca(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *NormalArray, F64 Angle, "
+                    "F64 *TransPara, ASYNCALL *Wait)`` (L2899): a 3-D arc, right-hand rule about the normal "
+                    "(Gram-Schmidt, L2911)."),
+    "APS_arc3_ce": ("arc3_ce", 3, {"CenterArray": "center", "EndArray": "target", "Dir": "dir"},
+                    "``APS_arc3_ce(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *EndArray, I16 Dir, F64 "
+                    "*TransPara, ASYNCALL *Wait)`` (L2900): a 3-D arc to an exact end point (no half or full "
+                    "circle)."),
+    "APS_sprial_ca": ("spiral_ca", 3, {"CenterArray": "center", "NormalArray": "normal", "Angle": "angle_deg",
+                                       "DeltaH": "height", "FinalR": "final_radius"},
+                      "``APS_sprial_ca(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *NormalArray, F64 "
+                      "Angle, F64 DeltaH, F64 FinalR, F64 *TransPara, ASYNCALL *Wait)`` (the manual's spelling, "
+                      "L3047): a conical spiral, rise DeltaH along the normal, radius to FinalR (L3001-3035)."),
+    "APS_sprial_ce": ("spiral_ce", 3, {"CenterArray": "center", "NormalArray": "normal", "EndArray": "target",
+                                       "Dir": "dir"},
+                      "``APS_sprial_ce(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *NormalArray, F64 "
+                      "*EndArray, I16 Dir, F64 *TransPara, ASYNCALL *Wait)`` (L3050): a spiral to an exact end point "
+                      "(L3037-3063)."),
+}
+_SPEED_ARGS = {"_v": ("Vm",), "_all": ("Vs", "Vm", "Ve", "Acc", "Dec", "SFac")}
+
+
+def _arc_function(name: str, suffix: str, kind: str, dim: int, geom: dict, doc: str):
+    """One ApsController method of an _ARCS row: the manual's signature, one call of ``_arc``."""
+    P = inspect.Parameter
+    extra = _SPEED_ARGS.get(suffix, ())
+    params = [P(n, P.POSITIONAL_OR_KEYWORD) for n in ("self", "Axis_ID_Array", "Option", *geom)]
+    params.append(P("TransPara", P.POSITIONAL_OR_KEYWORD, **({} if suffix else {"default": 0.0})))
+    params += [P(n, P.POSITIONAL_OR_KEYWORD) for n in extra] + [P("Wait", P.POSITIONAL_OR_KEYWORD, default=None)]
+    sig = inspect.Signature(params, return_annotation="int")
+
+    def method(*args, **kwargs):
+        a = sig.bind(*args, **kwargs)
+        a.apply_defaults()
+        v = a.arguments
+        speeds = dict(zip(("vs", "vm", "ve", "acc", "dec", "sf"), (v[k] for k in extra))) if suffix == "_all" else None
+        return v["self"]._arc(kind, v["Axis_ID_Array"], dim, v["Option"], v["TransPara"], v["Wait"], vm=v.get("Vm"),
+                              speeds=speeds, **{key: v[arg] for arg, key in geom.items()})
+
+    method.__name__ = method.__qualname__ = name + suffix
+    method.__signature__ = sig  # type: ignore[attr-defined]
+    method.__annotations__ = {"return": "int"}
+    method.__doc__ = doc if not suffix else (f":func:`{name}` at vector speed Vm (pulse/s)." if suffix == "_v" else
+                                             f":func:`{name}` with every speed given (the PRA values unchanged).")
+    return method
+
+
+for _name, (_kind, _dim, _geom, _doc) in _ARCS.items():
+    for _suffix in ("", "_v", "_all"):
+        setattr(ApsController, _name + _suffix, _arc_function(_name, _suffix, _kind, _dim, _geom, _doc))
 
 for _mixin in (_ApsScope, _ApsPointTable, _ApsMore):  # the blocks' functions are ApsController methods
     for _name, _fn in list(vars(_mixin).items()):

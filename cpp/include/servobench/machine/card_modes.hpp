@@ -26,7 +26,7 @@
 namespace servobench::machine {
 
 // Group slots: GUC-ECAT / iDEABOX crd 1..2 are slots 0..1; the GT coordinate system (GT_MapAxis) is slot 2;
-// slot 3 is the ADLINK interpolation group (card_group_adlink.hpp), slot 4 the GE SX crd (vendor/googol/ge_crd.hpp).
+// slot 3 is the ADLINK interpolation group (vendor/adlink/adlink_group.hpp), slot 4 the GE SX crd (vendor/googol/ge_crd.hpp).
 constexpr std::size_t kGroupSlots = 5;
 constexpr std::size_t kGtCrdSlot = 2;
 

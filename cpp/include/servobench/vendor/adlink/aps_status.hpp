@@ -16,7 +16,7 @@
 //   bit 16 ASTP abnormal stop: the card recorded a stop cause; cleared when the next motion starts (L3652)
 //   bit 18 PRED / 19 POSTD  pre-/post-distance event of the point-to-point move (L3284-3292, cleared at the next start)
 //   bit 28 GER  slave of a gear (the card's gear mode)
-//   PTB (11) and BLD (17): set by the interpolation group's view (card_group_adlink.hpp; AF4, V118).
+//   PTB (11) and BLD (17): set by the interpolation group's view (adlink_group.hpp; AF4, V118).
 // Motion I/O status APS_motion_io_status (MIO, L3611-3631):
 //   bit 0 ALM, 1 PEL, 2 MEL (inputs as triggered, polarity applied), 3 ORG (home switch), 4 EMG (card-wide),
 //   5 EZ (0: the index mark is an instant, not a level; V44), 6 INP (servo on, at rest, |E| <= the band; V46),

@@ -1,16 +1,17 @@
-// AdlinkGroup: the ADLINK PCI-8254/8258 interpolation (manual §4.8, seed 004 L2813-3150; digest adlink.md §6.7)
-// as a CardGroup: an motion::AdlinkInterpolator over an axis array of the card (the first axis the reference
-// axis, whose PRA_VS/VM/VE/ACC/DEC/SF/SD_DEC define the vector profile), stepped once per motion cycle of the
-// card, positions in pulse. The card hosts it in group slot kAdlinkGroupSlot (3); the APS dialect
-// (servobench.dialects.aps: APS_line, APS_arc2_ca, ...) drives it through adlink_group_move.
+// AdlinkGroup: the ADLINK PCI-8254/8258 interpolation (manual §4.8, seed 004 L2813-3150; digest adlink.md §6.7) as
+// a CardGroup of the ADLINK vendor module (moved from machine/ in session 11, decision AV1): a
+// motion::AdlinkInterpolator over an axis array of the card (the first axis the reference axis, whose
+// PRA_VS/VM/VE/ACC/DEC/SF/SD_DEC define the vector profile), stepped once per motion cycle of the card, positions
+// in pulse. The card hosts it in group slot kAdlinkGroupSlot (3); the APS dialect (servobench.dialects.aps:
+// APS_line, APS_arc2_ca, ...) drives it through adlink_group_move.
 //
 // Life cycle (decisions V113-V116): an interpolation command on axes at rest hosts a new group at the present
 // profile positions (the axes enter AxisMode::Coordinated); further commands on the same axis array while it
 // moves go to its buffer with their transition mode (the "Flag", L3085); a command on other axes while it
 // moves is refused. An idle group is released (the axes back to the T-curve mode) by the next single-axis
 // command (the dialect calls Card::set_mode). MF_WAIT (Option bit 8) holds the group until the move trigger
-// names its reference axis (V115). Any axis fault stops the whole group at once (CardModes::on_fault), and every
-// axis of the group reports the fault's stop code (V117).
+// names its reference axis (V115). Any axis fault stops the whole group at once (machine::CardModes::on_fault),
+// and every axis of the group reports the fault's stop code (V117).
 #pragma once
 
 #include <cstddef>
@@ -22,11 +23,11 @@
 #include "servobench/machine/card_group.hpp"
 #include "servobench/motion/adlink_interpolation.hpp"
 
-namespace servobench::machine {
+namespace servobench::vendor::adlink {
 
 constexpr std::size_t kAdlinkGroupSlot = 3;
 
-class AdlinkGroup final : public CardGroup {
+class AdlinkGroup final : public machine::CardGroup {
  public:
   // array: the axis array (card axes, 0-based; the first is the reference axis); start: their profile positions
   // (pulse); period_s: the card's motion cycle, s.
@@ -76,15 +77,15 @@ struct AdlinkGroupMove {
 // the array moves outside the running group (ModeChangeInMotion), another array's group moves
 // (ChangeInMotion), the e-stop or an axis alarm is active (EmergencyStopActive / DriveAlarmActive), or the
 // buffer is full (ChangeInMotion); bad geometry or speeds throw std::invalid_argument before anything changes.
-void adlink_group_move(Card& card, const AdlinkGroupMove& m);
+void adlink_group_move(machine::Card& card, const AdlinkGroupMove& m);
 // The hosted AdlinkGroup (nullptr when none).
-AdlinkGroup* adlink_group(Card& card);
-const AdlinkGroup* adlink_group(const Card& card);
+AdlinkGroup* adlink_group(machine::Card& card);
+const AdlinkGroup* adlink_group(const machine::Card& card);
 // APS_move_trigger: starts a waiting group whose reference axis is in mask (bit k = axis k); true if it did.
-bool adlink_group_trigger(Card& card, std::uint32_t mask);
+bool adlink_group_trigger(machine::Card& card, std::uint32_t mask);
 // The APS words of axis i with the group's view: WAIT, BLD, and while the group's motion is the axis's, CSTP /
 // MDN / ASTP / the stop code of a group fault (V117).
-std::uint32_t aps_group_motion_status(const Card& card, std::size_t axis);
-int aps_group_stop_code(const Card& card, std::size_t axis);
+std::uint32_t aps_group_motion_status(const machine::Card& card, std::size_t axis);
+int aps_group_stop_code(const machine::Card& card, std::size_t axis);
 
-}  // namespace servobench::machine
+}  // namespace servobench::vendor::adlink

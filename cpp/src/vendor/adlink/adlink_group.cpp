@@ -1,4 +1,4 @@
-#include "servobench/machine/card_group_adlink.hpp"
+#include "servobench/vendor/adlink/adlink_group.hpp"
 
 #include <algorithm>
 #include <memory>
@@ -8,13 +8,14 @@
 #include "servobench/vendor/adlink/aps_status.hpp"
 #include "servobench/machine/card_modes.hpp"
 
-namespace servobench::machine {
+namespace servobench::vendor::adlink {
 
-using vendor::adlink::aps_motion_io_status;  // the ADLINK words this group's view builds on
-using vendor::adlink::aps_motion_status;
-using vendor::adlink::aps_stop_code;
-using vendor::adlink::ApsMio;
-using vendor::adlink::ApsMsts;
+using machine::Card;  // the kernel services this module uses
+using machine::CardCommandRefused;
+using machine::CardModes;
+using machine::CommandFault;
+using machine::HostedGroup;
+using machine::StopCause;
 
 namespace {
 
@@ -174,4 +175,4 @@ int aps_group_stop_code(const Card& card, std::size_t axis) {
   return aps_stop_code(card, axis);
 }
 
-}  // namespace servobench::machine
+}  // namespace servobench::vendor::adlink

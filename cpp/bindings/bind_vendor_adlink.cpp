@@ -1,0 +1,180 @@
+// The ADLINK vendor module's scope registers (vendor/adlink/aps_scope.hpp: sampling, trigger parameters, compare
+// timer), host interrupts (aps_interrupts.hpp), the PRA_* table (aps_parameters.hpp) and the board outputs
+// (aps_outputs.hpp: DO, board parameters, VAO). Thin: every method returns the APS code as an int (getters: (code, value)); servobench.dialects.aps
+// adapts the APS_* names to them. Registered in module.cpp.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "servobench/machine/card.hpp"
+#include "servobench/vendor/adlink/aps_interrupts.hpp"
+#include "servobench/vendor/adlink/aps_outputs.hpp"
+#include "servobench/vendor/adlink/aps_parameters.hpp"
+#include "servobench/vendor/adlink/aps_scope.hpp"
+
+namespace servobench::bindings {
+
+namespace py = pybind11;
+using vendor::adlink::AdlinkCode;
+using vendor::adlink::ApsInterrupts;
+using vendor::adlink::ApsOutputs;
+using vendor::adlink::ApsParameters;
+using vendor::adlink::ApsSample;
+using vendor::adlink::ApsScope;
+
+namespace {
+
+int code(AdlinkCode c) { return static_cast<int>(c); }
+
+// The run's DataArr as a NumPy array of STR_SAMP_DATA_4CH over the module's buffer (kept alive by the array).
+py::object buffer_array(const ApsScope& s) {
+  auto buf = s.sampling_buffer();
+  if (!buf) return py::none();
+  auto* keep = new std::shared_ptr<std::vector<ApsSample>>(buf);
+  py::capsule base(keep, [](void* p) { delete static_cast<std::shared_ptr<std::vector<ApsSample>>*>(p); });
+  return py::array_t<ApsSample>({static_cast<py::ssize_t>(buf->size())}, {static_cast<py::ssize_t>(sizeof(ApsSample))},
+                                buf->data(), base);
+}
+
+}  // namespace
+
+void bind_vendor_adlink(py::module_& m) {
+  PYBIND11_NUMPY_DTYPE(ApsSample, tick, data);
+  py::class_<ApsScope>(m, "ApsScope",
+                       "The ADLINK scope registers of a card (vendor/adlink/aps_scope.hpp): sampling (L3544-3665), "
+                       "trigger parameters (L3348-3435), compare timer (L3363-3378). Get it with aps_scope(card).")
+      .def("power_on", &ApsScope::power_on, "the registers at their APS_initial values; no sampling run")
+      .def("set_sampling_param", [](ApsScope& s, double p, double v) { return code(s.set_sampling_param(p, v)); },
+           py::arg("para"), py::arg("value"), "SAMP_PA_* register; returns the APS code")
+      .def("sampling_param", [](const ApsScope& s, double p) {
+             int v = 0;
+             const int c = code(s.sampling_param(p, v));
+             return py::make_tuple(c, v);
+           }, py::arg("para"), "(code, value) of a SAMP_PA_* register")
+      .def("start_sampling", [](ApsScope& s, double n, double pre, double tmo) { return code(s.start_sampling(n, pre, tmo)); },
+           py::arg("length"), py::arg("pretrigger"), py::arg("timeout_ms"),
+           "starts a block of length samples (pretrigger before the trigger), time-out in ms of card time (-1: 1 h)")
+      .def("sampling_block_ready", &ApsScope::sampling_block_ready, "the block is full")
+      .def("sampling_ticks_left", &ApsScope::sampling_ticks_left, "servo ticks until the sampling time-out")
+      .def("finish_sampling", [](ApsScope& s) { return code(s.finish_sampling()); },
+           "the full block into DataArr (ERR_NoError) or the sampler stopped (ERR_TimeOut)")
+      .def("sampling_count", &ApsScope::sampling_count, "samples copied into DataArr so far")
+      .def("stop_sampling", &ApsScope::stop_sampling)
+      .def("sampling_buffer", &buffer_array, "DataArr: NumPy array of STR_SAMP_DATA_4CH (None before a run)")
+      .def("set_trigger_param", [](ApsScope& s, double p, double v) { return code(s.set_trigger_param(p, v)); },
+           py::arg("para"), py::arg("value"), "TGR_* / TIMR_* register; returns the APS code")
+      .def("trigger_param", [](const ApsScope& s, double p) {
+             int v = 0;
+             const int c = code(s.trigger_param(p, v));
+             return py::make_tuple(c, v);
+           }, py::arg("para"), "(code, value) of a TGR_* / TIMR_* register")
+      .def("timer_counter", &ApsScope::timer_counter, "the compare timer's count now")
+      .def("set_timer_counter", [](ApsScope& s, double v) { return code(s.set_timer_counter(v)); }, py::arg("value"),
+           "sets the timer count (I32)");
+  m.def("aps_scope", [](machine::Card& k) -> ApsScope& { return vendor::adlink::aps_scope(k); }, py::arg("card"),
+        py::return_value_policy::reference_internal,
+        "the card's ADLINK scope module (created on first use, owned by the card)");
+  py::class_<ApsInterrupts>(m, "ApsInterrupts",
+                            "The ADLINK host interrupts of a card (vendor/adlink/aps_interrupts.hpp, L4090-4330): the "
+                            "main switch, the factors, the signaled flags. Get it with aps_interrupts(card).")
+      .def("power_on", &ApsInterrupts::power_on, "main switch off, no factor, no interrupt number known")
+      .def("set_main", [](ApsInterrupts& s, double on) { return code(s.set_main(on)); }, py::arg("enable"))
+      .def("set_factor", &ApsInterrupts::set_factor, py::arg("item"), py::arg("factor"), py::arg("enable"),
+           "the interrupt number (item x 32 + bit) or a negative APS code")
+      .def("factor_enabled", [](const ApsInterrupts& s, double item, double f) {
+             int on = 0;
+             const int c = code(s.factor_enabled(item, f, on));
+             return py::make_tuple(c, on);
+           }, py::arg("item"), py::arg("factor"))
+      .def("msts_mask", &ApsInterrupts::msts_mask, py::arg("axis"))
+      .def("mio_mask", &ApsInterrupts::mio_mask, py::arg("axis"))
+      .def("system_mask", &ApsInterrupts::system_mask)
+      .def("fired", &ApsInterrupts::fired, py::arg("axis"), py::arg("word"), py::arg("bits"),
+           "a watched event fired (Card.on_event): signals the enabled factors it matches")
+      .def("set_signaled", [](ApsInterrupts& s, double no, bool on) { return code(s.set_signaled(no, on)); },
+           py::arg("int_no"), py::arg("on"))
+      .def("begin_wait", [](ApsInterrupts& s, double n, const std::vector<double>& nos, double all, double tmo) {
+             long long ticks = 0;
+             const int c = code(s.begin_wait(n, nos, all, tmo, ticks));
+             return py::make_tuple(c, ticks);
+           }, py::arg("count"), py::arg("nos"), py::arg("wait_all"), py::arg("time_out_ms"),
+           "(code, ticks the wait may run)")
+      .def("wait_done", &ApsInterrupts::wait_done, "the wait's numbers are signaled (all / any)");
+  m.def("aps_interrupts", [](machine::Card& k) -> ApsInterrupts& { return vendor::adlink::aps_interrupts(k); },
+        py::arg("card"), py::return_value_policy::reference_internal,
+        "the card's ADLINK interrupt module (created on first use, owned by the card)");
+  py::class_<ApsParameters>(m, "ApsParameters",
+                            "The ADLINK PRA_* axis parameters of a card (vendor/adlink/aps_parameters.hpp): stored "
+                            "motion / home / jog / gear parameters, the others written through. Get it with "
+                            "aps_parameters(card).")
+      .def("power_on", &ApsParameters::power_on, "every axis back to the defaults (APS_initial)")
+      .def("set", [](ApsParameters& s, std::size_t i, double para, double v) { return code(s.set(i, para, v)); },
+           py::arg("axis"), py::arg("para"), py::arg("value"), "APS_set_axis_param_f: the APS code")
+      .def("get", [](const ApsParameters& s, std::size_t i, double para) {
+             double v = 0.0;
+             const int c = code(s.get(i, para, v));
+             return py::make_tuple(c, v);
+           }, py::arg("axis"), py::arg("para"), "APS_get_axis_param_f: (code, value)")
+      .def("motion", [](const ApsParameters& s, std::size_t i) { return s.axis(i).motion; }, py::arg("axis"),
+           "PRA_SF/ACC/DEC/VS/VM/VE/SD_DEC as an AdlinkPtp (not validated: replace() validates)")
+      .def("home", [](const ApsParameters& s, std::size_t i) { return s.axis(i).home; }, py::arg("axis"),
+           "PRA_HOME_* as an AdlinkHome (not validated)")
+      .def("jog", [](const ApsParameters& s, std::size_t i) { return s.axis(i).jog; }, py::arg("axis"),
+           "PRA_JG_* as an AdlinkJog (not validated)")
+      .def("gear", [](const ApsParameters& s, std::size_t i) {
+             const auto& r = s.axis(i);
+             return py::make_tuple(r.gear_master, r.gear_ratio, r.gear_rate);
+           }, py::arg("axis"), "(PRA_GEAR_MASTER, PRA_GEAR_RATIO, PRA_GEAR_ENGAGE_RATE ratio/s)");
+  m.def("aps_parameters", [](machine::Card& k) -> ApsParameters& { return vendor::adlink::aps_parameters(k); },
+        py::arg("card"), py::return_value_policy::reference_internal,
+        "the card's ADLINK PRA_* parameter table (created on first use, owned by the card)");
+  py::class_<ApsOutputs>(m, "ApsOutputs",
+                         "The ADLINK board outputs of a card (vendor/adlink/aps_outputs.hpp): DO0..7, board "
+                         "parameters, VAO tables (L3436-3542). Get it with aps_outputs(card).")
+      .def("power_on", &ApsOutputs::power_on, "outputs off, no PWM mapping, VAO tables empty (APS_initial)")
+      .def("write_do", [](ApsOutputs& s, double g, double d) { return code(s.write_do(g, d)); }, py::arg("group"),
+           py::arg("data"))
+      .def("read_do", [](const ApsOutputs& s, double g) {
+             int d = 0;
+             const int c = code(s.read_do(g, d));
+             return py::make_tuple(c, d);
+           }, py::arg("group"), "(code, DO0..7 as bits)")
+      .def("set_do_bit", &ApsOutputs::set_do_bit, py::arg("channel"), py::arg("on"))
+      .def("all_do_off", &ApsOutputs::all_do_off)
+      .def("set_board_param", [](ApsOutputs& s, double p, double v) { return code(s.set_board_param(p, v)); },
+           py::arg("para"), py::arg("value"))
+      .def("board_param", [](const ApsOutputs& s, double p) {
+             int v = 0;
+             const int c = code(s.board_param(p, v));
+             return py::make_tuple(c, v);
+           }, py::arg("para"))
+      .def("set_vao_param", [](ApsOutputs& s, double p, double v) { return code(s.set_vao_param(p, v)); },
+           py::arg("para"), py::arg("value"))
+      .def("set_vao_table", [](ApsOutputs& s, double n, double vmin, double dv, double cnt, const std::vector<double>& pw) {
+             return code(s.set_vao_table(n, vmin, dv, cnt, pw));
+           }, py::arg("table"), py::arg("min_velocity"), py::arg("interval"), py::arg("count"), py::arg("powers"))
+      .def("switch_vao_table", [](ApsOutputs& s, double n) { return code(s.switch_vao_table(n)); }, py::arg("table"))
+      .def("select_vao", &ApsOutputs::select_vao, py::arg("ctrl"), py::arg("table"))
+      .def("start_vao", [](ApsOutputs& s, double ch, double en) { return code(s.start_vao(ch, en)); },
+           py::arg("channel"), py::arg("enable"))
+      .def("all_pwm_off", &ApsOutputs::all_pwm_off)
+      .def("vao_output", [](const ApsOutputs& s, int ctrl) {
+             const vendor::adlink::VaoOutput o = s.vao_output(ctrl);
+             py::dict d;
+             d["on"] = o.on;
+             d["table"] = o.table;
+             d["speed"] = o.speed;
+             d["power"] = o.power;
+             d["unit"] = o.unit;
+             return d;
+           }, py::arg("ctrl"), "on, table, speed (pulse/s), power (the output type's unit), unit");
+  m.def("aps_outputs", [](machine::Card& k) -> ApsOutputs& { return vendor::adlink::aps_outputs(k); },
+        py::arg("card"), py::return_value_policy::reference_internal,
+        "the card's ADLINK output module (created on first use, owned by the card)");
+}
+
+}  // namespace servobench::bindings
