@@ -11,6 +11,7 @@
 
 #include "servobench/common/validate.hpp"
 #include "servobench/machine/axis.hpp"
+#include "arrays.hpp"
 #include "object_lock.hpp"
 #include "flag.hpp"
 
@@ -169,6 +170,8 @@ void bind_machine(py::module_& m) {
   SERVOBENCH_TRACE_SIGNALS(SERVOBENCH_META)
 #undef SERVOBENCH_META
   m.attr("TRACE_SIGNALS") = meta;
+  m.def("tick_kernel", [] { return std::string(machine::tick_kernel_name(machine::auto_tick_kernel())); },
+        "The fused tick's kernel that Axis.run uses on this CPU: 'sse4.1' or 'portable' (decision SP1)");
 
   py::class_<Axis> axis_cls(m, "Axis", "One simulated servo axis (C++ core). Use servobench.Axis.");
   axis_cls.def(py::init([](const py::object& law, const py::object& drv, const py::object& plant,
@@ -229,6 +232,14 @@ void bind_machine(py::module_& m) {
            "generator), so the copy runs the same ticks")
       .def("set_fused_tick", strict(&Axis::set_fused_tick), py::arg("on"),
            "True (default): the fused per-configuration tick where it applies; False: the general loop (for tests)")
+      .def("set_tick_kernel", [](Axis& a, const std::string& kernel) {
+             for (auto k : {machine::TickKernel::kAuto, machine::TickKernel::kPortable, machine::TickKernel::kSse41})
+               if (kernel == machine::tick_kernel_name(k)) return a.set_tick_kernel(k);
+             throw py::value_error("Axis.set_tick_kernel: kernel = '" + kernel +
+                                   "' must be 'auto', 'portable' or 'sse4.1'");
+           }, py::arg("kernel"),
+           "The fused tick's kernel: 'auto' (default: the fastest this CPU runs), 'portable' or 'sse4.1' (ValueError "
+           "if this CPU has no SSE4.1); all give the same doubles (for tests and benchmarks)")
       .def_property_readonly("last_command_pulse", &Axis::last_command_pulse)
       .def(
           "run",
@@ -277,7 +288,7 @@ void bind_machine(py::module_& m) {
                 for (const auto& s : signal_names()) all += (all.empty() ? "" : ", ") + s;
                 throw py::value_error("signals: unknown signal '" + name + "'; the signals are: " + all);
               }
-              py::array_t<double> buf(n);
+              py::array_t<double> buf = output_array(n);  // decision SP3
               *slot = buf.mutable_data();
               out[py::str(name)] = buf;
             }
