@@ -146,3 +146,28 @@ def test_a_long_recording_is_an_ordinary_array_with_the_same_doubles():
     fb = run.fb_pos
     del run
     assert np.array_equal(fb[::1000], kept)
+
+
+@pytest.mark.parametrize("continued", [False, True])
+@pytest.mark.parametrize("which", ["positions", "velocities", "injection_v"])
+def test_a_bad_sample_deep_in_a_long_run_leaves_the_axis_as_it_was(which, continued):
+    # The binding checks the inputs chunk by chunk as the run goes (decision SP5): a NaN found after ticks ran puts
+    # the axis back as it was before the call, then raises.
+    n = 400_000
+    axis = sb.demo_axis()
+    axis.run(np.full(3000, 700.0))  # somewhere other than the initial state
+    before = (axis.tick, axis.angle_rad, axis.speed_rad_s, axis.feedback_pulse, axis.last_command_pulse)
+    pos, vel, inj = np.full(n, 900.0), np.zeros(n), np.zeros(n)
+    {"positions": pos, "velocities": vel, "injection_v": inj}[which][n - 5] = np.nan
+    with pytest.raises(ValueError, match=rf"{which}\[{n - 5}\] = nan is not a finite number"):
+        axis.run(pos, velocities=vel, injection_v=inj, continue_=continued)
+    assert (axis.tick, axis.angle_rad, axis.speed_rad_s, axis.feedback_pulse, axis.last_command_pulse) == before
+    # the core call without an undo copy restores the state the run began from
+    core = axis._axis
+    with pytest.raises(ValueError, match="is not a finite number"):
+        core.run(pos, vel, None, ["fb_pos"], inj, 0.0, False, None, 0, None)
+    assert (axis.tick, axis.angle_rad, axis.speed_rad_s) == before[:3]
+    run = axis.run(np.full(3000, 700.0), continue_=True)  # and it runs on from there as if nothing happened
+    ref = sb.demo_axis()
+    ref.run(np.full(3000, 700.0))
+    assert np.array_equal(run.fb_pos, ref.run(np.full(3000, 700.0), continue_=True).fb_pos)
