@@ -167,6 +167,16 @@ def alternate_cpu(ours, theirs, repeats: int):
     return float(np.median(t_ours)), float(np.median(t_theirs)), v_ours, v_theirs
 
 
+def median_cpu(fn, repeats: int) -> float:
+    """Median CPU time (s) of `repeats` calls of fn() in this process."""
+    times = []
+    for _ in range(repeats):
+        c0 = time.process_time()
+        fn()
+        times.append(time.process_time() - c0)
+    return float(np.median(times))
+
+
 def best_of(fn, repeats: int) -> float:
     best = math.inf
     for _ in range(repeats):
@@ -185,6 +195,7 @@ def run(quick: bool = False, ticks: int | None = None, python_ticks: int | None 
     size = dict(QUICK if quick else FULL)
     size.update({k: v for k, v in dict(ticks=ticks, python_ticks=python_ticks).items() if v is not None})
     n_ticks = size["ticks"]
+    load_start = os.getloadavg()[0]
     rep5, rep3 = (1, 1) if quick else (5, 3)
     cmd = long_move(n_ticks)
     rows = []
@@ -231,14 +242,32 @@ def run(quick: bool = False, ticks: int | None = None, python_ticks: int | None 
 
         chain, _ = numba_peer.kernels()
         consts = numba_peer.chain_constants(sb.demo_axis())
-        nb_out = np.empty(n_ticks)
-        chain(consts, cmd.pos[:10], cmd.vel[:10], cmd.acc[:10], nb_out[:10])  # compile (not timed)
-        sb_cpu, nb_cpu, ref_fb, _ = alternate_cpu(lambda: sb.demo_axis().run(cmd, signals=["fb_pos"]).fb_pos,
-                                               lambda: chain(consts, cmd.pos, cmd.vel, cmd.acc, nb_out), rep5)
+        chain(consts, cmd.pos[:10], cmd.vel[:10], cmd.acc[:10], np.empty(10))  # compile (not timed)
+
+        def numba_run():  # allocates its output like servobench's run does (decision SP4)
+            out = np.empty(n_ticks)
+            chain(consts, cmd.pos, cmd.vel, cmd.acc, out)
+            return out
+
+        sb_cpu, nb_cpu, ref_fb, nb_out = alternate_cpu(
+            lambda: sb.demo_axis().run(cmd, signals=["fb_pos"]).fb_pos, numba_run, rep5)
         bad = int(np.count_nonzero(nb_out != ref_fb))
         if bad:
             raise SystemExit(f"numba peer differs from the C++ core at {bad} of {n_ticks} ticks")
         nb_rate = n_ticks / nb_cpu
+
+    # The fused tick's kernels (decision SP1): the one this CPU runs by default against the portable one, forced.
+    kernel = sb._core.tick_kernel()
+
+    def sb_kernel_run(name):
+        axis = sb.demo_axis()
+        axis._axis.set_tick_kernel(name)
+        return axis.run(cmd, signals=["fb_pos"]).fb_pos
+
+    auto_cpu, port_cpu, auto_fb, port_fb = alternate_cpu(lambda: sb_kernel_run("auto"),
+                                                         lambda: sb_kernel_run("portable"), rep5)
+    if not np.array_equal(auto_fb, port_fb):
+        raise SystemExit("the portable kernel's feedback differs from the default kernel's")
 
     # "A tight C++ loop of the same arithmetic" (issue 22): bench/tight_rigid.cpp, the numba loop written once in C++
     # and compiled for this CPU; bench-only, checked bit-identical to servobench, alternating CPU-time medians.
@@ -249,10 +278,14 @@ def run(quick: bool = False, ticks: int | None = None, python_ticks: int | None 
     tight_cpu = tight_sb_cpu = None
     if tight is not None:
         consts = numba_peer.chain_constants(sb.demo_axis())
-        t_out = np.empty(n_ticks)
-        tight_sb_cpu, tight_cpu, ref_fb, _ = alternate_cpu(
-            lambda: sb.demo_axis().run(cmd, signals=["fb_pos"]).fb_pos,
-            lambda: tight(consts, cmd.pos, cmd.vel, cmd.acc, t_out), rep5)
+
+        def tight_run():  # allocates its output like servobench's run does (decision SP4)
+            out = np.empty(n_ticks)
+            tight(consts, cmd.pos, cmd.vel, cmd.acc, out)
+            return out
+
+        tight_sb_cpu, tight_cpu, ref_fb, t_out = alternate_cpu(
+            lambda: sb.demo_axis().run(cmd, signals=["fb_pos"]).fb_pos, tight_run, rep5)
         bad = int(np.count_nonzero(t_out != ref_fb))
         if bad:
             raise SystemExit(f"tight C++ peer differs from the C++ core at {bad} of {n_ticks} ticks")
@@ -286,7 +319,8 @@ def run(quick: bool = False, ticks: int | None = None, python_ticks: int | None 
     # length (feedback only: flat from 10^4 ticks up, no cliff).
     slow_t = long_move(n_ticks)
     slow_t = sb.Trajectory(pos=slow_t.pos * 0.5, vel=slow_t.vel * 0.5, acc=slow_t.acc * 0.25)
-    t_full_fb = best_of(lambda: full_chain_axis("torque").run(slow_t, signals=["fb_pos"]), rep3)
+    # CPU time, median (decision SP6): the 15 M ticks/s goal is about one core, which a loaded machine shares.
+    t_full_fb = median_cpu(lambda: full_chain_axis("torque").run(slow_t, signals=["fb_pos"]), rep5)
     flat = {}
     for n_flat in size["flat"]:
         hold = np.full(n_flat, 1000.0)
@@ -316,7 +350,12 @@ def run(quick: bool = False, ticks: int | None = None, python_ticks: int | None 
         rows.append(("rigid chain tick in pure Python (CPython)", n_py, t_py, py_rate))
     extra_rows = [(f"servobench C++ core, rigid chain, the default {len(sb.DEFAULT_SIGNALS)} signals recorded "
                    f"({', '.join(sb.DEFAULT_SIGNALS)})", n_ticks, t_default, n_ticks / t_default),
-                  ("full chain, torque drive, feedback only recorded", n_ticks, t_full_fb, n_ticks / t_full_fb)]
+                  (f"full chain, torque drive, feedback only recorded (CPU-time median of {rep5})", n_ticks, t_full_fb,
+                   n_ticks / t_full_fb)]
+    extra_rows.append((f"servobench, rigid chain, feedback only, default kernel ({kernel}; CPU-time median of {rep5}, "
+                       "alternating with the next row)", n_ticks, auto_cpu, n_ticks / auto_cpu))
+    extra_rows.append(("servobench, rigid chain, feedback only, portable kernel forced (baseline x86-64; same run)",
+                       n_ticks, port_cpu, n_ticks / port_cpu))
     if nb_rate is not None:
         extra_rows.append((f"servobench, rigid chain, feedback only (CPU-time median of {rep5})", n_ticks, sb_cpu,
                            n_ticks / sb_cpu))
@@ -349,6 +388,9 @@ def run(quick: bool = False, ticks: int | None = None, python_ticks: int | None 
         "pure-Python two-mass chain with the implicit friction solve would be slower still). The full chains run two "
         "ADLINK integer biquads (1 kHz low-pass, notch at the resonance); the rigid chain runs the card's default "
         "pass-through biquads. The card rows count axis ticks (4 per card tick)."
+        + f" The fused tick ran its {kernel} kernel (decision SP1). Each peer allocates its output array in the timed "
+        "call, as servobench's run does (decision SP4). Machine load (1-min average) at the start "
+        f"{load_start:.2f}, at the end {os.getloadavg()[0]:.2f}; 2 cores shared."
         + (" QUICK run (tiny sizes, for the tests): the figures say nothing about speed." if quick else ""),
         "",
         "| implementation | ticks | wall [s] | ticks/s | vs pure Python | vs goal 10 M ticks/s |",

@@ -4,6 +4,8 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
+#include <stdexcept>
 #include <functional>
 #include <cmath>
 #include <string>
@@ -11,6 +13,7 @@
 
 #include "servobench/common/validate.hpp"
 #include "servobench/machine/axis.hpp"
+#include "arrays.hpp"
 #include "object_lock.hpp"
 #include "flag.hpp"
 
@@ -104,16 +107,55 @@ machine::Trace offset_trace(machine::Trace t, std::size_t k) {
 // chunks (object_lock.hpp); the axis keeps its state between chunks, so the result is the one-call result.
 // chunk_start (optional): set to the run's tick index at which each chunk starts, for a per-tick hook that needs
 // the index in the whole run.
+// The input arrays of a run, checked finite chunk by chunk right before each chunk runs (decision SP5): the check
+// then reads what the tick loop reads next from cache, instead of a separate pass over memory.
+struct RunInput {
+  const char* name;
+  const double* data;
+};
+// Throws std::invalid_argument (ValueError) naming the first non-finite sample of [from, to), if any.
+void check_finite(const std::vector<RunInput>& inputs, std::size_t from, std::size_t to) {
+  for (const RunInput& in : inputs) {
+    if (in.data == nullptr) continue;
+    bool ok = true;
+    for (std::size_t k = from; k < to; ++k) ok &= std::isfinite(in.data[k]);
+    if (ok) continue;
+    for (std::size_t k = from; k < to; ++k)
+      if (!std::isfinite(in.data[k]))
+        throw std::invalid_argument(std::string(in.name) + "[" + std::to_string(k) + "] = " +
+                                    format_value(in.data[k]) + " is not a finite number");
+  }
+}
+
+// inputs: checked chunk by chunk; a non-finite sample found after some ticks ran puts the axis back as `undo` (the
+// caller's copy from before the call) or as it stood when the run began, then raises: a run with a bad input never
+// changes the axis.
 machine::RunOutcome run_chunked(Axis& axis, const machine::CommandInput& in, const machine::Trace& trace,
-                                const machine::RunGuard& guard, std::size_t* chunk_start = nullptr) {
+                                const machine::RunGuard& guard, std::size_t* chunk_start = nullptr,
+                                const std::vector<RunInput>& inputs = {}, const Axis* undo = nullptr) {
   RunLock lock({&axis});
   py::gil_scoped_release release;
   ChunkClock clock;
+  std::optional<Axis> snapshot;
+  if (!inputs.empty() && undo == nullptr && in.n > clock.size()) {
+    auto held = lock.chunk();
+    snapshot.emplace(axis);
+    undo = &*snapshot;
+  }
   machine::RunOutcome outcome;
   std::size_t done = 0;
   while (done < in.n) {
     machine::CommandInput c = in;
     c.n = std::min(clock.size(), in.n - done);
+    try {
+      check_finite(inputs, done, done + c.n);
+    } catch (const std::invalid_argument&) {
+      if (done > 0 || undo != nullptr) {
+        auto held = lock.chunk();
+        if (undo != nullptr) axis = *undo;
+      }
+      throw;
+    }
     c.pos += done;
     if (c.vel) c.vel += done;
     if (c.acc) c.acc += done;
@@ -137,19 +179,14 @@ machine::RunOutcome run_chunked(Axis& axis, const machine::CommandInput& in, con
   return outcome;
 }
 
-Array checked_array(const py::handle& obj, const char* name, py::ssize_t expected) {
+// A run's input array: 1-D, `expected` samples (-1: any); its finiteness is checked by check_finite.
+Array shaped_array(const py::handle& obj, const char* name, py::ssize_t expected) {
   Array a = Array::ensure(obj);
   if (!a) throw py::type_error(std::string(name) + " must be a 1-D array of numbers");
   if (a.ndim() != 1) throw py::value_error(std::string(name) + " must be 1-D, got " + std::to_string(a.ndim()) + " dimensions");
   if (expected >= 0 && a.shape(0) != expected)
     throw py::value_error(std::string(name) + " has " + std::to_string(a.shape(0)) + " samples; expected " +
                           std::to_string(expected) + " (one per tick, like the positions)");
-  const double* d = a.data();
-  for (py::ssize_t k = 0; k < a.shape(0); ++k) {
-    if (!std::isfinite(d[k]))
-      throw py::value_error(std::string(name) + "[" + std::to_string(k) + "] = " + format_value(d[k]) +
-                            " is not a finite number");
-  }
   return a;
 }
 
@@ -169,6 +206,8 @@ void bind_machine(py::module_& m) {
   SERVOBENCH_TRACE_SIGNALS(SERVOBENCH_META)
 #undef SERVOBENCH_META
   m.attr("TRACE_SIGNALS") = meta;
+  m.def("tick_kernel", [] { return std::string(machine::tick_kernel_name(machine::auto_tick_kernel())); },
+        "The fused tick's kernel that Axis.run uses on this CPU: 'sse4.1' or 'portable' (decision SP1)");
 
   py::class_<Axis> axis_cls(m, "Axis", "One simulated servo axis (C++ core). Use servobench.Axis.");
   axis_cls.def(py::init([](const py::object& law, const py::object& drv, const py::object& plant,
@@ -229,28 +268,38 @@ void bind_machine(py::module_& m) {
            "generator), so the copy runs the same ticks")
       .def("set_fused_tick", strict(&Axis::set_fused_tick), py::arg("on"),
            "True (default): the fused per-configuration tick where it applies; False: the general loop (for tests)")
+      .def("set_tick_kernel", [](Axis& a, const std::string& kernel) {
+             for (auto k : {machine::TickKernel::kAuto, machine::TickKernel::kPortable, machine::TickKernel::kSse41})
+               if (kernel == machine::tick_kernel_name(k)) return a.set_tick_kernel(k);
+             throw py::value_error("Axis.set_tick_kernel: kernel = '" + kernel +
+                                   "' must be 'auto', 'portable' or 'sse4.1'");
+           }, py::arg("kernel"),
+           "The fused tick's kernel: 'auto' (default: the fastest this CPU runs), 'portable' or 'sse4.1' (ValueError "
+           "if this CPU has no SSE4.1); all give the same doubles (for tests and benchmarks)")
       .def_property_readonly("last_command_pulse", &Axis::last_command_pulse)
       .def(
           "run",
           [](Axis& axis, const py::object& pos, const py::object& vel, const py::object& acc, const py::object& signals,
              const py::object& injection, double error_limit, Flag stop_on_alarm, const py::object& controller,
-             std::uintptr_t controller_address, const py::object& controller_state) {
-            Array p = checked_array(pos, "positions", -1);
+             std::uintptr_t controller_address, const py::object& controller_state, const py::object& undo) {
+            // Shapes now; finiteness chunk by chunk as the run goes (run_chunked), or all first for a Python
+            // controller's one-piece run.
+            Array p = shaped_array(pos, "positions", -1);
             const py::ssize_t n = p.shape(0);
             Array v, a, inj;
             machine::CommandInput in;
             in.pos = p.data();
             in.n = static_cast<std::size_t>(n);
             if (!vel.is_none()) {
-              v = checked_array(vel, "velocities", n);
+              v = shaped_array(vel, "velocities", n);
               in.vel = v.data();
             }
             if (!acc.is_none()) {
-              a = checked_array(acc, "accelerations", n);
+              a = shaped_array(acc, "accelerations", n);
               in.acc = a.data();
             }
             if (!injection.is_none()) {
-              inj = checked_array(injection, "injection_v", n);
+              inj = shaped_array(injection, "injection_v", n);
               in.volts_add = inj.data();
             }
             check_range("Axis.run", "error_limit_pulse", error_limit, 0, 1e15, "0 = off");
@@ -277,7 +326,7 @@ void bind_machine(py::module_& m) {
                 for (const auto& s : signal_names()) all += (all.empty() ? "" : ", ") + s;
                 throw py::value_error("signals: unknown signal '" + name + "'; the signals are: " + all);
               }
-              py::array_t<double> buf(n);
+              py::array_t<double> buf = output_array(n);  // decision SP3
               *slot = buf.mutable_data();
               out[py::str(name)] = buf;
             }
@@ -308,15 +357,24 @@ void bind_machine(py::module_& m) {
               };
               in.external = &ext;
             }
+            const std::vector<RunInput> inputs{{"positions", in.pos}, {"velocities", in.vel},
+                                               {"accelerations", in.acc}, {"injection_v", in.volts_add}};
+            const Axis* undo_axis = undo.is_none() ? nullptr : &undo.cast<const Axis&>();
             machine::RunOutcome outcome;
             if (!controller.is_none()) {
               // The Python controller needs the GIL every tick: one piece, under the run lock; Ctrl-C surfaces
               // as the KeyboardInterrupt the controller's own Python code raises.
+              try {
+                check_finite(inputs, 0, in.n);
+              } catch (const std::invalid_argument&) {
+                if (undo_axis != nullptr) axis = *undo_axis;
+                throw;
+              }
               RunLock lock({&axis});
               auto held = lock_releasing_gil(locks_of(&axis)->state);
               outcome = axis.run(in, trace, guard);
             } else {
-              outcome = run_chunked(axis, in, trace, guard, &chunk_start);
+              outcome = run_chunked(axis, in, trace, guard, &chunk_start, inputs, undo_axis);
             }
             const char* stop = outcome.stop == machine::RunStop::kCompleted  ? ""
                                : outcome.stop == machine::RunStop::kErrorLimit ? "error_limit"
@@ -332,8 +390,10 @@ void bind_machine(py::module_& m) {
           py::arg("positions"), py::arg("velocities") = py::none(), py::arg("accelerations") = py::none(),
           py::arg("signals") = py::none(), py::arg("injection_v") = py::none(), py::arg("error_limit_pulse") = 0.0,
           py::arg("stop_on_alarm") = false, py::arg("controller") = py::none(), py::arg("controller_address") = 0,
-          py::arg("controller_state") = py::none(),
+          py::arg("controller_state") = py::none(), py::arg("undo") = py::none(),
           "Runs one tick per position (pulse); returns ({signal: array}, stop reason or '', error at the stop). "
+          "A non-finite input sample raises ValueError with the axis as `undo` (a copy of it from before the call) "
+          "or, without one, as it stood when the run began. "
           "Releases the GIL (not with a Python controller); one run at a time per axis (a second thread waits); "
           "Ctrl-C raises KeyboardInterrupt within about 20 ms, the axis standing at the last whole tick run.")
       .def("step", [](Axis& a, double command_pulse) { return a.step(command_pulse); }, py::arg("command_pulse"),

@@ -359,18 +359,26 @@ class Axis:
             raise TypeError("controller_state must be a writeable, C-contiguous float64 NumPy array")
         if controller_state is not None and address == 0:
             raise ValueError("controller_state is for a compiled controller (a numba cfunc or a C function pointer)")
+        lo_hi = undo = None
         if not _checks.flag("Axis.run", "continue_", continue_):
             # A call that fails its checks leaves the axis as it was: check the inputs first, then restart.
             _checks.error_limit("Axis.run", "error_limit_pulse", error_limit_pulse, self, 0.0)
             _checks.flag("Axis.run", "stop_on_alarm", stop_on_alarm)
             n = positions.shape[0] if positions.ndim == 1 else -1
-            for name, x in (("positions", positions), ("velocities", velocities), ("accelerations", accelerations),
-                            ("injection_v", injection_v)):
+            # Shapes here; the binding checks every sample finite chunk by chunk as the run goes and, on a bad one,
+            # puts the axis back as `undo` (decision SP5). The positions' extremes give the error limit's span.
+            lo_hi = _precheck("positions", positions, n, extremes=True)
+            for name, x in (("velocities", velocities), ("accelerations", accelerations), ("injection_v", injection_v)):
                 if x is not None:
                     _precheck(name, x, n)
+            undo = self._axis.copy()
             self._restart()
         fb = self.feedback_pulse  # the command's largest distance from here, without a temporary array
-        span = max(abs(float(positions.max()) - fb), abs(float(positions.min()) - fb)) if positions.size else 0.0
+        if positions.size:
+            lo, hi = lo_hi if lo_hi is not None else (float(positions.min()), float(positions.max()))
+            span = max(abs(hi - fb), abs(lo - fb))
+        else:
+            span = 0.0
         limit = _checks.error_limit("Axis.run", "error_limit_pulse", error_limit_pulse, self,
                                     span if np.isfinite(span) else 0.0)
         stop_alarm = _checks.flag("Axis.run", "stop_on_alarm", stop_on_alarm)
@@ -387,15 +395,16 @@ class Axis:
             wanted = list(DEFAULT_SIGNALS)
             replay = _Replay(self._axis.copy(), velocities, accelerations, injection_v, limit, stop_alarm)
         rec, stop, stop_error = self._axis.run(positions, velocities, accelerations, wanted, injection_v,
-                                               limit, stop_alarm, py_controller, address, controller_state)
+                                               limit, stop_alarm, py_controller, address, controller_state, undo)
         if replay is not None:
             replay.command = rec["cmd_pos"]
         return AxisRun(signals=rec, servo_period_s=self.servo_period_s, law=self.law, stopped=stop or None,
                        stop_error_pulse=float(stop_error), _replay=replay)
 
 
-def _precheck(name: str, x, n: int) -> None:
-    """The binding's checks of a run's input array (1-D, n samples, finite), made before the axis restarts."""
+def _precheck(name: str, x, n: int, extremes: bool = False) -> tuple[float, float] | None:
+    """The binding's shape checks of a run's input array (1-D, n samples), made before the axis restarts; with
+    `extremes`, also finite, and returns the array's (min, max) (None if empty)."""
     try:
         a = np.asarray(x, dtype=float)
     except (TypeError, ValueError):
@@ -404,9 +413,13 @@ def _precheck(name: str, x, n: int) -> None:
         raise ValueError(f"{name} must be 1-D, got {a.ndim} dimensions")
     if n >= 0 and a.shape[0] != n:
         raise ValueError(f"{name} has {a.shape[0]} samples; expected {n} (one per tick, like the positions)")
-    if a.size and not (np.isfinite(a.min()) and np.isfinite(a.max())):  # min/max carry NaN: no temporary array
+    if not (extremes and a.size):
+        return None
+    lo, hi = float(a.min()), float(a.max())
+    if not (np.isfinite(lo) and np.isfinite(hi)):  # min/max carry NaN: no temporary array
         k = int(np.flatnonzero(~np.isfinite(a))[0])
         raise ValueError(f"{name}[{k}] = {a[k]} is not a finite number")
+    return lo, hi
 
 
 class _Replay:

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -42,10 +43,12 @@ struct Case {
   bool profile = false, inject = false;
 };
 
-// Runs the same command in three pieces (continuation) and the state read after it.
-std::vector<double> run_case(const Case& c, bool fused) {
+// Runs the same command in three pieces (continuation) and the state read after it; `kernel` the fused tick's kernel
+// (decision SP1).
+std::vector<double> run_case(const Case& c, bool fused, mc::TickKernel kernel = mc::TickKernel::kAuto) {
   mc::Axis axis(c.cfg);
   axis.set_fused_tick(fused);
+  axis.set_tick_kernel(kernel);
   axis.reset(0.1);
   const std::size_t n = 3000;
   std::vector<double> pos(n), vel(n), acc(n), inj(n);
@@ -172,6 +175,42 @@ TEST(FusedTick, SameDoublesAsTheGeneralLoopOnEverySignal) {
     ASSERT_EQ(fused.size(), general.size()) << c.name;
     EXPECT_EQ(0, std::memcmp(fused.data(), general.data(), fused.size() * sizeof(double))) << c.name;
   }
+}
+
+// Decision SP1: every kernel of the fused tick (portable; SSE4.1 where the CPU has it), forced, gives the general
+// loop's doubles on every signal; 'auto' picks SSE4.1 exactly when the CPU has it.
+TEST(FusedTick, EveryKernelGivesTheSameDoubles) {
+  std::vector<mc::TickKernel> kernels{mc::TickKernel::kPortable};
+  if (mc::tick_kernel_available(mc::TickKernel::kSse41)) kernels.push_back(mc::TickKernel::kSse41);
+#if SERVOBENCH_SSE41_KERNEL
+  EXPECT_EQ(mc::auto_tick_kernel(), __builtin_cpu_supports("sse4.1") ? mc::TickKernel::kSse41
+                                                                     : mc::TickKernel::kPortable);
+#else
+  EXPECT_EQ(mc::auto_tick_kernel(), mc::TickKernel::kPortable);
+#endif
+  for (const Case& c : cases()) {
+    const std::vector<double> general = run_case(c, false);
+    for (mc::TickKernel k : kernels) {
+      const std::vector<double> fused = run_case(c, true, k);
+      ASSERT_EQ(fused.size(), general.size()) << c.name << " " << mc::tick_kernel_name(k);
+      EXPECT_EQ(0, std::memcmp(fused.data(), general.data(), fused.size() * sizeof(double)))
+          << c.name << " " << mc::tick_kernel_name(k);
+    }
+  }
+}
+
+TEST(FusedTick, AKernelTheCpuLacksIsRefused) {
+  mc::Axis axis;
+  axis.set_tick_kernel(mc::TickKernel::kPortable);
+  EXPECT_EQ(axis.tick_kernel(), mc::TickKernel::kPortable);
+  if (!mc::tick_kernel_available(mc::TickKernel::kSse41)) {
+    EXPECT_THROW(axis.set_tick_kernel(mc::TickKernel::kSse41), std::invalid_argument);
+    EXPECT_EQ(axis.tick_kernel(), mc::TickKernel::kPortable);
+  } else {
+    axis.set_tick_kernel(mc::TickKernel::kSse41);
+    EXPECT_EQ(axis.tick_kernel(), mc::TickKernel::kSse41);
+  }
+  EXPECT_STREQ(mc::tick_kernel_name(mc::TickKernel::kSse41), "sse4.1");
 }
 
 TEST(FusedTick, TheGuardCasesTrip) {

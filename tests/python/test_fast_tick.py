@@ -26,9 +26,18 @@ def _axes():
                   plant=sb.RigidPlant(coulomb_nm=0.004, static_nm=0.006, load_nm=0.001))
 
 
+def _kernels():
+    """The fused tick's kernels this CPU runs (decision SP1): portable always, SSE4.1 where the CPU has it."""
+    return ["portable"] + (["sse4.1"] if sb._core.tick_kernel() == "sse4.1" else [])
+
+
+@pytest.mark.parametrize("kernel", ["portable", "sse4.1"])
 @pytest.mark.parametrize("index", range(3))
-def test_the_fused_tick_gives_the_general_loops_doubles(index):
+def test_the_fused_tick_gives_the_general_loops_doubles(index, kernel):
+    if kernel not in _kernels():
+        pytest.skip("this CPU has no SSE4.1: only the portable kernel runs here")
     axis = list(_axes())[index]
+    axis._axis.set_tick_kernel(kernel)
     ref = list(_axes())[index]
     ref._axis.set_fused_tick(False)
     cmd = _move()
@@ -104,3 +113,61 @@ def test_step_continues_and_a_run_after_steps_starts_over():
     run = axis.run(np.full(50, 300.0))
     ref = sb.demo_axis().run(np.full(50, 300.0))
     assert np.array_equal(run.fb_pos, ref.fb_pos) and axis.tick == 50
+
+
+def test_the_tick_kernel_is_chosen_for_the_cpu_and_can_be_forced():
+    assert sb._core.tick_kernel() in ("sse4.1", "portable")
+    axis = sb.demo_axis()
+    for kernel in ["auto"] + _kernels():
+        axis._axis.set_tick_kernel(kernel)
+    with pytest.raises(ValueError, match="'auto', 'portable' or 'sse4.1'"):
+        axis._axis.set_tick_kernel("avx512")
+    if "sse4.1" not in _kernels():
+        with pytest.raises(ValueError, match="no SSE4.1"):
+            axis._axis.set_tick_kernel("sse4.1")
+
+
+def test_a_long_recording_is_an_ordinary_array_with_the_same_doubles():
+    # From 1 MiB up the recording is allocated outside NumPy's allocator (decision SP3): still an ordinary array.
+    n = 300_000
+    cmd = np.tile(np.concatenate([np.linspace(0, 4000, 1500), np.full(500, 4000.0), np.linspace(4000, 0, 1500),
+                                  np.zeros(500)]), n // 4000 + 1)[:n]
+    run = sb.demo_axis().run(cmd, signals=["fb_pos", "u"])
+    ref_axis = sb.demo_axis()
+    ref_axis._axis.set_fused_tick(False)
+    ref = ref_axis.run(cmd, signals=["fb_pos", "u"])
+    for name in ("fb_pos", "u"):
+        a = run[name]
+        assert a.dtype == np.float64 and a.shape == (n,) and a.flags.c_contiguous and a.flags.writeable
+        assert a.flags.aligned and np.array_equal(a, ref[name])
+        a[0] = 1.5  # writeable, and the memory stays alive with the array
+        assert a[0] == 1.5 and np.array_equal(a[1:], ref[name][1:])
+    kept = run.fb_pos[::1000].copy()
+    fb = run.fb_pos
+    del run
+    assert np.array_equal(fb[::1000], kept)
+
+
+@pytest.mark.parametrize("continued", [False, True])
+@pytest.mark.parametrize("which", ["positions", "velocities", "injection_v"])
+def test_a_bad_sample_deep_in_a_long_run_leaves_the_axis_as_it_was(which, continued):
+    # The binding checks the inputs chunk by chunk as the run goes (decision SP5): a NaN found after ticks ran puts
+    # the axis back as it was before the call, then raises.
+    n = 400_000
+    axis = sb.demo_axis()
+    axis.run(np.full(3000, 700.0))  # somewhere other than the initial state
+    before = (axis.tick, axis.angle_rad, axis.speed_rad_s, axis.feedback_pulse, axis.last_command_pulse)
+    pos, vel, inj = np.full(n, 900.0), np.zeros(n), np.zeros(n)
+    {"positions": pos, "velocities": vel, "injection_v": inj}[which][n - 5] = np.nan
+    with pytest.raises(ValueError, match=rf"{which}\[{n - 5}\] = nan is not a finite number"):
+        axis.run(pos, velocities=vel, injection_v=inj, continue_=continued)
+    assert (axis.tick, axis.angle_rad, axis.speed_rad_s, axis.feedback_pulse, axis.last_command_pulse) == before
+    # the core call without an undo copy restores the state the run began from
+    core = axis._axis
+    with pytest.raises(ValueError, match="is not a finite number"):
+        core.run(pos, vel, None, ["fb_pos"], inj, 0.0, False, None, 0, None)
+    assert (axis.tick, axis.angle_rad, axis.speed_rad_s) == before[:3]
+    run = axis.run(np.full(3000, 700.0), continue_=True)  # and it runs on from there as if nothing happened
+    ref = sb.demo_axis()
+    ref.run(np.full(3000, 700.0))
+    assert np.array_equal(run.fb_pos, ref.run(np.full(3000, 700.0), continue_=True).fb_pos)

@@ -8,6 +8,9 @@
 // operation (the same doubles; tests/cpp/test_fused_tick.cpp compares every signal of both loops). The state is
 // written back at the end (and at a guard's trip), so run() and step() continue from it as before.
 #include <cmath>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
 
 #include "servobench/machine/axis.hpp"
 #include "servobench/machine/powertrain_local.hpp"
@@ -33,23 +36,89 @@ bool Axis::run_fused(const CommandInput& command, const Trace& trace, const RunG
   constexpr std::size_t kMinTicks = 4;
   if (!fused_enabled_ || command.n < kMinTicks || command.external || !servo_on_ || power_.pulse_input())
     return false;
+  const TickKernel kernel = kernel_ == TickKernel::kAuto ? auto_tick_kernel() : kernel_;
   bool done = false;
   std::visit(
       [&](auto& law) {
         using L = std::decay_t<decltype(law)>;
-        if (PowerTrain::Local<2, 1>::applies(power_)) outcome = fused_loop<L, 2, 1>(law, command, trace, guard);
-        else if (PowerTrain::Local<3, 1>::applies(power_)) outcome = fused_loop<L, 3, 1>(law, command, trace, guard);
-        else if (PowerTrain::Local<4, 2>::applies(power_)) outcome = fused_loop<L, 4, 2>(law, command, trace, guard);
-        else if (PowerTrain::Local<5, 2>::applies(power_)) outcome = fused_loop<L, 5, 2>(law, command, trace, guard);
-        else return;
+        const auto run = [&](auto n, auto nb) {
+          constexpr int kN = decltype(n)::value, kNB = decltype(nb)::value;
+#if SERVOBENCH_SSE41_KERNEL
+          if (kernel == TickKernel::kSse41) return fused_sse41<L, kN, kNB>(law, command, trace, guard);
+#endif
+          return fused_portable<L, kN, kNB>(law, command, trace, guard);
+        };
+        using std::integral_constant;
+        if (PowerTrain::Local<2, 1>::applies(power_))
+          outcome = run(integral_constant<int, 2>{}, integral_constant<int, 1>{});
+        else if (PowerTrain::Local<3, 1>::applies(power_))
+          outcome = run(integral_constant<int, 3>{}, integral_constant<int, 1>{});
+        else if (PowerTrain::Local<4, 2>::applies(power_))
+          outcome = run(integral_constant<int, 4>{}, integral_constant<int, 2>{});
+        else if (PowerTrain::Local<5, 2>::applies(power_))
+          outcome = run(integral_constant<int, 5>{}, integral_constant<int, 2>{});
+        else
+          return;
         done = true;
       },
       law_);
   return done;
 }
 
+// Each kernel is flattened: every call inside it that can be inlined is (the power train's friction solve included),
+// so a kernel is one function with its state in registers and, for SSE4.1, SSE4.1 code throughout.
 template <class Law, int N, int NB>
-RunOutcome Axis::fused_loop(Law& law_state, const CommandInput& command, const Trace& tr, const RunGuard& guard) {
+__attribute__((flatten)) RunOutcome Axis::fused_portable(Law& law, const CommandInput& command, const Trace& trace,
+                                                         const RunGuard& guard) {
+  return fused_loop<Law, N, NB, PortableRounding>(law, command, trace, guard);
+}
+
+#if SERVOBENCH_SSE41_KERNEL
+// The same loop compiled for SSE4.1: everything in it is inlined (fused_loop is always_inline, the law, filters, DAC,
+// encoder and power train are header inline functions), so the whole tick is SSE4.1 code and rounds with `roundsd`;
+// no other instruction set (no AVX, no FMA) enters, so the arithmetic is the portable kernel's.
+template <class Law, int N, int NB>
+__attribute__((target("sse4.1"), flatten)) RunOutcome Axis::fused_sse41(Law& law, const CommandInput& command,
+                                                                        const Trace& trace, const RunGuard& guard) {
+  return fused_loop<Law, N, NB, Sse41Rounding>(law, command, trace, guard);
+}
+#endif
+
+TickKernel auto_tick_kernel() {
+#if SERVOBENCH_SSE41_KERNEL
+  static const bool sse41 = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("sse4.1") != 0;
+  }();
+  if (sse41) return TickKernel::kSse41;
+#endif
+  return TickKernel::kPortable;
+}
+
+bool tick_kernel_available(TickKernel k) {
+  return k != TickKernel::kSse41 || auto_tick_kernel() == TickKernel::kSse41;
+}
+
+const char* tick_kernel_name(TickKernel k) {
+  switch (k) {
+    case TickKernel::kAuto: return "auto";
+    case TickKernel::kPortable: return "portable";
+    case TickKernel::kSse41: return "sse4.1";
+  }
+  return "?";
+}
+
+void Axis::set_tick_kernel(TickKernel k) {
+  if (!tick_kernel_available(k))
+    throw std::invalid_argument(std::string("Axis.tick_kernel: '") + tick_kernel_name(k) +
+                                "' cannot run here (this build or CPU has no SSE4.1); the kernels here are 'auto' and "
+                                "'portable'");
+  kernel_ = k;
+}
+
+template <class Law, int N, int NB, class Round>
+__attribute__((always_inline)) inline RunOutcome Axis::fused_loop(Law& law_state, const CommandInput& command,
+                                                                  const Trace& tr, const RunGuard& guard) {
   RunOutcome outcome;
   const bool guarded = guard.error_limit_pulse > 0.0 || guard.stop_on_alarm;
   const double limit = guard.error_limit_pulse;
@@ -87,7 +156,7 @@ RunOutcome Axis::fused_loop(Law& law_state, const CommandInput& command, const T
     prev_vel = v;
 
     const double enc_angle = on_load ? pt.load_angle_rad() : pt.motor_angle_rad();
-    const double y = encoder.read(enc_angle);
+    const double y = encoder.read<Round>(enc_angle);
     if (guarded) {
       if (limit > 0.0 && !(std::fabs(r - y) <= limit)) {  // NaN trips
         trip = true;
@@ -106,12 +175,12 @@ RunOutcome Axis::fused_loop(Law& law_state, const CommandInput& command, const T
       f0 = bq0.step(t.total);
       f1 = bq1.step(f0);
       const double request = law.counts_to_volts(f1);
-      volts = dac.convert(volts_add ? request + volts_add[k] : request);
+      volts = dac.convert<Round>(volts_add ? request + volts_add[k] : request);
     } else {
       // The servo turns off at the tripping tick: no law, no filters, 0 V (plus any injection).
       t.vel = v;
       t.acc = a;
-      if (volts_add) volts = dac.convert(volts_add[k]);
+      if (volts_add) volts = dac.convert<Round>(volts_add[k]);
     }
 
     if (fb_out) fb_out[k] = y;
@@ -138,7 +207,7 @@ RunOutcome Axis::fused_loop(Law& law_state, const CommandInput& command, const T
       if (tr.load_angle_rad) tr.load_angle_rad[k] = pt.load_angle_rad();
       if (tr.load_speed_rad_s) tr.load_speed_rad_s[k] = pt.load_speed_rad_s();
       if (tr.alarm) tr.alarm[k] = pt.alarm() ? 1.0 : 0.0;
-      if (tr.index) tr.index[k] = encoder.index_between(prev_enc, enc_angle) ? 1.0 : 0.0;
+      if (tr.index) tr.index[k] = encoder.index_between<Round>(prev_enc, enc_angle) ? 1.0 : 0.0;
       const double load = pt.load_angle_rad();
       if (tr.home_sw) tr.home_sw[k] = sw.home(load) ? 1.0 : 0.0;
       if (tr.pos_limit_sw) tr.pos_limit_sw[k] = sw.pos_limit(load) ? 1.0 : 0.0;

@@ -23,11 +23,13 @@ class Dac {
   explicit Dac(const DacParams& params = {});
   const DacParams& params() const { return params_; }
 
-  // Volts actually produced for a requested voltage: saturated to +-full scale, then quantised.
+  // Volts actually produced for a requested voltage: saturated to +-full scale, then quantised. Round: the rounding
+  // policy (common/rounding.hpp) of the kernel that inlines this; the same result with each.
+  template <class Round = PortableRounding>
   double convert(double volts) const {
     const double fs = params_.full_scale_v;
     double v = volts > fs ? fs : (volts < -fs ? -fs : volts);
-    if (params_.quantize) v = nearbyint_inline(v * codes_per_volt_) * volts_per_code_;
+    if (params_.quantize) v = Round::nearbyint(v * codes_per_volt_) * volts_per_code_;
     return v;
   }
   double volts_per_code() const { return volts_per_code_; }

@@ -83,6 +83,14 @@ struct RunOutcome {
   double last_error_pulse = 0.0;  // the law's error E = command - encoder read of the last tick run, pulse
 };
 
+// Which compiled kernel of the fused tick runs (decision SP1): kAuto picks the fastest this CPU runs (SSE4.1 where
+// present, else portable); the others force one (for the tests and benchmarks). All give the same doubles.
+enum class TickKernel { kAuto, kPortable, kSse41 };
+// The kernel kAuto picks on this CPU (never kAuto), and whether this build and CPU can run kernel k.
+TickKernel auto_tick_kernel();
+bool tick_kernel_available(TickKernel k);
+const char* tick_kernel_name(TickKernel k);  // "auto", "portable", "sse4.1"
+
 class Axis {
  public:
   explicit Axis(AxisConfig config = {});
@@ -139,6 +147,10 @@ class Axis {
   // The fused tick (decision P16) is on by default; false makes run() take the general loop everywhere. The two give
   // the same doubles (tests/cpp/test_fused_tick.cpp compares them signal by signal); this switch exists for that test.
   void set_fused_tick(bool on) { fused_enabled_ = on; }
+  // The fused tick's kernel (decision SP1; default kAuto). Throws std::invalid_argument if this build or CPU cannot
+  // run it. Exists for the tests (each kernel against the general loop) and the benchmarks.
+  void set_tick_kernel(TickKernel k);
+  TickKernel tick_kernel() const { return kernel_; }
 
  private:
   // The fused tick (axis_fused.cpp): the same ticks as run_with for a servo-on axis with its law in place and a
@@ -146,8 +158,17 @@ class Axis {
   // local copies of compile-time size and one loop specialised per (law, state count, body count). Returns false,
   // having done nothing, where it does not apply.
   bool run_fused(const CommandInput& command, const Trace& trace, const RunGuard& guard, RunOutcome& outcome);
-  template <class Law, int N, int NB>
+  template <class Law, int N, int NB, class Round>
   RunOutcome fused_loop(Law& law, const CommandInput& command, const Trace& trace, const RunGuard& guard);
+  // The kernels: fused_loop inlined into a function compiled for the baseline ISA, and into one compiled for SSE4.1
+  // (`roundsd`), with the matching rounding policy (common/rounding.hpp).
+  template <class Law, int N, int NB>
+  RunOutcome fused_portable(Law& law, const CommandInput& command, const Trace& trace, const RunGuard& guard);
+#if SERVOBENCH_SSE41_KERNEL
+  template <class Law, int N, int NB>
+  __attribute__((target("sse4.1"))) RunOutcome fused_sse41(Law& law, const CommandInput& command,
+                                                           const Trace& trace, const RunGuard& guard);
+#endif
   template <class Law>
   RunOutcome run_with(Law& law, const CommandInput& command, const Trace& trace, const RunGuard& guard);
   double encoder_angle() const {
@@ -166,6 +187,7 @@ class Axis {
   bool primed_ = false;
   bool servo_on_ = true;
   bool fused_enabled_ = true;
+  TickKernel kernel_ = TickKernel::kAuto;
   long long tick_ = 0;
 };
 

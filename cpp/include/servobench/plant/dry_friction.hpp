@@ -91,10 +91,21 @@ void solve_dry_friction(std::size_t nb, const BodyIndex* idx, const DryFriction<
                         const Vec& x_free, const Mat& gamma, unsigned locked, T* f, bool* stick) {
   using std::abs;
   const int sweeps = nb > 1 ? 3 : 1;
-  for (std::size_t b = 0; b < nb; ++b) {
+  // Each body's levels depend only on its speed at the sub-step's start: computed once, not once per sweep (the
+  // same values; the Stribeck curve's division and exponential are the costly part of a two-body sub-step). nb <= 2,
+  // as the callers' f[2], stick[2].
+  constexpr std::size_t kMaxBodies = 2;
+  T slip_level[kMaxBodies], fs_pos[kMaxBodies], fs_neg[kMaxBodies];
+  for (std::size_t b = 0; b < nb && b < kMaxBodies; ++b) {
     if (locked & (1u << b)) {
       f[b] = T(0.0);
       stick[b] = true;
+    } else if (fr[b].active()) {
+      const T v0 = x0[idx[b].speed];
+      const double dir = v0 > 0.0 ? 1.0 : -1.0;
+      slip_level[b] = directional_sliding_nm(fr[b], v0, dir);
+      fs_pos[b] = directional_breakaway_nm(fr[b], 1.0);   // resists positive motion
+      fs_neg[b] = directional_breakaway_nm(fr[b], -1.0);  // resists negative motion
     }
   }
   for (int sweep = 0; sweep < sweeps; ++sweep) {
@@ -120,18 +131,16 @@ void solve_dry_friction(std::size_t nb, const BodyIndex* idx, const DryFriction<
       T fb;
       bool st = false;
       const double dir = v0 > 0.0 ? 1.0 : -1.0;
-      const T f_slip = -dir * directional_sliding_nm(fr[b], v0, dir);
+      const T f_slip = -dir * slip_level[b];
       if (v0 != 0.0 && (v_free + g * f_slip) * dir > 0.0) {
         fb = f_slip;  // keeps sliding the same way
       } else {
         const T f_stick = -v_free / g;  // holds the body at rest at the sub-step's end
-        const T fs_pos = directional_breakaway_nm(fr[b], 1.0);   // resists positive motion
-        const T fs_neg = directional_breakaway_nm(fr[b], -1.0);  // resists negative motion
-        if (f_stick <= fs_neg && f_stick >= -fs_pos) {
+        if (f_stick <= fs_neg[b] && f_stick >= -fs_pos[b]) {
           fb = f_stick;
           st = true;
         } else {
-          fb = v_free > 0.0 ? T(-fs_pos) : fs_neg;  // breaks away, or passes zero
+          fb = v_free > 0.0 ? T(-fs_pos[b]) : fs_neg[b];  // breaks away, or passes zero
         }
       }
       // Sliding friction may only oppose the net displacement over the sub-step: f * (d + gth f) <= 0. (A hold

@@ -37,10 +37,12 @@ class Encoder {
   // Restarts the noise generator from the seed.
   void reset();
 
+  // Round: the rounding policy (common/rounding.hpp) of the kernel that inlines this; the same result with each.
+  template <class Round = PortableRounding>
   double read(double angle_rad) {
     double c = angle_rad * counts_per_rad_;
     if (noisy_) c += params_.noise_counts * gauss_(rng_);
-    return params_.quantize ? floor_inline(c + 0.5) : c;
+    return params_.quantize ? Round::floor(c + 0.5) : c;
   }
   // Noise-free reading (for status displays and tests).
   double read_ideal(double angle_rad) const {
@@ -48,10 +50,11 @@ class Encoder {
     return params_.quantize ? floor_inline(c + 0.5) : c;
   }
   // True if the index mark lies between two successive angles (one crossing per revolution).
+  template <class Round = PortableRounding>
   bool index_between(double from_rad, double to_rad) const {
     constexpr double two_pi = 2.0 * M_PI;
-    return floor_inline((from_rad - params_.index_angle_rad) / two_pi) !=
-           floor_inline((to_rad - params_.index_angle_rad) / two_pi);
+    return Round::floor((from_rad - params_.index_angle_rad) / two_pi) !=
+           Round::floor((to_rad - params_.index_angle_rad) / two_pi);
   }
 
  private:
