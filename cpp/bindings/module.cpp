@@ -22,6 +22,7 @@ void bind_identify(py::module_& m);
 void bind_paths(py::module_& m);
 void bind_card(py::module_& m);
 void bind_batch(py::module_& m);
+void bind_excitation(py::module_& m);
 }  // namespace servobench::bindings
 
 PYBIND11_MODULE(_core, m) {
@@ -46,6 +47,7 @@ PYBIND11_MODULE(_core, m) {
   servobench::bindings::bind_paths(m);
   servobench::bindings::bind_card(m);
   servobench::bindings::bind_batch(m);
+  servobench::bindings::bind_excitation(m);
   // Last: every function's signature readable by inspect.signature() (help(), IPython completion; decision Y3).
   // Not while pybind11-stubgen reads the module at build time (CMakeLists.txt sets SERVOBENCH_STUBGEN): it takes a
   // text signature over the docstring's typed line, and the stubs need the types.
