@@ -6,8 +6,9 @@
 // ceil(start_hz N Ts) (at least 1) to floor(end_hz N Ts) (at most N/2 - 1): all of them, or `lines` of them at
 // round(geomspace(k_lo, k_hi, lines)) (distinct). Schroeder phases (low crest factor, M lines, i = 0..M-1):
 //   phi_i = -pi i (i + 1) / M,     x_n = sum_i cos(2 pi k_i n / N + phi_i),
-// scaled to a peak of `amplitude` (numpy.fft.irfft of unit lines, up to that scale). Summed directly with exact
-// twiddles (k n mod N indexes a table of cos/sin 2 pi m / N): no FFT library, exact to rounding.
+// scaled to a peak of `amplitude` (numpy.fft.irfft of unit lines, up to that scale). Summed directly, no FFT
+// library: each line a phasor re-anchored every 256 samples on the exact twiddle (k n mod N indexes a table of
+// cos/sin 2 pi m / N), equal to the inverse FFT within 1e-13 of the peak.
 #pragma once
 
 #include <vector>
