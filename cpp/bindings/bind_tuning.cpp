@@ -85,6 +85,7 @@ void bind_tuning(py::module_& m) {
       .described()
       .finish();
   m.attr("MARGINS_FIELDS") = described_fields<tuning::Margins>();  // servobench.margins.Margins reads it
+  m.attr("MODEL_TUNE_NOTCH_Q") = py::tuple(py::cast(tuning::ModelTuneOptions{}.notch_q_set));  // its default
   ParamClass<tuning::ModelTuneOptions>(m, "ModelTuneOptions",
                                        "Options of the model-based PID and notch design (tuning/model_tune.hpp).")
       .described()
@@ -199,7 +200,7 @@ void bind_tuning(py::module_& m) {
         o.validate();
         return margins_dict(tuning::margins(f, l, t, o));
       },
-      py::arg("freq_hz"), py::arg("loop_gain"), py::arg("closed_loop") = py::none(), py::arg("options"),
+      py::arg("freq_hz"), py::arg("loop_gain"), py::arg("closed_loop") = py::none(), py::kw_only(), py::arg("options"),
       "Gain/phase/delay margins, closed-loop bandwidth and peak sensitivity from frequency-response data.");
 
   m.def(
@@ -246,8 +247,10 @@ void bind_tuning(py::module_& m) {
 
   m.def(
       "model_tune",
-      [](const machine::Axis& axis, const tuning::ModelTuneOptions& options, const std::string& law) {
+      [](const machine::Axis& axis, const tuning::ModelTuneOptions& options, const std::vector<double>& notch_q_set,
+         const std::string& law) {
         tuning::ModelTuneOptions o = options;
+        o.notch_q_set = notch_q_set;
         if (law == "axis") {
           o.law = tuning::TuneLaw::kAxis;
         } else if (law == "gt") {
@@ -307,7 +310,7 @@ void bind_tuning(py::module_& m) {
         d["summary"] = r.summary;
         return d;
       },
-      py::arg("axis"), py::arg("options"), py::arg("law") = "axis",
+      py::arg("axis"), py::arg("options"), py::arg("notch_q_set"), py::arg("law") = "axis",
       "Model-based PID (and notch) design from the axis's analytic plant (tuning/model_tune). Releases the GIL.");
 
   m.def(

@@ -70,17 +70,18 @@ class ParamClass {
     if constexpr (std::is_same_v<T, bool>) {
       f.type = "bool";
     } else if constexpr (std::is_same_v<T, int>) {
-      f.type = "int";
+      f.type = "float";  // a whole number, shown as a Python float like every number of a parameter class (Y2)
+      f.whole = true;
     } else if constexpr (std::is_same_v<T, double>) {
       f.type = "float";
     } else {
-      f.type = "tuple[float, ...]";
+      f.type = "list[float]";
     }
     f.unit = unit;
     f.doc = doc;
     f.get = [ref](const P& p) -> py::object {
-      if constexpr (std::is_same_v<T, std::vector<double>>) {
-        return py::tuple(py::cast(ref(const_cast<P&>(p))));
+      if constexpr (std::is_same_v<T, int>) {
+        return py::float_(static_cast<double>(ref(const_cast<P&>(p))));
       } else {
         return py::cast(ref(const_cast<P&>(p)));
       }
@@ -90,7 +91,7 @@ class ParamClass {
       if constexpr (std::is_same_v<T, bool>) {
         return v ? "True" : "False";
       } else if constexpr (std::is_same_v<T, int>) {
-        return std::to_string(v);
+        return format_value(static_cast<double>(v));
       } else if constexpr (std::is_same_v<T, double>) {
         return format_value(v);
       } else {
@@ -128,7 +129,14 @@ class ParamClass {
     fields_->by_name[key] = f;
     const std::string prop_doc = (f.unit.empty() ? "" : "[" + f.unit + "] ") + f.doc;
     cls_.def_property(
-        fname, [get = f.get](const P& p) { return get(p); },
+        fname,
+        [ref](const P& p) {
+          if constexpr (std::is_same_v<T, int>) {
+            return static_cast<double>(ref(const_cast<P&>(p)));
+          } else {
+            return ref(const_cast<P&>(p));
+          }
+        },
         [f](P& self, py::handle value) {
           P copy = self;
           f.set(copy, value);
@@ -197,7 +205,8 @@ class ParamClass {
     const P defaults{};
     for (const auto& name : fields_->order) {
       const Field& f = fields_->by_name.at(name);
-      info.append(py::dict(py::arg("name") = name, py::arg("type") = f.type, py::arg("default") = f.get(defaults),
+      info.append(py::dict(py::arg("name") = name, py::arg("type") = f.whole ? std::string("int") : f.type,
+                           py::arg("default") = f.get(defaults),
                            py::arg("unit") = f.unit, py::arg("doc") = f.doc));
     }
     cls_.attr("FIELD_INFO") = py::tuple(info);
@@ -208,6 +217,7 @@ class ParamClass {
   struct Field {
     std::string type;  // the Python annotation: float, int or bool
     std::string unit;  // "" when the field has none
+    bool whole = false;  // an int field: a whole number
     std::string doc;
     std::function<py::object(const P&)> get;
     std::function<std::string(const P&)> repr;

@@ -17,6 +17,7 @@ import functools
 import inspect
 import re
 import textwrap
+import typing
 import dataclasses
 from dataclasses import dataclass
 from typing import Any, Callable
@@ -47,7 +48,8 @@ class PythonDefault:
 
 
 def option_fields(options_class) -> tuple[OptionField, ...]:
-    """The option table of a bound C++ options class (its ``FIELD_INFO``)."""
+    """The option table of a bound C++ options class (its ``FIELD_INFO``). A whole-number field has type "int"
+    (the class itself shows it as a float, like every number of a parameter class, decision Y2)."""
     return tuple(OptionField(**d) for d in options_class.FIELD_INFO)
 
 
@@ -99,7 +101,7 @@ def takes_options(options_class, *, python_defaults: dict[str, PythonDefault] | 
         opts = []
         for f in fields:
             pd = python_defaults.get(f.name)
-            default = pd.value if pd is not None else f.default
+            default = pd.value if pd is not None else (int(f.default) if f.type == "int" else f.default)
             annotation = f.type if pd is None else f"{f.type} | {type(pd.value).__name__ if pd.value is not None else 'None'}"
             opts.append(inspect.Parameter(f.name, inspect.Parameter.KEYWORD_ONLY, default=default,
                                           annotation=annotation))
@@ -143,6 +145,7 @@ def result_fields(table) -> tuple[OptionField, ...]:
                  for d in table)
 
 
+@typing.dataclass_transform(frozen_default=True)
 def described_result(table):
     """Class decorator for a frozen result dataclass whose single-figure fields are described in C++: the table's
     fields (names, types, units and docs read from it) come first, as required fields carrying ``unit`` and ``doc``

@@ -411,7 +411,8 @@ _MODEL_TUNE_PYTHON_DEFAULTS = {
 
 
 @_opts.takes_options(_core.ModelTuneOptions, python_defaults=_MODEL_TUNE_PYTHON_DEFAULTS)
-def model_based_tune(axis, *, law: str | None = None, **options) -> ModelTuneResult:
+def model_based_tune(axis, *, notch_q=tuple(_core.MODEL_TUNE_NOTCH_Q), law: str | None = None,
+                     **options) -> ModelTuneResult:
     """A PID (Ti = alpha Td) and a notch designed from the axis's analytic plant: the highest crossover at which the
     whole loop keeps the phase margin, the gain margin and the peak sensitivity asked for (docs/autotune.md).
 
@@ -420,6 +421,8 @@ def model_based_tune(axis, *, law: str | None = None, **options) -> ModelTuneRes
     identified one included. Nothing is run on the axis; :meth:`ModelTuneResult.apply` writes the result.
 
     {options}
+    notch_q
+        the notch quality factors tried, each 0.1..100 (default ``ModelTuneOptions::notch_q_set``, read from C++).
     law
         None (the axis's law), ``"gt"`` or ``"aps"``: the card law whose integers the design is checked with.
 
@@ -435,10 +438,10 @@ def model_based_tune(axis, *, law: str | None = None, **options) -> ModelTuneRes
     if resonance_hz is not None and float(resonance_hz) == 0.0:
         raise ValueError("model_based_tune.resonance_hz = 0 is outside the allowed range 0 < f < Nyquist; "
                          "use None to find it in the plant response")
-    values = dict(options, notch=_checks.flag("model_based_tune", "notch", options["notch"]),
-                  notch_q=[float(q) for q in np.atleast_1d(options["notch_q"])])
+    values = dict(options, notch=_checks.flag("model_based_tune", "notch", options["notch"]))
     o = _opts.cpp_options(_core.ModelTuneOptions, values, _MODEL_TUNE_PYTHON_DEFAULTS)
-    d = _core.model_tune(getattr(axis, "_axis", axis), o, "axis" if law is None else str(law))
+    d = _core.model_tune(getattr(axis, "_axis", axis), o, [float(q) for q in np.atleast_1d(notch_q)],
+                         "axis" if law is None else str(law))
     p = d["pid"]
     return ModelTuneResult(kp=p["kp"], ki=p["ki"], kd=p["kd"], kc=p["kc"], ti_s=p["ti_s"], td_s=p["td_s"],
                            crossover_hz=d["crossover_hz"], margins=_margins_from(d["margins"], "analytic model"),

@@ -7,6 +7,7 @@ gain) and :func:`closed_loop_poles`. Also available from :mod:`servobench.freque
 from __future__ import annotations
 
 from dataclasses import field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -41,7 +42,19 @@ class Margins(JsonResult):
         what the figures were read from ("analytic model", "measured (stepped sine)", ...) and what was left out.
     """
 
-    # The single figures (gain_margin_db ... ms_freq_hz) come first, read from tuning::Margins::describe().
+    # The single figures (gain_margin_db ... ms_freq_hz) come first, read at import from tuning::Margins::describe()
+    # with their units and docs; static type checkers read these names (test_options_once checks they match).
+    if TYPE_CHECKING:
+        gain_margin_db: float
+        gm_freq_hz: float
+        lower_gain_margin_db: float
+        lower_gm_freq_hz: float
+        phase_margin_deg: float
+        pm_freq_hz: float
+        delay_margin_s: float
+        bandwidth_hz: float
+        ms: float
+        ms_freq_hz: float
     stable: bool = False
     stability: dict = field(default_factory=dict)
     gain_crossovers: dict = field(default_factory=dict)
@@ -162,7 +175,7 @@ def margins(freq_hz, loop_gain, closed_loop=None, *, source: str = "", **options
         raise ValueError(f"integrators = {integrators!r} must be None or an integer in 0..10")
     d = _core.margins(np.asarray(freq_hz, dtype=float), np.asarray(loop_gain, dtype=complex),
                       None if closed_loop is None else np.asarray(closed_loop, dtype=complex),
-                      _opts.cpp_options(_core.MarginsOptions, options, _MARGINS_PYTHON_DEFAULTS))
+                      options=_opts.cpp_options(_core.MarginsOptions, options, _MARGINS_PYTHON_DEFAULTS))
     return _margins_from(d, source)
 
 

@@ -56,7 +56,8 @@ struct ModelTuneOptions {
   void validate(double servo_period_s) const;
 
   // The option table (name, member, unit, meaning with range): the one place the Python API reads each option's
-  // default, unit and doc from (decision OP3). `law` is chosen by name in Python (None, "gt", "aps").
+  // default, unit and doc from (decision OP3). `law` is chosen by name in Python (None, "gt", "aps"); the list
+  // notch_q_set is passed beside the struct (its default is bound as MODEL_TUNE_NOTCH_Q).
   template <class V>
   static void describe(V&& v) {
     using O = ModelTuneOptions;
@@ -69,7 +70,6 @@ struct ModelTuneOptions {
     v("pm_tolerance_deg", &O::pm_tolerance_deg, "deg", "accepted |phase margin - target| over all gain crossovers of the loop, 0.1..20");
     v("resonance_hz", &O::resonance_hz, "Hz", "the resonance to notch, 0 < f < Nyquist; 0: each of the up to 3 most prominent peaks of the plant's gain found above a -40 dB/decade line");
     v("min_resonance_prominence_db", &O::min_resonance_prominence_db, "dB", "a peak this far above the -40 dB/decade line is a resonance worth a notch, 0.1..60");
-    v("notch_q", &O::notch_q_set, "", "notch quality factors tried, each 0.1..100");
     v("min_crossover_hz", &O::min_crossover_hz, "Hz", "lowest crossover candidate, 0 < f < 0.45 / Ts");
     v("max_crossover_hz", &O::max_crossover_hz, "Hz", "highest crossover candidate, min_crossover_hz < f < Nyquist; 0: 0.45 / Ts");
     v("candidates", &O::candidates, "", "log-spaced crossover candidates from min to max, 4..10000; the highest feasible one is taken and the boundary to the one above it bisected");
