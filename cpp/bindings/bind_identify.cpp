@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "param_class.hpp"
 #include "arrays.hpp"
 #include "flag.hpp"
 #include "servobench/common/validate.hpp"
@@ -148,6 +149,11 @@ identify::TimeFitOptions options_from(const std::string& model, const py::kwargs
 }  // namespace
 
 void bind_identify(py::module_& m) {
+  // Described once in its C++ struct (decision OP3); fit_frequency reads defaults, units and docs from it.
+  ParamClass<identify::FrequencyFitOptions>(m, "FrequencyFitOptions",
+                                            "Options of the frequency-response fit (identify/frequency_fit.hpp).")
+      .described()
+      .finish();
   m.def(
       "identify_parameters",
       [](const std::string& model) {
@@ -266,19 +272,14 @@ void bind_identify(py::module_& m) {
       "identify_frequency",
       [](const py::object& axis, const py::handle& freq_hz, const py::handle& response, const py::handle& weight,
          const std::string& model, const py::handle& initial, const std::vector<Flag>& fixed, const py::handle& lower,
-         const py::handle& upper, Flag fit_delay, double delay_initial_s, double max_iterations,
-         double max_relative_std_error, const py::object& progress, const py::object& io) {
+         const py::handle& upper, const identify::FrequencyFitOptions& options, const py::object& progress,
+         const py::object& io) {
         identify::FrequencyData data;
         data.freq_hz = real_vector(freq_hz, "freq_hz");
         data.response = complex_vector(response, "response");
         data.weight = real_vector(weight, "weight");
-        identify::FrequencyFitOptions o;
+        identify::FrequencyFitOptions o = options;
         o.model = model_of(model);
-        o.fit_delay = fit_delay;
-        o.delay_initial_s = delay_initial_s;
-        check_integer("FrequencyFitOptions", "max_iterations", max_iterations, 1, 10000);
-        o.max_iterations = static_cast<int>(max_iterations);
-        o.max_relative_std_error = max_relative_std_error;
         o.validate();
         std::shared_ptr<py::error_already_set> interrupt;
         o.progress = iteration_callback(progress, &interrupt);
@@ -314,8 +315,7 @@ void bind_identify(py::module_& m) {
         return d;
       },
       py::arg("axis"), py::arg("freq_hz"), py::arg("response"), py::kw_only(), py::arg("weight"), py::arg("model"),
-      py::arg("initial"), py::arg("fixed"), py::arg("lower"), py::arg("upper"), py::arg("fit_delay"),
-      py::arg("delay_initial_s"), py::arg("max_iterations"), py::arg("max_relative_std_error"),
+      py::arg("initial"), py::arg("fixed"), py::arg("lower"), py::arg("upper"), py::arg("options"),
       py::arg("progress") = py::none(), py::arg("io") = py::none(),
       "Frequency-domain fit of the plant to a measured Y/U: U counts -> Y pulse of `axis`, or (axis None) the "
       "mechanics described by `io` (MechanicsIO field names). Releases the GIL.");

@@ -13,6 +13,8 @@
 #include "arrays.hpp"
 #include "flag.hpp"
 #include "object_lock.hpp"
+#include "param_class.hpp"
+#include "result_table.hpp"
 #include "servobench/common/validate.hpp"
 #include "servobench/tuning/loop_response.hpp"
 #include "servobench/tuning/margins.hpp"
@@ -29,16 +31,7 @@ namespace {
 
 py::dict margins_dict(const tuning::Margins& mg) {
   py::dict d;
-  d["gain_margin_db"] = mg.gain_margin_db;
-  d["gm_freq_hz"] = mg.gm_freq_hz;
-  d["lower_gain_margin_db"] = mg.lower_gain_margin_db;
-  d["lower_gm_freq_hz"] = mg.lower_gm_freq_hz;
-  d["phase_margin_deg"] = mg.phase_margin_deg;
-  d["pm_freq_hz"] = mg.pm_freq_hz;
-  d["delay_margin_s"] = mg.delay_margin_s;
-  d["bandwidth_hz"] = mg.bandwidth_hz;
-  d["ms"] = mg.ms;
-  d["ms_freq_hz"] = mg.ms_freq_hz;
+  put_described(d, mg);  // the single figures, named as tuning::Margins::describe() names them
   const tuning::Stability& st = mg.stability;
   d["stability"] = py::dict(py::arg("decided") = st.decided, py::arg("stable") = st.stable,
                             py::arg("method") = st.method, py::arg("reason") = st.reason,
@@ -77,6 +70,26 @@ const char* status_name(tuning::SweepStatus s) {
 }  // namespace
 
 void bind_tuning(py::module_& m) {
+  // The options, each described once in its C++ struct (describe(): name, default, unit, doc; decision OP3).
+  ParamClass<tuning::SineSweepOptions>(m, "SineSweepOptions",
+                                       "Options of the stepped-sine sweep (tuning/sine_sweep.hpp; ADLINK Bode tool, "
+                                       "L1978-2045).")
+      .described()
+      .finish();
+  ParamClass<tuning::RelayTuneOptions>(m, "RelayTuneOptions",
+                                       "Options of the relay auto-tuning (tuning/relay_autotune.hpp; ADLINK L1764-1847).")
+      .described()
+      .finish();
+  ParamClass<tuning::MarginsOptions>(m, "MarginsOptions",
+                                     "Options of the Nyquist criterion on frequency-response data (tuning/margins.hpp).")
+      .described()
+      .finish();
+  m.attr("MARGINS_FIELDS") = described_fields<tuning::Margins>();  // servobench.margins.Margins reads it
+  m.attr("MODEL_TUNE_NOTCH_Q") = py::tuple(py::cast(tuning::ModelTuneOptions{}.notch_q_set));  // its default
+  ParamClass<tuning::ModelTuneOptions>(m, "ModelTuneOptions",
+                                       "Options of the model-based PID and notch design (tuning/model_tune.hpp).")
+      .described()
+      .finish();
   m.def(
       "loop_response",
       [](const machine::Axis& axis, const py::object& freq, Flag feedforward, Flag filters) {
@@ -106,27 +119,7 @@ void bind_tuning(py::module_& m) {
 
   m.def(
       "sine_sweep",
-      [](machine::Axis& axis, double start_hz, double end_hz, double amplitude_pulse, double points, double update_s,
-         double deviation_limit_pulse, double settle_fraction, Flag feedforward, Flag filters,
-         const py::object& progress, double min_coherence, double max_distortion, double min_response_pulse,
-         double min_dac_counts, double dac_fraction, double max_amplitude_pulse) {
-        tuning::SineSweepOptions o;
-        o.start_hz = start_hz;
-        o.end_hz = end_hz;
-        o.amplitude_pulse = amplitude_pulse;
-        check_integer("SineSweep", "points", points, 2, 100000, "ADLINK Bode tool, L2038-2045");
-        o.points = static_cast<int>(points);
-        o.update_s = update_s;
-        o.deviation_limit_pulse = deviation_limit_pulse;
-        o.settle_fraction = settle_fraction;
-        o.loop.feedforward = feedforward;
-        o.loop.filters = filters;
-        o.min_coherence = min_coherence;
-        o.max_distortion = max_distortion;
-        o.min_response_pulse = min_response_pulse;
-        o.min_dac_counts = min_dac_counts;
-        o.dac_fraction = dac_fraction;
-        o.max_amplitude_pulse = max_amplitude_pulse;
+      [](machine::Axis& axis, const tuning::SineSweepOptions& o, const py::object& progress) {
         o.validate(axis.servo_period_s());
         std::shared_ptr<py::error_already_set> interrupt;
         const tuning::SweepProgress cb = progress_callback(progress, &interrupt);
@@ -165,11 +158,7 @@ void bind_tuning(py::module_& m) {
         d["open_loop_unstable_poles"] = poles.open_loop_unstable;
         return d;
       },
-      py::arg("axis"), py::kw_only(), py::arg("start_hz"), py::arg("end_hz"), py::arg("amplitude_pulse"),
-      py::arg("points"), py::arg("update_s"), py::arg("deviation_limit_pulse"), py::arg("settle_fraction"),
-      py::arg("feedforward"), py::arg("filters"), py::arg("progress") = py::none(), py::arg("min_coherence") = 0.99,
-      py::arg("max_distortion") = 0.05, py::arg("min_response_pulse") = 4.0, py::arg("min_dac_counts") = 30.0,
-      py::arg("dac_fraction") = 0.5, py::arg("max_amplitude_pulse") = 0.0,
+      py::arg("axis"), py::arg("options"), py::arg("progress") = py::none(),
       "Stepped-sine sweep on the axis (ADLINK Bode tool). Releases the GIL.");
 
   m.def(
@@ -202,39 +191,21 @@ void bind_tuning(py::module_& m) {
 
   m.def(
       "margins",
-      [](const py::object& freq, const py::object& loop_gain, const py::object& closed_loop, int open_loop_unstable_poles,
-         int integrators) {
+      [](const py::object& freq, const py::object& loop_gain, const py::object& closed_loop,
+         const tuning::MarginsOptions& o) {
         const auto f = real_vector(freq, "freq_hz");
         const auto l = complex_vector(loop_gain, "loop_gain");
         std::vector<std::complex<double>> t;
         if (!closed_loop.is_none()) t = complex_vector(closed_loop, "closed_loop");
-        tuning::MarginsOptions o;
-        o.open_loop_unstable_poles = open_loop_unstable_poles;
-        o.integrators = integrators;
+        o.validate();
         return margins_dict(tuning::margins(f, l, t, o));
       },
-      py::arg("freq_hz"), py::arg("loop_gain"), py::arg("closed_loop") = py::none(),
-      py::arg("open_loop_unstable_poles") = 0, py::arg("integrators") = -1,
+      py::arg("freq_hz"), py::arg("loop_gain"), py::arg("closed_loop") = py::none(), py::kw_only(), py::arg("options"),
       "Gain/phase/delay margins, closed-loop bandwidth and peak sensitivity from frequency-response data.");
 
   m.def(
       "relay_autotune",
-      [](machine::Axis& axis, double amplitude_v, double hysteresis_pulse, double data_length, double sampling_time_s,
-         double deviation_limit_pulse, double max_spread, double phase_margin_deg, double alpha, double settle_cycles,
-         double max_cycle_s, const py::object& progress) {
-        tuning::RelayTuneOptions o;
-        o.amplitude_v = amplitude_v;
-        o.hysteresis_pulse = hysteresis_pulse;
-        check_integer("RelayTune", "data_length", data_length, 1, 100000, "ADLINK auto-tuning, L1845");
-        o.data_length = static_cast<int>(data_length);
-        o.sampling_time_s = sampling_time_s;
-        o.deviation_limit_pulse = deviation_limit_pulse;
-        o.max_spread = max_spread;
-        o.phase_margin_deg = phase_margin_deg;
-        o.alpha = alpha;
-        check_integer("RelayTune", "settle_cycles", settle_cycles, 0, 1000);
-        o.settle_cycles = static_cast<int>(settle_cycles);
-        o.max_cycle_s = max_cycle_s;
+      [](machine::Axis& axis, const tuning::RelayTuneOptions& o, const py::object& progress) {
         o.validate();
         std::shared_ptr<py::error_already_set> interrupt;
         const tuning::TuneProgress cb = progress_callback(progress, &interrupt);
@@ -272,34 +243,14 @@ void bind_tuning(py::module_& m) {
         d["ticks"] = r.ticks;
         return d;
       },
-      py::arg("axis"), py::kw_only(), py::arg("amplitude_v"), py::arg("hysteresis_pulse"), py::arg("data_length"),
-      py::arg("sampling_time_s"), py::arg("deviation_limit_pulse"), py::arg("max_spread"),
-      py::arg("phase_margin_deg"), py::arg("alpha"), py::arg("settle_cycles"), py::arg("max_cycle_s"),
-      py::arg("progress") = py::none(), "Relay auto-tuning (ADLINK L1764-1847). Releases the GIL.");
+      py::arg("axis"), py::arg("options"), py::arg("progress") = py::none(), "Relay auto-tuning (ADLINK L1764-1847). Releases the GIL.");
 
   m.def(
       "model_tune",
-      [](const machine::Axis& axis, double phase_margin_deg, double alpha, double pm_tolerance_deg,
-         double min_gain_margin_db, double max_ms, double max_pid_lead_deg, Flag notch, double resonance_hz, double min_resonance_prominence_db,
-         const std::vector<double>& notch_q_set, double min_crossover_hz, double max_crossover_hz, double candidates,
-         double points, const std::string& law) {
-        tuning::ModelTuneOptions o;
-        o.phase_margin_deg = phase_margin_deg;
-        o.alpha = alpha;
-        o.pm_tolerance_deg = pm_tolerance_deg;
-        o.min_gain_margin_db = min_gain_margin_db;
-        o.max_ms = max_ms;
-        o.max_pid_lead_deg = max_pid_lead_deg;
-        o.notch = notch;
-        o.resonance_hz = resonance_hz;
-        o.min_resonance_prominence_db = min_resonance_prominence_db;
+      [](const machine::Axis& axis, const tuning::ModelTuneOptions& options, const std::vector<double>& notch_q_set,
+         const std::string& law) {
+        tuning::ModelTuneOptions o = options;
         o.notch_q_set = notch_q_set;
-        o.min_crossover_hz = min_crossover_hz;
-        o.max_crossover_hz = max_crossover_hz;
-        check_integer("ModelTune", "candidates", candidates, 4, 10000);
-        o.candidates = static_cast<int>(candidates);
-        check_integer("ModelTune", "points", points, 100, 200000);
-        o.points = static_cast<int>(points);
         if (law == "axis") {
           o.law = tuning::TuneLaw::kAxis;
         } else if (law == "gt") {
@@ -359,10 +310,7 @@ void bind_tuning(py::module_& m) {
         d["summary"] = r.summary;
         return d;
       },
-      py::arg("axis"), py::kw_only(), py::arg("phase_margin_deg"), py::arg("alpha"), py::arg("pm_tolerance_deg"),
-      py::arg("min_gain_margin_db"), py::arg("max_ms"), py::arg("max_pid_lead_deg"), py::arg("notch"), py::arg("resonance_hz"),
-      py::arg("min_resonance_prominence_db"), py::arg("notch_q_set"), py::arg("min_crossover_hz"),
-      py::arg("max_crossover_hz"), py::arg("candidates"), py::arg("points"), py::arg("law"),
+      py::arg("axis"), py::arg("options"), py::arg("notch_q_set"), py::arg("law") = "axis",
       "Model-based PID (and notch) design from the axis's analytic plant (tuning/model_tune). Releases the GIL.");
 
   m.def(

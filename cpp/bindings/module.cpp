@@ -26,6 +26,7 @@ void bind_vendor_ge(py::module_& m);  // bind_vendor_ge.cpp: the GE list module 
 void bind_vendor_gt(py::module_& m);
 void bind_vendor_gts(py::module_& m);
 void bind_vendor_adlink(py::module_& m);  // bind_vendor_adlink.cpp: the ADLINK vendor module
+void bind_excitation(py::module_& m);
 }  // namespace servobench::bindings
 
 PYBIND11_MODULE(_core, m) {
@@ -54,6 +55,7 @@ PYBIND11_MODULE(_core, m) {
   servobench::bindings::bind_vendor_gt(m);
   servobench::bindings::bind_vendor_gts(m);
   servobench::bindings::bind_vendor_adlink(m);
+  servobench::bindings::bind_excitation(m);
   // Last: every function's signature readable by inspect.signature() (help(), IPython completion; decision Y3).
   // Not while pybind11-stubgen reads the module at build time (CMakeLists.txt sets SERVOBENCH_STUBGEN): it takes a
   // text signature over the docstring's typed line, and the stubs need the types.

@@ -36,47 +36,118 @@ class ParamClass {
 
   template <class T>
   ParamClass& field(const char* fname, T P::*member, const char* doc) {
-    static_assert(std::is_same_v<T, double> || std::is_same_v<T, bool>, "fields are double or bool");
+    return field(fname, member, "", doc);
+  }
+
+  // A field with its unit ("" for none): the unit is shown in the docstrings and in FIELD_INFO.
+  template <class T>
+  ParamClass& field(const char* fname, T P::*member, const char* unit, const char* doc) {
+    return add<T>(fname, [member](P& p) -> T& { return p.*member; }, unit, doc);
+  }
+
+  // A field of a nested struct (e.g. SineSweepOptions::loop.feedforward), flat in Python.
+  template <class M, class T>
+  ParamClass& field(const char* fname, M P::*outer, T M::*inner, const char* unit, const char* doc) {
+    return add<T>(fname, [outer, inner](P& p) -> T& { return (p.*outer).*inner; }, unit, doc);
+  }
+
+  // Binds every field a struct lists in its static describe(visitor): the struct is then the one place that states
+  // each option's name, default, unit and meaning (decision OP3).
+  ParamClass& described() {
+    P::describe([this](const char* fname, auto... rest) { this->field(fname, rest...); });
+    return *this;
+  }
+
+ private:
+  template <class T, class Ref>
+  ParamClass& add(const char* fname, Ref ref, const char* unit, const char* doc) {
+    static_assert(std::is_same_v<T, double> || std::is_same_v<T, bool> || std::is_same_v<T, int> ||
+                      std::is_same_v<T, std::vector<double>>,
+                  "fields are double, int, bool or a list of doubles");
     const std::string owner = fields_->type_name;
     const std::string key = fname;
     Field f;
-    f.type = std::is_same_v<T, bool> ? "bool" : "float";
+    if constexpr (std::is_same_v<T, bool>) {
+      f.type = "bool";
+    } else if constexpr (std::is_same_v<T, int>) {
+      f.type = "float";  // a whole number, shown as a Python float like every number of a parameter class (Y2)
+      f.whole = true;
+    } else if constexpr (std::is_same_v<T, double>) {
+      f.type = "float";
+    } else {
+      f.type = "list[float]";
+    }
+    f.unit = unit;
     f.doc = doc;
-    f.get = [member](const P& p) -> py::object { return py::cast(p.*member); };
-    f.repr = [member](const P& p) -> std::string {
-      if constexpr (std::is_same_v<T, bool>) {
-        return p.*member ? "True" : "False";
+    f.get = [ref](const P& p) -> py::object {
+      if constexpr (std::is_same_v<T, int>) {
+        return py::float_(static_cast<double>(ref(const_cast<P&>(p))));
       } else {
-        return format_value(p.*member);
+        return py::cast(ref(const_cast<P&>(p)));
       }
     };
-    f.set = [member, owner, key](P& p, py::handle value) {
+    f.repr = [ref](const P& p) -> std::string {
+      const T v = ref(const_cast<P&>(p));
+      if constexpr (std::is_same_v<T, bool>) {
+        return v ? "True" : "False";
+      } else if constexpr (std::is_same_v<T, int>) {
+        return format_value(static_cast<double>(v));
+      } else if constexpr (std::is_same_v<T, double>) {
+        return format_value(v);
+      } else {
+        std::string s = "(";
+        for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + format_value(v[i]);
+        return s + (v.size() == 1 ? ",)" : ")");
+      }
+    };
+    f.set = [ref, owner, key](P& p, py::handle value) {
       if constexpr (std::is_same_v<T, bool>) {
         if (py::isinstance<py::bool_>(value)) {
-          p.*member = value.cast<bool>();
+          ref(p) = value.cast<bool>();
           return;
         }
         const double v = to_double(owner, key, value);
         if (v != 0.0 && v != 1.0) throw_invalid(owner.c_str(), key.c_str(), v, "must be 0/False or 1/True");
-        p.*member = (v == 1.0);
+        ref(p) = (v == 1.0);
+      } else if constexpr (std::is_same_v<T, int>) {
+        const double v = to_double(owner, key, value);
+        if (!(std::isfinite(v) && v == std::floor(v) && std::fabs(v) <= 2147483647.0))
+          throw_invalid(owner.c_str(), key.c_str(), v, "must be a whole number");
+        ref(p) = static_cast<int>(v);
+      } else if constexpr (std::is_same_v<T, double>) {
+        ref(p) = to_double(owner, key, value);
       } else {
-        p.*member = to_double(owner, key, value);
+        if (!py::isinstance<py::iterable>(value) || py::isinstance<py::str>(value))
+          throw py::type_error(owner + "." + key + " must be a sequence of numbers, got " +
+                               py::str(py::type::of(value)).cast<std::string>());
+        std::vector<double> out;
+        for (py::handle item : py::reinterpret_borrow<py::iterable>(value)) out.push_back(to_double(owner, key, item));
+        ref(p) = out;
       }
     };
     fields_->order.push_back(key);
     fields_->by_name[key] = f;
+    const std::string prop_doc = (f.unit.empty() ? "" : "[" + f.unit + "] ") + f.doc;
     cls_.def_property(
-        fname, [member](const P& p) { return p.*member; },
+        fname,
+        [ref](const P& p) {
+          if constexpr (std::is_same_v<T, int>) {
+            return static_cast<double>(ref(const_cast<P&>(p)));
+          } else {
+            return ref(const_cast<P&>(p));
+          }
+        },
         [f](P& self, py::handle value) {
           P copy = self;
           f.set(copy, value);
           copy.validate();
           self = copy;
         },
-        doc);
+        prop_doc.c_str());
     return *this;
   }
 
+ public:
   // Defines __init__ and the value-type protocol; call once, after the fields.
   py::class_<P>& finish() {
     auto fields = fields_;
@@ -128,12 +199,25 @@ class ParamClass {
                         }));
     std::vector<std::string> names = fields_->order;
     cls_.attr("FIELDS") = py::tuple(py::cast(names));
+    // The field table as data (name, type, default, unit, doc): what Python wrappers read their defaults, units and
+    // docs from (servobench._options; decision OP3).
+    py::list info;
+    const P defaults{};
+    for (const auto& name : fields_->order) {
+      const Field& f = fields_->by_name.at(name);
+      info.append(py::dict(py::arg("name") = name, py::arg("type") = f.whole ? std::string("int") : f.type,
+                           py::arg("default") = f.get(defaults),
+                           py::arg("unit") = f.unit, py::arg("doc") = f.doc));
+    }
+    cls_.attr("FIELD_INFO") = py::tuple(info);
     return cls_;
   }
 
  private:
   struct Field {
-    std::string type;  // the Python annotation: float or bool
+    std::string type;  // the Python annotation: float, int or bool
+    std::string unit;  // "" when the field has none
+    bool whole = false;  // an int field: a whole number
     std::string doc;
     std::function<py::object(const P&)> get;
     std::function<std::string(const P&)> repr;
@@ -156,7 +240,7 @@ class ParamClass {
       std::string value = "...";
       if (with_defaults) {
         const py::object v = f.get(defaults);
-        if (py::isinstance<py::bool_>(v) || std::isfinite(v.cast<double>()))
+        if (!py::isinstance<py::float_>(v) || std::isfinite(v.cast<double>()))
           value = py::repr(v).cast<std::string>();  // Python's own spelling: 0.0, 32767.0, True
         else if (std::isinf(v.cast<double>()))
           value = v.cast<double>() > 0 ? "math.inf" : "-math.inf";  // inspect.signature evaluates math.inf
@@ -168,7 +252,10 @@ class ParamClass {
 
   static std::string field_docs(const Fields& fields) {
     std::string s = "Parameters:\n";
-    for (const auto& name : fields.order) s += "    " + name + ": " + fields.by_name.at(name).doc + "\n";
+    for (const auto& name : fields.order) {
+      const Field& f = fields.by_name.at(name);
+      s += "    " + name + (f.unit.empty() ? "" : " [" + f.unit + "]") + ": " + f.doc + "\n";
+    }
     return s;
   }
 

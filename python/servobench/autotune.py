@@ -17,6 +17,7 @@ import numpy as np
 from . import _checks
 from ._serialise import JsonResult, dataframe
 from . import _core
+from . import _options as _opts
 
 __all__ = ["ModelTuneResult", "RelayTuneResult", "model_based_tune", "predicted_limit_cycle", "relay_autotune"]
 
@@ -141,51 +142,30 @@ def _law(res, kind, base):
     return _core.pid_to_law(res.kp, res.ki, res.kd, base)
 
 
-def relay_autotune(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 50.0, data_length: int = 200,
-                   sampling_time_s: float = 500e-6, deviation_limit_pulse: float = 2000.0, max_spread: float = 0.10,
-                   phase_margin_deg: float = 60.0, alpha: float = 4.0, settle_cycles: int = 3,
-                   max_cycle_s: float = 10.0, progress="auto", min_gain_margin_db: float = 6.0) -> RelayTuneResult:
+@_opts.takes_options(_core.RelayTuneOptions)
+def relay_autotune(axis, *, progress="auto", min_gain_margin_db: float = 6.0, **options) -> RelayTuneResult:
     """Relay auto-tuning on a simulated axis, with the ADLINK card's parameters and defaults (L1842-1847).
 
-    amplitude_v
-        relay output +-d, V (0 < d <= 10, default 1).
-    hysteresis_pulse
-        relay hysteresis eps on the position error, pulse (> 0, default 50).
-    data_length
-        gain sets (limit cycles) to compute, default 200.
-    sampling_time_s
-        relay sampling time, s (100..1000 us, default 500 us); exact: the relay decides at the first servo tick at or
-        after each multiple of it (250 us on a 100 us axis: after 2, 3, 2, 3 ... ticks), at most every tick.
-    deviation_limit_pulse
-        ``|position error|`` above this stops the tuning, servo off, pulse (0 = off, default 2000).
-    max_spread
-        accepted relative standard deviation of each gain (the manual's 10 %).
-    phase_margin_deg, alpha
-        design target (deg, 10..89, default 60) and Ti = alpha * Td (default 4).
-    settle_cycles
-        first limit cycles discarded; max_cycle_s: give up when no cycle completes within this time, s.
+    {options}
     progress
         ``"auto"`` (default: a tqdm bar when stderr is a terminal), True (a bar: a widget in Jupyter), None/False
         (none) or callable(done, total) -> bool (False: the user's Stop).
     min_gain_margin_db
         the gain-margin floor (dB, 0..60, default 6) :meth:`RelayTuneResult.apply` checks the tuned loop against.
 
-    The servo law is replaced by the relay during the experiment and the servo is left off at the end (apply the
-    result with :meth:`RelayTuneResult.apply`). A relay with hysteresis needs a plant whose phase lies above -180
-    deg somewhere: a velocity-mode drive (an integrating plant), as the manual's procedure assumes; a lightly
-    damped torque-mode axis (a double integrator) has no steady limit cycle and ends with a clear status.
-    Releases the GIL; deterministic.
+    The options, their defaults, units and ranges are those of :class:`servobench._core.RelayTuneOptions`
+    (tuning/relay_autotune.hpp), read from it. The servo law is replaced by the relay during the experiment and the
+    servo is left off at the end (apply the result with :meth:`RelayTuneResult.apply`). A relay with hysteresis
+    needs a plant whose phase lies above -180 deg somewhere: a velocity-mode drive (an integrating plant), as the
+    manual's procedure assumes; a lightly damped torque-mode axis (a double integrator) has no steady limit cycle
+    and ends with a clear status. Releases the GIL; deterministic.
     """
     from .frequency import _progress_callback
 
     if not (0 <= float(min_gain_margin_db) <= 60):
         raise ValueError(f"relay_autotune.min_gain_margin_db = {min_gain_margin_db} is outside the allowed range 0..60 dB")
-    d = _core.relay_autotune(getattr(axis, "_axis", axis), amplitude_v=float(amplitude_v),
-                             hysteresis_pulse=float(hysteresis_pulse), data_length=float(data_length),
-                             sampling_time_s=float(sampling_time_s), deviation_limit_pulse=float(deviation_limit_pulse),
-                             max_spread=float(max_spread), phase_margin_deg=float(phase_margin_deg),
-                             alpha=float(alpha), settle_cycles=float(settle_cycles), max_cycle_s=float(max_cycle_s),
-                             progress=_progress_callback(progress, "Relay tuning"))
+    o = _opts.cpp_options(_core.RelayTuneOptions, options)
+    d = _core.relay_autotune(getattr(axis, "_axis", axis), o, _progress_callback(progress, "Relay tuning"))
     m = d["mean"]
     cycles = {k: d[k] for k in ("period_s", "amplitude_pulse", "peak_pulse", "center_pulse", "gain_pulse_per_v",
                                 "phase_deg", "kp", "ki", "kd")}
@@ -196,7 +176,7 @@ def relay_autotune(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 
                            ultimate_gain_v_per_pulse=d["ultimate_gain_v_per_pulse"],
                            sampling_time_s=d["sampling_time_s"], servo_period_s=axis.servo_period_s, cycles=cycles,
                            error_pulse=d["error_pulse"], output_v=d["output_v"],
-                           phase_margin_deg=float(phase_margin_deg), min_gain_margin_db=float(min_gain_margin_db))
+                           phase_margin_deg=float(o.phase_margin_deg), min_gain_margin_db=float(min_gain_margin_db))
 
 
 def _relay_decides(n_ticks: int, servo_period_s: float, sampling_time_s: float) -> np.ndarray:
@@ -209,8 +189,12 @@ def _relay_decides(n_ticks: int, servo_period_s: float, sampling_time_s: float) 
     return out
 
 
-def predicted_limit_cycle(axis, *, amplitude_v: float = 1.0, hysteresis_pulse: float = 50.0,
-                          sampling_time_s: float = 500e-6, cycles: int = 60) -> dict:
+_RELAY_DEFAULTS = _core.RelayTuneOptions()  # the relay's defaults, read from the C++ struct (decision OP4)
+
+
+def predicted_limit_cycle(axis, *, amplitude_v: float = _RELAY_DEFAULTS.amplitude_v,
+                          hysteresis_pulse: float = _RELAY_DEFAULTS.hysteresis_pulse,
+                          sampling_time_s: float = _RELAY_DEFAULTS.sampling_time_s, cycles: int = 60) -> dict:
     """The limit cycle the relay experiment of :func:`relay_autotune` settles into on this axis's linear model:
     the sampled relay with hysteresis (deciding at the first tick at or after each multiple of `sampling_time_s`,
     exactly as the experiment; no rounding), its one-tick output delay and the plant lifted exactly to the servo rate
@@ -420,12 +404,15 @@ class ModelTuneResult(JsonResult):
         return check
 
 
-def model_based_tune(axis, *, phase_margin_deg: float = 60.0, alpha: float = 4.0, notch: bool = True,
-                     min_gain_margin_db: float = 10.0, max_ms: float = 2.0, max_pid_lead_deg: float = 70.0,
-                     pm_tolerance_deg: float = 2.0, resonance_hz: float | None = None,
-                     min_resonance_prominence_db: float = 6.0, notch_q=(0.5, 0.7, 1.0, 1.4, 2.0, 3.0, 5.0),
-                     min_crossover_hz: float = 1.0, max_crossover_hz: float | None = None, candidates: int = 60,
-                     points: int = 4000, law: str | None = None) -> ModelTuneResult:
+_MODEL_TUNE_PYTHON_DEFAULTS = {
+    "resonance_hz": _opts.PythonDefault(None, 0.0, "None (default): found in the plant response as for 0"),
+    "max_crossover_hz": _opts.PythonDefault(None, 0.0, "None (default): 0.45 / Ts"),
+}
+
+
+@_opts.takes_options(_core.ModelTuneOptions, python_defaults=_MODEL_TUNE_PYTHON_DEFAULTS)
+def model_based_tune(axis, *, notch_q=tuple(_core.MODEL_TUNE_NOTCH_Q), law: str | None = None,
+                     **options) -> ModelTuneResult:
     """A PID (Ti = alpha Td) and a notch designed from the axis's analytic plant: the highest crossover at which the
     whole loop keeps the phase margin, the gain margin and the peak sensitivity asked for (docs/autotune.md).
 
@@ -433,47 +420,28 @@ def model_based_tune(axis, *, phase_margin_deg: float = 60.0, alpha: float = 4.0
     model of :func:`servobench.frequency.analytic_response`), so any plant the axis runs is designed for, an
     identified one included. Nothing is run on the axis; :meth:`ModelTuneResult.apply` writes the result.
 
-    phase_margin_deg, pm_tolerance_deg
-        target phase margin (deg, 10..89) and the accepted deviation over all gain crossovers of the loop
-        (deg, 0.1..20).
-    alpha
-        Ti = alpha * Td (1..100).
-    min_gain_margin_db, max_ms
-        bounds on the loop's upper gain margin (dB, 0..60) and peak sensitivity (1.05..10).
-    max_pid_lead_deg
-        largest phase the PID may add at the crossover (deg, 5..89); bounds Td so the PID's zeros stay within
-        a factor tan((lead + 90)/2) below the crossover (5.7 at 70 deg): no slowly creeping closed-loop mode.
-    notch, resonance_hz, min_resonance_prominence_db, notch_q
-        try a notch (pre-warped, in biquad 0; the card's integers on an ADLINK law) at the plant's resonance: the
-        given `resonance_hz` (Hz) or each of the up to 3 most prominent peaks of the plant's gain above a -40
-        dB/decade line by at least `min_resonance_prominence_db` (dB); each q of `notch_q` is tried. A notch is
-        kept only when it raises the crossover.
-    min_crossover_hz, max_crossover_hz, candidates
-        the crossover scan: `candidates` log-spaced frequencies (Hz) from min to max (None: 0.45/Ts); the highest
-        feasible one is taken and the boundary to the candidate above it bisected.
-    points
-        log-spaced frequencies of the band the loop is checked over (0.1 Hz or lower .. Nyquist).
+    {options}
+    notch_q
+        the notch quality factors tried, each 0.1..100 (default ``ModelTuneOptions::notch_q_set``, read from C++).
     law
         None (the axis's law), ``"gt"`` or ``"aps"``: the card law whose integers the design is checked with.
 
     Raises ValueError for a pulse-input axis (no position loop on the card), a parameter outside its range (named),
-    or when no crossover meets the bounds (the message names the bounds to relax and the nearest miss).
+    or when no crossover meets the bounds (the message names the bounds to relax and the nearest miss). The options,
+    their defaults, units and ranges are those of :class:`servobench._core.ModelTuneOptions` (tuning/model_tune.hpp),
+    read from it.
     Releases the GIL; about 0.1-0.5 s.
     """
     from .frequency import _margins_from
 
+    resonance_hz = options["resonance_hz"]
     if resonance_hz is not None and float(resonance_hz) == 0.0:
         raise ValueError("model_based_tune.resonance_hz = 0 is outside the allowed range 0 < f < Nyquist; "
                          "use None to find it in the plant response")
-    d = _core.model_tune(getattr(axis, "_axis", axis), phase_margin_deg=float(phase_margin_deg), alpha=float(alpha),
-                         pm_tolerance_deg=float(pm_tolerance_deg), min_gain_margin_db=float(min_gain_margin_db),
-                         max_ms=float(max_ms), max_pid_lead_deg=float(max_pid_lead_deg), notch=_checks.flag("model_based_tune", "notch", notch),
-                         resonance_hz=0.0 if resonance_hz is None else float(resonance_hz),
-                         min_resonance_prominence_db=float(min_resonance_prominence_db),
-                         notch_q_set=[float(q) for q in np.atleast_1d(notch_q)],
-                         min_crossover_hz=float(min_crossover_hz),
-                         max_crossover_hz=0.0 if max_crossover_hz is None else float(max_crossover_hz),
-                         candidates=float(candidates), points=float(points), law="axis" if law is None else str(law))
+    values = dict(options, notch=_checks.flag("model_based_tune", "notch", options["notch"]))
+    o = _opts.cpp_options(_core.ModelTuneOptions, values, _MODEL_TUNE_PYTHON_DEFAULTS)
+    d = _core.model_tune(getattr(axis, "_axis", axis), o, [float(q) for q in np.atleast_1d(notch_q)],
+                         "axis" if law is None else str(law))
     p = d["pid"]
     return ModelTuneResult(kp=p["kp"], ki=p["ki"], kd=p["kd"], kc=p["kc"], ti_s=p["ti_s"], td_s=p["td_s"],
                            crossover_hz=d["crossover_hz"], margins=_margins_from(d["margins"], "analytic model"),
@@ -483,5 +451,5 @@ def model_based_tune(axis, *, phase_margin_deg: float = 60.0, alpha: float = 4.0
                            crossover_without_notch_hz=d["crossover_without_notch_hz"], limited_by=d["limited_by"],
                            servo_period_s=axis.servo_period_s,
                            scan={k: (list(v) if k == "reason" else np.asarray(v)) for k, v in d["scan"].items()},
-                           summary=d["summary"], phase_margin_deg=float(phase_margin_deg),
-                           min_gain_margin_db=float(min_gain_margin_db))
+                           summary=d["summary"], phase_margin_deg=float(o.phase_margin_deg),
+                           min_gain_margin_db=float(o.min_gain_margin_db))

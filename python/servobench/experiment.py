@@ -52,20 +52,16 @@ def excitation(kind: str, n_samples: int, *, amplitude: float = 1.0, servo_perio
     if not (0 < start_hz < end <= nyq):
         raise ValueError(f"excitation: start_hz = {start_hz}, end_hz = {end} must satisfy 0 < start < end <= "
                          f"{nyq:g} Hz (the Nyquist frequency)")
-    t = np.arange(n) * ts
-    if kind == "chirp":
-        dur = n * ts
-        k = math.log(end / start_hz) / dur
-        return amplitude * np.sin(2 * np.pi * start_hz * (np.exp(k * t) - 1) / k)
+    if kind == "chirp":  # tuning/chirp.hpp: x_n = A sin(2 pi f0 (exp(k t_n) - 1) / k), k = ln(f1/f0) / (n Ts)
+        return _core.chirp(start_hz=float(start_hz), end_hz=end, duration_s=n * ts, servo_period_s=ts,
+                           amplitude=amplitude)
     df = 1.0 / (n * ts)
     lines = np.arange(max(1, math.ceil(start_hz / df)), math.floor(end / df) + 1)
     if len(lines) == 0:
         raise ValueError("excitation: no DFT line between start_hz and end_hz; lengthen the signal")
     phases = rng.uniform(0, 2 * np.pi, size=len(lines))
-    x = np.zeros(n)
-    for k, ph in zip(lines, phases):
-        x += np.cos(2 * np.pi * k * df * t + ph)
-    return amplitude * x / np.max(np.abs(x))
+    # tuning/multisine.hpp: sum_i cos(2 pi k_i n / N + phase_i) scaled to a peak of `amplitude`
+    return _core.multisine_sum(n_samples=n, servo_period_s=ts, lines=lines, phases_rad=phases, amplitude=amplitude)
 
 
 def _whole(owner, name, value, lo, hi) -> int:

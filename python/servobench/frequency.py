@@ -25,6 +25,7 @@ from typing import Callable
 import numpy as np
 
 from . import _checks, _core
+from . import _options as _opts
 from ._serialise import JsonResult, dataframe
 from .margins import Margins, _margins_from, analytic_margins, closed_loop_poles, margins
 
@@ -302,52 +303,40 @@ def _core_axis(axis):
 # ----------------------------------------------------------------------------------------------------------------
 # Measurements
 # ----------------------------------------------------------------------------------------------------------------
-def sine_sweep(axis, *, start_hz: float = 10.0, end_hz: float = 100.0, amplitude_pulse: float | None = None,
-               points: int = 100, update_s: float = 0.1, deviation_limit_pulse: float | str | None = "auto",
-               feedforward: bool = False, filters: bool = True, settle_fraction: float = 0.25,
-               progress="auto", min_coherence: float = 0.99, max_distortion: float = 0.05,
-               min_response_pulse: float = 4.0, min_dac_counts: float = 30.0, dac_fraction: float = 0.5,
-               max_amplitude_pulse: float | None = None) -> FrequencyResponse:
+_SWEEP_PYTHON_DEFAULTS = {
+    "amplitude_pulse": _opts.PythonDefault(None, 0.0, "None (default): chosen per point as for 0; the amplitudes "
+                                           "used are in ``signals[\"amplitude_pulse\"]``"),
+    "deviation_limit_pulse": _opts.PythonDefault(
+        "auto", None, "Default ``\"auto\"``: the larger of the axis's "
+        ":attr:`~servobench.Axis.default_error_limit_pulse` (2 encoder revolutions) and twice the amplitude, so an "
+        "unstable loop stops with status ``\"deviation_exceeded\"``; None or 0 = off. A drive alarm also ends it "
+        "(``\"drive_alarm\"``)"),
+    "max_amplitude_pulse": _opts.PythonDefault(None, 0.0, "None (default): one encoder revolution"),
+}
+
+
+@_opts.takes_options(_core.SineSweepOptions, python_defaults=_SWEEP_PYTHON_DEFAULTS)
+def sine_sweep(axis, *, progress="auto", **options) -> FrequencyResponse:
     """The ADLINK Bode tool's stepped-sine measurement on a simulated axis (L1978-2045). Defaults are the manual's
-    example (L2023, L2035): 10-100 Hz, 100 points, 300 pulse, 0.1 s per point.
+    example (L2023, L2035): 10-100 Hz, 100 points, 0.1 s per point; the amplitude chosen per point.
 
     axis
         a :class:`servobench.Axis` (voltage-output: torque or velocity drive). The sweep runs from its present
         state around its last command position and continues it; it is left where the sweep ended.
-    start_hz, end_hz
-        first and last frequency, Hz (> 0, below the Nyquist frequency 1/(2 Ts); the manual keeps the end <= 500 Hz
-        for real drives, L2015).
-    amplitude_pulse
-        sine amplitude added to the command, pulse (> 0; the manual's example is 300), used at every point and
-        checked; None (default): chosen per point, the largest the linear model predicts keeps the DAC within
-        `dac_fraction` of full scale and the drive's current command within `dac_fraction` of its limit, at most
-        `max_amplitude_pulse` (pulse; None: one encoder revolution), halved and the point run again while it still
-        saturates. The amplitudes used are in ``signals["amplitude_pulse"]``.
-    min_coherence, max_distortion, min_response_pulse, min_dac_counts
-        the judge of each point: coherence of Y (0..1), harmonic distortion of Y (ratio), the quantisation floors
-        ``|Y|`` >= min_response_pulse (pulse) and ``|U|`` >= min_dac_counts (DAC counts). A point failing one, or
-        with any tick of DAC saturation, clamped current command or torque at the drive's limit, is flagged
-        (``flags``), drawn hollow and left out of margins.
-    points
-        data length: number of log-spaced frequencies (2..100000).
-    update_s
-        time per frequency point, s; the first `settle_fraction` (0..0.9) of it is discarded, the rest analysed over
-        whole periods (it must hold at least one period of the lowest frequency).
-    deviation_limit_pulse
-        ``|E|`` above this turns the servo off and ends the sweep (status ``"deviation_exceeded"``), pulse; default
-        ``"auto"``: the larger of the axis's :attr:`~servobench.Axis.default_error_limit_pulse` (2 encoder
-        revolutions) and twice the amplitude, so an unstable loop stops with that status; ``None`` or 0 = off. A
-        drive alarm also ends it (``"drive_alarm"``).
-    feedforward, filters
-        feed-forward and biquads in the loop during the sweep (restored afterwards); see the module doc.
+    {options}
     progress
         ``"auto"`` (default: a tqdm bar when stderr is a terminal), True (a bar: a widget in Jupyter), None/False
         (none) or a callable(done, total) returning False to stop (status ``"stopped"``).
 
-    Releases the GIL while it runs; deterministic (no randomness unless the encoder has noise, seeded).
+    The options, their defaults, units and ranges are those of :class:`servobench._core.SineSweepOptions`
+    (tuning/sine_sweep.hpp), read from it. A point failing the judge (coherence, distortion, the quantisation
+    floors, or any tick of DAC saturation, clamped current command or torque at the drive's limit) is flagged
+    (``flags``), drawn hollow and left out of margins. Releases the GIL while it runs; deterministic (no randomness
+    unless the encoder has noise, seeded).
     """
-    feedforward = _checks.flag("sine_sweep", "feedforward", feedforward)
-    filters = _checks.flag("sine_sweep", "filters", filters)
+    feedforward = _checks.flag("sine_sweep", "feedforward", options["feedforward"])
+    filters = _checks.flag("sine_sweep", "filters", options["filters"])
+    amplitude_pulse, max_amplitude_pulse = options["amplitude_pulse"], options["max_amplitude_pulse"]
     if amplitude_pulse is not None:
         amplitude_pulse = _checks.real("sine_sweep", "amplitude_pulse", amplitude_pulse, 1e-9, 1e12,
                                        unit="pulse (or None: automatic)")
@@ -357,17 +346,13 @@ def sine_sweep(axis, *, start_hz: float = 10.0, end_hz: float = 100.0, amplitude
     # The automatic amplitude is at most max_amplitude_pulse (default one revolution): the "auto" deviation limit
     # (two revolutions, or twice the amplitude) then never trips on a loop that follows.
     span = amplitude_pulse if amplitude_pulse is not None else (max_amplitude_pulse or 0.0)
-    d = _core.sine_sweep(_core_axis(axis), start_hz=float(start_hz), end_hz=float(end_hz),
-                         amplitude_pulse=0.0 if amplitude_pulse is None else float(amplitude_pulse),
-                         points=float(points), update_s=float(update_s),
-                         deviation_limit_pulse=_checks.error_limit("sine_sweep", "deviation_limit_pulse",
-                                                                   deviation_limit_pulse, axis, span),
-                         settle_fraction=float(settle_fraction),
-                         feedforward=bool(feedforward), filters=bool(filters),
-                         progress=_progress_callback(progress, "Bode sweep"), min_coherence=float(min_coherence),
-                         max_distortion=float(max_distortion), min_response_pulse=float(min_response_pulse),
-                         min_dac_counts=float(min_dac_counts), dac_fraction=float(dac_fraction),
-                         max_amplitude_pulse=0.0 if max_amplitude_pulse is None else float(max_amplitude_pulse))
+    values = dict(options, feedforward=bool(feedforward), filters=bool(filters),
+                  amplitude_pulse=0.0 if amplitude_pulse is None else float(amplitude_pulse),
+                  max_amplitude_pulse=0.0 if max_amplitude_pulse is None else float(max_amplitude_pulse),
+                  deviation_limit_pulse=_checks.error_limit("sine_sweep", "deviation_limit_pulse",
+                                                            options["deviation_limit_pulse"], axis, span))
+    o = _opts.cpp_options(_core.SineSweepOptions, values)
+    d = _core.sine_sweep(_core_axis(axis), o, _progress_callback(progress, "Bode sweep"))
     r, e, u, y = d["r"], d["e"], d["u"], d["y"]
     with np.errstate(divide="ignore", invalid="ignore"):
         return FrequencyResponse(
@@ -420,15 +405,10 @@ def chirp(*, start_hz: float, end_hz: float, duration_s: float, servo_period_s: 
     _check_band(start_hz, end_hz, ts)
     if not duration_s > 0:
         raise ValueError(f"duration_s = {duration_s} must be > 0 s")
-    t = np.arange(int(round(duration_s / ts))) * ts
-    if kind == "log":
-        k = np.log(end_hz / start_hz) / duration_s
-        phase = 2 * np.pi * start_hz * np.expm1(k * t) / k if k != 0 else 2 * np.pi * start_hz * t
-    elif kind == "linear":
-        phase = 2 * np.pi * (start_hz * t + 0.5 * (end_hz - start_hz) / duration_s * t * t)
-    else:
+    if kind not in ("log", "linear"):
         raise ValueError(f"kind = {kind!r} must be 'log' or 'linear'")
-    return amplitude * np.sin(phase)
+    return _core.chirp(start_hz=float(start_hz), end_hz=float(end_hz), duration_s=float(duration_s),
+                       servo_period_s=ts, amplitude=float(amplitude), kind=kind)
 
 
 def multisine(*, start_hz: float, end_hz: float, period_ticks: int, servo_period_s: float, amplitude: float = 1.0,
@@ -444,25 +424,12 @@ def multisine(*, start_hz: float, end_hz: float, period_ticks: int, servo_period
     n = int(period_ticks)
     if n < 8:
         raise ValueError(f"period_ticks = {period_ticks} must be >= 8")
-    df = 1.0 / (n * ts)
-    k_lo = max(1, int(np.ceil(start_hz / df - 1e-9)))
-    k_hi = min(n // 2 - 1, int(np.floor(end_hz / df + 1e-9)))
-    if k_hi < k_lo:
-        raise ValueError(f"no DFT line of a {n}-tick period (spacing {df:.4g} Hz) lies in {start_hz}..{end_hz} Hz: "
-                         "lengthen period_ticks")
-    bins = np.arange(k_lo, k_hi + 1)
-    if lines is not None:
-        if lines < 1:
-            raise ValueError(f"lines = {lines} must be >= 1")
-        pick = np.unique(np.round(np.geomspace(k_lo, k_hi, int(lines))).astype(int))
-        bins = pick
-    m = len(bins)
-    phases = -np.pi * np.arange(m) * (np.arange(m) + 1) / m  # Schroeder
-    spec = np.zeros(n // 2 + 1, dtype=complex)
-    spec[bins] = np.exp(1j * phases)
-    x = np.fft.irfft(spec, n)
-    x *= amplitude / np.max(np.abs(x))
-    return np.tile(x, int(periods)), bins
+    if lines is not None and lines < 1:
+        raise ValueError(f"lines = {lines} must be >= 1")
+    x, bins = _core.schroeder_multisine(start_hz=float(start_hz), end_hz=float(end_hz), period_ticks=n,
+                                        servo_period_s=ts, amplitude=float(amplitude),
+                                        lines=0 if lines is None else int(lines))
+    return np.tile(x, int(periods)), bins.astype(int)
 
 
 def _check_band(start_hz, end_hz, ts):
@@ -565,38 +532,19 @@ def broadband_response(axis, *, excitation: str = "multisine", start_hz: float =
                            continue_=True)
             if run.stopped:  # the loop tripped the axis's default error limit (or the drive alarmed): report it
                 return _stopped(run, excitation, ts, feedforward, filters)
-            n = int(period_ticks)
-            seg = slice(n, None)  # drop the settling period
-
-            def spectra(sig):
-                s = np.asarray(sig, dtype=float)[seg].reshape(int(periods), n)
-                return np.fft.rfft(s, axis=1)[:, bins]
-
-            R, E, U, Y = (spectra(s) for s in (x, run.error, run.biquad1, run.fb_pos))
-            s_ry = np.sum(np.conj(R) * Y, axis=0)
-            s_re = np.sum(np.conj(R) * E, axis=0)
-            s_ru = np.sum(np.conj(R) * U, axis=0)
-            s_rr = np.sum(np.abs(R) ** 2, axis=0)
-            s_yy = np.sum(np.abs(Y) ** 2, axis=0)
-            freq = bins * fs / n
-            coh = np.abs(s_ry) ** 2 / (s_rr * s_yy) if periods > 1 else np.ones(len(bins))
+            h1 = _core.h1_estimate(r=x, e=run.error, u=run.biquad1, y=run.fb_pos, record_ticks=int(period_ticks),
+                                   records=int(periods), skip_ticks=int(period_ticks), lines=bins,
+                                   servo_period_s=ts, remove_offset=False)
         elif excitation == "chirp":
             if duration_s is None:
                 duration_s = max(n_min * ts - rest_s, 10.0 / start_hz)
             if not duration_s > 0:
                 raise ValueError(f"duration_s = {duration_s} must be > 0 s")
-            n_chirp = int(round(duration_s / ts))
             n_rest = int(round(rest_s / ts))
-            x1 = chirp(start_hz=start_hz, end_hz=end_hz, duration_s=duration_s, servo_period_s=ts,
-                       amplitude=amplitude_pulse)
-            # Taper: half-cosine ramps of one start-frequency period at the start and 20 end-frequency periods at
-            # the end, so R starts and ends at rest; then a rest for the loop to settle back.
-            ramp_in = min(n_chirp // 4, int(round(fs / start_hz)))
-            ramp_out = min(n_chirp // 4, int(round(20 * fs / end_hz)))
-            taper = np.ones(n_chirp)
-            taper[:ramp_in] = 0.5 - 0.5 * np.cos(np.pi * np.arange(ramp_in) / ramp_in)
-            taper[n_chirp - ramp_out:] = 0.5 + 0.5 * np.cos(np.pi * np.arange(1, ramp_out + 1) / ramp_out)
-            record = np.concatenate([x1 * taper, np.zeros(n_rest)])
+            # Tapered to start and end at rest (ramps of one start-frequency period and 20 end-frequency periods),
+            # then a rest for the loop to settle back (tuning/chirp.hpp).
+            record = _core.chirp_record(start_hz=float(start_hz), end_hz=float(end_hz), duration_s=float(duration_s),
+                                        servo_period_s=ts, amplitude=float(amplitude_pulse), rest_ticks=n_rest)
             n = len(record)
             # settle whatever ran before, at the base position
             axis.run(np.full(n_rest, base), signals=(), continue_=True)
@@ -605,29 +553,15 @@ def broadband_response(axis, *, excitation: str = "multisine", start_hz: float =
                            continue_=True)
             if run.stopped:  # the loop tripped the axis's default error limit (or the drive alarmed): report it
                 return _stopped(run, excitation, ts, feedforward, filters)
-            freq_all = np.fft.rfftfreq(n, ts)
-            in_band = np.nonzero((freq_all >= start_hz) & (freq_all <= end_hz))[0]
-            if lines is not None and lines < len(in_band):
-                want = np.geomspace(freq_all[in_band[0]], freq_all[in_band[-1]], int(lines))
-                in_band = np.unique(np.searchsorted(freq_all, want).clip(in_band[0], in_band[-1]))
-            freq = freq_all[in_band]
-
-            def spectra(sig):
-                s = np.asarray(sig, dtype=float).reshape(int(periods), n)
-                s = s - s[:, :1]  # each repetition starts at rest: its first sample is the offset
-                return np.fft.rfft(s, axis=1)[:, in_band]
-
-            R, E, U, Y = (spectra(s) for s in (x, run.error, run.biquad1, run.fb_pos - base))
-            s_ry = np.sum(np.conj(R) * Y, axis=0)
-            s_re = np.sum(np.conj(R) * E, axis=0)
-            s_ru = np.sum(np.conj(R) * U, axis=0)
-            s_rr = np.sum(np.abs(R) ** 2, axis=0)
-            s_yy = np.sum(np.abs(Y) ** 2, axis=0)
-            coh = np.abs(s_ry) ** 2 / (s_rr * s_yy) if periods > 1 else np.ones(len(freq))
+            in_band = _core.chirp_lines(record_ticks=n, servo_period_s=ts, start_hz=float(start_hz),
+                                        end_hz=float(end_hz), lines=-1 if lines is None else int(lines))
+            h1 = _core.h1_estimate(r=x, e=run.error, u=run.biquad1, y=run.fb_pos - base, record_ticks=n,
+                                   records=int(periods), skip_ticks=0, lines=in_band, servo_period_s=ts,
+                                   remove_offset=True)
         else:
             raise ValueError(f"excitation = {excitation!r} must be 'multisine' or 'chirp'")
     sat = _saturated_ticks(axis, run)
-    coh = np.clip(coh, 0.0, 1.0)
+    freq, coh = h1["freq_hz"], h1["coherence"]
     flags = []
     run_flag = "; ".join(f"{k.replace('_', ' ')} {v} ticks" for k, v in sat.items() if v)
     for c in coh:
@@ -637,7 +571,7 @@ def broadband_response(axis, *, excitation: str = "multisine", start_hz: float =
         flags.append("; ".join(why))
     n_bad = sum(1 for f_ in flags if f_)
     integ = _core.loop_poles(_core_axis(axis), bool(filters))
-    return FrequencyResponse(freq_hz=freq, plant=s_ry / s_ru, open_loop=s_ry / s_re, closed_loop=s_ry / s_rr,
+    return FrequencyResponse(freq_hz=freq, plant=h1["plant"], open_loop=h1["open_loop"], closed_loop=h1["closed_loop"],
                              method=excitation, servo_period_s=ts, feedforward=bool(feedforward),
                              filters=bool(filters), coherence=coh, status="completed",
                              message=f"{excitation}: {len(freq)} lines, {len(x)} ticks" +

@@ -24,6 +24,7 @@ from typing import Iterable
 import numpy as np
 
 from . import _checks, _core
+from . import _options as _opts
 from .identify import IdentificationError, IdentifiedPlant, _estimates, _model, _setup
 
 __all__ = ["MechanicsIO", "fit_frequency", "frequency_input"]
@@ -157,10 +158,10 @@ def frequency_input(response):
     return np.asarray(f, float), np.asarray(g, complex), None
 
 
+@_opts.takes_options(_core.FrequencyFitOptions)
 def fit_frequency(response, axis=None, model: str = "rigid", *, io: MechanicsIO | None = None, guess: dict,
-                  fixed: Iterable[str] = (), bounds: dict | None = None, fit_delay: bool = False, delay_s: float = 0.0,
-                  weight=None, max_iterations: int = 200, max_relative_std_error: float = 0.2, strict: bool = True,
-                  progress=None) -> IdentifiedPlant:
+                  fixed: Iterable[str] = (), bounds: dict | None = None, weight=None, strict: bool = True,
+                  progress=None, **options) -> IdentifiedPlant:
     """Fits the linear mechanics to a measured frequency response: a servobench :class:`FrequencyResponse` (its
     plant Y/U), a python-control ``FRD`` (rad/s), a Bode CSV (Hz or rad/s, dB or abs, deg or rad; see
     :func:`frequency_input`) or (freq_hz, complex) arrays.
@@ -174,14 +175,16 @@ def fit_frequency(response, axis=None, model: str = "rigid", *, io: MechanicsIO 
     guess, fixed, bounds
         name -> starting value (SI) of every parameter to estimate, names held, name -> (low, high); friction is
         invisible to a linear response: only inertias, stiffness, damping and viscous friction are fitted.
-    fit_delay, delay_s
-        also fit an extra pure delay exp(-j w tau) for lags the description leaves out, starting at delay_s (s).
+    {options}
     weight
         per frequency, >= 0 (default: the measurement's coherence if it has one). The residual is the complex
         log-ratio (nepers and radians) times the weight: a resonance peak and a -60 dB roll-off count alike.
-    max_relative_std_error, strict
-        a parameter whose standard error exceeds this fraction of its own value is not identifiable; strict raises
+    strict
+        a parameter not identifiable (standard error above `max_relative_std_error` of its value) raises
         :class:`IdentificationError` naming it.
+
+    The options, their defaults, units and ranges are those of :class:`servobench._core.FrequencyFitOptions`
+    (identify/frequency_fit.hpp), read from it.
     """
     model = _model(model)
     if (axis is None) == (io is None):
@@ -196,9 +199,8 @@ def fit_frequency(response, axis=None, model: str = "rigid", *, io: MechanicsIO 
     w = np.ones(len(f)) if weight is None else np.asarray(weight, float)
     core_axis = None if axis is None else getattr(axis, "_axis", axis)
     r = _core.identify_frequency(core_axis, f.astype(float), g.astype(complex), weight=w, model=model,
-                                 initial=initial, fixed=hold, lower=lower, upper=upper, fit_delay=fit_delay,
-                                 delay_initial_s=delay_s, max_iterations=max_iterations,
-                                 max_relative_std_error=max_relative_std_error, progress=progress,
+                                 initial=initial, fixed=hold, lower=lower, upper=upper,
+                                 options=_opts.cpp_options(_core.FrequencyFitOptions, options), progress=progress,
                                  io=None if io is None else io._core_dict())
     s = r["summary"]
     if strict and s["not_identifiable"]:

@@ -6,11 +6,13 @@ gain) and :func:`closed_loop_poles`. Also available from :mod:`servobench.freque
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from . import _core
+from . import _options as _opts
 from ._serialise import JsonResult, dataframe
 
 __all__ = ["Margins", "analytic_margins", "closed_loop_poles", "margins"]
@@ -20,7 +22,7 @@ def _core_axis(axis):
     return getattr(axis, "_axis", axis)
 
 
-@dataclass(frozen=True)
+@_opts.described_result(_core.MARGINS_FIELDS)
 class Margins(JsonResult):
     """Stability first, then the margins and loop figures of merit (from :func:`margins`,
     :func:`analytic_margins` or :meth:`FrequencyResponse.margins`). ``str(m)`` starts with "UNSTABLE" for an
@@ -32,39 +34,27 @@ class Margins(JsonResult):
         closed-loop ``|z|``, poles only), "unstable_poles" (closed-loop poles outside the unit circle; -1 undecided),
         "open_loop_unstable_poles", "integrators"}. ``stable`` is False when unstable *or* undecided. The margins of
         a loop that is not stable are meaningless (python-control reports them all the same).
-    gain_margin_db, gm_freq_hz
-        how far the loop gain may rise before a phase crossover reaches -1, dB (the smallest ``-20 log10|L|`` > 0
-        over the phase crossovers, angle L = -180 deg), and where, Hz. ``inf`` / NaN if there is none.
-    lower_gain_margin_db, lower_gm_freq_hz
-        how far the gain may fall (negative dB) for a conditionally stable loop (a PID on an integrating plant has
-        one at low frequency): the phase crossover with ``|L|`` > 1 closest to 0 dB; ``-inf`` / NaN if none.
-    phase_margin_deg, pm_freq_hz
-        180 deg + angle L at the gain crossover ``|L|`` = 1 nearest to -1, deg, and that crossover frequency, Hz.
     gain_crossovers, phase_crossovers
         every crossing (MATLAB's allmargin): {"freq_hz", "phase_margin_deg"} and {"freq_hz", "gain_margin_db",
         "kind"} arrays, by frequency; kind "upper" (``|L|`` < 1: the gain may rise) or "lower" (it may fall).
-    delay_margin_s
-        extra dead time the loop tolerates, phase margin / (360 deg * crossover), s (the smallest over crossovers).
-    bandwidth_hz
-        closed-loop -3 dB bandwidth (first frequency where ``|Y/R|`` is 3 dB below its value at the lowest
-        frequency), Hz; NaN if not reached in the data.
-    ms, ms_freq_hz
-        peak sensitivity max ``|1/(1 + L)|`` and its frequency, Hz (1/Ms is the distance of L from -1; Ms < 2 is the
-        usual robustness goal).
+    {fields}
     source, note
         what the figures were read from ("analytic model", "measured (stepped sine)", ...) and what was left out.
     """
 
-    gain_margin_db: float
-    gm_freq_hz: float
-    lower_gain_margin_db: float
-    lower_gm_freq_hz: float
-    phase_margin_deg: float
-    pm_freq_hz: float
-    delay_margin_s: float
-    bandwidth_hz: float
-    ms: float
-    ms_freq_hz: float
+    # The single figures (gain_margin_db ... ms_freq_hz) come first, read at import from tuning::Margins::describe()
+    # with their units and docs; static type checkers read these names (test_options_once checks they match).
+    if TYPE_CHECKING:
+        gain_margin_db: float
+        gm_freq_hz: float
+        lower_gain_margin_db: float
+        lower_gm_freq_hz: float
+        phase_margin_deg: float
+        pm_freq_hz: float
+        delay_margin_s: float
+        bandwidth_hz: float
+        ms: float
+        ms_freq_hz: float
     stable: bool = False
     stability: dict = field(default_factory=dict)
     gain_crossovers: dict = field(default_factory=dict)
@@ -151,8 +141,13 @@ def _margins_from(d: dict, source: str = "", note: str = "") -> Margins:
     return Margins(**keep, stable=bool(st.get("stable", False)), stability=st, source=source, note=note)
 
 
-def margins(freq_hz, loop_gain, closed_loop=None, *, open_loop_unstable_poles: int = 0,
-            integrators: int | None = None, source: str = "") -> Margins:
+_MARGINS_PYTHON_DEFAULTS = {
+    "integrators": _opts.PythonDefault(None, -1, "None (default): inferred, as for -1"),
+}
+
+
+@_opts.takes_options(_core.MarginsOptions, python_defaults=_MARGINS_PYTHON_DEFAULTS)
+def margins(freq_hz, loop_gain, closed_loop=None, *, source: str = "", **options) -> Margins:
     """Stability, gain, phase and delay margins (every crossing), closed-loop bandwidth and peak sensitivity from
     frequency-response data.
 
@@ -163,17 +158,16 @@ def margins(freq_hz, loop_gain, closed_loop=None, *, open_loop_unstable_poles: i
         the feed-forward off.
     closed_loop
         Y/R for the bandwidth (complex); default L/(1 + L).
-    open_loop_unstable_poles, integrators
-        the Nyquist criterion's P (open-loop poles outside the unit circle, 0 for the card loops) and the number of
-        open-loop poles at z = 1 (None: inferred from the slope of the two lowest points, round(-slope / 20
-        dB/decade)). The verdict is "undecided" when the data do not start where ``|L|`` >= 2 or do not end where
-        ``|L|`` < 1.
+    {options}
+    source
+        what the data are, for the result's ``source`` ("measured (stepped sine)", ...).
 
     Crossings are interpolated linearly in log frequency (gain in dB, phase unwrapped between neighbours), so the
     figures are as good as the grid is dense around them. The phase margin is that of the crossover nearest to -1
     (the smallest ``|PM|``, python-control's rule) and the delay margin the smallest over all crossovers. For the
     linear model use :func:`analytic_margins` (closed-loop poles, exact crossings).
     """
+    open_loop_unstable_poles, integrators = options["open_loop_unstable_poles"], options["integrators"]
     if isinstance(open_loop_unstable_poles, bool) or int(open_loop_unstable_poles) != open_loop_unstable_poles \
             or open_loop_unstable_poles < 0:
         raise ValueError(f"open_loop_unstable_poles = {open_loop_unstable_poles!r} must be an integer >= 0")
@@ -181,7 +175,7 @@ def margins(freq_hz, loop_gain, closed_loop=None, *, open_loop_unstable_poles: i
         raise ValueError(f"integrators = {integrators!r} must be None or an integer in 0..10")
     d = _core.margins(np.asarray(freq_hz, dtype=float), np.asarray(loop_gain, dtype=complex),
                       None if closed_loop is None else np.asarray(closed_loop, dtype=complex),
-                      int(open_loop_unstable_poles), -1 if integrators is None else int(integrators))
+                      options=_opts.cpp_options(_core.MarginsOptions, options, _MARGINS_PYTHON_DEFAULTS))
     return _margins_from(d, source)
 
 

@@ -275,4 +275,9 @@ Margins margins(const std::vector<double>& f, const std::vector<C>& l, const std
   return m;
 }
 
+void MarginsOptions::validate() const {
+  check_integer("MarginsOptions", "open_loop_unstable_poles", open_loop_unstable_poles, 0, 1000);
+  check_integer("MarginsOptions", "integrators", integrators, -1, 10);
+}
+
 }  // namespace servobench::tuning

@@ -222,14 +222,33 @@ machine::LawParams base_law(const machine::AxisConfig& config, TuneLaw kind) {
 
 }  // namespace
 
+namespace {
+// The ranges that do not depend on the servo period, in the order of the option table.
+void check_scalar_ranges(const ModelTuneOptions& o) {
+  check_range(kOwner, "phase_margin_deg", o.phase_margin_deg, 10.0, 89.0);
+  check_range(kOwner, "alpha", o.alpha, 1.0, 100.0);
+  check_range(kOwner, "pm_tolerance_deg", o.pm_tolerance_deg, 0.1, 20.0);
+  check_range(kOwner, "min_gain_margin_db", o.min_gain_margin_db, 0.0, 60.0);
+  check_range(kOwner, "max_ms", o.max_ms, 1.05, 10.0);
+  check_range(kOwner, "max_pid_lead_deg", o.max_pid_lead_deg, 5.0, 89.0);
+  check_range(kOwner, "min_resonance_prominence_db", o.min_resonance_prominence_db, 0.1, 60.0);
+}
+}  // namespace
+
+void ModelTuneOptions::validate() const {
+  check_scalar_ranges(*this);
+  if (resonance_hz != 0.0) check_positive(kOwner, "resonance_hz", resonance_hz);
+  if (notch_q_set.empty() && notch)
+    throw std::invalid_argument("ModelTune.notch_q_set is empty; give at least one q (0.1..100) or notch = false");
+  for (double q : notch_q_set) check_range(kOwner, "notch_q_set[i]", q, 0.1, 100.0);
+  check_positive(kOwner, "min_crossover_hz", min_crossover_hz);
+  if (max_crossover_hz != 0.0) check_positive(kOwner, "max_crossover_hz", max_crossover_hz);
+  check_integer(kOwner, "candidates", candidates, 4, 10000);
+  check_integer(kOwner, "points", points, 100, 200000);
+}
+
 void ModelTuneOptions::validate(double ts) const {
-  check_range(kOwner, "phase_margin_deg", phase_margin_deg, 10.0, 89.0);
-  check_range(kOwner, "alpha", alpha, 1.0, 100.0);
-  check_range(kOwner, "pm_tolerance_deg", pm_tolerance_deg, 0.1, 20.0);
-  check_range(kOwner, "min_gain_margin_db", min_gain_margin_db, 0.0, 60.0);
-  check_range(kOwner, "max_ms", max_ms, 1.05, 10.0);
-  check_range(kOwner, "max_pid_lead_deg", max_pid_lead_deg, 5.0, 89.0);
-  check_range(kOwner, "min_resonance_prominence_db", min_resonance_prominence_db, 0.1, 60.0);
+  check_scalar_ranges(*this);
   const double nyq = 0.5 / ts;
   if (resonance_hz != 0.0 && !(resonance_hz > 0 && resonance_hz < nyq))
     throw_invalid(kOwner, "resonance_hz", resonance_hz,

@@ -105,11 +105,9 @@ double harmonic_amplitude(const double* x, int n, double w, double offset) {
 }
 }  // namespace
 
-void SineSweepOptions::validate(double ts) const {
-  const double nyquist = 0.5 / ts;
-  const std::string nyq = "must be > 0 and below the Nyquist frequency 1/(2 Ts) = " + format_value(nyquist) + " Hz";
-  if (!(start_hz > 0) || !(start_hz < nyquist)) throw_invalid(kOwner, "start_hz", start_hz, nyq);
-  if (!(end_hz > 0) || !(end_hz < nyquist)) throw_invalid(kOwner, "end_hz", end_hz, nyq);
+void SineSweepOptions::validate() const {
+  check_positive(kOwner, "start_hz", start_hz);
+  check_positive(kOwner, "end_hz", end_hz);
   check_nonnegative(kOwner, "amplitude_pulse", amplitude_pulse);
   check_range(kOwner, "min_coherence", min_coherence, 0.0, 1.0);
   check_nonnegative(kOwner, "max_distortion", max_distortion);
@@ -121,6 +119,14 @@ void SineSweepOptions::validate(double ts) const {
   check_positive(kOwner, "update_s", update_s);
   check_nonnegative(kOwner, "deviation_limit_pulse", deviation_limit_pulse);
   check_range(kOwner, "settle_fraction", settle_fraction, 0.0, 0.9);
+}
+
+void SineSweepOptions::validate(double ts) const {
+  const double nyquist = 0.5 / ts;
+  const std::string nyq = "must be > 0 and below the Nyquist frequency 1/(2 Ts) = " + format_value(nyquist) + " Hz";
+  if (!(start_hz > 0) || !(start_hz < nyquist)) throw_invalid(kOwner, "start_hz", start_hz, nyq);
+  if (!(end_hz > 0) || !(end_hz < nyquist)) throw_invalid(kOwner, "end_hz", end_hz, nyq);
+  validate();
   const double f_low = std::min(start_hz, end_hz);
   const double ticks = std::round(update_s / ts);
   if (ticks * ts * f_low < 1.0 - 1e-9)

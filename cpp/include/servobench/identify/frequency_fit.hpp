@@ -36,6 +36,17 @@ struct FrequencyFitOptions {
   double max_relative_std_error = 0.2;
   std::function<bool(int, double)> progress;
   void validate() const;
+
+  // The option table (decision OP3): the one place the Python API (fit_frequency) reads each option's default,
+  // unit and doc from. The model is chosen by name in Python; the progress callback is not an option.
+  template <class V>
+  static void describe(V&& v) {
+    using O = FrequencyFitOptions;
+    v("fit_delay", &O::fit_delay, "", "also fit an extra pure delay exp(-j w tau) for lags the description leaves out (besides the axis's own one-tick delay)");
+    v("delay_s", &O::delay_initial_s, "s", "the extra delay's starting value (its fixed value when not fitted), >= 0");
+    v("max_iterations", &O::max_iterations, "", "solver iterations at most, 1..10000");
+    v("max_relative_std_error", &O::max_relative_std_error, "", "a parameter whose standard error exceeds this fraction of its own value is not identifiable, > 0");
+  }
 };
 
 struct FrequencyFitResult {

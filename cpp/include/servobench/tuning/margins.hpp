@@ -78,6 +78,23 @@ struct Margins {
   Stability stability;
   std::vector<GainCrossover> gain_crossovers;    // all, by frequency
   std::vector<PhaseCrossover> phase_crossovers;  // all, by frequency
+
+  // The single-figure results (name, member, unit, meaning): the one place the Python result (servobench.margins.
+  // Margins) reads its field names, units and docs from (decision OP6).
+  template <class V>
+  static void describe(V&& v) {
+    using M = Margins;
+    v("gain_margin_db", &M::gain_margin_db, "dB", "how far the loop gain may rise before a phase crossover reaches -1: the smallest -20 log10|L| > 0 over the phase crossovers (angle L = -180 deg); inf if there is none");
+    v("gm_freq_hz", &M::gm_freq_hz, "Hz", "the phase crossover of the gain margin; NaN if there is none");
+    v("lower_gain_margin_db", &M::lower_gain_margin_db, "dB", "how far the gain may fall (negative) for a conditionally stable loop (a PID on an integrating plant has one at low frequency): the phase crossover with |L| > 1 closest to 0 dB; -inf if none");
+    v("lower_gm_freq_hz", &M::lower_gm_freq_hz, "Hz", "the phase crossover of the lower gain margin; NaN if none");
+    v("phase_margin_deg", &M::phase_margin_deg, "deg", "180 deg + angle L at the gain crossover |L| = 1 nearest to -1; inf if |L| never crosses 1 in the data");
+    v("pm_freq_hz", &M::pm_freq_hz, "Hz", "that gain crossover; NaN if none");
+    v("delay_margin_s", &M::delay_margin_s, "s", "extra dead time the loop tolerates, phase margin / (360 deg * crossover), the smallest over the crossovers");
+    v("bandwidth_hz", &M::bandwidth_hz, "Hz", "closed-loop -3 dB bandwidth: the first frequency where |Y/R| is 3 dB below its value at the lowest frequency; NaN if not reached in the data");
+    v("ms", &M::ms, "", "peak sensitivity max |1/(1 + L)| (1/Ms is the distance of L from -1; Ms < 2 is the usual robustness goal)");
+    v("ms_freq_hz", &M::ms_freq_hz, "Hz", "where the peak sensitivity occurs");
+  }
 };
 
 struct MarginsOptions {
@@ -89,6 +106,17 @@ struct MarginsOptions {
   // L(f) for any f in (0, Nyquist]: refines the crossings and Ms found on the grid (the analytic loop).
   std::function<std::complex<double>(double)> loop_gain_at;
   double nyquist_hz = 0.0;  // > 0 with loop_gain_at: also report a phase crossover at Nyquist (L real < 0 there)
+  // Throws std::invalid_argument naming the field and its range.
+  void validate() const;
+
+  // The option table of the Nyquist criterion on data (decision OP3): the one place the Python API (margins())
+  // reads the defaults, units and docs from. The verdict and the evaluator come from the model, not the user.
+  template <class V>
+  static void describe(V&& v) {
+    using O = MarginsOptions;
+    v("open_loop_unstable_poles", &O::open_loop_unstable_poles, "", "the Nyquist criterion's P: open-loop poles outside the unit circle, 0..1000 (0 for the card loops)");
+    v("integrators", &O::integrators, "", "open-loop poles at z = 1, 0..10; -1: inferred from the slope of |L| over the two lowest points, round(-slope / 20 dB/decade). The verdict is \"undecided\" when the data do not start where |L| >= 2 or do not end where |L| < 1");
+  }
 };
 
 // Every gain crossover of L, by frequency (the same interpolation and checks as margins()).

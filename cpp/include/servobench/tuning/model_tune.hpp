@@ -50,7 +50,31 @@ struct ModelTuneOptions {
   int candidates = 60;                 // log-spaced crossover candidates, 4..10000
   int points = 4000;                   // log-spaced frequencies of the band the loop is checked over, 100..200000
   TuneLaw law = TuneLaw::kAxis;
+  // Throws std::invalid_argument naming the field and its range: validate() the ranges that hold at any servo
+  // period, validate(servo_period_s) also the frequencies below Nyquist.
+  void validate() const;
   void validate(double servo_period_s) const;
+
+  // The option table (name, member, unit, meaning with range): the one place the Python API reads each option's
+  // default, unit and doc from (decision OP3). `law` is chosen by name in Python (None, "gt", "aps"); the list
+  // notch_q_set is passed beside the struct (its default is bound as MODEL_TUNE_NOTCH_Q).
+  template <class V>
+  static void describe(V&& v) {
+    using O = ModelTuneOptions;
+    v("phase_margin_deg", &O::phase_margin_deg, "deg", "target phase margin at the crossover, 10..89");
+    v("alpha", &O::alpha, "", "Ti = alpha * Td, 1..100");
+    v("notch", &O::notch, "", "try a notch (pre-warped, in biquad 0; the card's integers on an ADLINK law) at the plant's resonance; kept only when it raises the crossover");
+    v("min_gain_margin_db", &O::min_gain_margin_db, "dB", "bound on the loop's upper gain margin, 0..60");
+    v("max_ms", &O::max_ms, "", "bound on the peak sensitivity max |1/(1 + L)|, 1.05..10");
+    v("max_pid_lead_deg", &O::max_pid_lead_deg, "deg", "largest phase the PID may add at the crossover, 5..89; bounds Td so the PID's zeros stay within a factor tan((lead + 90)/2) below the crossover (5.7 at 70 deg): no slowly creeping closed-loop mode");
+    v("pm_tolerance_deg", &O::pm_tolerance_deg, "deg", "accepted |phase margin - target| over all gain crossovers of the loop, 0.1..20");
+    v("resonance_hz", &O::resonance_hz, "Hz", "the resonance to notch, 0 < f < Nyquist; 0: each of the up to 3 most prominent peaks of the plant's gain found above a -40 dB/decade line");
+    v("min_resonance_prominence_db", &O::min_resonance_prominence_db, "dB", "a peak this far above the -40 dB/decade line is a resonance worth a notch, 0.1..60");
+    v("min_crossover_hz", &O::min_crossover_hz, "Hz", "lowest crossover candidate, 0 < f < 0.45 / Ts");
+    v("max_crossover_hz", &O::max_crossover_hz, "Hz", "highest crossover candidate, min_crossover_hz < f < Nyquist; 0: 0.45 / Ts");
+    v("candidates", &O::candidates, "", "log-spaced crossover candidates from min to max, 4..10000; the highest feasible one is taken and the boundary to the one above it bisected");
+    v("points", &O::points, "", "log-spaced frequencies of the band the loop is checked over (0.1 Hz or lower .. Nyquist), 100..200000");
+  }
 };
 
 // A resonance peak of the plant (plant_resonances): frequency, height above the -40 dB/decade line, width at half

@@ -39,6 +39,23 @@ struct RelayTuneOptions {
   int settle_cycles = 3;                // first limit cycles discarded (start-up), 0..1000
   double max_cycle_s = 10.0;            // give up when no new limit cycle completes within this time, s, > 0
   void validate() const;
+
+  // The option table (name, member, unit, meaning with range and manual line): the one place the Python API reads
+  // each option's default, unit and doc from (decision OP3).
+  template <class V>
+  static void describe(V&& v) {
+    using O = RelayTuneOptions;
+    v("amplitude_v", &O::amplitude_v, "V", "relay output +-d, 0 < d <= 10 (L1843)");
+    v("hysteresis_pulse", &O::hysteresis_pulse, "pulse", "relay hysteresis eps on the position error, > 0 (L1846)");
+    v("data_length", &O::data_length, "", "gain sets (limit cycles) to compute, 1..100000 (L1845)");
+    v("sampling_time_s", &O::sampling_time_s, "s", "relay sampling time, 100e-6..1000e-6 (L1847); exact: the relay decides at the first servo tick at or after each multiple of it (250 us on a 100 us axis: after 2, 3, 2, 3 ... ticks), at most every tick");
+    v("deviation_limit_pulse", &O::deviation_limit_pulse, "pulse", "|position error| above this stops the tuning, servo off, >= 0; 0 = off (L1842)");
+    v("max_spread", &O::max_spread, "", "accepted relative standard deviation of each gain over the sets, 0 < . <= 1 (the manual's 10 %, L1794)");
+    v("phase_margin_deg", &O::phase_margin_deg, "deg", "design target phase margin, 10..89 (L1796)");
+    v("alpha", &O::alpha, "", "Ti = alpha * Td, 1..100");
+    v("settle_cycles", &O::settle_cycles, "", "first limit cycles discarded (start-up), 0..1000");
+    v("max_cycle_s", &O::max_cycle_s, "s", "give up when no new limit cycle completes within this time, > 0");
+  }
 };
 
 enum class TuneStatus { kCompleted, kUserStop, kLimitOrAlarm, kDeviationExceeded, kSpreadTooLarge, kNoOscillation };
