@@ -157,14 +157,21 @@ void bind_card_scope(py::module_& m, py::class_<Card>& c) {
   m.attr("SAMPLE_SIGNALS") = sigs;
 
   c.def("sampler_start",
-        [](Card& k, const std::vector<std::pair<double, std::string>>& channels, double every_ticks, double depth,
+        [](Card& k, const std::vector<std::pair<AxisIndex, std::string>>& channels, double every_ticks, double depth,
            const std::string& trigger, double trigger_channel, double level, double event_axis, double event_bits,
            double pretrigger, Flag continuous) {
           machine::SamplerConfig cfg;
           for (const auto& [axis, name] : channels) {
             machine::SampleChannel ch;
-            ch.axis = axis;
             ch.signal = machine::sample_signal_from(name);
+            // An axis goes through the one axis check; a trigger output's channel (0..3) is checked whole here and
+            // against its range by SamplerConfig::validate.
+            if (ch.signal == machine::SampleSignal::card_trg_pulses || ch.signal == machine::SampleSignal::card_trg_level) {
+              check_integer("Sampler", "channel (trigger output)", axis.value, 0, 3);
+              ch.axis = static_cast<int>(axis.value);
+            } else {
+              ch.axis = static_cast<int>(card_axis(k, axis));
+            }
             cfg.channels.push_back(ch);
           }
           cfg.every_ticks = every_ticks;
@@ -231,7 +238,7 @@ void bind_card_scope(py::module_& m, py::class_<Card>& c) {
       .def("compare_set_source", [](Card& k, double comp, AxisIndex axis, Flag command) {
              check_integer("Card", "comparator", comp, 0, 3);
              machine::CompareSource s;
-             s.axis = static_cast<double>(card_axis(k, axis));
+             s.axis = static_cast<int>(card_axis(k, axis));
              s.command = command;
              scope_of(k).compare().set_source(static_cast<int>(comp), s, k.axis_count());
            }, py::arg("comparator"), py::arg("axis"), py::arg("command") = false)

@@ -71,3 +71,15 @@ def test_one_line_and_arc_geometry():
     header = (CPP / "include" / "servobench" / "motion" / "segment_geometry.hpp").read_text()
     assert "using PathSegmentGeometry = SegmentGeometry<kCrdMaxDim>;" in header
     assert "using SpaceSegment = SegmentGeometry<kSpaceMaxDim>;" in header
+
+
+def test_scope_axis_fields_are_integers():
+    """Issue 24.5 "axis counts and indices are integers everywhere" (decision LK4): the sampler's channel axis and the
+    position compare's source axis are ints; the binding takes the sampler's axes through the one axis check."""
+    for header, struct in (("sampler.hpp", "struct SampleChannel {"), ("position_compare.hpp", "struct CompareSource {")):
+        text = (CPP / "include" / "servobench" / "machine" / header).read_text()
+        body = text[text.index(struct):]
+        body = body[:body.index("};")]
+        assert re.search(r"\bint axis = 0;", body), (header, body)
+    binding = (CPP / "bindings" / "bind_card_scope.cpp").read_text()
+    assert "std::vector<std::pair<AxisIndex, std::string>>& channels" in binding

@@ -21,7 +21,7 @@ void check_trg(int t) { check_integer("PositionCompare", "trigger output", t, 0,
 
 void PositionCompare::set_source(int comparator, const CompareSource& src, std::size_t axes) {
   check_comparator(comparator);
-  check_integer("PositionCompare", "source axis", src.axis, 0, static_cast<double>(axes) - 1);
+  check_integer("PositionCompare", "source axis", static_cast<double>(src.axis), 0, static_cast<double>(axes) - 1);
   src_[static_cast<std::size_t>(comparator)] = src;
 }
 

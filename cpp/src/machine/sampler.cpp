@@ -34,7 +34,7 @@ void SamplerConfig::validate(std::size_t axes) const {
   check_integer("Sampler", "channels", static_cast<double>(channels.size()), 1, 16);
   for (const SampleChannel& c : channels) {
     const bool trg = c.signal == SampleSignal::card_trg_pulses || c.signal == SampleSignal::card_trg_level;
-    check_integer("Sampler", trg ? "channel (trigger output)" : "axis", c.axis, 0,
+    check_integer("Sampler", trg ? "channel (trigger output)" : "axis", static_cast<double>(c.axis), 0,
                   trg ? 3.0 : static_cast<double>(axes) - 1);
     sample_signal_info(c.signal);
   }

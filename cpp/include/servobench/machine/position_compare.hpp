@@ -27,7 +27,7 @@ enum TriggerSourceBit : std::uint32_t {
 };
 
 struct CompareSource {
-  double axis = 0;       // 0..axes-1
+  int axis = 0;          // 0..axes-1
   bool command = false;  // false: feedback (encoder), true: command position
 };
 

@@ -73,7 +73,7 @@ SampleSignal sample_signal_from(const std::string& name);
 
 // One channel: a signal of an axis (0-based; for trg_* the trigger output channel 0..3).
 struct SampleChannel {
-  double axis = 0;
+  int axis = 0;
   SampleSignal signal = SampleSignal::cmd_pos;
 };
 

@@ -263,7 +263,7 @@ void ApsScope::apply_trigger() {
   for (int comp = 0; comp < 4; ++comp) {
     const std::int64_t v = tgr_[static_cast<std::size_t>(comp)];
     machine::CompareSource s;
-    s.axis = static_cast<double>(v & 0xF);
+    s.axis = static_cast<int>(v & 0xF);
     s.command = (v & kSrcCommand) != 0;
     cmp.set_source(comp, s, card_.axis_count());
   }
