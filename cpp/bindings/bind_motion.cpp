@@ -140,7 +140,8 @@ void bind_motion(py::module_& m) {
   ParamClass<GtGearParams>(m, "GtGear",
       "GT_PrflG(master) + GT_SetRatio electronic gear (GT manual L1029-1090): slave increment = ratio x master\n"
       "increment.")
-      .field("master", &GtGearParams::master, "master: 1-4 axes, 5-6 auxiliary encoders (L1042)")
+      .field("master", &GtGearParams::master, "master: 1-4 axes, 5-6 auxiliary encoders (L1042)",
+             GtGearParams::kMasterRange)
       .field("ratio", &GtGearParams::ratio, "gear ratio, -16384..16384; negative reverses (L1043)")
       .finish();
   py::class_<ElectronicGear>(m, "ElectronicGear",

@@ -39,6 +39,11 @@ class ParamClass {
     return field(fname, member, "", doc);
   }
 
+  // A whole-number field with its range: a value that is not whole or outside gets the range in its message.
+  ParamClass& field(const char* fname, int P::*member, const char* doc, WholeRange range) {
+    return add<int>(fname, [member](P& p) -> int& { return p.*member; }, "", doc, range);
+  }
+
   // A field with its unit ("" for none): the unit is shown in the docstrings and in FIELD_INFO.
   template <class T>
   ParamClass& field(const char* fname, T P::*member, const char* unit, const char* doc) {
@@ -60,7 +65,8 @@ class ParamClass {
 
  private:
   template <class T, class Ref>
-  ParamClass& add(const char* fname, Ref ref, const char* unit, const char* doc) {
+  ParamClass& add(const char* fname, Ref ref, const char* unit, const char* doc,
+                  WholeRange range = {-2147483647.0, 2147483647.0, ""}) {
     static_assert(std::is_same_v<T, double> || std::is_same_v<T, bool> || std::is_same_v<T, int> ||
                       std::is_same_v<T, std::vector<double>>,
                   "fields are double, int, bool or a list of doubles");
@@ -100,7 +106,7 @@ class ParamClass {
         return s + (v.size() == 1 ? ",)" : ")");
       }
     };
-    f.set = [ref, owner, key](P& p, py::handle value) {
+    f.set = [ref, owner, key, range](P& p, py::handle value) {
       if constexpr (std::is_same_v<T, bool>) {
         if (py::isinstance<py::bool_>(value)) {
           ref(p) = value.cast<bool>();
@@ -111,8 +117,11 @@ class ParamClass {
         ref(p) = (v == 1.0);
       } else if constexpr (std::is_same_v<T, int>) {
         const double v = to_double(owner, key, value);
-        if (!(std::isfinite(v) && v == std::floor(v) && std::fabs(v) <= 2147483647.0))
+        if (*range.source) {
+          range.check(owner.c_str(), key.c_str(), v);
+        } else if (!(std::isfinite(v) && v == std::floor(v) && std::fabs(v) <= 2147483647.0)) {
           throw_invalid(owner.c_str(), key.c_str(), v, "must be a whole number");
+        }
         ref(p) = static_cast<int>(v);
       } else if constexpr (std::is_same_v<T, double>) {
         ref(p) = to_double(owner, key, value);

@@ -7,7 +7,7 @@
 namespace servobench::motion {
 
 void GtGearParams::validate() const {
-  check_integer("GtGear", "master", master, 1, 6, "GT L1042");
+  kMasterRange.check("GtGear", "master", master);
   check_range("GtGear", "ratio", ratio, -16384.0, 16384.0, "GT L1043");
 }
 

@@ -314,6 +314,21 @@ Vec3 plane_normal(ArcPlane plane) {
 }  // namespace
 
 template <int D>
+SegmentGeometry<D> SegmentGeometry<D>::googol_arc(const Point& start, const Point& end, int dim, ArcPlane plane,
+                                                  double c1, double c2, double frame_r, double sweep, double r0,
+                                                  double r1) {
+  Point c, e1, e2, ax;
+  googol_frame(start, end, dim, plane, c1, c2, frame_r, &c, &e1, &e2, &ax);
+  SegmentGeometry g = make_curve(Kind::Arc, start, dim, c, e1, e2, sweep, r0, r1, ax, &end);
+  g.plane_ = plane;
+  const auto a = static_cast<std::size_t>(plane_axis(plane, 0));
+  const auto b = static_cast<std::size_t>(plane_axis(plane, 1));
+  g.theta0_ = std::atan2(start[b] - c2, start[a] - c1);
+  g.n_ = plane_normal(plane);
+  return g;
+}
+
+template <int D>
 SegmentGeometry<D> SegmentGeometry<D>::arc_center_angle(const Point& start, int dim, ArcPlane plane, double center_1,
                                                         double center_2, double angle_deg, const Point& axial) {
   const char* o = "PathArcCenterAngle";
@@ -339,13 +354,7 @@ SegmentGeometry<D> SegmentGeometry<D>::arc_center_angle(const Point& start, int 
     const auto i = static_cast<std::size_t>(k);
     if (i != a && i != b) end[i] = start[i] + axial[i];
   }
-  Point c, e1, e2, ax;
-  googol_frame(start, end, dim, plane, center_1, center_2, r, &c, &e1, &e2, &ax);
-  SegmentGeometry g = make_curve(Kind::Arc, start, dim, c, e1, e2, sweep, r, r, ax, &end);
-  g.plane_ = plane;
-  g.theta0_ = th0;
-  g.n_ = plane_normal(plane);
-  return g;
+  return googol_arc(start, end, dim, plane, center_1, center_2, r, sweep, r, r);
 }
 
 template <int D>
@@ -390,13 +399,7 @@ SegmentGeometry<D> SegmentGeometry<D>::arc_end_radius(const Point& start, const 
   Point e = start;
   for (int k = 0; k < dim; ++k) e[static_cast<std::size_t>(k)] = end[static_cast<std::size_t>(k)];
   const double r0 = std::hypot(start[a] - c1, start[b] - c2);
-  Point c, e1, e2, ax;
-  googol_frame(start, e, dim, plane, c1, c2, r0, &c, &e1, &e2, &ax);
-  SegmentGeometry g = make_curve(Kind::Arc, start, dim, c, e1, e2, sweep, r, r, ax, &e);
-  g.plane_ = plane;
-  g.theta0_ = th0;
-  g.n_ = plane_normal(plane);
-  return g;
+  return googol_arc(start, e, dim, plane, c1, c2, r0, sweep, r, r);
 }
 
 template <int D>
@@ -432,13 +435,7 @@ SegmentGeometry<D> SegmentGeometry<D>::arc_center_offset(const Point& start, con
   }
   Point e = start;
   for (int k = 0; k < dim; ++k) e[static_cast<std::size_t>(k)] = end[static_cast<std::size_t>(k)];
-  Point c, e1, e2, ax;
-  googol_frame(start, e, dim, plane, c1, c2, r0, &c, &e1, &e2, &ax);
-  SegmentGeometry g = make_curve(Kind::Arc, start, dim, c, e1, e2, sweep, r0, r1, ax, &e);
-  g.plane_ = plane;
-  g.theta0_ = std::atan2(start[b] - c2, start[a] - c1);
-  g.n_ = plane_normal(plane);
-  return g;
+  return googol_arc(start, e, dim, plane, c1, c2, r0, sweep, r0, r1);
 }
 
 // ---- ADLINK arcs and spirals ---------------------------------------------------------------------------------------

@@ -21,6 +21,17 @@ void check_range(const char* owner, const char* field, double value, double lo, 
 // value finite, a whole number, and lo <= value <= hi.
 void check_integer(const char* owner, const char* field, double value, double lo, double hi, const char* source = "");
 
+// The allowed range of a whole-number field and the manual line stating it: one description used by the struct's
+// validate() and by the Python binding before a value becomes an int, so both give check_integer's message.
+struct WholeRange {
+  double lo;
+  double hi;
+  const char* source;
+  void check(const char* owner, const char* field, double value) const {
+    check_integer(owner, field, value, lo, hi, source);
+  }
+};
+
 // The largest magnitude a parameter without a stated physical range may take (decision RB1): above it a value is
 // a typo or an overflow (1e308, 2^63), never a setting.
 inline constexpr double kMaxMagnitude = 1e12;

@@ -8,13 +8,15 @@
 // A ratio change rebases at the current positions (no jump). Units: pulse, pulse/tick, pulse/tick^2.
 #pragma once
 
+#include "servobench/common/validate.hpp"
 #include "servobench/motion/profile.hpp"
 
 namespace servobench::motion {
 
 // GT_PrflG(Master) + GT_SetRatio parameters.
 struct GtGearParams {
-  double master = 1;  // master number: 1-4 axes, 5-6 auxiliary encoders (L1042)
+  static constexpr WholeRange kMasterRange{1, 6, "GT L1042"};
+  int master = 1;  // master number: 1-4 axes, 5-6 auxiliary encoders (L1042)
   double ratio = 1;   // -16384..16384, negative reverses (L1043, L5020)
   void validate() const;
 };

@@ -128,6 +128,10 @@ class SegmentGeometry {
   // swept by `sweep` rad, radius r0 -> r1, `axial` the displacement outside the plane; `end` exact if given.
   static SegmentGeometry make_curve(Kind kind, const Point& start, int dim, const Point& c, const Point& e1, const Point& e2,
                             double sweep, double r0, double r1, const Point& axial, const Point* end);
+  // A Googol arc in `plane` about (c1, c2) from `start` to the exact `end`: the frame's e1 is scaled by frame_r, the
+  // radius runs r0 -> r1, the coordinates outside the plane move by end - start (a helix), theta0 the start's angle.
+  static SegmentGeometry googol_arc(const Point& start, const Point& end, int dim, ArcPlane plane, double c1, double c2,
+                                    double frame_r, double sweep, double r0, double r1);
   double length_to(double psi) const;  // arc length from the start to |angle| psi
   double psi_at(double s) const;       // its inverse
 

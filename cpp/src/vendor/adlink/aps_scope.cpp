@@ -146,7 +146,7 @@ AdlinkCode ApsScope::start_sampling(double length, double pretrigger, double tim
   if (edge != 2 && src[trig]->bit >= 0) return AdlinkCode::FunctionNotAvailable;  // trigger on the word (V80)
   machine::SamplerConfig cfg;
   for (std::size_t k = 0; k < 4; ++k)
-    cfg.channels.push_back({static_cast<double>(axis[k]), machine::sample_signal_from(src[k]->signal)});
+    cfg.channels.push_back({static_cast<int>(axis[k]), machine::sample_signal_from(src[k]->signal)});
   cfg.every_ticks = samp_[0];
   cfg.depth = length;
   cfg.trigger = edge == 0 ? machine::SampleTrigger::Rising
