@@ -226,7 +226,7 @@ def test_the_fit_differentiates_along_its_free_parameters_only():
     se = np.sqrt(np.diag(s2 * np.linalg.inv(j.T @ j))[:len(free)])
     got = [fit.parameters[names[i]].std_error for i in free]
     np.testing.assert_allclose(got, se, rtol=1e-6)
-    assert fit.parameters["static_nm"].std_error == 0.0 and fit.parameters["stribeck_speed_rad_s"].std_error == 0.0
+    assert fit.parameters["stribeck_speed_rad_s"].std_error == 0.0  # held (static_nm's bar is Fc's: Fs = Fc + e)
 
 
 def test_fit_is_deterministic_on_one_thread():
