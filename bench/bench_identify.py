@@ -335,7 +335,8 @@ def run(quick: bool = False, repeat: int | None = None) -> benchlib.Result:
         "",
         f"`fit_time` as a user calls it (continuation over segment lengths; two-mass: start from the log's "
         f"spectrum; 3 starts one after the other, one Ceres thread each), every guess 50 % off, best of {repeat}. CPU "
-        "time is the process's (all threads; start_threads=2 would overlap the starts, not make them cheaper):",
+        "time is the process's (all threads; start_threads=2 would overlap the starts, not make them cheaper). Issue "
+        "22.6's \"5 s experiment\" is the rigid A row (the plant of the one-stage table above; decision FT7):",
         "",
         "| plant | wall [s] | CPU [s] | iterations (chosen start / all starts) | worst parameter error | goal wall | "
         "goal CPU |",

@@ -494,9 +494,12 @@ def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None
         False they are reported in ``not_identifiable`` and their standard error is inf.
     num_threads
         Ceres threads inside one start. 1 (default) is deterministic: the same log gives bit-identical estimates.
-        More threads evaluate the segments in parallel, but on the 5 s bench experiment they do not help (measured
-        0.94x with 2 threads, issue 22: the segments are too short to pay for the hand-over), and Ceres then sums
-        the Schur complement in a varying order, so estimates differ from run to run at ~1e-8 relative.
+        More threads evaluate the segments in parallel (the Jacobian evaluations are about 90 % of a solve, the
+        report's "Stages" line) but do not help here: they cannot lower CPU time (measured on the 5 s bench
+        experiment, rigid A, one start: 0.30-0.34 s CPU with 2 threads against 0.30-0.32 s with 1, machine load 13
+        on 2 cores, decision FT6), and the wall time was 0.94x with 2 threads on an idle machine (issue 22: the
+        segments are too short to pay for the hand-over). Ceres then sums the Schur complement in a varying order,
+        so estimates may differ from run to run at ~1e-8 relative.
     start_threads
         how many starts run at once (default 1: one after the other). Threads help wall time only: the starts
         are independent one-thread solves that release the GIL, so they overlap (measured 1.47x less wall time for
@@ -544,11 +547,19 @@ def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None
     initial_segment_samples = min(_whole("fit_time", "initial_segment_samples", initial_segment_samples, 20, 10**8),
                                   segment_samples)
     free = set(guess) - set(fixed)
+    spectrum = None  # the log's spectrum does not depend on the start: read once for all starts (decision FT3)
+    if model == "two_mass" and options.get("start", "auto") in ("auto", "spectrum") and not log.measured_on_load and \
+            log.extra.get("injection_v") is not None:
+        try:
+            spectrum = resonance_guess(log)
+        except IdentificationError as e:
+            spectrum = e
 
     def fit_one(g, prog):
         return _fit_once(log, model, guess=g, fixed=fixed, bounds=bounds, segment_samples=segment_samples,
                          initial_segment_samples=initial_segment_samples,
-                         max_relative_std_error=max_relative_std_error, strict=False, progress=prog, **options)
+                         max_relative_std_error=max_relative_std_error, strict=False, progress=prog,
+                         spectrum=spectrum, **options)
 
     fits = oefit.run_starts(fit_one, oefit.perturbed_starts(guess, free, n_starts, seed), threads=start_threads,
                             progress=progress)
@@ -680,8 +691,9 @@ def _fit_once(log: IdentificationLog, model: str = "rigid", *, guess: dict, fixe
              max_iterations: int = 200, num_threads: int = 1, max_relative_std_error: float = 0.2,
              direction_window: int = 6, rest_threshold_counts: float = 2.0, edge_samples: int = 3,
              start: str = "auto", hold_stribeck_first: bool = True, strict: bool = True,
-             progress=None) -> IdentifiedPlant:
-    """One output-error fit from one start (see :func:`fit_time`)."""
+             progress=None, spectrum=None) -> IdentifiedPlant:
+    """One output-error fit from one start (see :func:`fit_time`). spectrum: the log's :func:`resonance_guess` (or
+    the IdentificationError it raised) when the caller already has it (fit_time reads it once for all starts)."""
     model = _model(model)
     if not isinstance(log, IdentificationLog):
         raise TypeError("log must be an IdentificationLog (see IdentificationLog.from_arrays / run_experiment)")
@@ -696,7 +708,9 @@ def _fit_once(log: IdentificationLog, model: str = "rigid", *, guess: dict, fixe
     elif model == "two_mass" and start != "guess":
         free = {"jm_kgm2", "jl_kgm2", "k_nm_per_rad"} & set(guess) - set(fixed)
         try:
-            rg = resonance_guess(log)
+            rg = resonance_guess(log) if spectrum is None else spectrum
+            if isinstance(rg, IdentificationError):
+                raise rg
         except IdentificationError as e:
             if start == "spectrum":
                 raise

@@ -196,6 +196,39 @@ def test_shooting_residual_and_its_jacobian():
         assert np.max(np.abs(fd - jac[:, col])) <= 1e-4 * np.max(np.abs(jac[:, col])) + 1e-9, col
 
 
+def test_the_fit_differentiates_along_its_free_parameters_only():
+    # Decision FT5: the fit's segments carry Jet directions for the free parameters only (here 3 of 6 and the 2
+    # state entries: Jets of 6 instead of 8). Its white-noise standard errors, from that Jacobian, are those of the
+    # full Jacobian (every parameter differentiated, checked against central differences above) at the same point.
+    from servobench import oefit
+    from servobench.identify import _fit_once
+
+    log = sb.run_experiment(axis_with(_core.RigidPlant(**RIGID_A)), amplitude_v=0.1, seed=0, duration_s=1.0)
+    guess = dict(RIGID_A, inertia_kgm2=3e-4, viscous_nms=2e-4)
+    fit = _fit_once(log, "rigid", guess=guess, fixed=("static_nm", "stribeck_speed_rad_s"),
+                                segment_samples=500, initial_segment_samples=500, strict=False)
+    kw = oefit.shooting_options(log, 500, {})
+    sp = _core.identify_shooting_problem(log.torque_nm, log.measured, model="rigid", **kw)
+    names = [q["name"] for q in _core.identify_parameters("rigid")]
+    p = np.array([fit.values()[n] for n in names])
+    p[3] -= p[2]  # internal: the Stribeck excess
+    x = np.asarray(fit.segment_states, float).ravel()
+    assert x.size == sp["states"].size
+    r, (data, idx, ptr), shape = _core.identify_shooting_residual(
+        log.torque_nm, log.measured, model="rigid", starts=sp["starts"], counts=sp["counts"], parameters=p, states=x,
+        jacobian=True, **kw)
+    jac = np.zeros(shape)
+    for row in range(shape[0]):
+        jac[row, idx[ptr[row]:ptr[row + 1]]] = data[ptr[row]:ptr[row + 1]]
+    free = [0, 1, 2]
+    j = jac[:, free + list(range(len(p), shape[1]))]
+    s2 = float(r @ r) / (j.shape[0] - j.shape[1])
+    se = np.sqrt(np.diag(s2 * np.linalg.inv(j.T @ j))[:len(free)])
+    got = [fit.parameters[names[i]].std_error for i in free]
+    np.testing.assert_allclose(got, se, rtol=1e-6)
+    assert fit.parameters["stribeck_speed_rad_s"].std_error == 0.0  # held (static_nm's bar is Fc's: Fs = Fc + e)
+
+
 def test_fit_is_deterministic_on_one_thread():
     log = sb.run_experiment(axis_with(_core.RigidPlant(**RIGID_A)), amplitude_v=0.1, seed=0, duration_s=2.0)
     a = sb.fit_time(log, "rigid", guess=guesses(RIGID_A), strict=False)

@@ -23,12 +23,17 @@ namespace {
 
 using detail::FitContext;
 
+// The mechanical state of model M: 2 (rigid) or 4 (two-mass) entries. The vectors and matrices keep run-time sizes
+// (at most kMaxStates): fixed-size ones made the Jet evaluation slower, not faster (decision FT1: two-mass one start
+// 0.51 -> 0.79 s CPU, rigid 0.40 -> 0.47 s, paired on a loaded machine).
+template <PlantModel M>
+constexpr int kStates = M == PlantModel::kRigid ? 2 : 4;
 constexpr int kMaxStates = 5;
-template <class T>
+template <PlantModel M, class T>
 using Vec = Eigen::Matrix<T, Eigen::Dynamic, 1, 0, kMaxStates, 1>;
-template <class T>
+template <PlantModel M, class T>
 using Mat = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxStates, kMaxStates>;
-template <class T>
+template <PlantModel M, class T>
 using InMat = Eigen::Matrix<T, Eigen::Dynamic, 4, 0, kMaxStates, 4>;
 
 inline double value_of(double x) { return x; }
@@ -37,20 +42,25 @@ double value_of(const ceres::Jet<double, N>& x) {
   return x.a;
 }
 
-// A discretisation matrix on T: the value, and for Jets the derivatives along the first directions (the linear
-// parameters come first in the parameter block, so Jet direction k is linear parameter k).
+// A discretisation matrix on T: the value, and for Jets the derivative with respect to linear parameter k along
+// Jet direction dir[k] (none when dir[k] < 0: a held parameter). Without dir, direction k is linear parameter k
+// (the linear parameters come first in the parameter block).
 template <class M>
-void lift(const Eigen::MatrixXd& v, const std::vector<Eigen::MatrixXd>&, M& out, std::true_type /*double*/) {
+void lift(const Eigen::MatrixXd& v, const std::vector<Eigen::MatrixXd>&, M& out, const int*, std::true_type /*double*/) {
   out = v;
 }
 template <class M>
-void lift(const Eigen::MatrixXd& v, const std::vector<Eigen::MatrixXd>& d, M& out, std::false_type /*jet*/) {
+void lift(const Eigen::MatrixXd& v, const std::vector<Eigen::MatrixXd>& d, M& out, const int* dir,
+          std::false_type /*jet*/) {
   using T = typename M::Scalar;
   out.resize(v.rows(), v.cols());
   for (Eigen::Index r = 0; r < v.rows(); ++r)
     for (Eigen::Index c = 0; c < v.cols(); ++c) {
       T x(v(r, c));
-      for (std::size_t k = 0; k < d.size(); ++k) x.v[static_cast<Eigen::Index>(k)] = d[k](r, c);
+      for (std::size_t k = 0; k < d.size(); ++k) {
+        const int j = dir ? dir[k] : static_cast<int>(k);
+        if (j >= 0) x.v[j] = d[k](r, c);
+      }
       out(r, c) = x;
     }
 }
@@ -72,9 +82,11 @@ Eigen::MatrixXd mechanical_gamma(const Eigen::MatrixXd& phi, const Eigen::Matrix
 
 // Simulates samples [start, start + count) from the mechanical state x0 with parameters p, writing the output per
 // sample to out (scaled residuals when y is given). T = double or a Ceres Jet.
+// lin_dir: the Jet direction of each linear parameter (see lift; nullptr: direction k is parameter k).
 template <PlantModel M, class T>
 void simulate_segment(const FitContext& ctx, const T* p, const T* x0, int start, int count, T* out, bool residual,
-                      const T* x_next = nullptr, T* continuity = nullptr, T* x_end = nullptr) {
+                      const T* x_next = nullptr, T* continuity = nullptr, T* x_end = nullptr,
+                      const int* lin_dir = nullptr) {
   constexpr bool is_double = std::is_same<T, double>::value;
   const ModelLayout& layout = ctx.layout;
   const int nlin = linear_parameter_count(layout.model);
@@ -83,16 +95,16 @@ void simulate_segment(const FitContext& ctx, const T* p, const T* x0, int start,
   for (int k = 0; k < nlin; ++k) lin[k] = value_of(p[k]);
   const auto disc = ctx.cache->get(lin, !is_double);
   const std::size_t masks = disc->phi.size();
-  std::array<Mat<T>, 4> phis;
-  std::array<InMat<T>, 4> gammas;
+  std::array<Mat<M, T>, 4> phis;
+  std::array<InMat<M, T>, 4> gammas;
   for (std::size_t m = 0; m < masks; ++m) {
     std::vector<Eigen::MatrixXd> dphi, dgamma;
     for (std::size_t k = 0; k < disc->dphi[m].size(); ++k) {
       dphi.push_back(mechanical_phi(disc->dphi[m][k], nl));
       dgamma.push_back(mechanical_gamma(disc->dphi[m][k], disc->dgamma[m][k], nl));
     }
-    lift(mechanical_phi(disc->phi[m], nl), dphi, phis[m], std::integral_constant<bool, is_double>());
-    lift(mechanical_gamma(disc->phi[m], disc->gamma[m], nl), dgamma, gammas[m],
+    lift(mechanical_phi(disc->phi[m], nl), dphi, phis[m], lin_dir, std::integral_constant<bool, is_double>());
+    lift(mechanical_gamma(disc->phi[m], disc->gamma[m], nl), dgamma, gammas[m], lin_dir,
          std::integral_constant<bool, is_double>());
   }
   plant::DryFriction<T> dry[2];
@@ -104,9 +116,10 @@ void simulate_segment(const FitContext& ctx, const T* p, const T* x0, int start,
     b.angle -= nl;
     b.speed -= nl;
   }
-  const int n = mechanical_states(layout.model);
+  constexpr int n = kStates<M>;
   const int out_index = ctx.output_index - nl;
-  Vec<T> x(n), xf(n);
+  static_assert(kStates<M> <= 4, "two bodies at most");
+  Vec<M, T> x(n), xf(n);
   for (int i = 0; i < n; ++i) x[i] = x0[i];
   char stuck[2] = {0, 0};
   for (int b = 0; b < nb; ++b) stuck[b] = value_of(x[idx[b].speed]) == 0.0 ? 1 : 0;
@@ -149,6 +162,61 @@ struct SegmentCost {
     simulate_segment<M>(*ctx, p, x0, start, count, r, true);
     return true;
   }
+};
+
+// A segment's cost with derivatives along the free parameters only (decision FT5): Jets of K directions, the free
+// parameters first, then the segment's state, where the AutoDiff cost above carries one direction per parameter,
+// held or not. The Jet arithmetic is element by element, so every derivative is the AutoDiff cost's to the bit; the
+// Jacobian columns of held parameters are zero (Ceres projects them out: SubsetManifold). K: the smallest of the
+// instantiated widths that holds free + state directions.
+template <PlantModel M, int K>
+class FreeSegmentCost final : public ceres::CostFunction {
+ public:
+  FreeSegmentCost(const FitContext* ctx, int start, int count, std::vector<int> free)
+      : ctx_(ctx), start_(start), count_(count), free_(std::move(free)) {
+    set_num_residuals(count);
+    mutable_parameter_block_sizes()->push_back(parameter_count(M));
+    mutable_parameter_block_sizes()->push_back(kStates<M>);
+    lin_dir_.fill(-1);
+    for (std::size_t j = 0; j < free_.size(); ++j)
+      if (free_[j] < linear_parameter_count(M)) lin_dir_[static_cast<std::size_t>(free_[j])] = static_cast<int>(j);
+  }
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    if (!jacobians || (!jacobians[0] && !jacobians[1])) {
+      simulate_segment<M>(*ctx_, parameters[0], parameters[1], start_, count_, residuals, true);
+      return true;
+    }
+    using J = ceres::Jet<double, K>;
+    constexpr int np = M == PlantModel::kRigid ? 6 : 11;
+    constexpr int ns = kStates<M>;
+    const int nf = static_cast<int>(free_.size());
+    std::array<J, np> p;
+    std::array<J, ns> x0;
+    for (int i = 0; i < np; ++i) p[static_cast<std::size_t>(i)] = J(parameters[0][i]);
+    for (int j = 0; j < nf; ++j) p[static_cast<std::size_t>(free_[static_cast<std::size_t>(j)])].v[j] = 1.0;
+    for (int i = 0; i < ns; ++i) x0[static_cast<std::size_t>(i)] = J(parameters[1][i], nf + i);
+    std::vector<J> out(static_cast<std::size_t>(count_));
+    simulate_segment<M>(*ctx_, p.data(), x0.data(), start_, count_, out.data(), true, static_cast<const J*>(nullptr),
+                        static_cast<J*>(nullptr), static_cast<J*>(nullptr), lin_dir_.data());
+    for (int k = 0; k < count_; ++k) {
+      const J& r = out[static_cast<std::size_t>(k)];
+      residuals[k] = r.a;
+      if (jacobians[0]) {
+        double* row = jacobians[0] + static_cast<std::ptrdiff_t>(k) * np;
+        std::fill(row, row + np, 0.0);
+        for (int j = 0; j < nf; ++j) row[free_[static_cast<std::size_t>(j)]] = r.v[j];
+      }
+      if (jacobians[1])
+        for (int i = 0; i < ns; ++i) jacobians[1][static_cast<std::ptrdiff_t>(k) * ns + i] = r.v[nf + i];
+    }
+    return true;
+  }
+
+ private:
+  const FitContext* ctx_;
+  int start_, count_;
+  std::vector<int> free_;           // the free parameters, in Jet-direction order
+  std::array<int, 6> lin_dir_{};    // Jet direction of each linear parameter (-1: held)
 };
 
 // A segment and the continuity of its end state with the next segment's start (multiple shooting).
@@ -326,9 +394,14 @@ void check_log(const TimeLog& log, const TimeFitOptions& o) {
 // One residual block per segment: the model simulated from the segment's state (the AutoDiff cost); with
 // continuity_weight > 0, adjacent segments are linked. with_loss: the robust loss of the options.
 void add_segment_blocks(ceres::Problem& problem, const FitContext& ctx, ShootingProblem& sp, double* p,
-                        const TimeFitOptions& options, bool with_loss) {
+                        const TimeFitOptions& options, bool with_loss, const std::vector<bool>* held) {
   const int nseg = static_cast<int>(sp.starts.size());
   const std::size_t ns = static_cast<std::size_t>(sp.state_size);
+  std::vector<int> free;
+  if (held)
+    for (int i = 0; i < parameter_count(options.model); ++i)
+      if (!(*held)[static_cast<std::size_t>(i)]) free.push_back(i);
+  const int width = static_cast<int>(free.size()) + sp.state_size;
   for (int s = 0; s < nseg; ++s) {
     const std::size_t u = static_cast<std::size_t>(s);
     const int a = sp.starts[u], c = sp.counts[u];
@@ -337,7 +410,15 @@ void add_segment_blocks(ceres::Problem& problem, const FitContext& ctx, Shooting
     using ceres::DYNAMIC;
     constexpr PlantModel R = PlantModel::kRigid, W = PlantModel::kTwoMass;
     ceres::CostFunction* cost = nullptr;
-    if (options.model == R && linked)
+    if (held && !linked && options.model == R && width <= 6)
+      cost = new FreeSegmentCost<R, 6>(&ctx, a, c, free);
+    else if (held && !linked && options.model == R)
+      cost = new FreeSegmentCost<R, 8>(&ctx, a, c, free);
+    else if (held && !linked && options.model == W && width <= 10)
+      cost = new FreeSegmentCost<W, 10>(&ctx, a, c, free);
+    else if (held && !linked && options.model == W)
+      cost = new FreeSegmentCost<W, 15>(&ctx, a, c, free);
+    else if (options.model == R && linked)
       cost = new AutoDiffCostFunction<LinkedSegmentCost<R>, DYNAMIC, 6, 2, 2>(new LinkedSegmentCost<R>{&ctx, a, c}, c + 2);
     else if (options.model == R)
       cost = new AutoDiffCostFunction<SegmentCost<R>, DYNAMIC, 6, 2>(new SegmentCost<R>{&ctx, a, c}, c);
@@ -402,7 +483,10 @@ std::vector<double> shooting_residual(const TimeLog& log, const TimeFitOptions& 
   std::vector<double> pv = p;
   ceres::Problem::Options po;
   ceres::Problem cp(po);
-  add_segment_blocks(cp, ctx, sp, pv.data(), options, false);
+  // Every parameter free: the fit's own cost function (FreeSegmentCost), which the tests check against central
+  // differences.
+  const std::vector<bool> none_held(p.size(), false);
+  add_segment_blocks(cp, ctx, sp, pv.data(), options, false, &none_held);
   ceres::Problem::EvaluateOptions eopt;
   eopt.parameter_blocks.push_back(pv.data());
   for (std::size_t s = 0; s < sp.starts.size(); ++s)

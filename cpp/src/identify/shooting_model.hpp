@@ -36,8 +36,10 @@ void state_at(const FitContext& ctx, const double* p, const double* x0, int star
 // The log's lengths, finiteness and minimum length for these options (std::invalid_argument naming the sample).
 void check_log(const TimeLog& log, const TimeFitOptions& o);
 // One residual block per segment (AutoDiff), linked to the next one with continuity_weight > 0; with_loss: the
-// options' robust loss.
+// options' robust loss. held (one entry per parameter, or nullptr): the parameters the solve holds constant; an
+// unlinked segment then differentiates along the free parameters only (FreeSegmentCost, the same derivatives).
 void add_segment_blocks(ceres::Problem& problem, const FitContext& ctx, ShootingProblem& sp, double* p,
-                        const TimeFitOptions& options, bool with_loss = true);
+                        const TimeFitOptions& options, bool with_loss = true,
+                        const std::vector<bool>* held = nullptr);
 
 }  // namespace servobench::identify::detail
