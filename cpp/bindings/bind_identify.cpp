@@ -9,6 +9,7 @@
 
 #include "param_class.hpp"
 #include "arrays.hpp"
+#include "result_table.hpp"
 #include "flag.hpp"
 #include "servobench/common/validate.hpp"
 #include "servobench/identify/frequency_fit.hpp"
@@ -55,13 +56,12 @@ py::list estimates(const std::vector<identify::ParameterEstimate>& ps) {
 }
 
 py::dict summary(const identify::FitSummary& s) {
-  return py::dict(py::arg("converged") = s.converged, py::arg("termination") = s.termination,
-                  py::arg("iterations") = s.iterations, py::arg("initial_cost") = s.initial_cost,
-                  py::arg("final_cost") = s.final_cost, py::arg("seconds") = s.seconds,
-                  py::arg("residuals") = s.residuals, py::arg("free_parameters") = s.free_parameters,
-                  py::arg("nuisance_parameters") = s.nuisance_parameters, py::arg("residual_rms") = s.residual_rms,
-                  py::arg("nrmse") = s.nrmse, py::arg("not_identifiable") = s.not_identifiable,
-                  py::arg("report") = s.report);
+  py::dict d(py::arg("termination") = s.termination, py::arg("initial_cost") = s.initial_cost,
+             py::arg("final_cost") = s.final_cost, py::arg("residuals") = s.residuals,
+             py::arg("free_parameters") = s.free_parameters, py::arg("nuisance_parameters") = s.nuisance_parameters,
+             py::arg("not_identifiable") = s.not_identifiable, py::arg("report") = s.report);
+  put_described(d, s);  // nrmse ... seconds, named as FitSummary::describe() names them (decision OQ6)
+  return d;
 }
 
 // An iteration callback (iteration, cost) -> bool|None, the GIL taken for the call; empty if None.
@@ -102,48 +102,31 @@ identify::TimeLog time_log(const py::handle& torque_nm, const py::handle& measur
   return log;
 }
 
-// TimeFitOptions from keyword arguments named after its fields (the others at their defaults).
+// TimeFitOptions from keyword arguments named after its described fields (the others at their defaults), through
+// the bound parameter class: the names, whole-number checks and ranges are the struct's (describe(), validate();
+// decision OQ2). `loss` is chosen by name.
 identify::TimeFitOptions options_from(const std::string& model, const py::kwargs& kw) {
-  identify::TimeFitOptions o;
-  o.model = model_of(model);
-  auto whole = [&](const char* name, int& field, double lo, double hi) {
-    if (!kw.contains(name)) return;
-    const double v = kw[name].cast<double>();
-    check_integer("TimeFitOptions", name, v, lo, hi);
-    field = static_cast<int>(v);
-  };
-  auto real = [&](const char* name, double& field) {
-    if (kw.contains(name)) field = kw[name].cast<double>();
-  };
-  static const char* known[] = {"segment_samples", "initial_segment_samples", "min_segment_samples", "edge_samples",
-                                "direction_window", "rest_threshold", "substeps", "current_bw_hz",
-                                "stribeck_exponent", "measurement_scale", "num_threads", "continuity_weight", "loss",
-                                "loss_scale", "max_iterations", "max_relative_std_error", "hold_stribeck_first"};
+  py::dict fields;
+  std::string loss = "none";
   for (const auto& item : kw) {
     const std::string k = py::str(item.first);
-    bool ok = false;
-    for (const char* n : known) ok = ok || k == n;
-    if (!ok) throw py::type_error("unexpected option '" + k + "'");
+    if (k == "loss") {
+      loss = item.second.cast<std::string>();
+    } else {
+      fields[item.first] = item.second;
+    }
   }
-  whole("segment_samples", o.segment_samples, 10, 100000);
-  whole("initial_segment_samples", o.initial_segment_samples, 10, 100000);
-  whole("min_segment_samples", o.min_segment_samples, 3, o.segment_samples);
-  whole("edge_samples", o.edge_samples, 0, 1000);
-  whole("direction_window", o.direction_window, 2, 1000);
-  whole("substeps", o.substeps, 1, 1000);
-  whole("num_threads", o.num_threads, 1, 64);
-  real("rest_threshold", o.rest_threshold);
-  real("current_bw_hz", o.current_bw_hz);
-  real("stribeck_exponent", o.stribeck_exponent);
-  real("measurement_scale", o.measurement_scale);
-  real("continuity_weight", o.continuity_weight);
-  real("loss_scale", o.loss_scale);
-  real("max_relative_std_error", o.max_relative_std_error);
-  whole("max_iterations", o.max_iterations, 1, 10000);
-  if (kw.contains("loss")) o.loss = loss_of(kw["loss"].cast<std::string>());
-  if (kw.contains("hold_stribeck_first")) o.hold_stribeck_first = kw["hold_stribeck_first"].cast<bool>();
+  identify::TimeFitOptions o = py::type::of<identify::TimeFitOptions>()(**fields).cast<identify::TimeFitOptions>();
+  o.model = model_of(model);
+  o.loss = loss_of(loss);
   o.validate();
   return o;
+}
+
+identify::MechanicsIO mechanics_io_from(const py::handle& io) {
+  if (py::isinstance<identify::MechanicsIO>(io)) return io.cast<identify::MechanicsIO>();
+  // a dict of its described fields (servobench.frequency_fit.MechanicsIO._core_dict)
+  return py::type::of<identify::MechanicsIO>()(**io.cast<py::dict>()).cast<identify::MechanicsIO>();
 }
 
 }  // namespace
@@ -152,6 +135,18 @@ void bind_identify(py::module_& m) {
   // Described once in its C++ struct (decision OP3); fit_frequency reads defaults, units and docs from it.
   ParamClass<identify::FrequencyFitOptions>(m, "FrequencyFitOptions",
                                             "Options of the frequency-response fit (identify/frequency_fit.hpp).")
+      .described()
+      .finish();
+  m.attr("FIT_SUMMARY_FIELDS") = described_fields<identify::FitSummary>();  // servobench.identify.IdentifiedPlant
+  // Described once in their C++ structs (decisions OQ2, OQ3): fit_time and MechanicsIO read them.
+  ParamClass<identify::TimeFitOptions>(m, "TimeFitOptions",
+                                       "Options of the time-domain fit (identify/time_fit.hpp); the model and the "
+                                       "loss are chosen by name.")
+      .described()
+      .finish();
+  ParamClass<identify::MechanicsIO>(m, "MechanicsIO",
+                                    "What surrounds the mechanics in a measured response without a servobench Axis "
+                                    "(identify/frequency_fit.hpp).")
       .described()
       .finish();
   m.def(
@@ -291,15 +286,7 @@ void bind_identify(py::module_& m) {
         if (with_axis) {
           config = axis.cast<const machine::Axis&>().config();
         } else {
-          const py::dict d = io.cast<py::dict>();
-          mio.sample_period_s = d["sample_period_s"].cast<double>();
-          mio.delay_samples = d["delay_samples"].cast<int>();
-          mio.torque_per_input = d["torque_per_input"].cast<double>();
-          mio.output_per_rad = d["output_per_rad"].cast<double>();
-          mio.speed_output = d["speed_output"].cast<bool>();
-          mio.on_load = d["on_load"].cast<bool>();
-          mio.current_bw_hz = d["current_bw_hz"].cast<double>();
-          mio.validate();
+          mio = mechanics_io_from(io);
         }
         try {
           py::gil_scoped_release release;

@@ -84,7 +84,13 @@ void bind_tuning(py::module_& m) {
                                      "Options of the Nyquist criterion on frequency-response data (tuning/margins.hpp).")
       .described()
       .finish();
-  m.attr("MARGINS_FIELDS") = described_fields<tuning::Margins>();  // servobench.margins.Margins reads it
+  ParamClass<tuning::LoopOptions>(m, "LoopOptions",
+                                  "What is in the loop during a measurement or an analytic response "
+                                  "(tuning/loop_response.hpp; decisions B1-B2).")
+      .described()
+      .finish();
+  m.attr("MARGINS_FIELDS") = described_fields<tuning::Margins>();
+  m.attr("RELAY_TUNE_FIELDS") = described_fields<tuning::RelayTuneResult>();  // servobench.autotune.RelayTuneResult  // servobench.margins.Margins reads it
   m.attr("MODEL_TUNE_NOTCH_Q") = py::tuple(py::cast(tuning::ModelTuneOptions{}.notch_q_set));  // its default
   ParamClass<tuning::ModelTuneOptions>(m, "ModelTuneOptions",
                                        "Options of the model-based PID and notch design (tuning/model_tune.hpp).")
@@ -235,6 +241,9 @@ void bind_tuning(py::module_& m) {
         d["error_pulse"] = to_array(r.error_pulse);
         d["output_v"] = to_array(r.output_v);
         d["mean"] = pid_dict(r.mean);
+        py::dict figures;
+        put_described(figures, r);  // kp ... sampling_time_s, as RelayTuneResult::describe() names them (OQ6)
+        d["figures"] = figures;
         d["kp_spread"] = r.kp_spread;
         d["ki_spread"] = r.ki_spread;
         d["kd_spread"] = r.kd_spread;

@@ -22,8 +22,9 @@ import dataclasses
 from dataclasses import dataclass
 from typing import Any, Callable
 
-__all__ = ["OptionField", "PythonDefault", "cpp_options", "described_result", "option_fields", "options_doc",
-           "result_fields", "takes_options"]
+__all__ = ["OptionField", "PythonDefault", "cpp_options", "default", "described_result", "described_options",
+           "documents_options", "option_fields",
+           "options_doc", "result_fields", "takes_options"]
 
 
 @dataclass(frozen=True)
@@ -47,10 +48,29 @@ class PythonDefault:
     doc: str
 
 
-def option_fields(options_class) -> tuple[OptionField, ...]:
+def option_fields(options_class, only=None, rename: dict[str, str] | None = None) -> tuple[OptionField, ...]:
     """The option table of a bound C++ options class (its ``FIELD_INFO``). A whole-number field has type "int"
-    (the class itself shows it as a float, like every number of a parameter class, decision Y2)."""
-    return tuple(OptionField(**d) for d in options_class.FIELD_INFO)
+    (the class itself shows it as a float, like every number of a parameter class, decision Y2). `only`: the
+    fields a Python function takes (in the struct's order; None: all); `rename`: C++ name -> the Python keyword
+    that has long named it (decision OQ2)."""
+    rename = rename or {}
+    fields = [OptionField(**d) for d in options_class.FIELD_INFO]
+    if only is not None:
+        only = list(only)
+        missing = set(only) - {f.name for f in fields}
+        if missing:
+            raise TypeError(f"{options_class.__name__} has no field {sorted(missing)}")
+        fields = [f for f in fields if f.name in only]
+    return tuple(dataclasses.replace(f, name=rename.get(f.name, f.name),
+                                     default=int(f.default) if f.type == "int" else f.default) for f in fields)
+
+
+def default(options_class, name: str):
+    """The default of one option, read from the default-constructed C++ struct (an int field as an int)."""
+    for f in option_fields(options_class):
+        if f.name == name:
+            return f.default
+    raise TypeError(f"{options_class.__name__} has no field {name!r}")
 
 
 _ABS = re.compile(r"(?<![\w`])(\|[^|\n]+?\|)(?![\w`])")
@@ -67,24 +87,59 @@ def _entry(f: OptionField, note: str = "") -> str:
     return f"{f.name} ({f.type}{unit})\n" + textwrap.indent(textwrap.fill(text, 112), "    ")
 
 
-def options_doc(options_class, python_defaults: dict | None = None) -> str:
-    """The "Parameters" entries of an options class, numpydoc style, from its table."""
+def options_doc(options_class, python_defaults: dict | None = None, only=None,
+                rename: dict[str, str] | None = None, units: dict[str, str] | None = None,
+                notes: dict[str, str] | None = None) -> str:
+    """The "Parameters" entries of an options class, numpydoc style, from its table (`only`, `rename` as in
+    :func:`option_fields`; `units`: Python name -> the unit a Python caller gives it in, where the struct's is
+    relative, e.g. "counts" for the time fit's "scale"; `notes`: Python name -> what the Python function adds)."""
     python_defaults = python_defaults or {}
+    units = units or {}
+    notes = notes or {}
     out = []
-    for f in option_fields(options_class):
+    for f in option_fields(options_class, only, rename):
+        if f.name in units:
+            f = dataclasses.replace(f, unit=units[f.name])
         pd = python_defaults.get(f.name)
-        out.append(_entry(f, pd.doc if pd is not None else ""))
+        extra = " ".join(x for x in (pd.doc if pd is not None else "", notes.get(f.name, "")) if x)
+        out.append(_entry(f, extra))
     return "\n".join(out)
 
 
-def takes_options(options_class, *, python_defaults: dict[str, PythonDefault] | None = None):
+def documents_options(options_class, *, only, rename: dict[str, str] | None = None,
+                      units: dict[str, str] | None = None, python_defaults: dict[str, PythonDefault] | None = None,
+                      notes: dict[str, str] | None = None, name: str | None = None):
+    """Decorator for a function that keeps its options in ``**options`` (its public signature, decision OP2): the
+    ``{options}`` placeholder of its docstring becomes the documentation of the struct's fields named in `only`
+    (under their Python names, `rename`), read from the struct; the function's explicit keyword defaults are read
+    with :func:`default` (decision OQ2)."""
+    def decorate(func: Callable) -> Callable:
+        if func.__doc__ and "{options}" in func.__doc__:
+            indent = func.__doc__.split("{options}")[0].rsplit("\n", 1)[-1]
+            body = options_doc(options_class, python_defaults, only, rename, units, notes)
+            func.__doc__ = func.__doc__.replace("{options}", textwrap.indent(body, indent)[len(indent):])
+        if name is not None:  # the public name of a function defined under a private one (decision OQ5)
+            func.__name__ = func.__qualname__ = name
+        func.options_class = options_class
+        func.options_only = tuple(only)
+        func.options_rename = dict(rename or {})
+        func.options_units = dict(units or {})
+        func.python_defaults = dict(python_defaults or {})
+        return func
+
+    return decorate
+
+
+def takes_options(options_class, *, python_defaults: dict[str, PythonDefault] | None = None, only=None,
+                  name: str | None = None):
     """Decorator: the function ``f(..., *, <its own keyword arguments>, **options)`` gets every field of
-    `options_class` as a keyword-only argument whose default is the struct's (or the declared
-    :class:`PythonDefault`), a ``__signature__`` saying so, and the ``{options}`` placeholder of its docstring
-    replaced by the fields' documentation (unit, range, meaning). Unknown keywords raise TypeError. The function
-    receives every option by keyword, filled with its default."""
+    `options_class` (or those named in `only`) as a keyword-only argument whose default is the struct's (or the
+    declared :class:`PythonDefault`), a ``__signature__`` saying so, and the ``{options}`` placeholder of its
+    docstring replaced by the fields' documentation (unit, range, meaning). Unknown keywords raise TypeError. The
+    function receives every option by keyword, filled with its default. `name`: the public name of a function
+    defined under a private one (its typed signature for static checkers is generated beside it, decision OQ5)."""
     python_defaults = dict(python_defaults or {})
-    fields = option_fields(options_class)
+    fields = option_fields(options_class, only)
     names = {f.name for f in fields}
     unknown = set(python_defaults) - names
     if unknown:
@@ -101,7 +156,7 @@ def takes_options(options_class, *, python_defaults: dict[str, PythonDefault] | 
         opts = []
         for f in fields:
             pd = python_defaults.get(f.name)
-            default = pd.value if pd is not None else (int(f.default) if f.type == "int" else f.default)
+            default = pd.value if pd is not None else f.default
             annotation = f.type if pd is None else f"{f.type} | {type(pd.value).__name__ if pd.value is not None else 'None'}"
             opts.append(inspect.Parameter(f.name, inspect.Parameter.KEYWORD_ONLY, default=default,
                                           annotation=annotation))
@@ -114,11 +169,16 @@ def takes_options(options_class, *, python_defaults: dict[str, PythonDefault] | 
             return func(*bound.args, **bound.kwargs)
 
         wrapper.__signature__ = new_sig
+        if name is not None:
+            wrapper.__name__ = name
+            wrapper.__qualname__ = func.__qualname__.rsplit(".", 1)[0] + "." + name if "." in func.__qualname__ \
+                else name
         if func.__doc__ and "{options}" in func.__doc__:
             indent = func.__doc__.split("{options}")[0].rsplit("\n", 1)[-1]
-            body = textwrap.indent(options_doc(options_class, python_defaults), indent)[len(indent):]
+            body = textwrap.indent(options_doc(options_class, python_defaults, only), indent)[len(indent):]
             wrapper.__doc__ = func.__doc__.replace("{options}", body)
         wrapper.options_class = options_class
+        wrapper.options_only = None if only is None else tuple(only)
         wrapper.python_defaults = python_defaults
         return wrapper
 
@@ -131,6 +191,8 @@ def cpp_options(options_class, values: dict, python_defaults: dict[str, PythonDe
     python_defaults = python_defaults or {}
     kw = {}
     for f in option_fields(options_class):
+        if f.name not in values:  # an option the function does not take: the struct's default
+            continue
         v = values[f.name]
         pd = python_defaults.get(f.name)
         if pd is not None and (v is pd.value or (isinstance(v, str) and v == pd.value)):
@@ -146,11 +208,12 @@ def result_fields(table) -> tuple[OptionField, ...]:
 
 
 @typing.dataclass_transform(frozen_default=True)
-def described_result(table):
+def described_result(table, *, lead: tuple[str, ...] = ()):
     """Class decorator for a frozen result dataclass whose single-figure fields are described in C++: the table's
-    fields (names, types, units and docs read from it) come first, as required fields carrying ``unit`` and ``doc``
-    in their ``metadata``, then the class's own annotated fields; the ``{fields}`` placeholder of the docstring is
-    replaced by their documentation (decision OP6)."""
+    fields (names, types, units and docs read from it) come first -- after the class's own fields named in `lead`,
+    which keeps a constructor's positional order (decision OQ6) -- as required fields carrying ``unit`` and ``doc``
+    in their ``metadata``, then the class's other annotated fields; the ``{fields}`` placeholder of the docstring
+    is replaced by their documentation (decision OP6)."""
     fields = result_fields(table)
 
     def decorate(cls):
@@ -158,13 +221,58 @@ def described_result(table):
         clash = {f.name for f in fields} & set(own)
         if clash:
             raise TypeError(f"{cls.__name__} retypes fields described in C++: {sorted(clash)}")
-        cls.__annotations__ = {**{f.name: f.type for f in fields}, **own}
+        first = {name: own.pop(name) for name in lead}
+        cls.__annotations__ = {**first, **{f.name: f.type for f in fields}, **own}
         for f in fields:
             setattr(cls, f.name, dataclasses.field(metadata={"unit": f.unit, "doc": f.doc}))
         if cls.__doc__ and "{fields}" in cls.__doc__:
             indent = cls.__doc__.split("{fields}")[0].rsplit("\n", 1)[-1]
             body = textwrap.indent("\n".join(_entry(f) for f in fields), indent)[len(indent):]
             cls.__doc__ = cls.__doc__.replace("{fields}", body)
+        return dataclasses.dataclass(frozen=True)(cls)
+
+    return decorate
+
+
+@typing.dataclass_transform(frozen_default=True)
+def described_options(options_class, *, python_defaults: dict[str, PythonDefault] | None = None,
+                      python_fields: dict[str, str] | None = None):
+    """Class decorator for a frozen Python dataclass of options whose fields are those of a bound C++ options
+    struct: names, types, defaults (or the declared :class:`PythonDefault` stand-ins), units and docs read from its
+    table, in the struct's order, ``unit``/``doc``/``cpp_default`` in each field's metadata; `python_fields`: C++
+    field -> the class's own annotated field that takes its place (a Python spelling of the same quantity, e.g.
+    counts_per_rev for output_per_rad). The ``{fields}`` placeholder of the docstring is replaced by their
+    documentation (decision OQ3)."""
+    python_defaults = dict(python_defaults or {})
+    python_fields = dict(python_fields or {})
+    fields = option_fields(options_class)
+
+    def decorate(cls):
+        own = dict(cls.__dict__.get("__annotations__", {}))
+        table = {f.name for f in fields}
+        clash = table & set(own)
+        if clash:
+            raise TypeError(f"{cls.__name__} retypes fields described in C++: {sorted(clash)}")
+        annotations = {}
+        for f in fields:
+            if f.name in python_fields:
+                name = python_fields[f.name]
+                annotations[name] = own.pop(name)
+                continue
+            pd = python_defaults.get(f.name)
+            annotations[f.name] = f.type if pd is None else f"{f.type} | None"
+            setattr(cls, f.name, dataclasses.field(
+                default=f.default if pd is None else pd.value,
+                metadata={"unit": f.unit, "doc": f.doc, "cpp_default": f.default}))
+        cls.__annotations__ = {**annotations, **own}
+        if cls.__doc__ and "{fields}" in cls.__doc__:
+            indent = cls.__doc__.split("{fields}")[0].rsplit("\n", 1)[-1]
+            entries = [_entry(f, python_defaults[f.name].doc if f.name in python_defaults else "")
+                       for f in fields if f.name not in python_fields]
+            cls.__doc__ = cls.__doc__.replace("{fields}", textwrap.indent("\n".join(entries), indent)[len(indent):])
+        cls.options_class = options_class
+        cls.python_defaults = python_defaults
+        cls.python_fields = python_fields
         return dataclasses.dataclass(frozen=True)(cls)
 
     return decorate

@@ -22,7 +22,7 @@ import sys
 
 import numpy as np
 
-from . import _serialise
+from . import _core, _serialise
 
 EXIT_OK, EXIT_FAILED, EXIT_USAGE = 0, 1, 2
 
@@ -487,7 +487,7 @@ def cmd_tune(args) -> int:
         swept, _ = _load(args.axis)
         res.apply(swept, force=True, verify=False)
         meas = fr.sine_sweep(swept, start_hz=args.start_hz, end_hz=f_hi, amplitude_pulse=args.amplitude_pulse,
-                             points=args.points, update_s=0.1, progress=_progress(args))
+                             points=args.points, progress=_progress(args))  # update_s: the struct's
         report["after"]["sweep"] = {"status": meas.status, "message": meas.message, "points": len(meas),
                                     "band_hz": [args.start_hz, f_hi],
                                     "amplitude_pulse": "auto" if args.amplitude_pulse is None else args.amplitude_pulse,
@@ -741,6 +741,17 @@ class _Formatter(argparse.ArgumentDefaultsHelpFormatter, argparse.RawDescription
     pass
 
 
+def _described(group, flag: str, options_class, name: str, help_prefix: str = ""):
+    """An option whose default, type, unit and meaning are those of a C++ options struct (its describe() table,
+    read through the binding; decision OQ4): nothing retyped here."""
+    from . import _options
+
+    f = next(f for f in _options.option_fields(options_class) if f.name == name)
+    unit = f" [{f.unit}]" if f.unit else ""
+    text = (help_prefix + f.doc + unit).replace("%", "%%")  # argparse formats help with %
+    group.add_argument(flag, type=int if f.type == "int" else float, default=f.default, help=text)
+
+
 def build_parser() -> argparse.ArgumentParser:
     from . import __version__
 
@@ -789,15 +800,14 @@ def build_parser() -> argparse.ArgumentParser:
     b.add_argument("axis", metavar="AXIS", help="axis file (.toml or .json)")
     b.add_argument("--kind", choices=list(_KIND), default="open",
                    help="response plotted: plant Y/U (pulse/count), open loop Y/E, closed loop Y/R")
-    b.add_argument("--start-hz", type=float, default=10.0, help="first frequency, Hz")
-    b.add_argument("--end-hz", type=float, default=100.0, help="last frequency, Hz (< Nyquist = 1/(2 Ts))")
-    b.add_argument("--points", type=int, default=100, help="log-spaced frequencies, 2..100000")
+    _described(b, "--start-hz", _core.SineSweepOptions, "start_hz")
+    _described(b, "--end-hz", _core.SineSweepOptions, "end_hz")
+    _described(b, "--points", _core.SineSweepOptions, "points")
     b.add_argument("--amplitude-pulse", type=float, default=None,
                    help="sine amplitude added to the command, pulse (the manual's example: 300); default: chosen per "
                         "point to keep the DAC and the drive out of saturation and above quantisation")
-    b.add_argument("--update-s", type=float, default=0.1, help="time per frequency point, s")
-    b.add_argument("--deviation-limit-pulse", type=float, default=0.0,
-                   help="|error| above this ends the sweep, servo off, pulse (0 = off)")
+    _described(b, "--update-s", _core.SineSweepOptions, "update_s")
+    _described(b, "--deviation-limit-pulse", _core.SineSweepOptions, "deviation_limit_pulse")
     b.add_argument("--feedforward", action="store_true", help="keep the feed-forward in the loop (no margins then)")
     b.add_argument("--analytic", action="store_true",
                    help="compute the analytic response of the linear model instead of measuring (instant)")
@@ -813,16 +823,16 @@ def build_parser() -> argparse.ArgumentParser:
     t.add_argument("--method", choices=["model", "relay"], default="model",
                    help="model: design from the axis's analytic plant (servobench.model_based_tune); relay: the "
                         "ADLINK relay experiment (needs a velocity-mode drive)")
-    t.add_argument("--phase-margin-deg", type=float, default=60.0, help="target phase margin, deg (10..89)")
+    _described(t, "--phase-margin-deg", _core.ModelTuneOptions, "phase_margin_deg")
     m = t.add_argument_group("model-based tuning")
-    m.add_argument("--alpha", type=float, default=4.0, help="Ti = alpha * Td (1..100)")
-    m.add_argument("--min-gain-margin-db", type=float, default=10.0, help="lowest gain margin accepted, dB")
-    m.add_argument("--max-ms", type=float, default=2.0, help="highest peak sensitivity accepted")
+    _described(m, "--alpha", _core.ModelTuneOptions, "alpha")
+    _described(m, "--min-gain-margin-db", _core.ModelTuneOptions, "min_gain_margin_db")
+    _described(m, "--max-ms", _core.ModelTuneOptions, "max_ms")
     m.add_argument("--no-notch", action="store_true", help="do not try a notch at the plant's resonance")
     r = t.add_argument_group("relay tuning (ADLINK manual L1842-1847 defaults)")
-    r.add_argument("--amplitude-v", type=float, default=1.0, help="relay output +-d, V")
-    r.add_argument("--hysteresis-pulse", type=float, default=50.0, help="relay hysteresis, pulse")
-    r.add_argument("--data-length", type=int, default=200, help="gain sets (limit cycles) averaged")
+    _described(r, "--amplitude-v", _core.RelayTuneOptions, "amplitude_v")
+    _described(r, "--hysteresis-pulse", _core.RelayTuneOptions, "hysteresis_pulse")
+    _described(r, "--data-length", _core.RelayTuneOptions, "data_length")
     r.add_argument("--rule", choices=["phase_margin", "ziegler_nichols", "tyreus_luyben"], default="phase_margin",
                    help="gains from the experiment by this rule")
     v = t.add_argument_group("verification")

@@ -17,9 +17,9 @@ kg*m^2, stiffness N*m/rad, damping and viscous friction N*m*s/rad, delays s.
 
 from __future__ import annotations
 
+import dataclasses
 import math
-from dataclasses import dataclass
-from typing import Iterable
+from typing import TYPE_CHECKING, Iterable
 
 import numpy as np
 
@@ -30,39 +30,38 @@ from .identify import IdentificationError, IdentifiedPlant, _estimates, _model, 
 __all__ = ["MechanicsIO", "fit_frequency", "frequency_input"]
 
 
-@dataclass(frozen=True)
+@_opts.described_options(
+    _core.MechanicsIO,
+    python_defaults={"sample_period_s": _opts.PythonDefault(None, 0.0, "None (default): continuous time.")},
+    python_fields={"output_per_rad": "counts_per_rev"})
 class MechanicsIO:
     """What surrounds the mechanics in a measured response, when there is no servobench Axis.
 
     The model fitted is ``output_per_rad * C (sI - A)^-1 B * torque_per_input`` in continuous time, or with the
     exact zero-order hold over `sample_period_s` and `delay_samples` whole samples of delay when sampled:
     (A, B) the current loop (first order at current_bw_hz; inf: none) in series with the mechanics, C the motor's
-    (or, `on_load`, the load's) angle -- or speed with `speed_output`.
+    (or, `on_load`, the load's) angle -- or speed with `speed_output`. The fields, their defaults, units and docs
+    are those of the C++ struct (identify/frequency_fit.hpp, ``servobench._core.MechanicsIO``), read from it
+    (decision OQ3):
 
-    sample_period_s
-        s; None: a continuous-time response (an analyser that removed its sampling, a model); > 0: the response of a
-        sampled loop whose torque is held over each sample.
-    delay_samples
-        whole samples between the input and the output (0..1000; a servobench axis has 1: the output delay).
-        A further non-integer delay is fitted with ``fit_delay=True``.
-    torque_per_input
-        N*m per unit of the response's input: 1 for a torque command in N*m, kt x A/V for DAC volts
-        (:func:`servobench.torque_per_volt`), x 10/32767 more for DAC counts. Non-zero (negative: an inverted output).
-    counts_per_rev
-        the output is in encoder counts (pulse) with this many counts per revolution; None: rad (or rad/s).
-    speed_output, on_load
-        the output is a speed, not an angle; it is measured on the load side (two-mass), not the motor.
-    current_bw_hz
-        the drive's current-loop bandwidth, Hz (inf: ideal).
+    {fields}
+    counts_per_rev (float | None, counts/rev)
+        the output is in encoder counts (pulse) with this many counts per revolution (output_per_rad =
+        counts_per_rev / (2 pi)); None (default): rad (or rad/s), output_per_rad = 1.
     """
 
-    sample_period_s: float | None = None
-    delay_samples: int = 0
-    torque_per_input: float = 1.0
-    counts_per_rev: float | None = None
-    speed_output: bool = False
-    on_load: bool = False
-    current_bw_hz: float = math.inf
+    # The fields are read at import from identify::MechanicsIO::describe() (counts_per_rev in output_per_rad's
+    # place); static type checkers read the block below (test_options_once checks it against the table).
+    if TYPE_CHECKING:
+        sample_period_s: float | None = None
+        delay_samples: int = 0
+        torque_per_input: float = 1.0
+        counts_per_rev: float | None = None
+        speed_output: bool = False
+        on_load: bool = False
+        current_bw_hz: float = math.inf
+    else:
+        counts_per_rev: float | None = None
 
     def __post_init__(self):
         o = "MechanicsIO"
@@ -83,6 +82,7 @@ class MechanicsIO:
         _checks.flag(o, "on_load", self.on_load)
         if isinstance(self.current_bw_hz, (bool, np.bool_)) or not (float(self.current_bw_hz) > 0):
             raise ValueError(f"MechanicsIO.current_bw_hz = {self.current_bw_hz} must be > 0 Hz (inf: no current loop)")
+        self._cpp()  # and the struct's own validate()
 
     @classmethod
     def of_axis(cls, axis) -> "MechanicsIO":
@@ -98,11 +98,13 @@ class MechanicsIO:
                    current_bw_hz=axis.drive.current_bw_hz)
 
     def _core_dict(self) -> dict:
-        return {"sample_period_s": 0.0 if self.sample_period_s is None else float(self.sample_period_s),
-                "delay_samples": int(self.delay_samples), "torque_per_input": float(self.torque_per_input),
-                "output_per_rad": 1.0 if self.counts_per_rev is None else float(self.counts_per_rev) / (2 * math.pi),
-                "speed_output": bool(self.speed_output), "on_load": bool(self.on_load),
-                "current_bw_hz": float(self.current_bw_hz)}
+        values = {f.name: getattr(self, f.name) for f in dataclasses.fields(self) if f.name != "counts_per_rev"}
+        values["output_per_rad"] = 1.0 if self.counts_per_rev is None else float(self.counts_per_rev) / (2 * math.pi)
+        return {k: float(v) if isinstance(v, np.floating) else v for k, v in values.items()}
+
+    def _cpp(self):
+        """The validated C++ struct (``servobench._core.MechanicsIO``) this describes."""
+        return _opts.cpp_options(_core.MechanicsIO, self._core_dict(), type(self).python_defaults)
 
 
 _BODE_UNITS = {"hz": ("freq", 1.0), "rad/s": ("freq", 1 / (2 * math.pi)), "db": ("gain", "db"),
@@ -158,8 +160,8 @@ def frequency_input(response):
     return np.asarray(f, float), np.asarray(g, complex), None
 
 
-@_opts.takes_options(_core.FrequencyFitOptions)
-def fit_frequency(response, axis=None, model: str = "rigid", *, io: MechanicsIO | None = None, guess: dict,
+@_opts.takes_options(_core.FrequencyFitOptions, name="fit_frequency")
+def _fit_frequency(response, axis=None, model: str = "rigid", *, io: MechanicsIO | None = None, guess: dict,
                   fixed: Iterable[str] = (), bounds: dict | None = None, weight=None, strict: bool = True,
                   progress=None, **options) -> IdentifiedPlant:
     """Fits the linear mechanics to a measured frequency response: a servobench :class:`FrequencyResponse` (its
@@ -201,10 +203,21 @@ def fit_frequency(response, axis=None, model: str = "rigid", *, io: MechanicsIO 
     r = _core.identify_frequency(core_axis, f.astype(float), g.astype(complex), weight=w, model=model,
                                  initial=initial, fixed=hold, lower=lower, upper=upper,
                                  options=_opts.cpp_options(_core.FrequencyFitOptions, options), progress=progress,
-                                 io=None if io is None else io._core_dict())
+                                 io=None if io is None else io._cpp())
     s = r["summary"]
     if strict and s["not_identifiable"]:
         raise IdentificationError("the response cannot determine: " + "; ".join(s["not_identifiable"]))
     return IdentifiedPlant(model, _estimates(r["parameters"]), s["nrmse"], s["residual_rms"], s["converged"],
                            s["iterations"], s["seconds"], s["report"], list(s["not_identifiable"]), 2.0,
                            freq_hz=f, response=g, predicted_response=r["predicted"])
+
+
+# typed signature of fit_frequency (generated by scripts/option_signatures.py from the runtime one; decision OQ5)
+if TYPE_CHECKING:
+    def fit_frequency(response, axis=None, model: str = 'rigid', *, fit_delay: bool = False, delay_s: float = 0.0,
+                      max_iterations: int = 200, max_relative_std_error: float = 0.2, io: MechanicsIO | None = None,
+                      guess: dict, fixed: Iterable[str] = (), bounds: dict | None = None, weight=None,
+                      strict: bool = True, progress=None) -> IdentifiedPlant: ...
+else:
+    fit_frequency = _fit_frequency
+# end of the typed signature of fit_frequency

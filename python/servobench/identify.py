@@ -20,11 +20,12 @@ from __future__ import annotations
 import dataclasses
 import math
 from dataclasses import dataclass, field
-from typing import Iterable
+from typing import TYPE_CHECKING, Iterable
 
 import numpy as np
 
 from . import _checks, _core
+from . import _options as _opts
 from .experiment import _whole, excitation, run_experiment, torque_per_volt  # noqa: F401 (re-exported)
 from ._serialise import JsonResult, dataframe
 from .idlog import IdentificationLog
@@ -234,13 +235,16 @@ class IdentificationError(ValueError):
     """The data cannot determine a parameter (the message says which, and why)."""
 
 
-@dataclass(frozen=True)
+@_opts.described_result(_core.FIT_SUMMARY_FIELDS, lead=("model", "parameters"))
 class IdentifiedPlant(JsonResult):
     """The outcome of :func:`fit_time` or :func:`fit_frequency`.
 
-    model: 'rigid' or 'two_mass'; parameters: name -> :class:`Estimate`; nrmse: residual RMS over the measurement's
-    standard deviation (time) or relative complex error (frequency); residual_rms in the measurement's unit (rad, or
-    rad/s; nepers/radians for a frequency fit); summary: Ceres-style report; not_identifiable: what the data could not
+    model: 'rigid' or 'two_mass'; parameters: name -> :class:`Estimate`; then the solver's figures, read from the
+    C++ summary (identify/fit_report.hpp, decision OQ6):
+
+    {fields}
+
+    summary: Ceres-style report; not_identifiable: what the data could not
     determine; time-domain fits keep predicted/residual per sample (NaN outside the segments used); warnings: what the
     data say against the model (:attr:`misfit`); segment_states: a time fit's fitted start state of every shooting
     segment (segments x state size: angle rad and speed rad/s of each mass, the fit's internal layout), where its
@@ -249,11 +253,14 @@ class IdentifiedPlant(JsonResult):
 
     model: str
     parameters: dict
-    nrmse: float
-    residual_rms: float
-    converged: bool
-    iterations: int
-    seconds: float
+    # nrmse ... seconds follow, read at import from identify::FitSummary::describe() with their units and docs;
+    # static type checkers read these names (test_options_once checks they match).
+    if TYPE_CHECKING:
+        nrmse: float
+        residual_rms: float
+        converged: bool
+        iterations: int
+        seconds: float
     summary: str
     not_identifiable: list
     stribeck_exponent: float = 2.0
@@ -444,9 +451,36 @@ def _estimates(ps) -> dict:
                                 p["at_bound"]) for p in ps}
 
 
-def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None = None, fixed: Iterable[str] = (),
-             bounds: dict | None = None, segment_samples: int | str = "auto", initial_segment_samples: int = 250,
-             n_starts: int = 3, seed: int = 0, dynamics_hz: float | None = None, max_relative_std_error: float = 0.2,
+# The options of the time fit a caller gives (identify/time_fit.hpp's TimeFitOptions, described once there; decision
+# OQ2); the others come from the log (substeps, current loop, measurement scale) or keep the struct's default. Two keep
+# the Python names they have long had: fit_time sets the measurement scale to one encoder count.
+_TIME_OPTIONS = ("segment_samples", "initial_segment_samples", "edge_samples", "direction_window", "rest_threshold",
+                 "stribeck_exponent", "loss_scale", "hold_stribeck_first", "max_iterations", "num_threads",
+                 "max_relative_std_error")
+_TIME_RENAME = {"rest_threshold": "rest_threshold_counts", "loss_scale": "loss_scale_counts"}
+_TIME_UNITS = {"rest_threshold_counts": "counts", "loss_scale_counts": "counts"}
+_TIME = {f.name: f.default for f in _opts.option_fields(_core.TimeFitOptions, _TIME_OPTIONS, _TIME_RENAME)}
+
+
+@_opts.documents_options(
+    _core.TimeFitOptions, only=_TIME_OPTIONS, rename=_TIME_RENAME, units=_TIME_UNITS,
+    python_defaults={"segment_samples": _opts.PythonDefault(
+        "auto", None, "'auto' (default): from the data -- the correlation time of the IDIM residual, 50..1000 "
+        "samples (:func:`servobench.oefit.segment_length`); the struct's default when the IDIM does not apply "
+        "(two-mass model, speed log, no reference and no dynamics_hz).")},
+    notes={"max_relative_std_error": "Standard errors are the segment-clustered sandwich for correlated residuals "
+           "(:func:`servobench.oefit.segment_sandwich`; with a robust loss Ceres' times sqrt(long-run / plain "
+           "variance) of the residual).",
+           "num_threads": "More threads evaluate the segments in parallel, but on the 5 s bench experiment they do "
+           "not help (measured 0.94x with 2 threads, issue 22: the segments are too short to pay for the "
+           "hand-over), and Ceres then sums the Schur complement in a varying order, so estimates differ from run "
+           "to run at ~1e-8 relative."},
+    name="fit_time")
+def _fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None = None, fixed: Iterable[str] = (),
+             bounds: dict | None = None, segment_samples: int | str = "auto",
+             initial_segment_samples: int = _TIME["initial_segment_samples"],
+             n_starts: int = 3, seed: int = 0, dynamics_hz: float | None = None,
+             max_relative_std_error: float = _TIME["max_relative_std_error"],
              strict: bool = True, progress=None, start_threads: int = 1, **options) -> IdentifiedPlant:
     """Fits a rigid or two-mass plant to a time log (Ceres; the GIL is released).
 
@@ -456,11 +490,7 @@ def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None
         (:func:`servobench.idim_ls`: inertia or mass, viscous and Coulomb friction, offset as load_nm). fixed: names held at their guess. bounds: name ->
         (low, high); the default keeps inertias and the stiffness above 1/1000 of their guess, frictions >= 0, and
         the Stribeck speed within two decades of its guess.
-    segment_samples, initial_segment_samples
-        the multiple-shooting segment length of the final stage and of the first (doubled in between).
-        'auto' (default): from the data -- the correlation time of the IDIM residual, 50..1000 samples
-        (:func:`servobench.oefit.segment_length`); 1000 when the IDIM does not apply (two-mass model, speed log,
-        no reference and no dynamics_hz).
+    {options}
     n_starts, seed
         the fit runs from the start and n_starts - 1 seeded perturbations of it (each free parameter x 1/1.5..1.5);
         the result is the converged start with the lowest residual, ``starts`` lists them all and
@@ -470,36 +500,16 @@ def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None
     dynamics_hz
         the closed loop's dynamics frequency for the IDIM (see :func:`servobench.idim_ls`); None: from the log.
     loss
-        'none', 'huber', 'soft_l1' or 'cauchy', departing from least squares at loss_scale_counts encoder counts.
-    direction_window, rest_threshold_counts, edge_samples
-        the segmentation into one-way motion: the direction is the sign of the measured change over
-        direction_window samples once it reaches rest_threshold_counts counts; edge_samples are trimmed at both ends
-        of every run (rest phases and reversals are not fitted: a segment simulated through a stick-slip event can
-        trap the solver).
+        'none' (default), 'huber', 'soft_l1' or 'cauchy', departing from least squares at loss_scale_counts encoder
+        counts.
     start
         where a two-mass fit starts its inertias and stiffness: 'auto' (default) from :func:`resonance_guess` when the
         log's spectrum shows the resonance, else the guess; 'spectrum' (the same, but an error when it does not);
         'guess' (the guess as given). A time-domain fit started with the resonance ~30 % off can settle in another
         local minimum; the spectrum puts it within a few per cent. Rigid fits always start from the guess.
-    hold_stribeck_first
-        with the Stribeck peak free, solve a first stage with its level and speed held at their guesses (far from
-        the truth, the peak otherwise tends to vanish, ws -> 0, and stay vanished).
-    max_relative_std_error
-        standard errors are the segment-clustered sandwich for correlated residuals
-        (:func:`servobench.oefit.segment_sandwich`; with a robust loss Ceres' times sqrt(long-run / plain variance)
-        of the residual); a parameter whose standard error exceeds this fraction of its own value is not
-        identifiable.
     strict
         raise :class:`IdentificationError` (a ValueError) naming the parameters the data cannot determine; with
         False they are reported in ``not_identifiable`` and their standard error is inf.
-    num_threads
-        Ceres threads inside one start. 1 (default) is deterministic: the same log gives bit-identical estimates.
-        More threads evaluate the segments in parallel (the Jacobian evaluations are about 90 % of a solve, the
-        report's "Stages" line) but do not help here: they cannot lower CPU time (measured on the 5 s bench
-        experiment, rigid A, one start: 0.30-0.34 s CPU with 2 threads against 0.30-0.32 s with 1, machine load 13
-        on 2 cores, decision FT6), and the wall time was 0.94x with 2 threads on an idle machine (issue 22: the
-        segments are too short to pay for the hand-over). Ceres then sums the Schur complement in a varying order,
-        so estimates may differ from run to run at ~1e-8 relative.
     start_threads
         how many starts run at once (default 1: one after the other). Threads help wall time only: the starts
         are independent one-thread solves that release the GIL, so they overlap (measured 1.47x less wall time for
@@ -541,8 +551,8 @@ def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None
             segment_samples, how = oefit.segment_length(idim)
             notes.append("Segments: " + how + ".")
         else:
-            segment_samples = 1000
-            notes.append("Segments: 1000 samples (the IDIM does not apply to this log).")
+            segment_samples = _TIME["segment_samples"]
+            notes.append(f"Segments: {segment_samples} samples (the IDIM does not apply to this log).")
     segment_samples = _whole("fit_time", "segment_samples", segment_samples, 20, 10**8)
     initial_segment_samples = min(_whole("fit_time", "initial_segment_samples", initial_segment_samples, 20, 10**8),
                                   segment_samples)
@@ -616,6 +626,21 @@ def fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None
                                asymmetry_p_value=sw.asymmetry_p_value if sw is not None else math.nan)
 
 
+# typed signature of fit_time (generated by scripts/option_signatures.py from the runtime one; decision OQ5)
+if TYPE_CHECKING:
+    def fit_time(log: IdentificationLog, model: str = 'rigid', *, guess: dict | None = None, fixed: Iterable[str] = (),
+                 bounds: dict | None = None, segment_samples: int | str = 'auto', initial_segment_samples: int = 250,
+                 n_starts: int = 3, seed: int = 0, dynamics_hz: float | None = None,
+                 max_relative_std_error: float = 0.2, strict: bool = True, progress=None, start_threads: int = 1,
+                 loss: str = 'none', loss_scale_counts: float = 3.0, stribeck_exponent: float = 2.0,
+                 max_iterations: int = 200, num_threads: int = 1, direction_window: int = 6,
+                 rest_threshold_counts: float = 2.0, edge_samples: int = 3, start: str = 'auto',
+                 hold_stribeck_first: bool = True) -> IdentifiedPlant: ...
+else:
+    fit_time = _fit_time
+# end of the typed signature of fit_time
+
+
 #: A residual RMS at or below this, in counts, is the encoder's quantisation floor (1/sqrt(12) = 0.289 count) plus
 #: 20 %: nothing left for another minimum to explain (decision J47).
 RESOLUTION_FLOOR_COUNTS = 1.2 / math.sqrt(12.0)
@@ -686,11 +711,14 @@ def _same_point(a, b, inflate: float) -> bool:
 
 
 def _fit_once(log: IdentificationLog, model: str = "rigid", *, guess: dict, fixed: Iterable[str] = (),
-             bounds: dict | None = None, segment_samples: int = 1000, initial_segment_samples: int = 250,
-             loss: str = "none", loss_scale_counts: float = 3.0, stribeck_exponent: float = 2.0,
-             max_iterations: int = 200, num_threads: int = 1, max_relative_std_error: float = 0.2,
-             direction_window: int = 6, rest_threshold_counts: float = 2.0, edge_samples: int = 3,
-             start: str = "auto", hold_stribeck_first: bool = True, strict: bool = True,
+             bounds: dict | None = None, segment_samples: int = _TIME["segment_samples"],
+             initial_segment_samples: int = _TIME["initial_segment_samples"], loss: str = "none",
+             loss_scale_counts: float = _TIME["loss_scale_counts"],
+             stribeck_exponent: float = _TIME["stribeck_exponent"], max_iterations: int = _TIME["max_iterations"],
+             num_threads: int = _TIME["num_threads"], max_relative_std_error: float = _TIME["max_relative_std_error"],
+             direction_window: int = _TIME["direction_window"],
+             rest_threshold_counts: float = _TIME["rest_threshold_counts"], edge_samples: int = _TIME["edge_samples"],
+             start: str = "auto", hold_stribeck_first: bool = _TIME["hold_stribeck_first"], strict: bool = True,
              progress=None, spectrum=None) -> IdentifiedPlant:
     """One output-error fit from one start (see :func:`fit_time`). spectrum: the log's :func:`resonance_guess` (or
     the IdentificationError it raised) when the caller already has it (fit_time reads it once for all starts)."""
@@ -728,11 +756,12 @@ def _fit_once(log: IdentificationLog, model: str = "rigid", *, guess: dict, fixe
     r = _core.identify_time(
         log.torque_nm, log.measured, sample_period_s=log.sample_period_s, measured_is_speed=log.measured_is_speed,
         measured_on_load=log.measured_on_load, model=model, initial=initial, fixed=hold, lower=lower, upper=upper,
-        segment_samples=segment_samples, initial_segment_samples=initial_segment_samples, min_segment_samples=20,
+        segment_samples=segment_samples, initial_segment_samples=initial_segment_samples,
+        min_segment_samples=min(_opts.default(_core.TimeFitOptions, "min_segment_samples"), segment_samples),
         edge_samples=edge_samples, direction_window=direction_window, rest_threshold=rest_threshold_counts,
         substeps=log.substeps,
-        current_bw_hz=log.current_bw_hz, stribeck_exponent=stribeck_exponent, measurement_scale=scale,
-        continuity_weight=0.0, loss=loss, loss_scale=loss_scale_counts, max_iterations=max_iterations,
+        current_bw_hz=log.current_bw_hz, stribeck_exponent=stribeck_exponent, measurement_scale=scale, loss=loss,
+        loss_scale=loss_scale_counts, max_iterations=max_iterations,
         num_threads=num_threads, max_relative_std_error=max_relative_std_error,
         hold_stribeck_first=hold_stribeck_first, progress=progress)
     s = r["summary"]

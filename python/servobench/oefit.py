@@ -206,14 +206,19 @@ class SegmentSandwich(JsonResult):
 def shooting_options(log, segment_samples: int, options: dict) -> dict:
     """The keyword arguments of ``_core.identify_shooting_problem`` / ``identify_shooting_residual`` that describe
     the final stage of a :func:`servobench.fit_time` call with these options."""
+    from . import _core
+    from . import _options as _opts
+
+    d = {f.name: f.default for f in _opts.option_fields(_core.TimeFitOptions)}  # the struct's defaults (OQ2)
     scale = log.measurement_count
     return dict(sample_period_s=log.sample_period_s, measured_is_speed=log.measured_is_speed,
                 measured_on_load=log.measured_on_load, segment_samples=int(segment_samples),
-                min_segment_samples=min(20, int(segment_samples)), edge_samples=options.get("edge_samples", 3),
-                direction_window=options.get("direction_window", 6),
-                rest_threshold=options.get("rest_threshold_counts", 2.0), substeps=log.substeps,
-                current_bw_hz=log.current_bw_hz, stribeck_exponent=options.get("stribeck_exponent", 2.0),
-                measurement_scale=scale)
+                min_segment_samples=min(d["min_segment_samples"], int(segment_samples)),
+                edge_samples=options.get("edge_samples", d["edge_samples"]),
+                direction_window=options.get("direction_window", d["direction_window"]),
+                rest_threshold=options.get("rest_threshold_counts", d["rest_threshold"]), substeps=log.substeps,
+                current_bw_hz=log.current_bw_hz,
+                stribeck_exponent=options.get("stribeck_exponent", d["stribeck_exponent"]), measurement_scale=scale)
 
 
 def segment_sandwich(log, model: str, values: dict, free, segment_samples: int, options: dict | None = None,

@@ -210,13 +210,16 @@ def test_mypy_passes_on_examples_and_the_typed_usage(tmp_path):
     bad = tmp_path / "misspelt.py"
     bad.write_text("import servobench as sb\n"
                    "law = sb.GtServoLaw(kpp=8.0)\n"
-                   "plant = sb.RigidPlant(inertia_kgm2='2e-4')\n")
+                   "plant = sb.RigidPlant(inertia_kgm2='2e-4')\n"
+                   "sweep = sb.sine_sweep(sb.demo_axis(), start_hzz=5.0)\n")
     examples = sorted((ROOT / "examples").rglob("*.py"))
     r = _mypy([*map(str, examples), str(ROOT / "tests" / "typing"), str(bad)], cwd=tmp_path)
     errors = [line for line in r.stdout.splitlines() if ": error:" in line]
     assert errors and all(line.startswith(str(bad)) or line.startswith("misspelt.py") for line in errors), r.stdout
     assert any('Unexpected keyword argument "kpp"' in e for e in errors), r.stdout
     assert any(":3:" in e and "str" in e for e in errors), r.stdout
+    # the options read from a C++ struct are typed keywords too (the generated signatures, decision OQ5)
+    assert any(":4:" in e and 'Unexpected keyword argument "start_hzz"' in e for e in errors), r.stdout
     for script in [ROOT / "examples" / "quickstart.py", ROOT / "tests" / "typing" / "public_api.py"]:
         run = subprocess.run([sys.executable, str(script)], cwd=tmp_path, capture_output=True, text=True,
                              timeout=300)

@@ -10,6 +10,7 @@ from typing_extensions import assert_type
 import servobench as sb
 from servobench import _core
 from servobench.dialects import gt
+from servobench.margins import analytic_margins
 
 
 def parameter_objects() -> float:
@@ -51,10 +52,15 @@ def step_response() -> sb.MoveMetrics:
 def frequency_analysis() -> float:
     """The analytic loop response and its margins."""
     axis = sb.demo_axis()
-    response = sb.analytic_response(axis, np.geomspace(10.0, 1000.0, 50))
+    response = sb.analytic_response(axis, np.geomspace(10.0, 1000.0, 50), filters=True)
     assert_type(response, sb.FrequencyResponse)
     margins = response.margins()
     assert_type(margins, sb.Margins)
+    # options read from the C++ structs are typed keywords (generated signatures, decision OQ5)
+    analytic = analytic_margins(axis, filters=False)
+    assert_type(analytic, sb.Margins)
+    io = sb.MechanicsIO(sample_period_s=1e-4, delay_samples=1, counts_per_rev=10000.0)
+    assert_type(io.torque_per_input, float)
     return float(margins.phase_margin_deg)
 
 

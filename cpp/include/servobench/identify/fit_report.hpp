@@ -36,6 +36,18 @@ struct FitSummary {
   // Free parameters the data cannot determine: each entry names them and why ("not excited", "not separable from").
   std::vector<std::string> not_identifiable;
   std::string report;         // a few lines for a person
+
+  // The single figures a Python fit result shows (servobench.identify.IdentifiedPlant reads their names, units and
+  // docs from here; decision OQ6).
+  template <class V>
+  static void describe(V&& v) {
+    using S = FitSummary;
+    v("nrmse", &S::nrmse, "", "residual RMS over the measurement's standard deviation (time fit) or the relative complex error (frequency fit); 0: a perfect fit");
+    v("residual_rms", &S::residual_rms, "measured unit", "RMS of the unscaled residuals, in the measurement's unit (rad or rad/s for a time fit; nepers and radians of the log-ratio for a frequency fit)");
+    v("converged", &S::converged, "", "Ceres reported convergence (not a cap on iterations or time)");
+    v("iterations", &S::iterations, "", "solver iterations, over all stages");
+    v("seconds", &S::seconds, "s", "wall time of the solve");
+  }
 };
 
 // Covariance of the plant parameters from the Jacobian at the solution, with the nuisance parameters (blocks of

@@ -70,6 +70,21 @@ struct MechanicsIO {
   bool on_load = false;           // the output is the load side's (two-mass), else the motor's
   double current_bw_hz = std::numeric_limits<double>::infinity();  // the known current loop, Hz (inf: none)
   void validate() const;
+
+  // The field table (decision OQ3): the one place servobench.frequency_fit.MechanicsIO reads its fields' defaults,
+  // units and docs from (Python writes None for a continuous-time sample_period_s and counts_per_rev for
+  // output_per_rad).
+  template <class V>
+  static void describe(V&& v) {
+    using O = MechanicsIO;
+    v("sample_period_s", &O::sample_period_s, "s", "0: a continuous-time response (an analyser that removed its sampling, a model); > 0: the response of a sampled loop whose torque is held over each sample");
+    v("delay_samples", &O::delay_samples, "samples", "whole samples between the input and the output, 0..1000, sampled responses only (a servobench axis has 1: the output delay); a further non-integer delay is fitted with fit_delay=True");
+    v("torque_per_input", &O::torque_per_input, "N*m per input unit", "1 for a torque command in N*m, kt x A/V for DAC volts (servobench.torque_per_volt), x 10/32767 more for DAC counts; finite and non-zero (negative: an inverted output)");
+    v("output_per_rad", &O::output_per_rad, "output units per rad", "the output's units per rad (speed output: per rad/s), finite and non-zero: counts_per_rev / (2 pi) for encoder counts, 1 for rad");
+    v("speed_output", &O::speed_output, "", "the output is a speed (rad/s x output_per_rad), not an angle");
+    v("on_load", &O::on_load, "", "the output is measured on the load side (two-mass), not the motor");
+    v("current_bw_hz", &O::current_bw_hz, "Hz", "the drive's current-loop bandwidth, > 0 (inf: ideal)");
+  }
 };
 
 // The response of the mechanics described by `io` for a parameter vector (full model vector, friction ignored).

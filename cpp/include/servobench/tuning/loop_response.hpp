@@ -36,6 +36,16 @@ using Complex = std::complex<double>;
 struct LoopOptions {
   bool feedforward = false;  // Kvff/Kaff act on the command; false: zeroed for the measurement
   bool filters = true;       // the two biquads stay in the loop; false: bypassed (pass-through)
+  void validate() const {}   // both choices are valid
+
+  // The option table (decision OP3): the one place the Python API (analytic_response, broadband_response,
+  // linear_model, analytic_margins, closed_loop_poles) reads these defaults and docs from.
+  template <class V>
+  static void describe(V&& v) {
+    using O = LoopOptions;
+    v("feedforward", &O::feedforward, "", "Kvff/Kaff act on the command; False: zeroed, so Y/E is the loop gain L (decision B1)");
+    v("filters", &O::filters, "", "the two biquads stay in the loop; False: bypassed, pass-through (decision B2)");
+  }
 };
 
 struct LoopResponse {

@@ -83,6 +83,25 @@ struct RelayTuneResult {
   long long ticks = 0;
   // The experiment's record, one sample per servo tick: position error (pulse) and relay output (V).
   std::vector<double> error_pulse, output_v;
+
+  // The single figures (name, member, unit, meaning): the one place the Python result (servobench.autotune.
+  // RelayTuneResult) reads their names, units and docs from (decision OQ6).
+  template <class V>
+  static void describe(V&& v) {
+    using R = RelayTuneResult;
+    v("kp", &R::mean, &PidDesign::kp, "counts/pulse", "mean proportional gain of the sets, per tick (the card law's unit)");
+    v("ki", &R::mean, &PidDesign::ki, "counts/(pulse*tick)", "mean integral gain of the sets, per tick");
+    v("kd", &R::mean, &PidDesign::kd, "counts*tick/pulse", "mean derivative gain of the sets, per tick");
+    v("kc", &R::mean, &PidDesign::kc, "counts/pulse", "the same PID in continuous form kc (1 + 1/(ti s) + td s): its gain");
+    v("ti_s", &R::mean, &PidDesign::ti_s, "s", "its integral time");
+    v("td_s", &R::mean, &PidDesign::td_s, "s", "its derivative time");
+    v("kp_spread", &R::kp_spread, "", "relative standard deviation of kp over the sets (the manual's \"fluctuation\", L1794)");
+    v("ki_spread", &R::ki_spread, "", "relative standard deviation of ki over the sets");
+    v("kd_spread", &R::kd_spread, "", "relative standard deviation of kd over the sets");
+    v("ultimate_freq_hz", &R::ultimate_freq_hz, "Hz", "mean identified ultimate frequency 1/Tu");
+    v("ultimate_gain_v_per_pulse", &R::ultimate_gain_v_per_pulse, "V/pulse", "mean identified ultimate gain 4 d / (pi a)");
+    v("sampling_time_s", &R::sampling_time_s, "s", "the relay's sampling time actually used: max(option, servo period)");
+  }
 };
 
 // Called after each identified set with (sets done, sets wanted); false stops the tuning (the user's Stop).
