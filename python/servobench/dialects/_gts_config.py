@@ -3,11 +3,11 @@ L5450-5495, L7056-7091), the read-backs (GT_GetTrapPrm, GT_GetJogPrm, GT_GetStop
 EtherCAT / configuration-file calls of the iDEABOX examples (L611, L625) and the iDEABOX ``...Mx`` forms
 (``CardNo`` first, L3825), as a mixin of :class:`~servobench.dialects.gts.GtsController`.
 
-Behaviour stays the Card's (alarm enable, limit enable and polarity, stops); what the kernel does not hold (stop
-decelerations, stop inputs, the filter windows and their history, the GPI levels and polarity, the jog smoothing)
-is the card's GUC/iDEABOX module (``_core.gts_card(card.kernel)``, ``vendor/googol/gts_card.hpp``), which checks
-the stop inputs and records the velocity history at the end of every tick. Units: pulse, ms, pulse/ms,
-pulse/ms^2; axes from 1. Decisions GS1-GS18 (docs/decisions.md, Session 10), GT11-GT13 (Session 11)."""
+A table: each command is a row over a C++ vendor function that checks its arguments and returns the manual's code
+(``vendor/googol/gts_config.hpp``, ``_core.gts_*``); what the kernel does not hold (stop decelerations and inputs,
+the filter windows and their history, the GPI levels and polarity, the jog smoothing) is the card's GtsCard
+(``_core.gts_card(card.kernel)``, ``gts_card.hpp``). Units: pulse, ms, pulse/ms, pulse/ms^2; axes from 1.
+Decisions GS1-GS18 (docs/decisions.md, Session 10), GT11-GT13 (Session 11), GU1-GU7 (Session 12)."""
 
 from __future__ import annotations
 

@@ -8,9 +8,9 @@ returns the manuals' code (GUC Tab 2-1 L165-180, iDEABOX Table 3-1 L333-361): 0 
 card refused it in its present state; nothing changed), 7 parameter error, -1 no card open, -6 the card is
 already open. A read call returns a tuple ``(rtn, value...)``.
 
-This module only translates: the behaviour (the FIFOs, look-ahead, PVT and cam engines, safety) is the Card's
-(``Card.set_crd_prm``, ``Card.crd``, ``Card.set_pvt``, ``Card.set_follow``, ...). The card's servo tick is the
-controller's clock; times in ms are converted with its servo period. The system configuration, velocity filters, read-backs and
+This module only translates, as a table of rows: the behaviour (the FIFOs, look-ahead, PVT and cam engines, safety)
+is the Card's; the set-up commands are C++ vendor functions that check their arguments and return the code
+(``vendor/googol/gts_commands.hpp``). The servo tick is the clock, ms converted with its period. The configuration and
 ``...Mx`` forms are in ``_gts_config.py``, the GUC motion program (threads on the card) in ``_gts_program.py``
 (mixins of :class:`GtsController`); :data:`UNSUPPORTED` names the calls the simulation cannot carry out.
 
