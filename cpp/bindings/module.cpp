@@ -25,6 +25,7 @@ void bind_batch(py::module_& m);
 void bind_vendor_ge(py::module_& m);  // bind_vendor_ge.cpp: the GE list module (vendor/googol/ge_list.hpp)
 void bind_vendor_gt(py::module_& m);
 void bind_vendor_gts(py::module_& m);
+void bind_vendor_gts_commands(py::module_& m);
 void bind_vendor_adlink(py::module_& m);  // bind_vendor_adlink.cpp: the ADLINK vendor module
 void bind_excitation(py::module_& m);
 }  // namespace servobench::bindings
@@ -54,6 +55,7 @@ PYBIND11_MODULE(_core, m) {
   servobench::bindings::bind_vendor_ge(m);
   servobench::bindings::bind_vendor_gt(m);
   servobench::bindings::bind_vendor_gts(m);
+  servobench::bindings::bind_vendor_gts_commands(m);
   servobench::bindings::bind_vendor_adlink(m);
   servobench::bindings::bind_excitation(m);
   // Last: every function's signature readable by inspect.signature() (help(), IPython completion; decision Y3).

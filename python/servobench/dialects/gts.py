@@ -8,9 +8,9 @@ returns the manuals' code (GUC Tab 2-1 L165-180, iDEABOX Table 3-1 L333-361): 0 
 card refused it in its present state; nothing changed), 7 parameter error, -1 no card open, -6 the card is
 already open. A read call returns a tuple ``(rtn, value...)``.
 
-This module only translates: the behaviour (the FIFOs, look-ahead, PVT and cam engines, safety) is the Card's
-(``Card.set_crd_prm``, ``Card.crd``, ``Card.set_pvt``, ``Card.set_follow``, ...). The card's servo tick is the
-controller's clock; times in ms are converted with its servo period. The system configuration, velocity filters, read-backs and
+This module only translates, as a table of rows: the behaviour (the FIFOs, look-ahead, PVT and cam engines, safety)
+is the Card's; the set-up commands are C++ vendor functions that check their arguments and return the code
+(``vendor/googol/gts_commands.hpp``). The servo tick is the clock, ms converted with its period. The configuration and
 ``...Mx`` forms are in ``_gts_config.py``, the GUC motion program (threads on the card) in ``_gts_program.py``
 (mixins of :class:`GtsController`); :data:`UNSUPPORTED` names the calls the simulation cannot carry out.
 
@@ -36,11 +36,12 @@ from typing import Any
 import numpy as np
 
 from .. import _core
-from .._core import CardCommandRefused, LookAheadParams, MotionCommandRefused
+from .._core import CardCommandRefused, MotionCommandRefused
 from ..card import Card
 from ._controller import DialectController, export_functions, register32, wrap32  # noqa: F401
 from ._gts_config import (FOLLOW_SWITCH_SEGMENT, FOLLOW_SWITCH_TABLE, MC_ARRIVE, UNSUPPORTED_CONFIG,  # noqa: F401
-                          GtsConfigMixin, TJogPrmExt, TTrapPrm, attach_mx_forms)
+                          GtsConfigMixin, TJogPrmExt, TTrapPrm, _f, _nums, attach_mx_forms)
+from ._gts_config import gts_row as _cpp
 from ._gt_system import gt_adapter
 from ._gts_program import UNSUPPORTED_PROGRAM, GtsProgramMixin, TCompileInfo, TThreadSts, TVarInfo  # noqa: F401
 
@@ -63,7 +64,6 @@ FOLLOW_MASTER_ENCODER, FOLLOW_MASTER_PROFILE, FOLLOW_MASTER_AXIS = 1, 2, 3
 FOLLOW_EVENT_START, FOLLOW_EVENT_PASS = 1, 2
 
 _POS_MIN, _POS_MAX = -1073741824, 1073741823  # iDEABOX L3829 (GUC L449: +-1073741823)
-_CRD_STOP_BIT = 12  # GT_Stop / GT_StopMx mask and option bit 12 = crd 1, 13 = crd 2 (iDEABOX Ex 4-6 L1793)
 
 
 def _num(v):
@@ -124,9 +124,6 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
             return (RTN_PARAMETER_ERROR,) + (0,) * n_out
         return (RTN_SUCCESS,) + (v if isinstance(v, tuple) else (v,))
 
-    def _axis_ok(self, axis) -> bool:
-        return self._card is not None and _int_in(axis, 1, len(self._card))
-
     def _bad(self) -> int:
         return RTN_COMM_ERROR if self._card is None else RTN_PARAMETER_ERROR
 
@@ -137,9 +134,6 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
 
     def _fifo(self, crd, fifo):
         return self._card.crd(int(crd)).fifo(int(fifo))
-
-    def _crd_args_ok(self, crd, fifo) -> bool:
-        return _int_in(crd, 1, 2) and _int_in(fifo, 0, 1)
 
     def _seg_ok(self, vel, acc, vel_end=0.0) -> bool:
         # synVel, synAcc (0, 32767); velEnd [0, 32767) (GUC L449-481, iDEABOX L3845-3852)
@@ -192,99 +186,6 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
             self._close_program()
         return self._do(lambda: self._card.reset())
 
-    def GT_SetTrapPrm(self, profile, acc, dec=None, velStart=0, smoothTime=0) -> int:
-        """TTrapPrm acc (and dec), pulse/ms^2 > 0, as scalars or a :class:`TTrapPrm` as ``acc`` (GUC L2898-2908
-        reads it with GT_GetTrapPrm, changes acc/dec and writes it back). The card's T-curve has one acceleration
-        for both ramps: dec is taken equal to acc (decision V61); velStart and smoothTime must be 0."""
-        if isinstance(acc, TTrapPrm):
-            acc, dec, velStart, smoothTime = acc.acc, acc.dec, acc.velStart, acc.smoothTime
-        if not self._axis_ok(profile):
-            return self._bad()
-        if not _open_in(acc, 0, math.inf) or (dec is not None and not _open_in(dec, 0, math.inf)) \
-                or velStart != 0 or smoothTime != 0:
-            return RTN_PARAMETER_ERROR
-        return self._do(self._card.stage_acc, int(profile) - 1, float(acc) * self._ms ** 2)
-
-    def GT_SetJogPrm(self, profile, acc, dec=None, smooth=0) -> int:
-        """Jog acc (dec taken equal, V61), pulse/ms^2 > 0, smooth 0..1 (recorded, GS17): scalars or a
-        :class:`TJogPrmExt` as ``acc`` (iDEABOX Ex 4-1 L726-730 passes the struct)."""
-        if isinstance(acc, TJogPrmExt):
-            acc, dec, smooth = acc.acc, (acc.dec or None), acc.smooth
-        if not self._axis_ok(profile):
-            return self._bad()
-        if _num(smooth) is None or not 0 <= float(smooth) <= 1:
-            return RTN_PARAMETER_ERROR
-        rtn = self.GT_SetTrapPrm(profile, acc, dec)
-        if rtn == RTN_SUCCESS:
-            self._gts().set_jog_smooth(int(profile) - 1, float(smooth))
-        return rtn
-
-    def GT_Stop(self, mask, option=0) -> int:
-        """Stops the masked axes (bit k = axis k+1) and coordinate systems (bit 12 = crd 1, 13 = crd 2, iDEABOX
-        L1793); option bit set = abrupt, clear = smooth. A stopped crd keeps its breakpoint (resume with
-        GT_CrdStart)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if not _int_in(mask, 0, 0xFFFFFFFF) or not _int_in(option, 0, 0xFFFFFFFF):
-            return RTN_PARAMETER_ERROR
-        mask, option = int(mask), int(option)
-
-        def stop():
-            for c in (1, 2):
-                bit = 1 << (_CRD_STOP_BIT + c - 1)
-                if mask & bit and self._card.group_info(c - 1)["set_up"]:
-                    self._card.crd_stop(c, bool(option & bit))
-            for a in range(len(self._card)):
-                if not mask & (1 << a):
-                    continue
-                if self._card.mode(a) not in ("t_curve", "s_curve", "jog"):
-                    if self._card.group_of(a) < 0:
-                        self._card.abrupt_stop(a)
-                elif option & (1 << a) or self._card.moving(a):
-                    self._gts().stop_axis(a, bool(option & (1 << a)))  # GT_SetStopDec decelerations (GS7)
-
-        return self._do(stop)
-
-    # -- coordinate systems (GUC §4.1 L313-1114, iDEABOX §4.3) ----------------------------------------------
-    def GT_SetCrdPrm(self, crd, prm: TCrdPrm) -> int:
-        """Sets up coordinate system ``crd`` (1..2) (GUC L369-388, L736-792; iDEABOX L7095-7176). 7 for values out
-        of range or a profile mapped twice (L785); 1 while a mapped axis moves or is in the other crd (L743,
-        L7168-7174)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if not _int_in(crd, 1, 2) or not _int_in(prm.dimension, 1, 4) or len(prm.profile) > 8 \
-                or not all(_int_in(p, 0, 4) for p in prm.profile) or not _open_in(prm.synVelMax, 0, 32767) \
-                or not _open_in(prm.synAccMax, 0, 32767) or not _half_open(prm.evenTime, 0, 32767) \
-                or not _int_in(prm.evenTime, 0, 32766) or prm.setOriginFlag not in (0, 1) \
-                or not all(_int_in(p, -2**31, 2**31 - 1) for p in prm.originPos):
-            return RTN_PARAMETER_ERROR
-        used = [p for p in prm.profile if p]
-        if len(used) != len(set(used)) or any(p > prm.dimension for p in used) or len(used) != prm.dimension:
-            return RTN_PARAMETER_ERROR
-        if any(k >= len(self._card) for k, p in enumerate(prm.profile) if p):
-            return RTN_PARAMETER_ERROR
-        rtn = self._do(lambda: self._card.set_crd_prm(
-            int(crd), dimension=int(prm.dimension), profile=[float(p) for p in prm.profile],
-            syn_vel_max=float(prm.synVelMax), syn_acc_max=float(prm.synAccMax), even_time_ms=float(prm.evenTime),
-            set_origin=bool(prm.setOriginFlag), origin_pos=[float(p) for p in prm.originPos]))
-        if rtn == RTN_SUCCESS:
-            self._gts().drop_lookahead(int(crd))
-        return rtn
-
-    def GT_GetCrdPrm(self, crd):
-        """(rtn, TCrdPrm) of ``crd``."""
-        if self._card is None or not _int_in(crd, 1, 2):
-            return self._bad(), None
-
-        def get():
-            if not self._card.group_info(int(crd) - 1)["set_up"]:
-                raise CardCommandRefused("crd not set up")
-            d = self._card.crd_prm(int(crd))
-            return TCrdPrm(dimension=d["dimension"], profile=list(d["profile"]), synVelMax=d["syn_vel_max"],
-                           synAccMax=d["syn_acc_max"], evenTime=int(d["even_time_ms"]),
-                           setOriginFlag=int(d["set_origin"]), originPos=list(d["origin_pos"]))
-
-        return self._get(get)
 
     def _ln(self, crd, end, vel, acc, vel_end, fifo, g0):
         if self._card is None:
@@ -315,111 +216,12 @@ class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):
 
         return self._push(crd, fifo, push)
 
-    def GT_InitLookAhead(self, crd, fifo, T, accMax, n, pLookAheadBuf=None) -> int:
-        """Look-ahead on a FIFO: corner time T (ms), accMax (pulse/ms^2), window n segments (0 = off) (GUC
-        L725-732, L908-995; iDEABOX L5848-5879). The buffer argument is accepted and not used."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if not self._crd_args_ok(crd, fifo) or not _open_in(T, 0, 1000.0001) or not _open_in(accMax, 0, 32767.0001) \
-                or not _int_in(n, 0, 32766):
-            return RTN_PARAMETER_ERROR
-        rtn = self._do(lambda: self._fifo(crd, fifo).init_lookahead(
-            LookAheadParams(t_ms=float(T), acc_max=float(accMax), n=float(n))))
-        if rtn == RTN_SUCCESS:
-            self._gts().set_lookahead(int(crd), int(fifo), int(n))
-        return rtn
-
-    def GT_CrdData(self, crd, pCrdData=None, fifo=0) -> int:
-        """With pCrdData None (NULL): moves the look-ahead window into the FIFO; 1 when the FIFO filled first
-        (call again after GT_CrdSpace) (GUC L975-977; iDEABOX L4465-4498). Raw TCrdData records: not
-        simulated (7)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if pCrdData not in (None, 0) or not self._crd_args_ok(crd, fifo):
-            return RTN_PARAMETER_ERROR
-        try:
-            ok = self._fifo(crd, fifo).flush()
-        except (CardCommandRefused, MotionCommandRefused):
-            return RTN_COMMAND_ERROR
-        return RTN_SUCCESS if ok else RTN_COMMAND_ERROR
-
-    # -- PVT (GUC §4.2 L1116-2100, iDEABOX §4.4) ------------------------------------------------------------
-    def _table(self, tableId, build) -> int:
-        if self._card is None:
-            return RTN_COMM_ERROR
-        if not _int_in(tableId, 1, 32):
-            return RTN_PARAMETER_ERROR
-        try:
-            curve = build()
-        except ValueError:
-            return RTN_PARAMETER_ERROR
-        return self._do(self._card.pvt_download, int(tableId), curve)
-
     @staticmethod
     def _arr(x, count):
         a = np.asarray(x, dtype=float)[: int(count)]
         if len(a) != int(count):
             raise ValueError(f"the arrays hold fewer than count = {count} values")
         return a
-
-    def GT_PvtTable(self, tableId, count, pTime, pPos, pVel) -> int:
-        """PVT data (ms, pulse, pulse/ms), replaces the table (GUC L1169; iDEABOX L6404)."""
-        return self._table(tableId, lambda: _core.pvt_table(time_ms=self._arr(pTime, count), pos=self._arr(pPos, count),
-                                                            vel=self._arr(pVel, count)))
-
-    def GT_PvtTableEx(self, tableId, count, pTime, pPos, pVelBegin, pVelEnd) -> int:
-        """PVT-Ex data with a begin and an end velocity per point (iDEABOX L6446-6472)."""
-        return self._table(tableId, lambda: _core.pvt_table_ex(time_ms=self._arr(pTime, count), pos=self._arr(pPos, count),
-                                                               vel_begin=self._arr(pVelBegin, count), vel_end=self._arr(pVelEnd, count)))
-
-    def GT_PvtTableComplete(self, tableId, count, pTime, pPos, pA=None, pB=None, pC=None, velBegin=0, velEnd=0) -> int:
-        """Complete data (t, p) with velBegin / velEnd: C2 spline (GUC L1181-1191; iDEABOX L6585). pA/pB/pC are
-        the manual's work arrays (not used)."""
-        return self._table(tableId, lambda: _core.pvt_table_complete(time_ms=self._arr(pTime, count), pos=self._arr(pPos, count),
-                                                                     vel_begin=float(velBegin), vel_end=float(velEnd)))
-
-    def GT_PvtTablePercent(self, tableId, count, pTime, pPos, pPercent, velBegin=0) -> int:
-        """Percent data (GUC L1436-1457; iDEABOX L6931)."""
-        return self._table(tableId, lambda: _core.pvt_table_percent(time_ms=self._arr(pTime, count), pos=self._arr(pPos, count),
-                                                                    percent=self._arr(pPercent, count), vel_begin=float(velBegin)))
-
-    def GT_PvtPercentCalculate(self, count, pTime, pPos, pPercent, velBegin=0):
-        """(rtn, node velocities) of Percent data (nothing downloaded) (GUC L1436; iDEABOX L6259)."""
-        try:
-            return RTN_SUCCESS, np.asarray(_core.pvt_percent_calculate(time_ms=self._arr(pTime, count), pos=self._arr(pPos, count),
-                                                                       percent=self._arr(pPercent, count), vel_begin=float(velBegin)))
-        except ValueError:
-            return RTN_PARAMETER_ERROR, None
-
-    def GT_PvtTableContinuous(self, tableId, count, pPos, pVel, pPercent, pVelMax, pAcc, pDec, timeBegin=0) -> int:
-        """Continuous data (p, v, percent, vMax, acc, dec per point), start at timeBegin ms (GUC L1475-1504;
-        iDEABOX L6690)."""
-        a = self._arr
-        return self._table(tableId, lambda: _core.pvt_table_continuous(
-            pos=a(pPos, count), vel=a(pVel, count), percent=a(pPercent, count), vel_max=a(pVelMax, count),
-            acc=a(pAcc, count), dec=a(pDec, count), time_begin_ms=float(timeBegin)))
-
-    def GT_PvtTableContinuousEx(self, tableId, count, pPos, pVel, pAccPercent, pDecPercent, pVelMax, pAcc, pDec,
-                                timeBegin=0) -> int:
-        """Continuous-Ex data: as GT_PvtTableContinuous with separate S shares (0..100) for the acceleration and
-        the deceleration phase of each segment (iDEABOX L6745-6803)."""
-        a = self._arr
-        return self._table(tableId, lambda: _core.pvt_table_continuous_ex(
-            pos=a(pPos, count), vel=a(pVel, count), acc_percent=a(pAccPercent, count),
-            dec_percent=a(pDecPercent, count), vel_max=a(pVelMax, count), acc=a(pAcc, count), dec=a(pDec, count),
-            time_begin_ms=float(timeBegin)))
-
-    def GT_PvtContinuousCalculate(self, count, pPos, pVel, pPercent, pVelMax, pAcc, pDec):
-        """(rtn, point times ms, time[0] = 0) of Continuous data (GUC L1230; iDEABOX L6222-6251)."""
-        a = self._arr
-        try:
-            return RTN_SUCCESS, np.asarray(_core.pvt_continuous_calculate(
-                pos=a(pPos, count), vel=a(pVel, count), percent=a(pPercent, count), vel_max=a(pVelMax, count),
-                acc=a(pAcc, count), dec=a(pDec, count)))
-        except ValueError:
-            return RTN_PARAMETER_ERROR, None
-
-    # -- FollowEx (iDEABOX §2.1 L394-929, API L4612-5448, L7212-7417) --------------------------------------
 
 # -- the table: name, parameters, argument checks (one per parameter, None = unchecked), the call, the manual ----------
 # A check is _AX (axis/profile 1..axes), _MASK (1..2^axes-1), ("int", lo, hi), ("open", lo, hi) (lo < v < hi),
@@ -464,6 +266,40 @@ def _raw(name, params, body, doc):
     return gt_adapter(name, params, body, doc, "int", "GtsController", "servobench.dialects.gts")
 
 
+def _vec(x) -> np.ndarray:
+    """A manual's array argument as float64 values; a non-numeric one as no values (count then exceeds it: 7)."""
+    try:
+        return np.asarray(x, dtype=float).ravel()
+    except (TypeError, ValueError):
+        return np.empty(0)
+
+
+def _crd_args(p) -> list:
+    """A TCrdPrm's fields as the C++ call takes them (a missing field as NaN / no values: 7)."""
+    return [_f(getattr(p, "dimension", None)), _vec(getattr(p, "profile", ())),
+            *(_f(getattr(p, n, None)) for n in ("synVelMax", "synAccMax", "evenTime", "setOriginFlag")),
+            _vec(getattr(p, "originPos", ()))]
+
+
+def _trap(acc, dec, vel_start, smooth_time):
+    """(acc, dec, velStart, smoothTime) of scalars or of a TTrapPrm passed as ``acc``; dec None = acc (V61)."""
+    if isinstance(acc, TTrapPrm):
+        return acc.acc, acc.dec, acc.velStart, acc.smoothTime
+    return acc, acc if dec is None else dec, vel_start, smooth_time
+
+
+def _jog(acc, dec, smooth):
+    """(acc, dec, smooth) of scalars or of a TJogPrmExt passed as ``acc`` (its dec 0 = acc)."""
+    if isinstance(acc, TJogPrmExt):
+        acc, dec, smooth = acc.acc, (acc.dec or None), acc.smooth
+    return acc, acc if dec is None else dec, smooth
+
+
+def _crd_prm(rtn, *fields):
+    """GT_GetCrdPrm's (rtn, TCrdPrm); (1, 0) when the crd is not set up, (7 or -1, None) for a bad call."""
+    return (rtn, TCrdPrm(*fields)) if rtn == 0 else (rtn, 0 if rtn == RTN_COMMAND_ERROR else None)
+
+
 def _follow(c, profile, **changes):
     a = int(profile) - 1
     c.follow_configure(a, c.follow(a).setup.replace(**changes))
@@ -472,6 +308,69 @@ def _follow(c, profile, **changes):
 _COUNT = (lambda n, v, args: _int_in(v, 1, n - int(args[0]) + 1))  # count axes from axis
 _SEG = "crd, x, y, synVel, synAcc, velEnd=0, fifo=0"
 _ROWS = [
+    # profiles, stops, coordinate systems and PVT tables: C++ vendor functions (gts_commands.hpp) check and code
+    _cpp("GT_SetTrapPrm", "profile, acc, dec=None, velStart=0, smoothTime=0",
+         lambda k, p, acc, dec, vs, st: _core.gts_set_trap_prm(k, *_nums(p, *_trap(acc, dec, vs, st))),
+         "TTrapPrm acc (and dec), pulse/ms^2 > 0, as scalars or a :class:`TTrapPrm` as ``acc`` (GUC L2898-2908 "
+         "reads it with GT_GetTrapPrm and writes it back). One acceleration for both ramps: dec is taken equal to "
+         "acc (decision V61); velStart and smoothTime must be 0."),
+    _cpp("GT_SetJogPrm", "profile, acc, dec=None, smooth=0",
+         lambda k, p, acc, dec, sm: _core.gts_set_jog_prm(k, *_nums(p, *_jog(acc, dec, sm))),
+         "Jog acc (dec taken equal, V61), pulse/ms^2 > 0, smooth 0..1 (recorded, GS17): scalars or a "
+         ":class:`TJogPrmExt` as ``acc`` (iDEABOX Ex 4-1 L726-730)."),
+    _cpp("GT_Stop", "mask, option=0", lambda k, m, o: _core.gts_stop(k, *_nums(m, o)),
+         "Stops the masked axes (bit k = axis k+1) and coordinate systems (bit 12 = crd 1, 13 = crd 2, iDEABOX "
+         "L1793); option bit set = abrupt, clear = smooth (at the GT_SetStopDec deceleration, GS7). A stopped crd "
+         "keeps its breakpoint (resume with GT_CrdStart)."),
+    _cpp("GT_SetCrdPrm", "crd, prm: TCrdPrm", lambda k, crd, p: _core.gts_set_crd_prm(k, _f(crd), *_crd_args(p)),
+         "Sets up coordinate system ``crd`` (1..2) from a :class:`TCrdPrm` (GUC L369-388, L736-792; iDEABOX "
+         "L7095-7176). 7 for values out of range or a profile mapped twice (L785); 1 while a mapped axis moves or "
+         "is in the other crd (L743, L7168-7174)."),
+    _cpp("GT_GetCrdPrm", "crd", lambda k, crd: _crd_prm(*_core.gts_get_crd_prm(k, _f(crd))),
+         "(rtn, TCrdPrm) of ``crd``; (1, 0) when it is not set up.", (None,)),
+    _cpp("GT_InitLookAhead", "crd, fifo, T, accMax, n, pLookAheadBuf=None",
+         lambda k, crd, f, t, a, n, buf: _core.gts_init_lookahead(k, *_nums(crd, f, t, a, n)),
+         "Look-ahead on a FIFO: corner time T (0, 1000] ms, accMax (0, 32767] pulse/ms^2, window n 0..32766 "
+         "segments (0 = off) (GUC L725-732, L908-995; iDEABOX L5848-5879). The buffer argument is not used."),
+    _cpp("GT_CrdData", "crd, pCrdData=None, fifo=0",
+         lambda k, crd, d, f: _core.gts_crd_data(k, _f(crd), d in (None, 0), _f(f)),
+         "With pCrdData None (NULL): moves the look-ahead window into the FIFO; 1 when the FIFO filled first (call "
+         "again after GT_CrdSpace) (GUC L975-977; iDEABOX L4465-4498). Raw TCrdData records: not simulated (7)."),
+    _cpp("GT_PvtTable", "tableId, count, pTime, pPos, pVel", lambda k, i, n, t, p, v: _core.gts_pvt_table(
+        k, _f(i), _f(n), _vec(t), _vec(p), _vec(v)),
+         "PVT data, the first ``count`` points (ms, pulse, pulse/ms), replaces table 1..32 (GUC L1169; iDEABOX "
+         "L6404)."),
+    _cpp("GT_PvtTableEx", "tableId, count, pTime, pPos, pVelBegin, pVelEnd",
+         lambda k, i, n, t, p, vb, ve: _core.gts_pvt_table_ex(k, _f(i), _f(n), *map(_vec, (t, p, vb, ve))),
+         "PVT-Ex data with a begin and an end velocity per point, pulse/ms (iDEABOX L6446-6472)."),
+    _cpp("GT_PvtTableComplete", "tableId, count, pTime, pPos, pA=None, pB=None, pC=None, velBegin=0, velEnd=0",
+         lambda k, i, n, t, p, pa, pb, pc, vb, ve: _core.gts_pvt_table_complete(
+             k, _f(i), _f(n), _vec(t), _vec(p), _f(vb), _f(ve)),
+         "Complete data (t ms, p pulse) with velBegin / velEnd pulse/ms: C2 spline (GUC L1181-1191; iDEABOX "
+         "L6585). pA/pB/pC are the manual's work arrays (not used)."),
+    _cpp("GT_PvtTablePercent", "tableId, count, pTime, pPos, pPercent, velBegin=0",
+         lambda k, i, n, t, p, q, vb: _core.gts_pvt_table_percent(k, _f(i), _f(n), _vec(t), _vec(p), _vec(q), _f(vb)),
+         "Percent data: times ms, positions pulse, percent 0..100 (GUC L1436-1457; iDEABOX L6931)."),
+    gt_adapter("GT_PvtPercentCalculate", "count, pTime, pPos, pPercent, velBegin=0",
+               lambda s, n, t, p, q, vb: tuple(_core.gts_pvt_percent_calculate(_f(n), _vec(t), _vec(p), _vec(q),
+                                                                              _f(vb))),
+               "(rtn, node velocities pulse/ms) of Percent data, nothing downloaded; (7, None) for bad data (GUC "
+               "L1436; iDEABOX L6259).", None, "GtsController", "servobench.dialects.gts"),
+    _cpp("GT_PvtTableContinuous", "tableId, count, pPos, pVel, pPercent, pVelMax, pAcc, pDec, timeBegin=0",
+         lambda k, i, n, p, v, q, vm, a, d, tb: _core.gts_pvt_table_continuous(
+             k, _f(i), _f(n), *map(_vec, (p, v, q, q, vm, a, d)), _f(tb), False),
+         "Continuous data (p pulse, v pulse/ms, percent, vMax pulse/ms, acc/dec pulse/ms^2 per point), start at "
+         "timeBegin ms (GUC L1475-1504; iDEABOX L6690)."),
+    _cpp("GT_PvtTableContinuousEx", "tableId, count, pPos, pVel, pAccPercent, pDecPercent, pVelMax, pAcc, pDec, "
+         "timeBegin=0", lambda k, i, n, p, v, qa, qd, vm, a, d, tb: _core.gts_pvt_table_continuous(
+             k, _f(i), _f(n), *map(_vec, (p, v, qa, qd, vm, a, d)), _f(tb), True),
+         "Continuous-Ex data: as GT_PvtTableContinuous with separate S shares (0..100) for the acceleration and "
+         "the deceleration phase of each segment (iDEABOX L6745-6803)."),
+    gt_adapter("GT_PvtContinuousCalculate", "count, pPos, pVel, pPercent, pVelMax, pAcc, pDec",
+               lambda s, n, p, v, q, vm, a, d: tuple(_core.gts_pvt_continuous_calculate(
+                   _f(n), *map(_vec, (p, v, q, vm, a, d)))),
+               "(rtn, point times ms, time[0] = 0) of Continuous data; (7, None) for bad data (GUC L1230; iDEABOX "
+               "L6222-6251).", None, "GtsController", "servobench.dialects.gts"),
     _row("GT_AxisOn", "axis", (_AX,), lambda s, c, a: c.axis_on(int(a) - 1), "Enables the drive of ``axis`` (1..)."),
     _row("GT_AxisOff", "axis", (_AX,), lambda s, c, a: c.axis_off(int(a) - 1), "Disables the drive of ``axis``."),
     _row("GT_ClrSts", "axis, count=1", (_AX, _COUNT), lambda s, c, a, n: [c.clear_events(k, 0xFFF) for k in
