@@ -12,7 +12,8 @@
 // are here, once: a bad axis number records IllegalControlParam and returns 7, a value out of the manual's range
 // records the row's fault (MotionParamOverflow for a motion parameter, else IllegalControlParam) and returns 7, a
 // card refusal (machine::CardCommandRefused, the fault recorded by the kernel) returns 1, a value the kernel finds
-// invalid (std::invalid_argument) returns 7. Never throws for a name in ge_axis_command_names(); an unknown name
+// invalid (std::invalid_argument) returns 7. Never throws for a name in ge_axis_command_names() given its row's
+// arguments (the dialect passes exactly the row's parameters); an unknown name
 // throws std::invalid_argument (a programming error of the dialect, not a program's).
 #pragma once
 
