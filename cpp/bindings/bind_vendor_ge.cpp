@@ -6,8 +6,10 @@
 #include <string>
 #include <tuple>
 
+#include "servobench/vendor/googol/ge_commands.hpp"
 #include "servobench/vendor/googol/ge_list.hpp"
 #include "servobench/vendor/googol/ge_registers.hpp"
+#include "servobench/vendor/googol/ge_watch.hpp"
 
 namespace servobench::bindings {
 
@@ -51,6 +53,13 @@ GePlane plane_of(const std::string& s) {
 using Msg = std::tuple<long long, long long, int>;  // TLookAheadMsg (mtnNum, num, error)
 GeLookAheadMsg msg_of(const Msg& m) { return {std::get<0>(m), std::get<1>(m), std::get<2>(m)}; }
 Msg msg_to(const GeLookAheadMsg& m) { return {m.mtn_num, m.num, m.error}; }
+
+// A reply as the manual's C call returns it in Python: the code, or (code, value) for a read.
+py::object reply(const vendor::googol::GeReply& r) {
+  if (!r.read) return py::int_(rc(r.code));
+  if (r.integer) return py::make_tuple(rc(r.code), static_cast<long long>(r.value));
+  return py::make_tuple(rc(r.code), r.value);
+}
 
 // (code, msg') for an Ex command that fills a TLookAheadMsg.
 template <class F>
@@ -153,15 +162,42 @@ void bind_vendor_ge(py::module_& m) {
       .def("stage_motion", [](GeRegisters& r, std::size_t a, const std::string& reg, double v, double k) {
              r.stage_motion(a, register_of(reg), v, k); }, py::arg("axis"), py::arg("register"), py::arg("value"),
            py::arg("ms_per_tick"))
-      .def("set_watch", [](GeRegisters& r, const std::vector<double>& config, double size) {
-             return rc(r.set_watch(config, size)); }, py::arg("config"), py::arg("size"))
-      .def("watch_channels", &GeRegisters::watch_channels, "(axis 0-based, config bit) in sampling order")
-      .def("watch_size", &GeRegisters::watch_size)
       .def("reset", &GeRegisters::reset, "back to the power-on values (as GT_Reset)")
       .def("read_motion", [](const GeRegisters& r, std::size_t a, const std::string& reg, double k) {
              return r.read_motion(a, register_of(reg), k); }, py::arg("axis"), py::arg("register"),
            py::arg("ms_per_tick"));
 
+  m.def("ge_command_table", [] {
+          py::list rows;
+          for (const auto& r : vendor::googol::ge_command_table())
+            rows.append(py::make_tuple(r.name, r.params, r.set == vendor::googol::GeCommandSet::PX ? "PX"
+                                       : r.set == vendor::googol::GeCommandSet::SX ? "SX" : "", r.read, r.doc));
+          return rows;
+        }, "The GE commands (vendor/googol/ge_commands.hpp): (name, parameters, 'PX'/'SX'/'' the command set, read, doc).");
+  m.def("ge_axis_command_names", &vendor::googol::ge_axis_command_names, "The commands ge_command runs.");
+  m.def("ge_command", [](Card& card, const std::string& variant, const std::string& name,
+                         const std::vector<double>& args) {
+          const auto v = variant == "SX" ? vendor::googol::GeVariant::SX : vendor::googol::GeVariant::PX;
+          return reply(vendor::googol::ge_command(card, v, name, args));
+        }, py::arg("card"), py::arg("variant"), py::arg("name"), py::arg("args"),
+        "Runs GE command `name` (arguments as doubles in the manual's units): its code, or (code, value) for a read.");
+  py::class_<vendor::googol::GeWatch> watch(m, "GeWatch",
+      "The GE data watch of a card (vendor/googol/ge_watch.hpp) on its sampler; the commands return the GE code.");
+  watch.def("set_watch", [](vendor::googol::GeWatch& w, const std::vector<double>& config, double size) {
+             return rc(w.set_watch(config, size)); }, py::arg("config"), py::arg("size"))
+      .def("channels", &vendor::googol::GeWatch::channels, "(axis 0-based, config bit) in sampling order")
+      .def("size", &vendor::googol::GeWatch::size, "samples per block")
+      .def("start", [](vendor::googol::GeWatch& w, double n) { return rc(w.start(n)); }, py::arg("n"))
+      .def("next_block", [](vendor::googol::GeWatch& w) {
+             std::vector<std::vector<double>> block;
+             const int code = rc(w.next_block(block));
+             return std::make_pair(code, block.empty() ? py::object(py::none()) : py::cast(block));
+           }, "(code, [values per channel in GE units] or None when no block is full)")
+      .def("stop", &vendor::googol::GeWatch::stop);
+  watch.attr("WATCH_MEMORY_VALUES") = vendor::googol::GeWatch::kWatchMemoryValues;
+  m.def("ge_watch", [](Card& card) -> vendor::googol::GeWatch& { return vendor::googol::ge_watch(card); },
+        py::return_value_policy::reference_internal, py::arg("card"),
+        "The card's GE data watch module (created on first use, owned by the card).");
   m.def("ge_registers", [](Card& card) -> GeRegisters& { return vendor::googol::ge_registers(card); },
         py::return_value_policy::reference_internal, py::arg("card"),
         "The card's GE registers module (created on first use, owned by the card).");

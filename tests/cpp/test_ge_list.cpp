@@ -8,6 +8,7 @@
 #include "servobench/vendor/googol/ge_list.hpp"
 #include "servobench/vendor/googol/ge_registers.hpp"
 #include "servobench/vendor/googol/ge_status.hpp"
+#include "servobench/vendor/googol/ge_watch.hpp"
 
 namespace mc = servobench::machine;
 namespace gg = servobench::vendor::googol;
@@ -65,8 +66,9 @@ TEST(GeRegisters, SenseWordsCtrlModeAndReadBack) {
   r.stage_motion(0, gg::GeMotionRegister::Vel, 3.7, 0.2);
   EXPECT_DOUBLE_EQ(c.state(0).staged.vel, 3.7 * 0.2);
   EXPECT_DOUBLE_EQ(r.read_motion(0, gg::GeMotionRegister::Vel, 0.2), 3.7);  // exactly as written
-  EXPECT_EQ(r.set_watch({0x41, 0x2}, 100), gg::GeCode::Success);
-  EXPECT_EQ(r.watch_channels().size(), 3u);
-  EXPECT_EQ(r.set_watch({0x10}, 100), gg::GeCode::ParameterError);  // bit 4 reserved
-  EXPECT_EQ(r.set_watch({0x1}, 40000), gg::GeCode::ParameterError); // beyond the watch memory (V75)
+  gg::GeWatch& w = gg::ge_watch(c);  // the watch's selection: vendor/googol/ge_watch.hpp (GW4)
+  EXPECT_EQ(w.set_watch({0x41, 0x2}, 100), gg::GeCode::Success);
+  EXPECT_EQ(w.channels().size(), 3u);
+  EXPECT_EQ(w.set_watch({0x10}, 100), gg::GeCode::ParameterError);  // bit 4 reserved
+  EXPECT_EQ(w.set_watch({0x1}, 40000), gg::GeCode::ParameterError); // beyond the watch memory (V75)
 }

@@ -1,21 +1,24 @@
-"""The GE dialect's layout (issue 24 point 3; decisions GV1-GV6): the dialect files translate, the GE state lives in
-the C++ vendor module (vendor/googol/ge_list.hpp, bound as ``_core.ge_list``). Checked statically with ``ast``: no
-path/list state machine class left in Python, no reach into a Card's private ``_card``, no refusal read out of an
-exception's message, and the files' line counts against the issue's aim."""
+"""The GE dialect's layout (issue 24 point 3; decisions GV1-GV9, GW1-GW6): the dialect files translate, the GE state
+and the argument checks live in the C++ vendor modules (vendor/googol/ge_list.hpp, ge_registers.hpp, ge_watch.hpp,
+ge_commands.hpp). Checked statically with ``ast``: no path/list state machine class left in Python, no reach into a
+Card's private ``_card``, no refusal read out of an exception's message, no argument range of a GE command in
+Python; the files' line counts against the issue's aim; each GE function described once, by the C++ command
+table."""
 
 from __future__ import annotations
 
 import ast
+import re
 from pathlib import Path
 
 DIALECTS = Path(__file__).resolve().parents[2] / "python" / "servobench" / "dialects"
 FILES = ("ge.py", "_ge_watch.py")
 # Issue 24.3: ge.py <= 40 % of its 1866 lines when the issue was filed (private modules count as dialect code).
 AIM_LINES = 746
-# Reached in session 11 (from 1924 + 147 = 2071 on main): the SX list, look-ahead modules A and B, the EXO word,
-# the path refusal bits, the GE registers and the watch selection moved to C++, the functions made table rows
-# (decisions GV1-GV8); the bound may only go down.
-REACHED_LINES = 1029
+# Session 11 reached 1029 (from 1924 + 147 = 2071): the SX list, look-ahead modules A and B, the EXO word, the path
+# refusal bits, the GE registers and the watch selection moved to C++, the functions made table rows (GV1-GV8).
+# Session 12 (GW1-GW6): the per-axis commands with their argument checks, the command table with the docstrings
+# and the data watch moved to C++; the aim is met and held.
 # Classes a dialect may keep: the controller (the card handle and the open cards), the manual's C structs.
 ALLOWED_CLASSES = {"GeController", "_Slot", "TLookAheadMsg", "TAxis", "TWatchBuffer"}
 
@@ -24,9 +27,33 @@ def _trees():
     return {name: ast.parse((DIALECTS / name).read_text()) for name in FILES}
 
 
-def test_line_counts_only_go_down_towards_the_aim():
+def test_line_counts_meet_the_aim():
     lines = {name: len((DIALECTS / name).read_text().splitlines()) for name in FILES}
-    assert sum(lines.values()) <= REACHED_LINES, lines
+    assert sum(lines.values()) <= AIM_LINES, lines
+
+
+def test_each_ge_function_is_described_once_by_the_cpp_table():
+    from servobench import _core
+    from servobench.dialects import ge
+
+    table = _core.ge_command_table()
+    assert len(table) == len({row[0] for row in table}) >= 140
+    for name, params, _set, read, doc in table:
+        fn = getattr(ge.GeController, name)
+        assert fn.__doc__ == doc and doc, name                       # the docstring is the table's row
+        assert re.search(r"L\d{3,4}", doc) or "UNSUPPORTED" in doc, name  # every row cites the manual's lines
+        assert getattr(ge, name).__doc__ == doc, name                # the module function too
+    # the commands C++ runs with their checks are rows of the table, and no row's adapter is written twice
+    assert set(_core.ge_axis_command_names()) - {row[0] for row in table} == {"GT_GetPrfVel"}
+
+
+def test_no_argument_range_of_a_ge_command_in_python():
+    # the ranges (pulse, pulse/ms, gains) are the C++ vendor functions' (vendor/googol/ge_commands.hpp, GW1)
+    tree = _trees()["ge.py"]
+    names = {t.id for n in ast.walk(tree) if isinstance(n, ast.Assign) for t in n.targets if isinstance(t, ast.Name)}
+    assert not names & {"_POS_MIN", "_POS_MAX", "_VEL_MAX", "_VEL_MIN_JOG", "_ACC_MAX", "_JERK_MAX", "_GAIN_MAX"}
+    methods = {n.name for n in ast.walk(tree) if isinstance(n, ast.FunctionDef)}
+    assert not methods & {"_axis_cmd", "_set_law", "_motion", "_read", "_do", "_refuse", "_set_vel", "_alarm"}
 
 
 def test_no_state_machine_class_in_the_dialect():

@@ -20,18 +20,22 @@ Units are the GE's: position pulse (``long``), velocity pulse/ms (``double``), c
 
 from __future__ import annotations
 
-import numpy as np
-
-RTN_SUCCESS, RTN_COMMAND_ERROR, RTN_PARAMETER_ERROR, RTN_COMM_ERROR = 0, 1, 7, -1
-
 from .. import _core
 
+RTN_SUCCESS, RTN_COMMAND_ERROR, RTN_PARAMETER_ERROR, RTN_COMM_ERROR = 0, 1, 7, -1
 WATCH_PRF_POS, WATCH_ATL_POS, WATCH_PRF_VEL, WATCH_ATL_VEL, WATCH_VOLTAGE = 0x1, 0x2, 0x4, 0x8, 0x40
-#: The watch memory in values (samples x watched signals, all axes): V75 (GeRegisters::kWatchMemoryValues).
-WATCH_MEMORY_VALUES = 32768
-# config bit -> (TAxis field, sampler signal, dtype): the table from the manual's word to the card's sampler
-_BITS = {0: ("PrfPos", "pos", np.int64), 1: ("AtlPos", "actual_pos", np.int64), 2: ("PrfVel", "prf_vel", np.float64),
-         3: ("AtlVel", "fbk_vel", np.float64), 6: ("Voltage", "volts", np.int16)}
+#: The watch memory in values (samples x watched signals, all axes): V75 (GeWatch::kWatchMemoryValues).
+WATCH_MEMORY_VALUES = int(_core.GeWatch.WATCH_MEMORY_VALUES)
+# config bit -> the TAxis field the block's channel is copied into (the watch itself: vendor/googol/ge_watch.hpp)
+_FIELDS = {0: "PrfPos", 1: "AtlPos", 2: "PrfVel", 3: "AtlVel", 6: "Voltage"}
+
+
+def _num(value) -> float:
+    """An argument as the double C++ takes: a bool or a non-number is NaN (the watch answers 7)."""
+    try:
+        return float("nan") if isinstance(value, bool) else float(value)
+    except (TypeError, ValueError):
+        return float("nan")
 
 
 class TAxis:
@@ -58,83 +62,42 @@ class TWatchBuffer:
         self.Axis = [TAxis() for _ in range(int(axis_num))]
 
 
-def _selection(card):
-    """The watched channels [(axis, TAxis field, sampler signal, dtype)] and the block size: the card's GE registers
-    module keeps the selection (vendor/googol/ge_registers.hpp, GT_SetWatch)."""
-    regs = _core.ge_registers(card.kernel)
-    return [(k, *_BITS[bit]) for k, bit in regs.watch_channels()], regs.watch_size()
-
-
 def GT_SetWatch(ctl, config, size) -> int:
     """Selects the watched signals (one word per axis, Table 10-2) and the block size (samples); 7 if a reserved
     bit is set, the size is not a whole number >= 1 or the block exceeds the watch memory (L2784-2793)."""
-    card = ctl.card
-    if card is None:
+    if ctl.card is None:
         return RTN_COMM_ERROR
     try:
-        words = [float(int(w)) for w in config]
-        n = float(size)
+        words, n = [float(int(w)) for w in config], float(size)
     except (TypeError, ValueError):
         return RTN_PARAMETER_ERROR
-    return _core.ge_registers(card.kernel).set_watch(words, n)
+    return _core.ge_watch(ctl.card.kernel).set_watch(words, n)
 
 
 def GT_StartWatch(ctl, n=0) -> int:
     """Starts watching: one sample every ``n + 1`` control periods, n = 0..65535 (L2878-2880; V74)."""
-    card = ctl.card
-    if card is None:
-        return RTN_COMM_ERROR
-    channels, size = _selection(card)
-    if not channels:
-        return RTN_COMMAND_ERROR
-    try:
-        v = float(n)
-    except (TypeError, ValueError):
-        return RTN_PARAMETER_ERROR
-    if v != int(v) or not 0 <= v <= 65535:
-        return RTN_PARAMETER_ERROR
-    card.sample([(k, sig) for k, _f, sig, _dt in channels], every_ticks=int(v) + 1, depth=size, continuous=True)
-    return RTN_SUCCESS
+    return RTN_COMM_ERROR if ctl.card is None else _core.ge_watch(ctl.card.kernel).start(_num(n))
 
 
 def GT_GetWatch(ctl, buffer):
     """(rtn, available): copies the oldest full block into ``buffer``'s attached arrays and returns available 1;
-    0 when no block is full yet (L2836-2870)."""
-    card = ctl.card
-    if card is None:
+    0 when no block is full yet (L2836-2870); 7 when a watched signal has no array of ``size`` elements."""
+    if ctl.card is None:
         return RTN_COMM_ERROR, 0
-    channels, size = _selection(card)
-    if not channels:
-        return RTN_COMMAND_ERROR, 0
-    for k, field, _sig, _dt in channels:
-        arr = getattr(buffer.Axis[k], field, None) if k < len(buffer.Axis) else None
-        if arr is None or len(arr) < size:
-            return RTN_PARAMETER_ERROR, 0
-    data = card.scope_data()
-    if data is None:
-        return RTN_SUCCESS, 0
-    ms = card.servo_period_s * 1e3
-    for c, (k, field, sig, dt) in enumerate(channels):
-        v = data.values[:, c]
-        if sig in ("prf_vel", "fbk_vel"):
-            v = v / ms  # pulse/tick -> pulse/ms
-        elif sig == "volts":
-            v = np.clip(np.rint(v * 32767 / 10), -32768, 32767)
-        else:
-            v = np.rint(v)
-        getattr(buffer.Axis[k], field)[:size] = v.astype(dt)
-    return RTN_SUCCESS, 1
+    watch = _core.ge_watch(ctl.card.kernel)
+    axes = buffer.Axis
+    arrays = [getattr(axes[k], _FIELDS[bit], None) if k < len(axes) else None for k, bit in watch.channels()]
+    if any(arr is None or len(arr) < watch.size() for arr in arrays):
+        return RTN_PARAMETER_ERROR, 0
+    rtn, block = watch.next_block()
+    for arr, values in zip(arrays, block or ()):
+        arr[:len(values)] = values
+    return rtn, int(block is not None)
 
 
 def GT_StopWatch(ctl) -> int:
     """Stops watching (L2882); blocks not read are dropped."""
-    card = ctl.card
-    if card is None:
-        return RTN_COMM_ERROR
-    card.kernel.sampler_stop()
-    while card.scope_data() is not None:
-        pass
-    return RTN_SUCCESS
+    return RTN_COMM_ERROR if ctl.card is None else _core.ge_watch(ctl.card.kernel).stop() or RTN_SUCCESS
 
 
 GE_WATCH_FUNCTIONS = ("GT_SetWatch", "GT_StartWatch", "GT_GetWatch", "GT_StopWatch")

@@ -28,7 +28,7 @@ double staged_value(const machine::AxisRegisters& s, GeMotionRegister r) {
 
 }  // namespace
 
-GeRegisters::GeRegisters(machine::Card& card) : card_(card) { reset(); }
+GeRegisters::GeRegisters(machine::Card& card) : card_(card), watch_(card) { reset(); }
 
 void GeRegisters::reset() {
   axes_.assign(card_.axis_count(), GeAxisRegisters{});
@@ -36,26 +36,7 @@ void GeRegisters::reset() {
   inputs_ = 0;
   adc_channels_ = 8;
   written_.clear();
-  watch_channels_.clear();
-  watch_size_ = 0;
-}
-
-GeCode GeRegisters::set_watch(const std::vector<double>& config, double size) {
-  if (config.size() > card_.axis_count()) return GeCode::ParameterError;
-  std::vector<std::pair<std::size_t, int>> channels;
-  for (std::size_t k = 0; k < config.size(); ++k) {
-    if (!int_in(config[k], 0, 0xFFFF)) return GeCode::ParameterError;
-    const auto w = static_cast<std::uint32_t>(config[k]);
-    if (w & 0xB0u) return GeCode::ParameterError;  // bits 4, 5, 7 reserved (Table 10-2)
-    for (int bit : {0, 1, 2, 3, 6})
-      if (w >> bit & 1u) channels.emplace_back(k, bit);
-  }
-  if (!int_in(size, 1, kWatchMemoryValues) || channels.empty() ||
-      size * static_cast<double>(channels.size()) > kWatchMemoryValues)
-    return GeCode::ParameterError;
-  watch_channels_ = std::move(channels);
-  watch_size_ = static_cast<int>(size);
-  return GeCode::Success;
+  watch_.reset();
 }
 
 std::optional<std::size_t> GeRegisters::axis(double number) {

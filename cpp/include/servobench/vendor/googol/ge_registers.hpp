@@ -21,6 +21,7 @@
 
 #include "servobench/machine/card.hpp"
 #include "servobench/machine/card_hooks.hpp"
+#include "servobench/vendor/googol/ge_watch.hpp"
 #include "servobench/vendor/googol/return_code.hpp"
 
 namespace servobench::vendor::googol {
@@ -79,26 +80,19 @@ class GeRegisters : public machine::CardHooks {
   void stage_motion(std::size_t a, GeMotionRegister r, double value, double ms_per_tick);
   double read_motion(std::size_t a, GeMotionRegister r, double ms_per_tick) const;
 
-  // The data watch's selection (GT_SetWatch, L2784-2793; V73-V75): config[k] the watched signals of axis k+1
-  // (bit 0 profile position, 1 actual position, 2 profile velocity, 3 actual velocity, 6 control voltage; 4, 5, 7
-  // reserved), `size` samples per block; 7 for a reserved bit, more words than axes, a size not whole >= 1 or a
-  // block beyond the watch memory (kWatchMemoryValues values, V75). The channels in sampling order: (axis, bit).
-  static constexpr double kWatchMemoryValues = 32768;
-  GeCode set_watch(const std::vector<double>& config, double size);
-  const std::vector<std::pair<std::size_t, int>>& watch_channels() const { return watch_channels_; }
-  int watch_size() const { return watch_size_; }
+  // The data watch (ge_watch.hpp), reset with the registers.
+  GeWatch& watch() { return watch_; }
 
   void reset() override;
 
  private:
   machine::Card& card_;
+  GeWatch watch_;
   std::vector<GeAxisRegisters> axes_;
   std::uint32_t sense_[4] = {0, 0, 0, 0};
   std::uint32_t inputs_ = 0;
   int adc_channels_ = 8;
   std::map<std::pair<std::size_t, int>, std::pair<double, double>> written_;  // (axis, reg) -> (GE, per tick)
-  std::vector<std::pair<std::size_t, int>> watch_channels_;
-  int watch_size_ = 0;
 };
 
 // The card's GE registers, created and attached on first use (owned by the card).
