@@ -470,11 +470,7 @@ _TIME = {f.name: f.default for f in _opts.option_fields(_core.TimeFitOptions, _T
         "(two-mass model, speed log, no reference and no dynamics_hz).")},
     notes={"max_relative_std_error": "Standard errors are the segment-clustered sandwich for correlated residuals "
            "(:func:`servobench.oefit.segment_sandwich`; with a robust loss Ceres' times sqrt(long-run / plain "
-           "variance) of the residual).",
-           "num_threads": "More threads evaluate the segments in parallel, but on the 5 s bench experiment they do "
-           "not help (measured 0.94x with 2 threads, issue 22: the segments are too short to pay for the "
-           "hand-over), and Ceres then sums the Schur complement in a varying order, so estimates differ from run "
-           "to run at ~1e-8 relative."},
+           "variance) of the residual)."},
     name="fit_time")
 def _fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | None = None, fixed: Iterable[str] = (),
              bounds: dict | None = None, segment_samples: int | str = "auto",
