@@ -131,6 +131,10 @@ void bind_point_tables(py::module_& m) {
       .def("sync", py::overload_cast<>(&ApsPointTables::sync),
            "carries out the instruction commands of the moves started so far")
       .def("enabled", &ApsPointTables::enabled, py::arg("ptb"));
+  py::list commands;
+  for (const vendor::adlink::ApsCommandDoc& d : vendor::adlink::pt_commands())
+    commands.append(py::make_tuple(d.name, d.args, d.doc));
+  m.attr("APS_PT_COMMANDS") = commands;  // (name, arguments after Board_ID/PtbId, doc): the dialect's rows
   m.def("aps_point_tables", [](machine::Card& k) -> ApsPointTables& { return vendor::adlink::aps_point_tables(k); },
         py::arg("card"), py::return_value_policy::reference_internal,
         "the card's ADLINK point tables (created on first use, owned by the card)");
@@ -274,9 +278,9 @@ void bind_vendor_adlink(py::module_& m) {
   bind_point_tables(m);
   using vendor::adlink::ApsWatchdog;
   py::class_<ApsWatchdog>(m, "ApsWatchdog",
-                          "The ADLINK watchdog of a card (vendor/adlink/aps_watchdog.hpp, L4025-4084): time-out x 100 ms "
-                          "of card time, action bits (servo off, DO off, PWM off), checked every 1 ms. Get it with "
-                          "aps_watchdog(card).")
+                          "The ADLINK watchdog of a card (vendor/adlink/aps_watchdog.hpp, L4025-4084): time-out "
+                          "x 100 ms of card time, action bits (servo off, DO off, PWM off), checked every 1 ms. Get "
+                          "it with aps_watchdog(card).")
       .def("power_on", &ApsWatchdog::power_on, "off, time-out 0, action 0 (APS_initial / APS_close)")
       .def("set_action", [](ApsWatchdog& s, double b, double t, double v) { return code(s.set_action(b, t, v)); },
            py::arg("board"), py::arg("timer"), py::arg("bits"))
@@ -302,8 +306,10 @@ void bind_vendor_adlink(py::module_& m) {
   m.def("aps_release_axis", [](machine::Card& k, AxisIndex i) { vendor::adlink::aps_release_axis(k, card_axis(k, i)); },
         py::arg("card"), py::arg("axis"),
         "before a single-axis command: an idle group or halted gear hands the axis back, ended limit events clear");
-  m.def("aps_release_modes", [](machine::Card& k, AxisIndex i) { vendor::adlink::aps_release_modes(k, card_axis(k, i)); },
-        py::arg("card"), py::arg("axis"), "an idle interpolation group or a halted gear hands the axis back (V116, V121)");
+  m.def("aps_release_modes",
+        [](machine::Card& k, AxisIndex i) { vendor::adlink::aps_release_modes(k, card_axis(k, i)); },
+        py::arg("card"), py::arg("axis"),
+        "an idle interpolation group or a halted gear hands the axis back (V116, V121)");
   m.def("aps_stop_modes", [](machine::Card& k, AxisIndex i, bool abrupt) {
           return vendor::adlink::aps_stop_modes(k, card_axis(k, i), abrupt);
         }, py::arg("card"), py::arg("axis"), py::arg("abrupt"),

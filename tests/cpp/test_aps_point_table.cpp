@@ -4,7 +4,9 @@
 // watch (ApsInterrupts on CardScope::set_vendor_watch, L4090-4330).
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cmath>
+#include <string>
 
 #include "servobench/machine/card.hpp"
 #include "servobench/machine/card_scope.hpp"
@@ -124,7 +126,8 @@ TEST(ApsPointTables, CodesOfTheManual) {
   EXPECT_EQ(st.bit_sts & va::kPtbFull, va::kPtbFull);
   EXPECT_EQ(pt.push(0, 0, line(99999, 0), st), AdlinkCode::FunctionNotAvailable);  // full (L3880)
   EXPECT_EQ(pt.disable(0, 0), AdlinkCode::NoError);  // waiting: dropped, the axes back to single-axis motion
-  EXPECT_EQ(va::adlink_group(c)->busy(), false);
+  const va::AdlinkGroup* g = va::adlink_group(c);
+  EXPECT_TRUE(g == nullptr || !g->busy());
   EXPECT_EQ(pt.status(0, 0, st), AdlinkCode::FunctionNotAvailable);
 }
 
@@ -185,4 +188,20 @@ TEST(CardScopeVendorWatch, TheModulesWatchIsApartFromTheHostsAndEndsAWaitingRun)
   ints.power_on();                                  // APS_close: the module's watch ends
   c.scope().set_watch(0, 0, 0, 0);
   EXPECT_FALSE(c.scope().watching());
+}
+
+TEST(ApsPointTables, TheCommandTableDescribesEveryFunctionOnceWithItsManualLine) {
+  const auto& rows = va::pt_commands();
+  EXPECT_EQ(rows.size(), 26u);  // APS_pt_* and APS_get_pt_status of manual §4.10.6
+  const auto cites_a_line = [](const std::string& d) {  // "L" and four digits: a line of seed 004
+    for (std::size_t i = 0; i + 4 < d.size(); ++i)
+      if (d[i] == 'L' && std::isdigit(static_cast<unsigned char>(d[i + 1])) &&
+          std::isdigit(static_cast<unsigned char>(d[i + 4])))
+        return true;
+    return false;
+  };
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    EXPECT_TRUE(cites_a_line(rows[k].doc)) << rows[k].name;
+    for (std::size_t j = 0; j < k; ++j) EXPECT_STRNE(rows[j].name, rows[k].name);
+  }
 }

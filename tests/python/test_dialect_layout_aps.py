@@ -5,6 +5,7 @@ C++ ADLINK module (cpp/include/servobench/vendor/adlink/). Static checks with ``
 from __future__ import annotations
 
 import ast
+import re
 from pathlib import Path
 
 import pytest
@@ -14,7 +15,7 @@ FILES = ("aps.py", "_aps_more.py", "_aps_pt.py")
 # The aim of issue 24.3: aps.py <= 40 % of its 1441 lines when the issue was filed, the private modules counted too.
 AIM_APS_LINES = 576
 # Lines reached (session 12): a ceiling that only comes down (the dialect does not grow back).
-CEILING = {"aps.py": 994, "_aps_more.py": 258, "_aps_pt.py": 253}
+CEILING = {"aps.py": 994, "_aps_more.py": 258, "_aps_pt.py": 195}
 # The dialect's mutable attributes: the handle only (session 12); the C++ module holds the rest.
 STILL_IN_PYTHON = {"_card", "_machine"}
 # Moved into vendor/adlink/aps_scope.hpp, aps_interrupts.hpp (session 11): must not come back.
@@ -45,8 +46,8 @@ def test_line_count_only_comes_down(name):
     assert n <= CEILING[name], f"{name}: {n} lines, more than the {CEILING[name]} reached"
 
 
-@pytest.mark.xfail(strict=True, reason="issue 24.3 aim not reached in session 11 (AV8): aps.py and its private "
-                                       "modules still hold the point tables and the watchdog")
+@pytest.mark.xfail(strict=True, reason="issue 24.3 aim not reached in session 12 (AW8): the ApsController methods "
+                                       "and the vendor constants are still written out in Python")
 def test_aim_of_issue_24_3():
     total = sum(len((DIALECTS / f).read_text().splitlines()) for f in FILES)
     assert total <= AIM_APS_LINES, f"the ADLINK dialect has {total} lines, the aim is {AIM_APS_LINES}"
@@ -117,3 +118,20 @@ def test_point_tables_watchdog_and_interrupt_watch_live_in_the_cpp_module():
         assert not hasattr(a, "_pt") and not hasattr(a, "_wdt") and not hasattr(a, "_int_subs")
     finally:
         a.APS_close()
+
+
+def test_point_table_functions_are_made_from_the_cpp_command_table():
+    """The APS_pt_* descriptions are written once, in the C++ module beside the code (AW7): the dialect's functions
+    take their arguments and docstrings from _core.APS_PT_COMMANDS."""
+    sb = pytest.importorskip("servobench")
+    import inspect
+
+    from servobench.dialects.aps import ApsController
+
+    rows = sb._core.APS_PT_COMMANDS
+    assert len({name for name, _a, _d in rows}) == len(rows) == 26  # APS_pt_* and APS_get_pt_status (§4.10.6)
+    for name, args, doc in rows:
+        fn = getattr(ApsController, name)
+        assert fn.__doc__ == doc and re.search(r"L\d{4}", doc), name  # a line of the manual
+        want = ["self", "Board_ID", "PtbId"] + [a.split("=")[0].split(":")[0].strip() for a in args.split(",") if a]
+        assert list(inspect.signature(fn).parameters) == want, name

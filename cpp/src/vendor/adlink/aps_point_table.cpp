@@ -328,6 +328,95 @@ Code ApsPointTables::push(double board, double ptb, const PtMove& m, PtStatus& o
   return Code::NoError;
 }
 
+const std::vector<ApsCommandDoc>& pt_commands() {
+  static const std::vector<ApsCommandDoc> kCommands = {
+    {"APS_pt_enable", "Dimension, AxisArr",
+     "``APS_pt_enable(Board_ID, PtbId, Dimension, I32 *AxisArr)`` (L3856): table 0..1 on ``Dimension``"
+     " (2..6) axes, the first the reference axis; its speeds start as that axis's PRA_VM/ACC/DEC/SF "
+     "(AF6), the mode absolute and buffered. The card has one interpolation group: a second table, or "
+     "a table on axes that are moving, is refused (ERR_FunctionNotAvailable, AF5)."},
+    {"APS_pt_disable", "",
+     "``APS_pt_disable(Board_ID, PtbId)`` (L3860): ends the table (refused while it moves: stop it "
+     "first); its axes return to single-axis motion."},
+    {"APS_get_pt_status", "",
+     "``APS_get_pt_status(Board_ID, PtbId, PTSTS *Status)`` -> ``(rtn, PTSTS)`` (L3867, L3899-3901)."},
+    {"APS_pt_start", "Reserved=0",
+     "``APS_pt_start(Board_ID, PtbId)`` (L3874; the example passes a third argument 0, L3910: only 0 "
+     "is accepted): starts executing the points in sequence (L3870-3872); points pushed later run as "
+     "they come."},
+    {"APS_pt_stop", "",
+     "``APS_pt_stop(Board_ID, PtbId)`` (L3875): the table decelerates to rest along its path at the "
+     "reference axis's PRA_SD_DEC; the points not started are dropped."},
+    {"APS_pt_set_absolute", "",
+     "``APS_pt_set_absolute(Board_ID, PtbId)`` (L3808-3820): the next points are absolute positions (pulse)."},
+    {"APS_pt_set_relative", "",
+     "``APS_pt_set_relative(Board_ID, PtbId)`` (L3808-3820): the next points are relative to the previous end "
+     "point."},
+    {"APS_pt_set_vm", "Vm",
+     "``APS_pt_set_vm(Board_ID, PtbId, F64 Vm)`` (L3808-3820): maximum (vector) speed of the next points, pulse/s, "
+     "0 < Vm <= 1e9."},
+    {"APS_pt_set_ve", "Ve",
+     "``APS_pt_set_ve(Board_ID, PtbId, F64 Ve)`` (L3808-3820): the speed the next points end with, pulse/s (the "
+     "point after starts at it, AF7)."},
+    {"APS_pt_set_acc", "Acc",
+     "``APS_pt_set_acc(Board_ID, PtbId, F64 Acc)`` (L3808-3820): acceleration of the next points, pulse/s^2 (> 0)."},
+    {"APS_pt_set_dec", "Dec",
+     "``APS_pt_set_dec(Board_ID, PtbId, F64 Dec)`` (L3808-3820): deceleration of the next points, pulse/s^2 (> 0)."},
+    {"APS_pt_set_acc_dec", "AccDec",
+     "``APS_pt_set_acc_dec(Board_ID, PtbId, F64 AccDec)`` (L3808-3820): acceleration and deceleration at once, "
+     "pulse/s^2."},
+    {"APS_pt_set_s", "Sf",
+     "``APS_pt_set_s(Board_ID, PtbId, F64 Sf)``: S-factor 0..1 of the next points (L2211-2236)."},
+    {"APS_pt_set_trans_buffered", "",
+     "``APS_pt_set_trans_buffered(Board_ID, PtbId)``: each next point starts when the one before has "
+     "ended, with its own speeds (transition mode 4, L3117-3122)."},
+    {"APS_pt_set_trans_inp", "",
+     "``APS_pt_set_trans_inp(Board_ID, PtbId)``: buffered with an in-position wait between points. The"
+     " card's interpolation has no in-position transition (its modes are L3085-3143's seven): "
+     "ERR_FunctionNotAvailable, the mode unchanged (AF8)."},
+    {"APS_pt_set_trans_blend_dec", "Bp",
+     "``APS_pt_set_trans_blend_dec(Board_ID, PtbId, F64 Bp)``: the next point starts when the one "
+     "before starts decelerating (mode 5, L3124-3129). Mode 5 has no parameter (L3126): Bp must be a "
+     "finite number >= 0 and does not change the motion (AF9)."},
+    {"APS_pt_set_trans_blend_dist", "Bp",
+     "``APS_pt_set_trans_blend_dist(Board_ID, PtbId, F64 Bp)``: the next point starts when the "
+     "remaining path of the one before is < Bp pulse (> 0; mode 6, L3131-3136)."},
+    {"APS_pt_set_trans_blend_pctn", "Bp",
+     "``APS_pt_set_trans_blend_pctn(Board_ID, PtbId, F64 Bp)`` (the manual's spelling, L3820; the "
+     "library's ``_pcnt``): the next point starts when the remaining path of the one before is < Bp % "
+     "of its length (0 < Bp < 100; mode 7, L3138-3143)."},
+    {"APS_pt_ext_set_do_ch", "Channel, OnOff",
+     "``APS_pt_ext_set_do_ch(Board_ID, PtbId, Channel, OnOff)``: digital output ``Channel`` (0..7) "
+     "goes on (1) or off (0) when the next movement command starts (L3824-3827; read with "
+     "APS_read_d_output)."},
+    {"APS_pt_ext_set_table_no", "CtrlNo, TableNo",
+     "``APS_pt_ext_set_table_no(Board_ID, PtbId, CtrlNo, TableNo)``: VAO controller ``CtrlNo`` (0..1) "
+     "switches to VAO table ``TableNo`` (0..7) when the next movement command starts (L3828, L3446)."},
+    {"APS_pt_line", "Prof: PTLINE",
+     "``APS_pt_line(Board_ID, PtbId, PTLINE *Prof, PTSTS *Status)`` -> ``(rtn, PTSTS)`` (L3835, "
+     "L3903-3907): a line to ``Prof.Pos`` (pulse; ``Prof.Dim`` = the table's dimension). A full buffer"
+     " (50 points) returns ERR_FunctionNotAvailable (L3880)."},
+    {"APS_pt_arc2_ca", "Prof: PTA2CA",
+     "``APS_pt_arc2_ca(Board_ID, PtbId, PTA2CA *Prof, PTSTS *Status)`` -> ``(rtn, PTSTS)`` (L3836): a "
+     "2-D arc about ``Prof.Center`` by ``Prof.Angle`` degrees (``Prof.Index`` 0, 1 on a 2-axis table, "
+     "AF10)."},
+    {"APS_pt_arc2_ce", "Prof: PTA2CE",
+     "``APS_pt_arc2_ce(Board_ID, PtbId, PTA2CE *Prof, PTSTS *Status)`` -> ``(rtn, PTSTS)`` (L3836): a "
+     "2-D arc about ``Prof.Center`` to ``Prof.End`` (``Prof.Dir`` laps, L2943-2958)."},
+    {"APS_pt_sprial_ca", "Prof: PTHCA",
+     "``APS_pt_sprial_ca(Board_ID, PtbId, PTHCA *Prof, PTSTS *Status)`` (the manual's spelling, L3837)"
+     " -> ``(rtn, PTSTS)``: a spiral of a 3-axis table (L3001-3035)."},
+    {"APS_pt_sprial_ce", "Prof: PTHCE",
+     "``APS_pt_sprial_ce(Board_ID, PtbId, PTHCE *Prof, PTSTS *Status)`` (L3837) -> ``(rtn, PTSTS)``: a"
+     " spiral to ``Prof.End`` (L3037-3063)."},
+    {"APS_pt_dwell", "Prof: PTDWL",
+     "``APS_pt_dwell(Board_ID, PtbId, PTDWL *Prof, PTSTS *Status)`` -> ``(rtn, PTSTS)`` (L3838): the "
+     "table holds its position ``Prof.DwTime`` ms (> 0, whole motion cycles) after the moves before it"
+     " have ended; the next point starts after it."},
+  };
+  return kCommands;
+}
+
 ApsPointTables& aps_point_tables(machine::Card& card) { return card.module<ApsPointTables>(); }
 
 }  // namespace servobench::vendor::adlink

@@ -66,8 +66,8 @@ class ApsInterrupts : public machine::CardHooks {
 
  private:
   static bool bit_of(double factor, long long& bit);  // the factor's bit (a one-bit mask read as its bit)
-  void rewatch();
-  int set_factor_(double item, double factor, double enable);                                      // the vendor watch of the enabled factors
+  void rewatch();                                               // the vendor watch of the enabled factors
+  int set_factor_(double item, double factor, double enable);  // set_factor without the rewatch
   machine::Card& card_;
   bool main_ = false;
   std::set<int> enabled_;          // enabled interrupt numbers

@@ -135,6 +135,16 @@ class ApsPointTables : public machine::CardHooks {
   std::map<int, Table> tables_;
 };
 
+// The APS_pt_* commands as the manual describes them (AW7): name, the arguments after (Board_ID, PtbId) as the
+// Python signature spells them ("Name", "Name=0", "Prof: STRUCT"), what the function does (units, manual lines).
+// The dialect builds its functions and their docstrings from this table (_core.APS_PT_COMMANDS).
+struct ApsCommandDoc {
+  const char* name;
+  const char* args;
+  const char* doc;
+};
+const std::vector<ApsCommandDoc>& pt_commands();
+
 // The card's ADLINK point tables, created and attached on first use (owned by the card).
 ApsPointTables& aps_point_tables(machine::Card& card);
 
