@@ -127,7 +127,7 @@ py::tuple run_until_event(Card& card, double ticks, const std::vector<std::strin
       {
         auto held = lock.chunk();
         ran += card.run_until_event(chunk, tr);
-        fired = !scope_of(card).fired().empty();
+        fired = scope_of(card).run_ended();
       }
       if (fired || ran >= n) break;
       check_signals();

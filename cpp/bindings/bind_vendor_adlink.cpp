@@ -6,15 +6,20 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "card_axis.hpp"
 #include "servobench/machine/card.hpp"
 #include "servobench/vendor/adlink/aps_interrupts.hpp"
 #include "servobench/vendor/adlink/aps_outputs.hpp"
 #include "servobench/vendor/adlink/aps_parameters.hpp"
+#include "servobench/vendor/adlink/aps_point_table.hpp"
+#include "servobench/vendor/adlink/adlink_group.hpp"
 #include "servobench/vendor/adlink/aps_scope.hpp"
+#include "servobench/vendor/adlink/aps_watchdog.hpp"
 
 namespace servobench::bindings {
 
@@ -30,6 +35,10 @@ namespace {
 
 int code(AdlinkCode c) { return static_cast<int>(c); }
 
+py::tuple with_status(AdlinkCode c, const vendor::adlink::PtStatus& s) {
+  return py::make_tuple(code(c), py::make_tuple(s.bit_sts, s.free_space, s.usage_space, s.running_cnt));
+}
+
 // The run's DataArr as a NumPy array of STR_SAMP_DATA_4CH over the module's buffer (kept alive by the array).
 py::object buffer_array(const ApsScope& s) {
   auto buf = s.sampling_buffer();
@@ -38,6 +47,97 @@ py::object buffer_array(const ApsScope& s) {
   py::capsule base(keep, [](void* p) { delete static_cast<std::shared_ptr<std::vector<ApsSample>>*>(p); });
   return py::array_t<ApsSample>({static_cast<py::ssize_t>(buf->size())}, {static_cast<py::ssize_t>(sizeof(ApsSample))},
                                 buf->data(), base);
+}
+
+
+// The point tables (vendor/adlink/aps_point_table.hpp): every method returns the APS code, the status ones
+// (code, (BitSts, PntBufFreeSpace, PntBufUsageSpace, RunningCnt)).
+void bind_point_tables(py::module_& m) {
+  using vendor::adlink::ApsPointTables;
+  using vendor::adlink::PtMove;
+  using vendor::adlink::PtStatus;
+  py::enum_<PtMove::Kind>(m, "ApsPtKind", "an ADLINK point-table movement command (APS_pt_line ... APS_pt_dwell)")
+      .value("LINE", PtMove::Kind::Line).value("ARC2_CA", PtMove::Kind::Arc2Ca).value("ARC2_CE", PtMove::Kind::Arc2Ce)
+      .value("SPIRAL_CA", PtMove::Kind::SpiralCa).value("SPIRAL_CE", PtMove::Kind::SpiralCe)
+      .value("DWELL", PtMove::Kind::Dwell);
+  py::enum_<ApsPointTables::Speed>(m, "ApsPtSpeed", "which speed APS_pt_set_* sets (pulse/s, pulse/s^2, S-factor)")
+      .value("VM", ApsPointTables::Speed::Vm).value("VE", ApsPointTables::Speed::Ve)
+      .value("ACC", ApsPointTables::Speed::Acc).value("DEC", ApsPointTables::Speed::Dec)
+      .value("ACC_DEC", ApsPointTables::Speed::AccDec).value("SF", ApsPointTables::Speed::Sf);
+  py::enum_<ApsPointTables::Transition>(m, "ApsPtTransition", "an APS_pt_set_trans_* transition mode")
+      .value("BUFFERED", ApsPointTables::Transition::Buffered)
+      .value("IN_POSITION", ApsPointTables::Transition::InPosition)
+      .value("BLEND_DEC", ApsPointTables::Transition::BlendDec)
+      .value("BLEND_DIST", ApsPointTables::Transition::BlendDist)
+      .value("BLEND_PCNT", ApsPointTables::Transition::BlendPcnt);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  py::class_<ApsPointTables>(m, "ApsPointTables",
+                             "The ADLINK point tables of a card (vendor/adlink/aps_point_table.hpp, L3794-3911): "
+                             "tables 0..1, their speeds, transition, instruction commands and buffer. Get it with "
+                             "aps_point_tables(card).")
+      .def("power_on", &ApsPointTables::power_on, "no table enabled (APS_initial)")
+      .def("enable", [](ApsPointTables& s, double b, double p, double d, const std::vector<double>& axes) {
+             return code(s.enable(b, p, d, axes));
+           }, py::arg("board"), py::arg("ptb"), py::arg("dim"), py::arg("axes"))
+      .def("disable", [](ApsPointTables& s, double b, double p) { return code(s.disable(b, p)); }, py::arg("board"),
+           py::arg("ptb"))
+      .def("status", [](ApsPointTables& s, double b, double p) {
+             PtStatus st;
+             const AdlinkCode c = s.status(b, p, st);
+             return with_status(c, st);
+           }, py::arg("board"), py::arg("ptb"))
+      .def("start", [](ApsPointTables& s, double b, double p, double r) { return code(s.start(b, p, r)); },
+           py::arg("board"), py::arg("ptb"), py::arg("reserved") = 0.0)
+      .def("stop", [](ApsPointTables& s, double b, double p) { return code(s.stop(b, p)); }, py::arg("board"),
+           py::arg("ptb"))
+      .def("set_relative", [](ApsPointTables& s, double b, double p, bool r) { return code(s.set_relative(b, p, r)); },
+           py::arg("board"), py::arg("ptb"), py::arg("relative"))
+      .def("set_speed", [](ApsPointTables& s, double b, double p, ApsPointTables::Speed w, double v) {
+             return code(s.set_speed(b, p, w, v));
+           }, py::arg("board"), py::arg("ptb"), py::arg("which"), py::arg("value"))
+      .def("set_transition", [](ApsPointTables& s, double b, double p, ApsPointTables::Transition t, double bp) {
+             return code(s.set_transition(b, p, t, bp));
+           }, py::arg("board"), py::arg("ptb"), py::arg("transition"), py::arg("bp") = 0.0)
+      .def("ext_set_do", [](ApsPointTables& s, double b, double p, double ch, double on) {
+             return code(s.ext_set_do(b, p, ch, on));
+           }, py::arg("board"), py::arg("ptb"), py::arg("channel"), py::arg("on"))
+      .def("ext_set_table", [](ApsPointTables& s, double b, double p, double ctrl, double table) {
+             return code(s.ext_set_table(b, p, ctrl, table));
+           }, py::arg("board"), py::arg("ptb"), py::arg("ctrl"), py::arg("table"))
+      .def("push", [](ApsPointTables& s, double b, double p, PtMove::Kind kind, double dim, std::vector<double> index,
+                      std::vector<double> pos, std::vector<double> center, std::vector<double> normal, double angle,
+                      double dh, double fr, double dir, double dw) {
+             PtMove mv;
+             mv.kind = kind;
+             mv.dim = dim;
+             mv.index = std::move(index);
+             mv.pos = std::move(pos);
+             mv.center = std::move(center);
+             mv.normal = std::move(normal);
+             mv.angle_deg = angle;
+             mv.delta_h = dh;
+             mv.final_r = fr;
+             mv.dir = dir;
+             mv.dw_time_ms = dw;
+             PtStatus st;
+             const AdlinkCode c = s.push(b, p, mv, st);
+             return with_status(c, st);
+           }, py::arg("board"), py::arg("ptb"), py::arg("kind"), py::kw_only(), py::arg("dim") = nan,
+           py::arg("index") = std::vector<double>{}, py::arg("pos") = std::vector<double>{},
+           py::arg("center") = std::vector<double>{}, py::arg("normal") = std::vector<double>{},
+           py::arg("angle_deg") = nan, py::arg("delta_h") = nan, py::arg("final_r") = nan, py::arg("dir") = nan,
+           py::arg("dw_time_ms") = nan,
+           "a movement command (the fields of PTLINE/PTA2CA/PTA2CE/PTHCA/PTHCE/PTDWL; NaN = not a number)")
+      .def("sync", py::overload_cast<>(&ApsPointTables::sync),
+           "carries out the instruction commands of the moves started so far")
+      .def("enabled", &ApsPointTables::enabled, py::arg("ptb"));
+  py::list commands;
+  for (const vendor::adlink::ApsCommandDoc& d : vendor::adlink::pt_commands())
+    commands.append(py::make_tuple(d.name, d.args, d.doc));
+  m.attr("APS_PT_COMMANDS") = commands;  // (name, arguments after Board_ID/PtbId, doc): the dialect's rows
+  m.def("aps_point_tables", [](machine::Card& k) -> ApsPointTables& { return vendor::adlink::aps_point_tables(k); },
+        py::arg("card"), py::return_value_policy::reference_internal,
+        "the card's ADLINK point tables (created on first use, owned by the card)");
 }
 
 }  // namespace
@@ -175,6 +275,45 @@ void bind_vendor_adlink(py::module_& m) {
   m.def("aps_outputs", [](machine::Card& k) -> ApsOutputs& { return vendor::adlink::aps_outputs(k); },
         py::arg("card"), py::return_value_policy::reference_internal,
         "the card's ADLINK output module (created on first use, owned by the card)");
+  bind_point_tables(m);
+  using vendor::adlink::ApsWatchdog;
+  py::class_<ApsWatchdog>(m, "ApsWatchdog",
+                          "The ADLINK watchdog of a card (vendor/adlink/aps_watchdog.hpp, L4025-4084): time-out "
+                          "x 100 ms of card time, action bits (servo off, DO off, PWM off), checked every 1 ms. Get "
+                          "it with aps_watchdog(card).")
+      .def("power_on", &ApsWatchdog::power_on, "off, time-out 0, action 0 (APS_initial / APS_close)")
+      .def("set_action", [](ApsWatchdog& s, double b, double t, double v) { return code(s.set_action(b, t, v)); },
+           py::arg("board"), py::arg("timer"), py::arg("bits"))
+      .def("action", [](const ApsWatchdog& s, double b, double t) {
+             int v = 0;
+             const int c = code(s.action(b, t, v));
+             return py::make_tuple(c, v);
+           }, py::arg("board"), py::arg("timer"), "(code, action bits)")
+      .def("start", [](ApsWatchdog& s, double b, double t, double v) { return code(s.start(b, t, v)); },
+           py::arg("board"), py::arg("timer"), py::arg("time_out"), "arms it: time_out x 100 ms (0 disables)")
+      .def("period", [](const ApsWatchdog& s, double b, double t) {
+             int v = 0;
+             const int c = code(s.period(b, t, v));
+             return py::make_tuple(c, v);
+           }, py::arg("board"), py::arg("timer"), "(code, time-out x 100 ms)")
+      .def("reset_counter", [](ApsWatchdog& s, double b, double t) { return code(s.reset_counter(b, t)); },
+           py::arg("board"), py::arg("timer"))
+      .def_property_readonly("armed", &ApsWatchdog::armed)
+      .def_property_readonly("fired", &ApsWatchdog::fired);
+  m.def("aps_watchdog", [](machine::Card& k) -> ApsWatchdog& { return vendor::adlink::aps_watchdog(k); },
+        py::arg("card"), py::return_value_policy::reference_internal,
+        "the card's ADLINK watchdog (created on first use, owned by the card)");
+  m.def("aps_release_axis", [](machine::Card& k, AxisIndex i) { vendor::adlink::aps_release_axis(k, card_axis(k, i)); },
+        py::arg("card"), py::arg("axis"),
+        "before a single-axis command: an idle group or halted gear hands the axis back, ended limit events clear");
+  m.def("aps_release_modes",
+        [](machine::Card& k, AxisIndex i) { vendor::adlink::aps_release_modes(k, card_axis(k, i)); },
+        py::arg("card"), py::arg("axis"),
+        "an idle interpolation group or a halted gear hands the axis back (V116, V121)");
+  m.def("aps_stop_modes", [](machine::Card& k, AxisIndex i, bool abrupt) {
+          return vendor::adlink::aps_stop_modes(k, card_axis(k, i), abrupt);
+        }, py::arg("card"), py::arg("axis"), py::arg("abrupt"),
+        "a stop of an axis of a moving group stops the group; of a gear slave releases the gear: True if so");
 }
 
 }  // namespace servobench::bindings

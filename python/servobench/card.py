@@ -429,13 +429,11 @@ class Card:
                     sub.callback(self, FiredEvent(int(tick), int(axis), word, hit))
 
     def run_until_fired(self, predicate, max_ticks: int) -> int:
-        """Runs with the :meth:`on_event` callbacks until ``predicate()`` is true after a callback (checked before
-        the run too), at most ``max_ticks``; returns the ticks run. What a vendor's "wait for interrupt" does."""
+        """Runs with the :meth:`on_event` callbacks until ``predicate()`` is true after a callback or after a tick at
+        which a vendor module's own watch ended the run (checked before the run too), at most ``max_ticks``; returns
+        the ticks run. What a vendor's "wait for interrupt" does."""
         done = 0
         while done < max_ticks and not predicate():
-            if not self._subs:
-                self._card.run(max_ticks - done, [])
-                return max_ticks
             ran, _rec, fired = self._card.run_until_event(max_ticks - done, [])
             done += ran
             self._dispatch(fired)

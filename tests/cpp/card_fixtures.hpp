@@ -1,5 +1,7 @@
 // Shared fixtures of the card tests: the tuned demo axis (GT law Kp 38, Ki 60, Kd 830, Kaff 12870 on a rigid
-// 1e-4 kg*m^2 plant, as servobench.demo_axis; servo period in s) and a staged T-curve move committed by Update.
+// 1e-4 kg*m^2 plant, as servobench.demo_axis; servo period in s), the ADLINK test axis (the same gains in the APS
+// law's scaling, Kp 38 x 1024, Kd 830 x 32, at the ADLINK servo period 250 us, L1733) and a staged T-curve move
+// committed by Update.
 #pragma once
 
 #include <cstddef>
@@ -21,6 +23,21 @@ inline machine::AxisConfig tuned_axis(double period_s = 200e-6) {
   plant.viscous_nms = 1e-4;
   cfg.plant = plant;
   cfg.servo_period_s = period_s;
+  return cfg;
+}
+
+// The ADLINK test axis of the ADLINK tests (test_aps_*.cpp, test_card_adlink.cpp, test_vendor_modules.cpp).
+inline machine::AxisConfig aps_axis() {
+  machine::AxisConfig cfg;
+  control::ApsServoLawParams law;
+  law.kp = 38 * 1024;
+  law.kd = 830 * 32;
+  cfg.law = law;
+  cfg.servo_period_s = 250e-6;
+  plant::RigidPlantParams plant;
+  plant.inertia_kgm2 = 1e-4;
+  plant.viscous_nms = 1e-4;
+  cfg.plant = plant;
   return cfg;
 }
 

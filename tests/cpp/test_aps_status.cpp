@@ -7,30 +7,16 @@
 #include "servobench/vendor/adlink/aps_status.hpp"
 #include "servobench/machine/card.hpp"
 #include "servobench/vendor/adlink/adlink_axes.hpp"
+#include "card_fixtures.hpp"
 
 namespace mc = servobench::machine;
 namespace va = servobench::vendor::adlink;
 namespace sm = servobench::motion;
+using servobench::test::aps_axis;
 
 namespace {
 
 constexpr double kRadPerPulse = 2 * M_PI / 10000;
-
-mc::AxisConfig aps_axis() {
-  mc::AxisConfig cfg;
-  // The GT tuning of test_card (Kp 38, Kd 830 counts/pulse) in the ADLINK law's units: with the default
-  // shifts KP counts 2^-10, KD 2^-5 (ADLINK L1753-1758): 38 * 1024 and 830 * 32.
-  servobench::control::ApsServoLawParams law;
-  law.kp = 38912;
-  law.kd = 26560;
-  cfg.law = law;
-  cfg.servo_period_s = 250e-6;  // ADLINK default servo cycle (L1733)
-  servobench::plant::RigidPlantParams plant;
-  plant.inertia_kgm2 = 1e-4;
-  plant.viscous_nms = 1e-4;
-  cfg.plant = plant;
-  return cfg;
-}
 
 sm::AdlinkPtpParams ptp(double pos) {
   sm::AdlinkPtpParams p;

@@ -11,28 +11,12 @@
 #include "servobench/vendor/adlink/aps_outputs.hpp"
 #include "servobench/vendor/adlink/aps_parameters.hpp"
 #include "servobench/vendor/adlink/aps_scope.hpp"
+#include "card_fixtures.hpp"
 
 namespace mc = servobench::machine;
 namespace va = servobench::vendor::adlink;
+using servobench::test::aps_axis;
 using va::AdlinkCode;
-
-namespace {
-
-mc::AxisConfig aps_axis() {
-  mc::AxisConfig cfg;
-  servobench::control::ApsServoLawParams law;
-  law.kp = 38 * 1024;
-  law.kd = 830 * 32;
-  cfg.law = law;
-  cfg.servo_period_s = 250e-6;
-  servobench::plant::RigidPlantParams plant;
-  plant.inertia_kgm2 = 1e-4;
-  plant.viscous_nms = 1e-4;
-  cfg.plant = plant;
-  return cfg;
-}
-
-}  // namespace
 
 TEST(ApsScope, SamplingRegistersStartAtThePowerOnValuesAndCheckTheirRanges) {
   mc::Card card(4, aps_axis());

@@ -7,26 +7,14 @@
 #include "servobench/vendor/adlink/aps_status.hpp"
 #include "servobench/machine/card.hpp"
 #include "servobench/vendor/adlink/adlink_axes.hpp"
+#include "card_fixtures.hpp"
 
 namespace mc = servobench::machine;
 namespace va = servobench::vendor::adlink;
+using servobench::test::aps_axis;
 namespace sm = servobench::motion;
 
 namespace {
-
-mc::AxisConfig aps_axis() {
-  mc::AxisConfig cfg;
-  servobench::control::ApsServoLawParams law;
-  law.kp = 38 * 1024;
-  law.kd = 830 * 32;
-  cfg.law = law;
-  cfg.servo_period_s = 250e-6;
-  servobench::plant::RigidPlantParams plant;
-  plant.inertia_kgm2 = 1e-4;
-  plant.viscous_nms = 1e-4;
-  cfg.plant = plant;
-  return cfg;
-}
 
 sm::AdlinkPtpParams ptp(double pos, double vm = 40000) {
   sm::AdlinkPtpParams p;

@@ -134,6 +134,22 @@ def test_watchdog_fires_when_the_program_stops_resetting_l4025_l4084():
     assert c.APS_wdt_start(0, 0, 0) == 0 and c.APS_wdt_reset_counter(0, 0) == aps.ERR_FunctionNotAvailable
 
 
+def test_watchdog_and_a_program_timer_coexist_aw5():
+    """The watchdog checks on its own timer watch (AW5): a program's Card.on_event timer runs beside it."""
+    c = ctl()
+    seen = []
+    c.card.on_event(lambda _card, f: seen.append(f.tick), timer_ticks=40)   # every 10 ms
+    assert c.APS_write_d_output(0, 0, 0x1) == 0
+    assert c.APS_wdt_set_action_event(0, 0, aps.WDT_ACTION_DO_OFF) == 0
+    assert c.APS_wdt_start(0, 0, 1) == 0                                    # 100 ms
+    c.Sleep(99)
+    assert c.APS_read_d_output(0, 0) == (0, 0x1)
+    c.Sleep(3)
+    assert c.APS_read_d_output(0, 0) == (0, 0) and len(seen) == 10         # fired; the program's timer ran on
+    c.Sleep(50)
+    assert len(seen) == 15 and c.APS_wdt_reset_counter(0, 0) == aps.ERR_FunctionNotAvailable
+
+
 def test_vao_table_interpolates_the_power_over_the_speed_l3489():
     c = ctl()
     assert c.APS_set_vao_param(0, aps.VAO_TABLE_OUTPUT_TYPE + 2 * 2, 1) == 0     # table 2: PWM duty mode

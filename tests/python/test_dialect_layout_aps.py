@@ -1,10 +1,11 @@
-"""The ADLINK dialect's layout (issue 24 point 3; decisions AV1-AV8): line counts against the aims, no private
+"""The ADLINK dialect's layout (issue 24 point 3; decisions AV1-AV8, AW1-AW8): line counts against the aims, no private
 reach into the kernel, no message parsing, and the dialect's mutable state only shrinking as it moves into the
 C++ ADLINK module (cpp/include/servobench/vendor/adlink/). Static checks with ``ast``."""
 
 from __future__ import annotations
 
 import ast
+import re
 from pathlib import Path
 
 import pytest
@@ -13,19 +14,15 @@ DIALECTS = Path(__file__).resolve().parents[2] / "python" / "servobench" / "dial
 FILES = ("aps.py", "_aps_more.py", "_aps_pt.py")
 # The aim of issue 24.3: aps.py <= 40 % of its 1441 lines when the issue was filed, the private modules counted too.
 AIM_APS_LINES = 576
-# Lines reached (session 11): a ceiling that only comes down (the dialect does not grow back).
-CEILING = {"aps.py": 1037, "_aps_more.py": 307, "_aps_pt.py": 471}
-# The dialect's mutable attributes still in Python (session 11 left them: AV8); the C++ module holds the rest.
-STILL_IN_PYTHON = {
-    "_card", "_machine",                                        # the handle (may stay)
-    "_int_subs",                                                # the card subscriptions of the interrupt watch
-    "_pt",                                                      # point tables (_Table objects)
-    "_wdt",                                                     # the watchdog (its timer subscription)
-}
+# Lines reached (session 12): a ceiling that only comes down (the dialect does not grow back).
+CEILING = {"aps.py": 994, "_aps_more.py": 258, "_aps_pt.py": 195}
+# The dialect's mutable attributes: the handle only (session 12); the C++ module holds the rest.
+STILL_IN_PYTHON = {"_card", "_machine"}
 # Moved into vendor/adlink/aps_scope.hpp, aps_interrupts.hpp (session 11): must not come back.
 MOVED = {"_samp", "_tgr", "_timer", "_samp_run", "_int_main", "_int_factors", "_int_signaled",
          "_motion", "_home", "_jog", "_el_mode", "_gear",   # ... aps_parameters.hpp (the PRA_* table)
-         "_board_prm", "_do_word", "_vao_prm", "_vao_tables", "_vao_table_of", "_vao_on"}  # ... aps_outputs.hpp
+         "_board_prm", "_do_word", "_vao_prm", "_vao_tables", "_vao_table_of", "_vao_on",  # ... aps_outputs.hpp
+         "_pt", "_wdt", "_int_subs"}  # session 12: aps_point_table.hpp, aps_watchdog.hpp, the vendor watch (AW1-AW5)
 
 
 def _tree(name):
@@ -49,8 +46,8 @@ def test_line_count_only_comes_down(name):
     assert n <= CEILING[name], f"{name}: {n} lines, more than the {CEILING[name]} reached"
 
 
-@pytest.mark.xfail(strict=True, reason="issue 24.3 aim not reached in session 11 (AV8): aps.py and its private "
-                                       "modules still hold the point tables and the watchdog")
+@pytest.mark.xfail(strict=True, reason="issue 24.3 aim not reached in session 12 (AW8): the ApsController methods "
+                                       "and the vendor constants are still written out in Python")
 def test_aim_of_issue_24_3():
     total = sum(len((DIALECTS / f).read_text().splitlines()) for f in FILES)
     assert total <= AIM_APS_LINES, f"the ADLINK dialect has {total} lines, the aim is {AIM_APS_LINES}"
@@ -81,12 +78,10 @@ def test_no_message_parsing(name):
 
 def test_mutable_state_only_shrinks():
     attrs = set().union(*(_self_attrs(_tree(f)) for f in FILES))
-    controller_state = {a for a in attrs if a.startswith("_")} - {"_Table"}
-    table_fields = {"axes", "relative", "vm", "ve", "acc", "dec", "sf", "mode", "blend", "last_ve", "ext", "started",
-                    "base", "pushed", "actions", "applied"}  # _aps_pt._Table: the point-table state (AV8)
+    controller_state = {a for a in attrs if a.startswith("_")}
     assert not (controller_state & MOVED), controller_state & MOVED
     assert controller_state <= STILL_IN_PYTHON, controller_state - STILL_IN_PYTHON
-    assert {a for a in attrs if not a.startswith("_")} <= table_fields
+    assert not {a for a in attrs if not a.startswith("_")}  # no state object (the point tables are C++'s, AW1)
 
 
 def test_scope_registers_live_in_the_cpp_module():
@@ -105,3 +100,38 @@ def test_scope_registers_live_in_the_cpp_module():
         assert a.APS_get_axis_param_f(1, 0x24) == (0, 2.5e4) and not hasattr(a, "_motion")
     finally:
         a.APS_close()
+
+
+def test_point_tables_watchdog_and_interrupt_watch_live_in_the_cpp_module():
+    sb = pytest.importorskip("servobench")
+    from servobench.dialects import aps
+    from servobench.dialects.aps import ApsController
+
+    a = ApsController()
+    assert a.APS_initial()[0] == 0
+    try:
+        k = a.card.kernel
+        assert a.APS_pt_enable(0, 0, 2, [0, 1]) == 0 and sb._core.aps_point_tables(k).enabled(0)
+        assert a.APS_wdt_start(0, 0, 10) == 0 and sb._core.aps_watchdog(k).armed
+        assert a.APS_int_enable(0, 1) == 0 and a.APS_set_int_factor(0, 0, aps.IMDN, 1) == aps.IMDN
+        assert not a.card._subs  # the interrupt module watches the card itself: no Card.on_event subscription
+        assert not hasattr(a, "_pt") and not hasattr(a, "_wdt") and not hasattr(a, "_int_subs")
+    finally:
+        a.APS_close()
+
+
+def test_point_table_functions_are_made_from_the_cpp_command_table():
+    """The APS_pt_* descriptions are written once, in the C++ module beside the code (AW7): the dialect's functions
+    take their arguments and docstrings from _core.APS_PT_COMMANDS."""
+    sb = pytest.importorskip("servobench")
+    import inspect
+
+    from servobench.dialects.aps import ApsController
+
+    rows = sb._core.APS_PT_COMMANDS
+    assert len({name for name, _a, _d in rows}) == len(rows) == 26  # APS_pt_* and APS_get_pt_status (§4.10.6)
+    for name, args, doc in rows:
+        fn = getattr(ApsController, name)
+        assert fn.__doc__ == doc and re.search(r"L\d{4}", doc), name  # a line of the manual
+        want = ["self", "Board_ID", "PtbId"] + [a.split("=")[0].split(":")[0].strip() for a in args.split(",") if a]
+        assert list(inspect.signature(fn).parameters) == want, name

@@ -1,9 +1,11 @@
 #include "servobench/machine/card_scope.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "servobench/common/validate.hpp"
 #include "servobench/machine/card.hpp"
+#include "servobench/machine/card_hooks.hpp"
 
 namespace servobench::machine {
 
@@ -20,6 +22,9 @@ CardScope::CardScope(Card& card) : card_(card), n_(card.axis_count()) {
   w_events_.assign(n_, 0u);
   w_msts_.assign(n_, 0u);
   w_mio_.assign(n_, 0u);
+  v_events_.assign(n_, 0u);
+  v_msts_.assign(n_, 0u);
+  v_mio_.assign(n_, 0u);
   for (std::size_t i = 0; i < n_; ++i) {
     prev_events_[i] = card_.events(i);
     prev_msts_[i] = word(words_.msts, i);
@@ -39,14 +44,15 @@ void CardScope::set_words(const ScopeWords& words) {
 
 void CardScope::resync() {
   fired_.clear();
+  stop_ = false;
   for (std::size_t i = 0; i < n_; ++i) {
     prev_actual_[i] = card_.actual_pos(i);
     prev_command_[i] = static_cast<double>(card_.profile_pos(i));
     // Bits the host cleared between runs count as off (their next latch fires); bits it set are not taken as
     // seen, so an input the host switched on (alarm, e-stop) fires at the next tick.
     prev_events_[i] &= card_.events(i);
-    if (w_msts_[i]) prev_msts_[i] &= word(words_.msts, i);
-    if (w_mio_[i]) prev_mio_[i] &= word(words_.mio, i);
+    if (w_msts_[i] | v_msts_[i]) prev_msts_[i] &= word(words_.msts, i);
+    if (w_mio_[i] | v_mio_[i]) prev_mio_[i] &= word(words_.mio, i);
   }
   prev_estop_ = prev_estop_ && card_.emergency_stop();
 }
@@ -80,6 +86,67 @@ void CardScope::set_timer(double ticks) {
   check_integer("CardScope", "timer_ticks", ticks, 0, 1e9);
   timer_period_ = static_cast<long long>(ticks);
   timer_start_ = card_.tick();
+}
+
+void CardScope::set_vendor_watch(CardHooks& owner, const EventWatch& w) {
+  if (w.events.size() > n_ || w.msts.size() > n_ || w.mio.size() > n_)
+    throw_invalid("CardScope", "vendor watch axes", static_cast<double>(std::max({w.events.size(), w.msts.size(),
+                                                                                    w.mio.size()})),
+                  "must be at most the card's axes");
+  check_integer("CardScope", "vendor timer_ticks", static_cast<double>(w.timer_ticks), 0, 1e9);
+  clear_vendor_watch(owner);
+  vendor_.push_back(VendorWatch{&owner, w, card_.tick()});
+  refresh_vendor();
+}
+
+void CardScope::clear_vendor_watch(const CardHooks& owner) {
+  for (std::size_t k = 0; k < vendor_.size(); ++k)
+    if (vendor_[k].owner == &owner) {
+      vendor_.erase(vendor_.begin() + static_cast<std::ptrdiff_t>(k));
+      break;
+    }
+  refresh_vendor();
+}
+
+void CardScope::refresh_vendor() {
+  const auto at = [](const std::vector<std::uint32_t>& v, std::size_t i) { return i < v.size() ? v[i] : 0u; };
+  v_sys_ = 0;
+  for (std::size_t i = 0; i < n_; ++i) {
+    v_events_[i] = v_msts_[i] = v_mio_[i] = 0;
+    for (const VendorWatch& v : vendor_) {
+      v_events_[i] |= at(v.watch.events, i) & kAllEvents;
+      v_msts_[i] |= at(v.watch.msts, i);
+      v_mio_[i] |= at(v.watch.mio, i);
+    }
+    prev_events_[i] = card_.events(i);  // as set_watch: the words now are the reference
+    prev_msts_[i] = word(words_.msts, i);
+    prev_mio_[i] = word(words_.mio, i);
+  }
+  for (const VendorWatch& v : vendor_) v_sys_ |= v.watch.system & 0x1Fu;
+}
+
+void CardScope::dispatch_vendor(long long tick) {
+  bool due = !vendor_fired_.empty();
+  for (const VendorWatch& v : vendor_)
+    due = due || (v.watch.timer_ticks > 0 && (tick + 1 - v.timer_start) % v.watch.timer_ticks == 0);
+  if (!due) return;
+  const std::vector<VendorWatch> watches = vendor_;  // on_watch may change the watches
+  const std::vector<FiredEvent> events = std::move(vendor_fired_);
+  vendor_fired_.clear();
+  const auto at = [](const std::vector<std::uint32_t>& v, int i) {
+    return i >= 0 && static_cast<std::size_t>(i) < v.size() ? v[static_cast<std::size_t>(i)] : 0u;
+  };
+  for (const VendorWatch& v : watches) {
+    for (const FiredEvent& e : events) {
+      const std::uint32_t mask = e.word == WatchWord::Events ? at(v.watch.events, e.axis)
+                                 : e.word == WatchWord::Msts ? at(v.watch.msts, e.axis)
+                                 : e.word == WatchWord::Mio  ? at(v.watch.mio, e.axis)
+                                                             : v.watch.system;
+      if (const std::uint32_t bits = e.bits & mask) v.owner->on_watch(FiredEvent{e.tick, e.axis, e.word, bits});
+    }
+    if (v.watch.timer_ticks > 0 && (tick + 1 - v.timer_start) % v.watch.timer_ticks == 0)
+      v.owner->on_watch(FiredEvent{tick, -1, WatchWord::Timer, 1u});
+  }
 }
 
 bool CardScope::watching() const {
@@ -171,24 +238,31 @@ void CardScope::after_tick(long long tick) {
   // event watch
   for (std::size_t i = 0; i < n_; ++i) {
     const std::uint32_t ev = card_.events(i);
+    const auto ax = static_cast<int>(i);
     if (const std::uint32_t r = ev & ~prev_events_[i] & w_events_[i])
-      fired_.push_back(FiredEvent{tick, static_cast<int>(i), WatchWord::Events, r});
+      fired_.push_back(FiredEvent{tick, ax, WatchWord::Events, r});
+    if (const std::uint32_t r = ev & ~prev_events_[i] & v_events_[i])
+      vendor_fired_.push_back(FiredEvent{tick, ax, WatchWord::Events, r});
     if (sampler_.state() == SamplerState::Armed &&
         static_cast<std::size_t>(sampler_.config().event_axis) == i)
       sampler_.note_events(ev & ~prev_events_[i]);
     prev_events_[i] = ev;
-    if (w_msts_[i]) {
+    if (w_msts_[i] | v_msts_[i]) {
       const std::uint32_t w = word(words_.msts, i);
       if (const std::uint32_t r = w & ~prev_msts_[i] & w_msts_[i])
-        fired_.push_back(FiredEvent{tick, static_cast<int>(i), WatchWord::Msts, r});
+        fired_.push_back(FiredEvent{tick, ax, WatchWord::Msts, r});
+      if (const std::uint32_t r = w & ~prev_msts_[i] & v_msts_[i])
+        vendor_fired_.push_back(FiredEvent{tick, ax, WatchWord::Msts, r});
       prev_msts_[i] = w;
     }
-    if (w_mio_[i]) {
+    if (w_mio_[i] | v_mio_[i]) {
       const std::uint32_t w = word(words_.mio, i);
       // EZ (bit 5) reads 0 in the word (V44); as an event it is the index mark passing during this tick.
       const std::uint32_t ez = card_.loop(i).inputs().ez.rose ? (1u << 5) : 0u;
       if (const std::uint32_t r = ((w & ~prev_mio_[i]) | ez) & w_mio_[i])
-        fired_.push_back(FiredEvent{tick, static_cast<int>(i), WatchWord::Mio, r});
+        fired_.push_back(FiredEvent{tick, ax, WatchWord::Mio, r});
+      if (const std::uint32_t r = ((w & ~prev_mio_[i]) | ez) & v_mio_[i])
+        vendor_fired_.push_back(FiredEvent{tick, ax, WatchWord::Mio, r});
       prev_mio_[i] = w;
     }
   }
@@ -201,6 +275,7 @@ void CardScope::after_tick(long long tick) {
   if (fin & 4u) sys |= kSysFcf0;
   if (fin & 8u) sys |= kSysFcf1;
   if (sys & sys_mask_) fired_.push_back(FiredEvent{tick, -1, WatchWord::System, sys & sys_mask_});
+  if (sys & v_sys_) vendor_fired_.push_back(FiredEvent{tick, -1, WatchWord::System, sys & v_sys_});
   if (timer_period_ > 0 && (tick + 1 - timer_start_) % timer_period_ == 0)
     fired_.push_back(FiredEvent{tick, -1, WatchWord::Timer, 1u});
   // sampler
@@ -216,6 +291,7 @@ void CardScope::after_tick(long long tick) {
     prev_command_[i] = static_cast<double>(card_.profile_pos(i));
     prev_error_[i] = card_.following_error(i);
   }
+  if (!vendor_.empty()) dispatch_vendor(tick);
 }
 
 void CardScope::reset_registers() {

@@ -222,7 +222,7 @@ std::size_t Card::run_until_event(std::size_t n, const std::vector<CardTrace>& t
   while (k < n) {
     tick_once(traces, k);
     ++k;
-    if (!s.fired().empty()) break;
+    if (s.run_ended()) break;
   }
   return k;
 }

@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 
 from .. import _core
+from ._aps_pt import _f
 
 ERR_NoError, ERR_DeviceNotInitial, ERR_ParametersInvalid, ERR_FunctionNotAvailable = 0, -4, -10, -13
 
@@ -25,7 +26,6 @@ VAO_TABLE_OUTPUT_TYPE, VAO_TABLE_INPUT_TYPE, VAO_TABLE_PWM_CONFIG, VAO_TABLE_SRC
 VAO_TABLE_PWM_Config = VAO_TABLE_PWM_CONFIG  # the manual's spelling (L3462)
 # Watchdog action bits (L4072-4074).
 WDT_ACTION_SERVO_OFF, WDT_ACTION_DO_OFF, WDT_ACTION_PWM_OFF = 0x1, 0x2, 0x4
-_WDT_UNIT_S = 0.1             # time_out unit, s ("10*100 ms = 1 sec", L4070)
 
 
 def _num(v):
@@ -46,16 +46,16 @@ class _ApsMore:
 
     def _more_init(self):
         self._outs().power_on()  # DO word, board parameters, VAO: vendor/adlink/aps_outputs.hpp (AV9)
-        self._wdt = {"period": 0, "action": 0, "deadline": None, "sub": None, "fired": False}
+        _core.aps_watchdog(self._card.kernel).power_on()  # vendor/adlink/aps_watchdog.hpp (AW5)
 
     def _outs(self):
         """The card's ADLINK output module (DO0..7, board parameters, VAO tables)."""
         return _core.aps_outputs(self._card.kernel)
 
     def _more_close(self):
-        sub = self._wdt["sub"] if hasattr(self, "_wdt") else None
-        if sub is not None:
-            self._card.remove_event(sub)
+        """The watchdog and the interrupt watch go with the card (their vendor watches end)."""
+        _core.aps_watchdog(self._card.kernel).power_on()
+        _core.aps_interrupts(self._card.kernel).power_on()
 
     # -- stops and velocity (L2566-2584) ---------------------------------------------------------------------
     def _multi(self, Dimension, Axis_ID_Array, stop) -> int:
@@ -145,86 +145,39 @@ class _ApsMore:
             return self._bad()
         return self._scope().set_timer_counter(Cnt) if _num(TmrCh) == 0 else ERR_ParametersInvalid
 
-    # -- watchdog (L4025-4084) ----------------------------------------------------------------------------------
-    def _wdt_ok(self, Board_ID, TimerNo):
-        if not self._board(Board_ID):
-            return self._bad()
-        return None if _num(TimerNo) == 0 else ERR_ParametersInvalid  # "Only timer 0" (L4069)
-
-    def _wdt_arm(self):
-        c, w = self._card, self._wdt
-        if w["sub"] is not None:
-            c.remove_event(w["sub"])
-            w["sub"] = None
-        if w["period"] > 0:
-            w["deadline"] = c.tick + int(round(w["period"] * _WDT_UNIT_S / c.servo_period_s))
-            ticks_ms = max(1, int(round(1e-3 / c.servo_period_s)))   # checked every motion cycle (1 ms, AF16)
-            w["sub"] = c.on_event(self._wdt_check, timer_ticks=ticks_ms)
-        else:
-            w["deadline"] = None
-
-    def _wdt_check(self, card, _fired):
-        w = self._wdt
-        if w["deadline"] is None or card.tick < w["deadline"]:
-            return
-        w["deadline"], w["fired"] = None, True
-        sub, w["sub"] = w["sub"], None
-        card.remove_event(sub)
-        act = w["action"]
-        if act & WDT_ACTION_SERVO_OFF:
-            for i in range(len(card)):
-                self._stop_modes(i, abrupt=True)
-                if card.servo_on(i):
-                    card.axis_off(i)
-        if act & WDT_ACTION_DO_OFF:
-            self._outs().all_do_off()
-        if act & WDT_ACTION_PWM_OFF:
-            self._outs().all_pwm_off()
+    # -- watchdog (L4025-4084): vendor/adlink/aps_watchdog.hpp's (AW5) -------------------------------------------
+    def _watchdog(self, call, *args):
+        """``call(module, board, timer, *args)`` on the card's ADLINK watchdog, or ERR_DeviceNotInitial."""
+        if self._card is None:
+            return ERR_DeviceNotInitial
+        return call(_core.aps_watchdog(self._card.kernel), *(_f(a) for a in args))
 
     def APS_wdt_set_action_event(self, Board_ID, TimerNo, EventByBit) -> int:
         """``APS_wdt_set_action_event(board_id, timer_no, EventByBit)`` (L4037, L4071-4074): what the time-out
         does, bit 0 servo off (every axis), bit 1 digital outputs off, bit 2 PWM (VAO) outputs off."""
-        bad = self._wdt_ok(Board_ID, TimerNo)
-        v = _int(EventByBit)
-        if bad is not None or v is None or not 0 <= v <= 7:
-            return bad if bad is not None else ERR_ParametersInvalid
-        self._wdt["action"] = v
-        return ERR_NoError
+        return self._watchdog(lambda w, *a: w.set_action(*a), Board_ID, TimerNo, EventByBit)
 
     def APS_wdt_get_action_event(self, Board_ID, TimerNo):
         """``APS_wdt_get_action_event(board_id, timer_no, &EventByBit)`` -> ``(rtn, EventByBit)`` (L4051)."""
-        bad = self._wdt_ok(Board_ID, TimerNo)
-        return (bad, 0) if bad is not None else (ERR_NoError, self._wdt["action"])
+        return (ERR_DeviceNotInitial, 0) if self._card is None else self._watchdog(lambda w, *a: w.action(*a), Board_ID,
+                                                                                      TimerNo)
 
     def APS_wdt_start(self, Board_ID, TimerNo, TimeOut) -> int:
         """``APS_wdt_start(board_id, timer_no, time_out)`` (L4041, L4053): starts the watchdog with a time-out of
         ``time_out`` x 100 ms of card time (10 -> 1 s, L4070); 0 disables it. If the program does not call
         APS_wdt_reset_counter within the time-out, the action event is carried out once (checked every 1 ms of
         card time, AF16) and the watchdog stops."""
-        bad = self._wdt_ok(Board_ID, TimerNo)
-        v = _int(TimeOut)
-        if bad is not None or v is None or not 0 <= v <= 2**31 - 1:
-            return bad if bad is not None else ERR_ParametersInvalid
-        self._wdt["period"], self._wdt["fired"] = v, False
-        self._wdt_arm()
-        return ERR_NoError
+        return self._watchdog(lambda w, *a: w.start(*a), Board_ID, TimerNo, TimeOut)
 
     def APS_wdt_get_timeout_period(self, Board_ID, TimerNo):
         """``APS_wdt_get_timeout_period(board_id, timer_no, &time_out)`` -> ``(rtn, time_out)`` x 100 ms (L4043)."""
-        bad = self._wdt_ok(Board_ID, TimerNo)
-        return (bad, 0) if bad is not None else (ERR_NoError, self._wdt["period"])
+        return (ERR_DeviceNotInitial, 0) if self._card is None else self._watchdog(lambda w, *a: w.period(*a), Board_ID,
+                                                                                      TimerNo)
 
     def APS_wdt_reset_counter(self, Board_ID, TimerNo) -> int:
         """``APS_wdt_reset_counter(board_id, timer_no)`` (L4045, L4058): restarts the time-out from now (a
         watchdog that has fired or is off: ERR_FunctionNotAvailable)."""
-        bad = self._wdt_ok(Board_ID, TimerNo)
-        if bad is not None:
-            return bad
-        if self._wdt["deadline"] is None:
-            return ERR_FunctionNotAvailable
-        self._wdt["deadline"] = self._card.tick + int(round(self._wdt["period"] * _WDT_UNIT_S /
-                                                           self._card.servo_period_s))
-        return ERR_NoError
+        return self._watchdog(lambda w, *a: w.reset_counter(*a), Board_ID, TimerNo)
 
     # -- digital outputs, board parameters, VAO: adapters over vendor/adlink/aps_outputs.hpp (AV9) -----------------
     def APS_write_d_output(self, Board_ID, DO_Group, DO_Data) -> int:
@@ -237,8 +190,7 @@ class _ApsMore:
         point tables' instruction commands of the moves started so far carried out."""
         if not self._board(Board_ID):
             return self._bad(), 0
-        for t in self._pt.values():
-            self._pt_sync(t)
+        _core.aps_point_tables(self._card.kernel).sync()
         return self._outs().read_do(DO_Group)
 
     def APS_set_board_param(self, Board_ID, BOD_Param_No, BOD_Param) -> int:
@@ -297,8 +249,7 @@ class _ApsMore:
         them, in the output type's unit (``unit``: "0.05 %" or "Hz"); ``power`` is 0 when off."""
         if ctrl not in (0, 1):
             raise ValueError(f"vao_output.ctrl = {ctrl!r} must be 0 or 1 (the VAO controllers)")
-        for t in self._pt.values():
-            self._pt_sync(t)
+        _core.aps_point_tables(self._card.kernel).sync()
         return self._outs().vao_output(ctrl)
 
 

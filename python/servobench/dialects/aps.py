@@ -127,8 +127,6 @@ ITP_OPT_ABORT_BLEND, ITP_OPT_ABORT_FORCE, ITP_OPT_ABORT_STOP = 0x0000, 0x1000, 0
 ITP_OPT_BUFFERED, ITP_OPT_BLEND_DEC, ITP_OPT_BLEND_RES_DIST, ITP_OPT_BLEND_PCNT = 0x3000, 0x4000, 0x5000, 0x6000
 _BLEND_MODES = (BlendMode.ABORT_BLEND, BlendMode.ABORT_FORCED, BlendMode.ABORT_STOP, BlendMode.BUFFERED,
                 BlendMode.BLEND_DECEL, BlendMode.BLEND_DISTANCE, BlendMode.BLEND_PERCENT)
-# Latched limit events of the card (CARD_EVENTS bits): ADLINK limits are level inputs (V31).
-_LIMIT_EVENTS = {"pos_limit": 5, "neg_limit": 6, "soft_pos_limit": 8, "soft_neg_limit": 9}
 _IGNORED = {"emergency_stop_active", "direction_inhibited", "drive_alarm_active"}  # L3931-4010
 
 
@@ -200,7 +198,7 @@ class ApsController(DialectController):
         self._card = card
         self._prm().power_on()  # the PRA_* table (AV5)
         self._scope_init()  # sampling, trigger, interrupts (issue 10.3)
-        self._pt_init()     # point tables (AF5-AF12)
+        _core.aps_point_tables(card.kernel).power_on()  # point tables (AF5-AF12, AW1)
         self._more_init()   # counters, watchdog, VAO, board parameters (AF13-AF21)
         return ERR_NoError, 1
 
@@ -208,9 +206,7 @@ class ApsController(DialectController):
         """``APS_close()``: releases the card."""
         if self._card is None:
             return ERR_DeviceNotInitial
-        for sid in getattr(self, "_int_subs", []):  # the interrupt watches go with the card (issue 10.3)
-            self._card.remove_event(sid)
-        self._more_close()  # the watchdog's timer goes with the card
+        self._more_close()  # the watchdog and the interrupt watch go with the card (AW4, AW5)
         self._card = None
         return ERR_NoError
 
@@ -252,18 +248,9 @@ class ApsController(DialectController):
         return self._do(self._card.axis_on if Servo_on else self._card.axis_off, i)
 
     def _release_limits(self, i: int) -> None:
-        """ADLINK limits are level inputs (V31): a latched limit event whose input is no longer active ends
-        before a new command, so the direction inhibit lasts exactly while the limit is active."""
-        c = self._card
-        self._release_modes(i)
-        act = c.actual_pos(i)
-        lim = c.limits(i)
-        active = {"pos_limit": c.pos_limit_input(i), "neg_limit": c.neg_limit_input(i),
-                  "soft_pos_limit": lim.soft_pos_enabled and act >= lim.soft_pos_pulse,
-                  "soft_neg_limit": lim.soft_neg_enabled and act <= lim.soft_neg_pulse}
-        bits = sum(1 << b for name, b in _LIMIT_EVENTS.items() if not active[name])
-        if c.events(i) & bits:
-            c.clear_events(i, bits)
+        """Before a single-axis command: an idle group or halted gear hands axis i back, ended limit events clear
+        (ADLINK limits are level inputs, V31; vendor/adlink/adlink_group.hpp aps_release_axis)."""
+        _core.aps_release_axis(self._card.kernel, i)
 
     def _ptp(self, i: int, target: float, vm, wait: bool = False, **speeds) -> int:
         if target is None or target != int(target) or abs(target) > _POS_MAX:
@@ -450,28 +437,12 @@ class ApsController(DialectController):
 
     # -- interpolation and gear (L2813-3150, L3294-3346; decisions V113-V125) ---------------------------------------
     def _release_modes(self, i: int) -> None:
-        """Before a single-axis command: an idle interpolation group holding axis i, or a gear released by a
-        fault of its slave, hands the axis back to the independent (T-curve) mode (V116, V121)."""
-        c = self._card
-        info = c.aps_interp_info()
-        if info["set_up"] and i in info["array"] and not info["busy"]:
-            c.set_mode(info["array"][0], "t_curve")
-        if c.mode(i) == "gear" and c.gear_halted(i):
-            c.set_mode(i, "t_curve")
+        """An idle interpolation group holding axis i, or a halted gear, hands it back (V116, V121)."""
+        _core.aps_release_modes(self._card.kernel, i)
 
     def _stop_modes(self, i: int, abrupt: bool) -> bool:
-        """APS_stop_move / APS_emg_stop / servo off on an axis of a moving interpolation stops the whole group
-        (L2570-2580; V117); on a gear slave it releases the gear, the slave holding where it is (L3325, V121).
-        True if it was such an axis."""
-        c = self._card
-        info = c.aps_interp_info()
-        if info["set_up"] and i in info["array"] and info["busy"]:
-            c.group_stop(3, abrupt)
-            return True
-        if c.mode(i) == "gear":
-            c.set_mode(i, "t_curve")
-            return True
-        return False
+        """A stop of an axis of a moving group stops the group (V117); of a gear slave releases it (V121)."""
+        return _core.aps_stop_modes(self._card.kernel, i, abrupt)
 
     def APS_start_gear(self, Axis_ID, Mode) -> int:
         """``APS_start_gear(Axis_ID, Mode)`` (the manual prints ``APS_start_gear(slave axis ID)``, L3311; the Mode
@@ -717,8 +688,7 @@ class _ApsScope:
 
     def _scope_init(self):
         self._scope().power_on()  # sampling, trigger and timer registers: the C++ module's (AV2)
-        self._ints().power_on()   # interrupt table (AV4)
-        self._int_subs: list[int] = []  # the card's event subscriptions of the interrupt watch (handles)
+        self._ints().power_on()   # interrupt table and its own watch of the card (AV4, AW4)
 
     def _scope(self):
         """The card's ADLINK scope module (vendor/adlink/aps_scope.hpp): the sampling/trigger/timer registers."""
@@ -866,17 +836,6 @@ class _ApsScope:
         """The card's ADLINK interrupt module (main switch, factors, signaled flags, the wait)."""
         return _core.aps_interrupts(self._card.kernel)
 
-    def _rewatch(self):
-        """Subscribes the module's watch masks to the card's events (the subscriptions go with APS_close)."""
-        c, m = self._card, self._ints()
-        for sid in self._int_subs:
-            c.remove_event(sid)
-        handler = lambda _card, f: m.fired(f.axis, f.word, f.bits)  # noqa: E731
-        self._int_subs = [c.on_event(handler, axis=a, msts=m.msts_mask(a), mio=m.mio_mask(a)) for a in range(len(c))
-                          if m.msts_mask(a) or m.mio_mask(a)]
-        if m.system_mask():
-            self._int_subs.append(c.on_event(handler, system=m.system_mask()))
-
     def APS_int_enable(self, Board_ID, Enable) -> int:
         """``APS_int_enable(Board_ID, Enable)``: the main interrupt switch (1 on, 0 off); no event signals while
         off."""
@@ -891,9 +850,7 @@ class _ApsScope:
         is read as its bit (L4271-4274, V82)."""
         if not self._board(Board_ID):
             return self._bad()
-        no = self._ints().set_factor(Item_No, Factor_No, Enable)
-        self._rewatch()
-        return no
+        return self._ints().set_factor(Item_No, Factor_No, Enable)  # the module watches the card itself (AW4)
 
     def APS_get_int_factor(self, Board_ID, Item_No, Factor_No):
         """``APS_get_int_factor(Board_ID, Item_No, Factor_No, &Enable)`` -> ``(rtn, Enable)``."""

@@ -17,6 +17,8 @@
 //   (in 2., a latched limit in the direction of motion: on_limit(i, cause) may stop the axis its own way)
 // Commands: set_mode -> leave(i); abrupt_stop -> on_abrupt_stop(i); reset -> reset(); a move's direction check
 // -> inhibits_move(i, dir); the status bit "moving" -> moving(i).
+// Events: a module watches the card's words with its own masks (CardScope::set_vendor_watch, apart from the host's
+// Card.on_event subscriptions); on_watch(e) gets what fired, after every axis ran the tick.
 #pragma once
 
 #include <cstddef>
@@ -25,6 +27,7 @@
 namespace servobench::machine {
 
 enum class StopCause : int;  // machine/card.hpp
+struct FiredEvent;           // machine/card_scope.hpp: an event of a watch
 struct LoopTick;             // machine/motion_loop.hpp: what one tick of an axis returned
 
 class CardHooks {
@@ -59,6 +62,10 @@ class CardHooks {
   virtual void reset() {}
   // The module's notion of "moving" for axis i (GT status bit 10); nullopt: the kernel's.
   virtual std::optional<bool> moving(std::size_t /*i*/) const { return std::nullopt; }
+  // An event of the module's own watch (CardScope::set_vendor_watch) fired in tick e.tick (e.bits: the module's bits
+  // only), called after every axis ran that tick. The module may command the card, change its watch, and end a
+  // Card::run_until_event after this tick (CardScope::request_stop).
+  virtual void on_watch(const FiredEvent& /*e*/) {}
 };
 
 }  // namespace servobench::machine

@@ -12,6 +12,12 @@
 // ended) and a timer (every N ticks: GT_TmrIntr). The vendor layouts of the interrupt factors are the dialects'.
 // The vendor words (msts, mio, the GT status the sampler records) are functions a vendor module provides
 // (set_words; vendor/scope_words.hpp): the scope calls them and knows no layout; unset words read 0.
+//
+// Vendor watches (session 12, decision AW4): a vendor module (a CardHooks) watches the same words with its own masks
+// and timer (set_vendor_watch). Its events go to the module (CardHooks::on_watch) after every axis ran the tick they
+// fired in -- not to fired(), and they do not end a run -- so a vendor's interrupt table or watchdog lives in C++
+// beside the host's Card.on_event subscriptions without touching them. A module ends a run_until_event after the
+// tick with request_stop() (the wait of an interrupt that came).
 #pragma once
 
 #include <array>
@@ -27,6 +33,7 @@
 namespace servobench::machine {
 
 class Card;
+class CardHooks;
 
 // A vendor status word of one card axis, a function of the card's state (vendor/adlink/aps_status.hpp ...).
 using StatusWordFn = std::uint32_t (*)(const Card& card, std::size_t axis);
@@ -50,6 +57,14 @@ struct FiredEvent {
   int axis = -1;
   WatchWord word = WatchWord::Events;
   std::uint32_t bits = 0;
+};
+
+// A vendor module's watch: per axis (shorter vectors: the missing axes 0) the bits of the three words, the system
+// bits, and a timer event every timer_ticks ticks from when the watch is set (0: none), 0..1e9.
+struct EventWatch {
+  std::vector<std::uint32_t> events, msts, mio;
+  std::uint32_t system = 0;
+  long long timer_ticks = 0;
 };
 
 class CardScope {
@@ -76,6 +91,15 @@ class CardScope {
   bool watching() const;
   const std::vector<FiredEvent>& fired() const { return fired_; }
   void clear_fired() { fired_.clear(); }
+
+  // -- vendor watches (AW4) -----------------------------------------------------------------------------------
+  // Sets (replaces) the watch of `owner` (a module attached to the card; it must outlive the watch or clear it).
+  void set_vendor_watch(CardHooks& owner, const EventWatch& watch);
+  void clear_vendor_watch(const CardHooks& owner);
+  // Ends the present Card::run_until_event after this tick (called from CardHooks::on_watch).
+  void request_stop() { stop_ = true; }
+  // The run ends after this tick: a host event fired or a vendor module asked.
+  bool run_ended() const { return stop_ || !fired_.empty(); }
 
   // -- probe input EXI0 at a position: fires when `axis`'s actual position passes `pos` (either direction) --
   void set_probe_position(std::size_t axis, double pos);
@@ -104,6 +128,8 @@ class CardScope {
   double value(std::size_t axis, SampleSignal s) const;
   std::uint32_t word(StatusWordFn f, std::size_t axis) const { return f ? f(card_, axis) : 0u; }
   void refresh_need();
+  void refresh_vendor();     // the union of the vendor masks, the words' reference values
+  void dispatch_vendor(long long tick);
 
   Card& card_;
   std::size_t n_;
@@ -121,6 +147,16 @@ class CardScope {
   bool prev_estop_ = false;
   long long timer_period_ = 0, timer_start_ = 0;
   std::vector<FiredEvent> fired_;
+  struct VendorWatch {
+    CardHooks* owner = nullptr;
+    EventWatch watch;
+    long long timer_start = 0;
+  };
+  std::vector<VendorWatch> vendor_;
+  std::vector<std::uint32_t> v_events_, v_msts_, v_mio_;  // union of the vendor masks per axis
+  std::uint32_t v_sys_ = 0;
+  std::vector<FiredEvent> vendor_fired_;                    // this tick's events for the vendor watches
+  bool stop_ = false;
   int probe_axis_ = -1;
   double probe_pos_ = 0.0;
   std::vector<double> values_;

@@ -175,4 +175,38 @@ int aps_group_stop_code(const Card& card, std::size_t axis) {
   return aps_stop_code(card, axis);
 }
 
+void aps_release_modes(Card& card, std::size_t i) {
+  card.check_axis(i);
+  if (const AdlinkGroup* g = adlink_group(card); g != nullptr && in(g->array(), i) && !g->busy())
+    card.set_mode(g->array()[0], machine::AxisMode::TCurve);
+  if (card.state(i).mode == machine::AxisMode::Gear && card.modes().gear_halted(i))
+    card.set_mode(i, machine::AxisMode::TCurve);
+}
+
+void aps_release_axis(Card& card, std::size_t i) {
+  using machine::CardEvent;
+  aps_release_modes(card, i);
+  const double act = card.actual_pos(i);
+  const machine::LimitConfig& lim = card.state(i).limits;
+  std::uint32_t bits = 0;
+  if (!card.pos_limit_input(i)) bits |= machine::event_bit(CardEvent::PosLimit);
+  if (!card.neg_limit_input(i)) bits |= machine::event_bit(CardEvent::NegLimit);
+  if (!(lim.soft_pos_enabled && act >= lim.soft_pos_pulse)) bits |= machine::event_bit(CardEvent::SoftPosLimit);
+  if (!(lim.soft_neg_enabled && act <= lim.soft_neg_pulse)) bits |= machine::event_bit(CardEvent::SoftNegLimit);
+  if (card.events(i) & bits) card.clear_events(i, bits);
+}
+
+bool aps_stop_modes(Card& card, std::size_t i, bool abrupt) {
+  card.check_axis(i);
+  if (const AdlinkGroup* g = adlink_group(card); g != nullptr && in(g->array(), i) && g->busy()) {
+    card.modes().stop_group(kAdlinkGroupSlot, abrupt);
+    return true;
+  }
+  if (card.state(i).mode == machine::AxisMode::Gear) {
+    card.set_mode(i, machine::AxisMode::TCurve);
+    return true;
+  }
+  return false;
+}
+
 }  // namespace servobench::vendor::adlink

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "servobench/vendor/adlink/aps_status.hpp"
+#include "servobench/vendor/scope_words.hpp"
 
 namespace servobench::vendor::adlink {
 
@@ -47,6 +48,25 @@ void ApsInterrupts::power_on() {
   enabled_.clear();
   signaled_.clear();
   waiting_.clear();
+  if (card_.has_scope()) card_.scope().clear_vendor_watch(*this);
+}
+
+void ApsInterrupts::rewatch() {
+  machine::CardScope& s = card_.scope();
+  if (!s.words().msts) s.set_words(vendor::scope_words());  // the vendor words, as the bindings give them
+  machine::EventWatch w;
+  for (std::size_t i = 0; i < card_.axis_count(); ++i) {
+    w.msts.push_back(msts_mask(i));
+    w.mio.push_back(mio_mask(i));
+  }
+  w.system = system_mask();
+  s.set_vendor_watch(*this, w);
+}
+
+void ApsInterrupts::on_watch(const machine::FiredEvent& e) {
+  using machine::WatchWord;
+  fired(e.axis, e.word == WatchWord::Msts ? "msts" : e.word == WatchWord::Mio ? "mio" : "system", e.bits);
+  if (!waiting_.empty() && wait_done()) card_.scope().request_stop();
 }
 
 AdlinkCode ApsInterrupts::set_main(double enable) {
@@ -68,6 +88,12 @@ bool ApsInterrupts::bit_of(double factor, long long& bit) {
 }
 
 int ApsInterrupts::set_factor(double item, double factor, double enable) {
+  const int no = set_factor_(item, factor, enable);
+  rewatch();
+  return no;
+}
+
+int ApsInterrupts::set_factor_(double item, double factor, double enable) {
   long long bit = 0;
   if (!whole(item) || !bit_of(factor, bit) || (enable != 0 && enable != 1))
     return static_cast<int>(AdlinkCode::ParametersInvalid);

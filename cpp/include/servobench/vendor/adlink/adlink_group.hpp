@@ -88,4 +88,14 @@ bool adlink_group_trigger(machine::Card& card, std::uint32_t mask);
 std::uint32_t aps_group_motion_status(const machine::Card& card, std::size_t axis);
 int aps_group_stop_code(const machine::Card& card, std::size_t axis);
 
+// Before a single-axis command on axis i (V116, V121): an idle interpolation group holding i, or a gear released by
+// a fault of its slave, hands the axis back to the T-curve mode.
+void aps_release_modes(machine::Card& card, std::size_t i);
+// aps_release_modes, then the latched limit events of axis i whose input is no longer active end: ADLINK limits are
+// level inputs (V31), so the direction inhibit lasts exactly while the limit is active.
+void aps_release_axis(machine::Card& card, std::size_t i);
+// APS_stop_move / APS_emg_stop / servo off on axis i: a moving group holding i stops whole (L2570-2580, V117); a
+// gear slave is released, holding where it is (L3325, V121). True if axis i was such an axis.
+bool aps_stop_modes(machine::Card& card, std::size_t i, bool abrupt);
+
 }  // namespace servobench::vendor::adlink

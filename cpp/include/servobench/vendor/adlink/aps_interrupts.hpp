@@ -3,9 +3,11 @@
 // system; the interrupt number is item x 32 + factor bit, V82), the signaled flags (APS_wait_single_int /
 // APS_wait_multiple_int / APS_reset_int / APS_set_int) and the wait in progress. Session 11: AV4.
 //
-// The module keeps the table; the card's event watch (machine/card_scope.hpp) finds the bits turning on: the
-// dialect subscribes the module's masks (msts_mask / mio_mask per axis, system_mask) and hands each fired event to
-// fired(). Axis factors (L4120-4160) and the words they watch:
+// The module keeps the table and watches the card itself (session 12, AW4): its masks (msts_mask / mio_mask per
+// axis, system_mask) are its own vendor watch on the card's scope (machine/card_scope.hpp set_vendor_watch), set
+// again whenever a factor changes, apart from the host's Card.on_event subscriptions; each fired event comes to
+// on_watch -> fired(), and a wait whose condition holds ends the run (request_stop). Axis factors (L4120-4160) and
+// the words they watch:
 //   IALM 0 -> MIO ALM, IPEL 1 -> PEL, IMEL 2 -> MEL, IORG 3 -> ORG, IEZ 4 -> EZ, IINP 5 -> INP, IEMG 6 -> EMG,
 //   ICSTP 8 -> MSTS CSTP, IVM 9 -> VM, IACC 10 -> ACC, IDEC 11 -> DEC, IMDN 12 -> MDN, IASTP 13 -> ASTP,
 //   ISPEL 15 -> MIO SPEL, ISMEL 16 -> SMEL; IPRED 18 / IPOSTD 19 are not simulated (FunctionNotAvailable).
@@ -22,6 +24,7 @@
 
 #include "servobench/machine/card.hpp"
 #include "servobench/machine/card_hooks.hpp"
+#include "servobench/machine/card_scope.hpp"
 #include "servobench/vendor/adlink/return_code.hpp"
 
 namespace servobench::vendor::adlink {
@@ -30,7 +33,7 @@ class ApsInterrupts : public machine::CardHooks {
  public:
   explicit ApsInterrupts(machine::Card& card) : card_(card) {}
 
-  // APS_initial: main switch off, no factor enabled, no interrupt number known.
+  // APS_initial (and APS_close): main switch off, no factor enabled, no interrupt number known, no watch.
   void power_on();
 
   // APS_int_enable: 0 off, 1 on (ParametersInvalid otherwise). No event signals while off.
@@ -48,6 +51,8 @@ class ApsInterrupts : public machine::CardHooks {
   // A watched event fired on `axis` (-1 card-wide) in `word` ("msts", "mio", "system"): the enabled factors it
   // matches are signaled, while the main switch is on.
   void fired(int axis, const std::string& word, std::uint32_t bits);
+  // The module's vendor watch fired: fired(), and the run ends when the wait in progress is done.
+  void on_watch(const machine::FiredEvent& e) override;
 
   // APS_set_int (on) / APS_reset_int (off) of a known interrupt number (ParametersInvalid otherwise).
   AdlinkCode set_signaled(double int_no, bool on);
@@ -61,6 +66,8 @@ class ApsInterrupts : public machine::CardHooks {
 
  private:
   static bool bit_of(double factor, long long& bit);  // the factor's bit (a one-bit mask read as its bit)
+  void rewatch();                                               // the vendor watch of the enabled factors
+  int set_factor_(double item, double factor, double enable);  // set_factor without the rewatch
   machine::Card& card_;
   bool main_ = false;
   std::set<int> enabled_;          // enabled interrupt numbers
