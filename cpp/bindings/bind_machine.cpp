@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <stdexcept>
 #include <functional>
@@ -103,23 +104,31 @@ machine::Trace offset_trace(machine::Trace t, std::size_t k) {
   return t;
 }
 
-// Runs the axis in chunks of about 20 ms of work, each under the axis's state lock, checking for Ctrl-C between
-// chunks (object_lock.hpp); the axis keeps its state between chunks, so the result is the one-call result.
-// chunk_start (optional): set to the run's tick index at which each chunk starts, for a per-tick hook that needs
-// the index in the whole run.
-// The input arrays of a run, checked finite chunk by chunk right before each chunk runs (decision SP5): the check
-// then reads what the tick loop reads next from cache, instead of a separate pass over memory.
+// The input arrays of a run, checked finite block by block right before each block runs (decisions SP5, SQ1): a
+// block's inputs (kCheckBlock ticks, 64 KiB per array) are then still in the core's cache when the tick loop reads
+// them, so the check adds no pass over memory.
 struct RunInput {
   const char* name;
   const double* data;
 };
+constexpr std::size_t kCheckBlock = 8192;
+// True if every sample of d[0, n) is finite. A double is not finite exactly when its 11 exponent bits are all ones;
+// then (bits & exponent) + 2^52 carries into bit 63, else bit 63 stays clear. Integer and/add/or vectorise with SSE2
+// (a compare per sample feeding a flag does not), so the check runs at the speed of the cache.
+bool all_finite(const double* d, std::size_t n) {
+  constexpr std::uint64_t kExponent = 0x7FF0000000000000ULL, kUnit = std::uint64_t{1} << 52;
+  std::uint64_t any = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    std::uint64_t bits;
+    std::memcpy(&bits, d + k, sizeof bits);
+    any |= (bits & kExponent) + kUnit;
+  }
+  return (any >> 63) == 0;
+}
 // Throws std::invalid_argument (ValueError) naming the first non-finite sample of [from, to), if any.
 void check_finite(const std::vector<RunInput>& inputs, std::size_t from, std::size_t to) {
   for (const RunInput& in : inputs) {
-    if (in.data == nullptr) continue;
-    bool ok = true;
-    for (std::size_t k = from; k < to; ++k) ok &= std::isfinite(in.data[k]);
-    if (ok) continue;
+    if (in.data == nullptr || all_finite(in.data + from, to - from)) continue;
     for (std::size_t k = from; k < to; ++k)
       if (!std::isfinite(in.data[k]))
         throw std::invalid_argument(std::string(in.name) + "[" + std::to_string(k) + "] = " +
@@ -127,7 +136,11 @@ void check_finite(const std::vector<RunInput>& inputs, std::size_t from, std::si
   }
 }
 
-// inputs: checked chunk by chunk; a non-finite sample found after some ticks ran puts the axis back as `undo` (the
+// Runs the axis in chunks of about 20 ms of work, each under the axis's state lock, checking for Ctrl-C between
+// chunks (object_lock.hpp); the axis keeps its state between chunks, so the result is the one-call result.
+// chunk_start (optional): set to the run's tick index at which each block starts, for a per-tick hook that needs
+// the index in the whole run.
+// inputs: checked block by block; a non-finite sample found after some ticks ran puts the axis back as `undo` (the
 // caller's copy from before the call) or as it stood when the run began, then raises: a run with a bad input never
 // changes the axis.
 machine::RunOutcome run_chunked(Axis& axis, const machine::CommandInput& in, const machine::Trace& trace,
@@ -137,43 +150,53 @@ machine::RunOutcome run_chunked(Axis& axis, const machine::CommandInput& in, con
   py::gil_scoped_release release;
   ChunkClock clock;
   std::optional<Axis> snapshot;
-  if (!inputs.empty() && undo == nullptr && in.n > clock.size()) {
+  if (!inputs.empty() && undo == nullptr && in.n > std::min(clock.size(), kCheckBlock)) {  // more than one block
     auto held = lock.chunk();
     snapshot.emplace(axis);
     undo = &*snapshot;
   }
   machine::RunOutcome outcome;
   std::size_t done = 0;
-  while (done < in.n) {
-    machine::CommandInput c = in;
-    c.n = std::min(clock.size(), in.n - done);
-    try {
-      check_finite(inputs, done, done + c.n);
-    } catch (const std::invalid_argument&) {
-      if (done > 0 || undo != nullptr) {
-        auto held = lock.chunk();
-        if (undo != nullptr) axis = *undo;
-      }
-      throw;
-    }
-    c.pos += done;
-    if (c.vel) c.vel += done;
-    if (c.acc) c.acc += done;
-    if (c.volts_add) c.volts_add += done;
-    machine::RunOutcome o;
+  bool stopped = false;
+  const bool check_after = !inputs.empty() && in.external == nullptr && undo != nullptr;
+  while (done < in.n && !stopped) {
+    const std::size_t chunk_end = done + std::min(clock.size(), in.n - done);
     {
       auto held = lock.chunk();
-      if (chunk_start) *chunk_start = done;
       clock.start();
-      o = axis.run(c, offset_trace(trace, done), guard);
+      // The chunk in blocks (decision SQ1). Each block's inputs are checked where that costs no pass over memory:
+      // right after the law's tick loop read them (they are in cache), when there is an undo copy to go back to;
+      // before the block otherwise (a short run without one, and a compiled controller, which must never see a bad
+      // sample). Either way a bad sample in a block that is reached raises, the axis as it was before the call.
+      while (done < chunk_end) {
+        machine::CommandInput c = in;
+        c.n = std::min(inputs.empty() ? chunk_end - done : kCheckBlock, chunk_end - done);
+        const auto check = [&] {
+          try {
+            check_finite(inputs, done, done + c.n);
+          } catch (const std::invalid_argument&) {
+            if (undo != nullptr) axis = *undo;  // without `undo` nothing ran yet (a run of one block at most)
+            throw;
+          }
+        };
+        if (!check_after) check();
+        c.pos += done;
+        if (c.vel) c.vel += done;
+        if (c.acc) c.acc += done;
+        if (c.volts_add) c.volts_add += done;
+        if (chunk_start) *chunk_start = done;  // the per-tick hook's index in the whole run: chunk_start + its own
+        const machine::RunOutcome o = axis.run(c, offset_trace(trace, done), guard);
+        if (check_after) check();
+        done += o.ticks;
+        if (o.stop != machine::RunStop::kCompleted) {
+          outcome = o;
+          stopped = true;
+          break;
+        }
+      }
       clock.stop();
     }
-    done += o.ticks;
-    if (o.stop != machine::RunStop::kCompleted) {
-      outcome = o;
-      break;
-    }
-    if (done < in.n) check_signals();
+    if (!stopped && done < in.n) check_signals();
   }
   outcome.ticks = done;
   return outcome;

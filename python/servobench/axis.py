@@ -365,8 +365,8 @@ class Axis:
             _checks.error_limit("Axis.run", "error_limit_pulse", error_limit_pulse, self, 0.0)
             _checks.flag("Axis.run", "stop_on_alarm", stop_on_alarm)
             n = positions.shape[0] if positions.ndim == 1 else -1
-            # Shapes here; the binding checks every sample finite chunk by chunk as the run goes and, on a bad one,
-            # puts the axis back as `undo` (decision SP5). The positions' extremes give the error limit's span.
+            # Shapes here; the binding checks every sample finite block by block as the run goes and, on a bad one,
+            # puts the axis back as `undo` (decisions SP5, SQ1). The positions' extremes give the error limit's span.
             lo_hi = _precheck("positions", positions, n, extremes=True)
             for name, x in (("velocities", velocities), ("accelerations", accelerations), ("injection_v", injection_v)):
                 if x is not None:

@@ -7,11 +7,13 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "servobench/machine/axis.hpp"
+#include "servobench/plant/dry_friction.hpp"
 
 namespace mc = servobench::machine;
 namespace ctl = servobench::control;
@@ -220,4 +222,109 @@ TEST(FusedTick, TheGuardCasesTrip) {
   EXPECT_EQ(trip[trip.size() - 3], 0.0);   // servo off after the trip
   EXPECT_EQ(alarm[alarm.size() - 3], 0.0);
   EXPECT_EQ(alarm[alarm.size() - 2], 1.0);  // alarm set
+}
+
+namespace {
+// The two-body friction solve as it was before decision SQ2: always three full Gauss-Seidel sweeps (the reference).
+void solve_three_sweeps(const pl::BodyIndex* idx, const pl::DryFriction<double>* fr, const Eigen::Matrix<double, 5, 1>& x0,
+                        const Eigen::Matrix<double, 5, 1>& x_free, const Eigen::Matrix<double, 5, 3>& gamma,
+                        unsigned locked, double* f, bool* stick) {
+  double slip_level[2], fs_pos[2], fs_neg[2];
+  for (int b = 0; b < 2; ++b) {
+    if (locked & (1u << b)) {
+      f[b] = 0.0;
+      stick[b] = true;
+    } else if (fr[b].active()) {
+      const double v0 = x0[idx[b].speed];
+      const double dir = v0 > 0.0 ? 1.0 : -1.0;
+      slip_level[b] = pl::directional_sliding_nm(fr[b], v0, dir);
+      fs_pos[b] = pl::directional_breakaway_nm(fr[b], 1.0);
+      fs_neg[b] = pl::directional_breakaway_nm(fr[b], -1.0);
+    }
+  }
+  for (int sweep = 0; sweep < 3; ++sweep) {
+    for (int b = 0; b < 2; ++b) {
+      if (locked & (1u << b)) continue;
+      const pl::BodyIndex& s = idx[b];
+      stick[b] = false;
+      if (!fr[b].active()) {
+        f[b] = 0.0;
+        continue;
+      }
+      double v_free = x_free[s.speed];
+      double d = x_free[s.angle] - x0[s.angle];
+      const int o = 1 - b;
+      v_free += gamma(s.speed, idx[o].input) * f[o];
+      d += gamma(s.angle, idx[o].input) * f[o];
+      const double g = gamma(s.speed, s.input), gth = gamma(s.angle, s.input), v0 = x0[s.speed];
+      double fb;
+      bool st = false;
+      const double dir = v0 > 0.0 ? 1.0 : -1.0;
+      const double f_slip = -dir * slip_level[b];
+      if (v0 != 0.0 && (v_free + g * f_slip) * dir > 0.0) {
+        fb = f_slip;
+      } else {
+        const double f_stick = -v_free / g;
+        if (f_stick <= fs_neg[b] && f_stick >= -fs_pos[b]) {
+          fb = f_stick;
+          st = true;
+        } else {
+          fb = v_free > 0.0 ? -fs_pos[b] : fs_neg[b];
+        }
+      }
+      if (!(st && v0 == 0.0) && fb * (d + gth * fb) > 0.0) {
+        st = false;
+        const double cap = gth > 0.0 ? std::fabs(d) / gth : 0.0;
+        const double afb = std::fabs(fb);
+        const double mag = afb < cap ? afb : cap;
+        fb = d == 0.0 ? 0.0 : (d > 0.0 ? -mag : mag);
+      }
+      f[b] = fb;
+      stick[b] = st;
+    }
+  }
+}
+}  // namespace
+
+// Decision SQ2: the two-body solve stops once a body's force repeats bit for bit; its forces and stick flags are the
+// three full sweeps' on random sub-steps (sliding, sticking, breaking away, passing zero, locked bodies, zero speeds,
+// Stribeck, asymmetry, an inactive body).
+TEST(FusedTick, TheTwoBodySolveStopsWhenConvergedWithTheSameForces) {
+  std::mt19937_64 rng(22);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const pl::BodyIndex idx[2] = {{1, 2, 1}, {3, 4, 2}};
+  for (int trial = 0; trial < 400000; ++trial) {
+    pl::DryFriction<double> fr[2];
+    for (auto& f : fr) {
+      f.coulomb_nm = trial % 11 == 0 ? 0.0 : 0.01 + 0.02 * std::fabs(u(rng));
+      f.breakaway_nm = trial % 3 == 0 ? f.coulomb_nm : f.coulomb_nm * (1.0 + std::fabs(u(rng)));
+      f.stribeck_speed_rad_s = 0.05 + std::fabs(u(rng));
+      f.coulomb_asym_nm = trial % 5 == 0 ? 0.3 * f.coulomb_nm * u(rng) : 0.0;
+      f.viscous_asym_nms = trial % 7 == 0 ? 1e-4 * std::fabs(u(rng)) : 0.0;
+    }
+    if (trial % 13 == 0) fr[1].coulomb_nm = fr[1].breakaway_nm = 0.0;  // an inactive body
+    Eigen::Matrix<double, 5, 1> x0, xf;
+    Eigen::Matrix<double, 5, 3> gamma;
+    for (int i = 0; i < 5; ++i) {
+      x0[i] = u(rng);
+      xf[i] = x0[i] + 0.05 * u(rng);
+      for (int j = 0; j < 3; ++j) gamma(i, j) = 0.01 * u(rng);
+    }
+    for (int b = 0; b < 2; ++b) {
+      gamma(idx[b].speed, idx[b].input) = 0.5 + std::fabs(u(rng));   // own force slows the body
+      gamma(idx[b].angle, idx[b].input) = 1e-3 * std::fabs(u(rng));
+      const int pick = (trial >> (2 * b)) % 4;
+      if (pick == 0) x0[idx[b].speed] = 0.0;                          // at rest
+      if (pick == 1) xf[idx[b].speed] = 1e-3 * u(rng);                // nearly stopping
+    }
+    const unsigned locked = trial % 17 == 0 ? 1u + static_cast<unsigned>(trial % 3) % 3 : 0u;
+    double f_ref[2] = {0.0, 0.0}, f_new[2] = {0.0, 0.0};
+    if (trial % 2) f_ref[0] = f_new[0] = f_ref[1] = f_new[1] = 0.01 * u(rng);  // a re-solve starts from forces
+    bool s_ref[2] = {false, false}, s_new[2] = {false, false};
+    solve_three_sweeps(idx, fr, x0, xf, gamma, locked, f_ref, s_ref);
+    pl::solve_dry_friction(2, idx, fr, x0, xf, gamma, locked, f_new, s_new);
+    ASSERT_EQ(0, std::memcmp(f_ref, f_new, sizeof f_ref)) << "trial " << trial;
+    ASSERT_EQ(s_ref[0], s_new[0]) << "trial " << trial;
+    ASSERT_EQ(s_ref[1], s_new[1]) << "trial " << trial;
+  }
 }

@@ -171,3 +171,32 @@ def test_a_bad_sample_deep_in_a_long_run_leaves_the_axis_as_it_was(which, contin
     ref = sb.demo_axis()
     ref.run(np.full(3000, 700.0))
     assert np.array_equal(run.fb_pos, ref.run(np.full(3000, 700.0), continue_=True).fb_pos)
+
+
+@pytest.mark.parametrize("bad_at", [0, 8191, 8192, 8193, 50_001, 99_999])
+def test_the_block_checks_find_a_bad_sample_anywhere_and_restore_the_axis(bad_at):
+    # The binding checks each block of 8192 ticks right before it runs (decision SQ1): a bad sample at a block's
+    # first or last tick, or deep in a later chunk, names its index and leaves the axis as it was.
+    n = 100_000
+    for which in ("positions", "accelerations"):
+        axis = sb.demo_axis()
+        axis.run(np.full(2000, 300.0))
+        before = (axis.tick, axis.angle_rad, axis.speed_rad_s, axis.feedback_pulse, axis.last_command_pulse)
+        pos, acc = np.full(n, 500.0), np.zeros(n)
+        {"positions": pos, "accelerations": acc}[which][bad_at] = np.inf
+        with pytest.raises(ValueError, match=rf"{which}\[{bad_at}\] = inf is not a finite number"):
+            axis.run(pos, velocities=np.zeros(n), accelerations=acc, continue_=True)
+        assert (axis.tick, axis.angle_rad, axis.speed_rad_s, axis.feedback_pulse, axis.last_command_pulse) == before
+
+
+def test_a_compiled_controller_sees_the_runs_tick_index_across_blocks():
+    # The run goes block by block (decision SQ1); a compiled controller's tick argument is still the index in the run.
+    import ctypes
+
+    seen = []
+    proto = ctypes.CFUNCTYPE(ctypes.c_double, ctypes.c_int64, ctypes.c_double, ctypes.c_double,
+                             ctypes.POINTER(ctypes.c_double))
+    hook = proto(lambda k, cmd, fb, st: seen.append(k) or 0.0)
+    n = 3 * 8192 + 77
+    run = sb.demo_axis().run(np.zeros(n), controller=hook, signals=("volts",))
+    assert seen == list(range(n)) and run.volts.shape == (n,)

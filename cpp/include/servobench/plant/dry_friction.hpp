@@ -15,6 +15,8 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <type_traits>
 
 #include <Eigen/Core>
@@ -108,6 +110,8 @@ void solve_dry_friction(std::size_t nb, const BodyIndex* idx, const DryFriction<
       fs_neg[b] = directional_breakaway_nm(fr[b], -1.0);  // resists negative motion
     }
   }
+  std::uint64_t last_bits[kMaxBodies] = {0, 0};
+  bool seen[kMaxBodies] = {false, false};
   for (int sweep = 0; sweep < sweeps; ++sweep) {
     for (std::size_t b = 0; b < nb; ++b) {
       if (locked & (1u << b)) continue;
@@ -154,6 +158,19 @@ void solve_dry_friction(std::size_t nb, const BodyIndex* idx, const DryFriction<
       }
       f[b] = fb;
       stick[b] = st;
+      // Converged (decision SQ2): with two bodies each evaluation depends only on the other body's latest force, so
+      // once a body's force comes out bit for bit as its previous evaluation gave, every further evaluation repeats
+      // one already made and the sweeps would end where they stand now. Doubles only (a Jet's derivatives may still
+      // move).
+      if constexpr (std::is_same<T, double>::value) {
+        if (nb == 2) {
+          std::uint64_t bits;
+          std::memcpy(&bits, &fb, sizeof bits);
+          if (seen[b] && bits == last_bits[b]) return;
+          last_bits[b] = bits;
+          seen[b] = true;
+        }
+      }
     }
   }
 }
