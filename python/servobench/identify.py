@@ -483,9 +483,9 @@ def _fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | Non
     guess
         name -> starting value (SI) of every parameter to estimate; parameters not named are held at 0 (no Stribeck
         peak unless static_nm / motor_static_nm is guessed). None (rigid model, position log): the IDIM-LS answer
-        (:func:`servobench.idim_ls`: inertia or mass, viscous and Coulomb friction, offset as load_nm). fixed: names held at their guess. bounds: name ->
-        (low, high); the default keeps inertias and the stiffness above 1/1000 of their guess, frictions >= 0, and
-        the Stribeck speed within two decades of its guess.
+        (:func:`servobench.idim_ls`: inertia or mass, viscous and Coulomb friction, offset as load_nm). fixed: names
+        held at their guess. bounds: name -> (low, high); the default keeps inertias and the stiffness above 1/1000
+        of their guess, frictions >= 0, and the Stribeck speed within two decades of its guess.
     {options}
     n_starts, seed
         the fit runs from the start and n_starts - 1 seeded perturbations of it (each free parameter x 1/1.5..1.5);
@@ -562,10 +562,9 @@ def _fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | Non
             spectrum = e
 
     def fit_one(g, prog):
-        return _fit_once(log, model, guess=g, fixed=fixed, bounds=bounds, segment_samples=segment_samples,
-                         initial_segment_samples=initial_segment_samples,
-                         max_relative_std_error=max_relative_std_error, strict=False, progress=prog,
-                         spectrum=spectrum, **options)
+        return _fit_once(log, model, spectrum, guess=g, fixed=fixed, bounds=bounds,
+                         segment_samples=segment_samples, initial_segment_samples=initial_segment_samples,
+                         max_relative_std_error=max_relative_std_error, strict=False, progress=prog, **options)
 
     fits = oefit.run_starts(fit_one, oefit.perturbed_starts(guess, free, n_starts, seed), threads=start_threads,
                             progress=progress)
@@ -706,7 +705,7 @@ def _same_point(a, b, inflate: float) -> bool:
     return True
 
 
-def _fit_once(log: IdentificationLog, model: str = "rigid", *, guess: dict, fixed: Iterable[str] = (),
+def _fit_once(log: IdentificationLog, model: str = "rigid", spectrum=None, /, *, guess: dict, fixed: Iterable[str] = (),
              bounds: dict | None = None, segment_samples: int = _TIME["segment_samples"],
              initial_segment_samples: int = _TIME["initial_segment_samples"], loss: str = "none",
              loss_scale_counts: float = _TIME["loss_scale_counts"],
@@ -715,9 +714,10 @@ def _fit_once(log: IdentificationLog, model: str = "rigid", *, guess: dict, fixe
              direction_window: int = _TIME["direction_window"],
              rest_threshold_counts: float = _TIME["rest_threshold_counts"], edge_samples: int = _TIME["edge_samples"],
              start: str = "auto", hold_stribeck_first: bool = _TIME["hold_stribeck_first"], strict: bool = True,
-             progress=None, spectrum=None) -> IdentifiedPlant:
-    """One output-error fit from one start (see :func:`fit_time`). spectrum: the log's :func:`resonance_guess` (or
-    the IdentificationError it raised) when the caller already has it (fit_time reads it once for all starts)."""
+             progress=None) -> IdentifiedPlant:
+    """One output-error fit from one start (see :func:`fit_time`). spectrum (positional only, so that it is not one
+    of fit_time's options): the log's :func:`resonance_guess` (or the IdentificationError it raised) when the caller
+    already has it (fit_time reads it once for all starts)."""
     model = _model(model)
     if not isinstance(log, IdentificationLog):
         raise TypeError("log must be an IdentificationLog (see IdentificationLog.from_arrays / run_experiment)")
