@@ -14,15 +14,41 @@ struct ObjectLocks {
   std::recursive_mutex state;
 };
 
+namespace detail {
+struct LockTable {
+  std::mutex mutex;
+  std::unordered_map<const void*, std::shared_ptr<ObjectLocks>> locks;
+};
+inline LockTable& lock_table() {
+  static auto* table = new LockTable();  // never destroyed
+  return *table;
+}
+}  // namespace detail
+
 // The locks of the object at `key`, created on first use. An address a later object reuses keeps its (unlocked)
 // entry: the table holds one small entry per address ever locked, which the allocator's reuse keeps few.
 inline std::shared_ptr<ObjectLocks> locks_of(const void* key) {
-  static std::mutex table_mutex;
-  static auto* table = new std::unordered_map<const void*, std::shared_ptr<ObjectLocks>>();  // never destroyed
-  std::lock_guard<std::mutex> g(table_mutex);
-  auto& slot = (*table)[key];
+  auto& t = detail::lock_table();
+  std::lock_guard<std::mutex> g(t.mutex);
+  auto& slot = t.locks[key];
   if (!slot) slot = std::make_shared<ObjectLocks>();
   return slot;
+}
+
+// From now on the object at `key` (a vendor module a card owns) uses the locks of `owner` (its card), so its
+// methods wait for the card's running chunk like the card's own. Undone by forget_locks(key) when the owner goes.
+inline void share_locks(const void* key, const void* owner) {
+  auto& t = detail::lock_table();
+  std::lock_guard<std::mutex> g(t.mutex);
+  auto& o = t.locks[owner];
+  if (!o) o = std::make_shared<ObjectLocks>();
+  t.locks[key] = o;
+}
+
+inline void forget_locks(const void* key) {
+  auto& t = detail::lock_table();
+  std::lock_guard<std::mutex> g(t.mutex);
+  t.locks.erase(key);
 }
 
 }  // namespace servobench::bindings

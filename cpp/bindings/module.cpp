@@ -28,6 +28,7 @@ void bind_vendor_gts(py::module_& m);
 void bind_vendor_gts_commands(py::module_& m);
 void bind_vendor_adlink(py::module_& m);  // bind_vendor_adlink.cpp: the ADLINK vendor module
 void bind_excitation(py::module_& m);
+void serialise_card_functions(py::module_& m);  // card_locks.cpp: last, over every card function
 }  // namespace servobench::bindings
 
 PYBIND11_MODULE(_core, m) {
@@ -58,6 +59,8 @@ PYBIND11_MODULE(_core, m) {
   servobench::bindings::bind_vendor_gts_commands(m);
   servobench::bindings::bind_vendor_adlink(m);
   servobench::bindings::bind_excitation(m);
+  // After every binding: each function taking the card first holds the card's lock (card_locks.cpp).
+  servobench::bindings::serialise_card_functions(m);
   // Last: every function's signature readable by inspect.signature() (help(), IPython completion; decision Y3).
   // Not while pybind11-stubgen reads the module at build time (CMakeLists.txt sets SERVOBENCH_STUBGEN): it takes a
   // text signature over the docstring's typed line, and the stubs need the types.

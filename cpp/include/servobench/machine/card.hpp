@@ -46,10 +46,13 @@ struct CardCycles {
 
 // Profile mode of an axis. The values are the GT mode-register code (bits 11-13, GT L1500-1511); PVT and
 // FollowEx (GUC-ECAT / iDEABOX modes the GT does not have) take the free codes 6 and 7 (decision V52).
-enum class AxisMode : int { TCurve = 0, Jog = 1, SCurve = 2, Gear = 3, Coordinated = 5, Pvt = 6, Follow = 7 };
+// The kernel's own numbering: no vendor's register code. A vendor maps it to its words (GT mode register bits
+// 11-13: vendor::googol::gt_mode_code).
+enum class AxisMode : int { TCurve, Jog, SCurve, Gear, Coordinated, Pvt, Follow };
 const char* to_string(AxisMode mode);
 
-// Latched events of an axis (bits of CardAxisState::events). Bits 0-7 are in the GT status order (Table 4-14).
+// Latched events of an axis (bits of CardAxisState::events), in the kernel's own order; each vendor's status word
+// maps them to its bits (vendor::googol::gt_axis_status, ge_axis_status, vendor::adlink::aps_motion_status).
 enum class CardEvent : int {
   MotionComplete = 0,
   DriveAlarm = 1,

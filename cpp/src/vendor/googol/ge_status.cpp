@@ -1,5 +1,6 @@
 #include "servobench/vendor/googol/ge_status.hpp"
 #include "servobench/vendor/googol/ge_list.hpp"
+#include "servobench/vendor/googol/gt_status.hpp"
 
 namespace servobench::vendor::googol {
 
@@ -97,11 +98,8 @@ std::uint16_t ge_command_status(GeVariant variant, const Card& card) {
 }
 
 std::uint32_t ge_events_to_clear(std::uint16_t rst_sts_mask) {
-  const std::uint32_t clear = ~static_cast<std::uint32_t>(rst_sts_mask) & 0xFFu;
-  std::uint32_t e = clear;  // bits 0-7 are the card events 0-7
-  if (clear & (1u << 5)) e |= event_bit(CardEvent::SoftPosLimit);
-  if (clear & (1u << 6)) e |= event_bit(CardEvent::SoftNegLimit);
-  return e;
+  // Bits 0-7 are laid out as the GT's (Tables 4-2/4-3 = GT Table 4-14 in these bits).
+  return gt_events_to_clear(rst_sts_mask);
 }
 
 }  // namespace servobench::vendor::googol

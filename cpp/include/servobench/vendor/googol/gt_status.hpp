@@ -20,6 +20,11 @@ namespace servobench::vendor::googol {
 
 std::uint16_t gt_axis_status(const machine::Card& card, std::size_t axis);
 std::uint16_t gt_mode_register(const machine::Card& card, std::size_t axis);
+// The mode register's bits 11-13 for a kernel mode: T 0, jog 1, S 2, gear 3, coordinated 5 (L1500-1511); the PVT
+// and FollowEx modes, which the GT manual has no code for, read 6 and 7 (decision VK11).
+std::uint16_t gt_mode_code(machine::AxisMode mode);
+// The latched events as status bits 0-7 (Table 4-14) and back; the soft limits show as the hard ones (V15).
+std::uint32_t gt_event_bits(std::uint32_t events);
 // The command-status bit of a refusal cause (0 for causes the GT register has no bit for).
 std::uint16_t gt_command_status_bit(machine::CommandFault fault);
 std::uint16_t gt_command_status(const machine::Card& card);
