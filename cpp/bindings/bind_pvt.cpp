@@ -61,7 +61,8 @@ int whole(double v, const char* owner, const char* field, double lo, double hi, 
 void bind_pvt(py::module_& m) {
   using namespace motion;
 
-  // ReturnCode (the GUC-ECAT / iDEABOX codes) is vendor::googol::GucCode, aliased by bind_vendor_gts.cpp (GX4).
+  // ReturnCode (the GUC-ECAT / iDEABOX codes) is vendor::googol::GucCode, bound by bind_card_codes.cpp; servobench.pvt
+  // keeps the old name as an alias of it (decision GX4).
 
   py::class_<PvtCurve>(m, "PvtCurve",
       "A compiled PVT table: the points (time_ms ms, pos pulse, vel pulse/ms at each point) and the cubic pieces\n"

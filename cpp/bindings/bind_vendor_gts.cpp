@@ -31,9 +31,6 @@ int fifo_arg(double fifo) {
 }  // namespace
 
 void bind_vendor_gts(py::module_& m) {
-  // The GUC-ECAT / iDEABOX return codes have one definition, vendor::googol::GucCode (bound by bind_card_codes.cpp);
-  // servobench.ReturnCode, their name before the vendor folder existed, is an alias of it (decision GX4).
-  m.attr("ReturnCode") = m.attr("GucCode");
   py::class_<GtsCard, std::unique_ptr<GtsCard, py::nodelete>>(
       m, "GtsCard",
       "The GUC-ECAT / iDEABOX registers of one card (vendor/googol/gts_card.hpp): look-ahead windows, GPI levels\n"

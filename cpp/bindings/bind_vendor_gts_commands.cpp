@@ -9,6 +9,8 @@
 #include <string>
 
 #include "arrays.hpp"
+#include "lock_table.hpp"
+#include "object_lock.hpp"
 #include "servobench/machine/card.hpp"
 #include "servobench/vendor/googol/gts_commands.hpp"
 #include "servobench/vendor/googol/gts_config.hpp"
@@ -94,7 +96,11 @@ void bind_vendor_gts_commands(py::module_& m) {
       "as a Python literal or '' for a command, doc).");
   m.def("gts_command_names", &g::gts_command_names, "The commands gts_command runs.");
   m.def("gts_command", [](Card& k, const std::string& name, const Vec& args) -> py::object {
-        const g::GtsReply r = g::gts_command(k, name, args);
+        g::GtsReply r;
+        {  // the card's state lock, as the Card's own methods hold it (a realtime clock may be ticking it)
+          auto lk = lock_releasing_gil(locks_of(&k)->state);
+          r = g::gts_command(k, name, args);
+        }
         if (r.kinds.empty()) return py::int_(static_cast<int>(r.code));
         if (r.kinds == "l") return py::make_tuple(0, r.values);
         py::list out;
@@ -108,6 +114,7 @@ void bind_vendor_gts_commands(py::module_& m) {
       "read that succeeded (a failing read: its code alone).");
   m.def("gts_follow_data_complete", [code](Card& k, double p, double f, double n, const Vec& ms, const Vec& ss,
                                            double vb, double ve) {
+        auto lk = lock_releasing_gil(locks_of(&k)->state);
         return code(g::gts_follow_data_complete(k, p, f, n, ms, ss, vb, ve)); }, py::arg("card"), py::arg("profile"),
         py::arg("fifo"), py::arg("n"), py::arg("master"), py::arg("slave"), py::arg("ratio_begin"),
         py::arg("ratio_end"), "GT_FollowDataCompleteEx: n knots, cumulative pulse");
