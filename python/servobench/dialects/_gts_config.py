@@ -5,10 +5,11 @@ EtherCAT / configuration-file calls of the iDEABOX examples (L611, L625) and the
 
 Each command is a one-line adapter (``CONFIG_ADAPTERS``) over a C++ vendor function that checks its arguments and
 returns the manual's code (``vendor/googol/gts_config.hpp``, ``_core.gts_*``); its row (parameters, docstring) is the
-C++ command table's (``gts_commands.hpp``, generated into the controller by ``gts.py``); what the kernel does not hold (stop decelerations and inputs,
-the filter windows and their history, the GPI levels and polarity, the jog smoothing) is the card's GtsCard
-(``_core.gts_card(card.kernel)``, ``gts_card.hpp``). Units: pulse, ms, pulse/ms, pulse/ms^2; axes from 1.
-Decisions GS1-GS18 (docs/decisions.md, Session 10), GT11-GT13 (Session 11), GU1-GU7 (Session 12)."""
+C++ command table's (``gts_commands.hpp``, generated into the controller by ``gts.py``); what the kernel does not
+hold (stop decelerations and inputs, the filter windows and their history, the GPI levels and polarity, the jog
+smoothing) is the card's GtsCard (``_core.gts_card(card.kernel)``, ``gts_card.hpp``). Units: pulse, ms, pulse/ms,
+pulse/ms^2; axes from 1. Decisions GS1-GS18 (docs/decisions.md, Session 10), GT11-GT13 (Session 11), GU1-GU7
+(Session 12), GX1-GX2 (Session 13)."""
 
 from __future__ import annotations
 

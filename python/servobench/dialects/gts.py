@@ -62,6 +62,7 @@ FOLLOW_SEGMENT_NORMAL, FOLLOW_SEGMENT_EVEN, FOLLOW_SEGMENT_STOP, FOLLOW_SEGMENT_
 FOLLOW_MASTER_ENCODER, FOLLOW_MASTER_PROFILE, FOLLOW_MASTER_AXIS = 1, 2, 3
 FOLLOW_EVENT_START, FOLLOW_EVENT_PASS = 1, 2
 
+
 @dataclass
 class TCrdPrm:
     """TCrdPrm (GUC L371-388, iDEABOX L7113-7164): dimension 1..4; profile[k] = coordinate (1 X .. 4 A, 0 none)
@@ -75,7 +76,6 @@ class TCrdPrm:
     evenTime: int = 0
     setOriginFlag: int = 0
     originPos: list = field(default_factory=lambda: [0] * 8)
-
 
 
 class GtsController(GtsConfigMixin, GtsProgramMixin, DialectController):

@@ -146,7 +146,8 @@ GtsReply line(Ctx& c, int dim, bool g0) {
 GtsReply arc(Ctx& c, motion::ArcPlane plane, bool radius) {
   const std::size_t d = radius ? 4 : 5;  // circleDir's index
   bool ok = whole_in(c.at(1), kPosMin, kPosMax) && whole_in(c.at(2), kPosMin, kPosMax) && one_of(c.at(d), {0, 1}) &&
-            seg_ok(c.at(d + 1), c.at(d + 2), c.at(d + 3)) && std::isfinite(c.at(3)) && (radius || std::isfinite(c.at(4)));
+            seg_ok(c.at(d + 1), c.at(d + 2), c.at(d + 3)) && std::isfinite(c.at(3)) &&
+            (radius || std::isfinite(c.at(4)));
   const auto [i0, i1] = plane == motion::ArcPlane::XY ? std::pair{0, 1}
                         : plane == motion::ArcPlane::YZ ? std::pair{1, 2} : std::pair{2, 0};
   return push(c, ok, 0, d + 4, [&](PathGenerator& f) {
@@ -267,9 +268,13 @@ const std::unordered_map<std::string, Impl>& commands() {
        }},
       // -- coordinate-system state (GUC L666-712, L979, L5499-5519; iDEABOX L4527-4599, L5581-5595, L7182-7441)
       {"GT_GetUserSegNum", [](Ctx& c) {
-         return read(crd_ok(c, 0) && fifo_ok(c, 1), "i", [&] { return counts(fifo(c, 0, 1).state().user_seg_num); }); }},
+         return read(crd_ok(c, 0) && fifo_ok(c, 1), "i", [&] {
+           return counts(fifo(c, 0, 1).state().user_seg_num); });
+       }},
       {"GT_GetRemainderSegNum", [](Ctx& c) {
-         return read(crd_ok(c, 0) && fifo_ok(c, 1), "i", [&] { return counts(fifo(c, 0, 1).remaining_segments()); }); }},
+         return read(crd_ok(c, 0) && fifo_ok(c, 1), "i", [&] {
+           return counts(fifo(c, 0, 1).remaining_segments()); });
+       }},
       {"GT_CrdSpace", [](Ctx& c) {
          return read(crd_ok(c, 0) && fifo_ok(c, 1), "i", [&] { return counts(fifo(c, 0, 1).fifo_space()); }); }},
       {"GT_CrdClear", [](Ctx& c) { return cmd(crd_ok(c, 0) && fifo_ok(c, 1), [&] { fifo(c, 0, 1).clear(); }); }},
@@ -306,10 +311,12 @@ const std::unordered_map<std::string, Impl>& commands() {
       // -- PVT (GUC §4.2 L1116-2100, iDEABOX §4.4)
       {"GT_PrfPvt", [](Ctx& c) { return cmd(c.axis_ok(0), [&] { c.card.modes().set_pvt(c.axis(0)); }); }},
       {"GT_PvtTableSelect", [](Ctx& c) {
-         return cmd(c.axis_ok(0) && whole_in(c.at(1), 1, 32), [&] { c.card.modes().pvt_select(c.axis(0), c.whole(1)); });
+         return cmd(c.axis_ok(0) && whole_in(c.at(1), 1, 32),
+                    [&] { c.card.modes().pvt_select(c.axis(0), c.whole(1)); });
        }},
       {"GT_SetPvtLoop", [](Ctx& c) {
-         return cmd(c.axis_ok(0) && whole_in(c.at(1), 0, kI32Max), [&] { c.card.modes().pvt_loop(c.axis(0), c.at(1)); });
+         return cmd(c.axis_ok(0) && whole_in(c.at(1), 0, kI32Max),
+                    [&] { c.card.modes().pvt_loop(c.axis(0), c.at(1)); });
        }},
       {"GT_GetPvtLoop", [](Ctx& c) {
          return read(c.axis_ok(0), "ii", [&] {
@@ -337,7 +344,8 @@ const std::unordered_map<std::string, Impl>& commands() {
          const bool ok = c.axis_ok(0) && c.axis_ok(1) && one_of(c.at(2), {1, 2, 3}) && one_of(c.at(3), {0, 1});
          return cmd(ok, [&] {
            c.card.modes().follow_master(c.axis(0), machine::FollowMaster{c.axis(1)});
-           follow_change(c, c.axis(0), [&](motion::FollowExSetup& s) { s.master_type = c.at(2), s.master_item = c.at(3); });
+           follow_change(c, c.axis(0), [&](motion::FollowExSetup& s) {
+             s.master_type = c.at(2), s.master_item = c.at(3); });
          });
        }},
       {"GT_GetFollowMasterEx", [](Ctx& c) {
@@ -359,7 +367,8 @@ const std::unordered_map<std::string, Impl>& commands() {
            follow_change(c, c.axis(0), [&](motion::FollowExSetup& s) { s.max_segment = c.at(1); }); });
        }},
       {"GT_FollowClearEx", [](Ctx& c) {
-         return cmd(c.axis_ok(0) && one_of(c.at(1), {0, 1}), [&] { c.card.modes().follow(c.axis(0)).clear(c.whole(1)); });
+         return cmd(c.axis_ok(0) && one_of(c.at(1), {0, 1}),
+                    [&] { c.card.modes().follow(c.axis(0)).clear(c.whole(1)); });
        }},
       {"GT_FollowDataPercentEx", [](Ctx& c) {
          return cmd(c.axis_ok(0) && one_of(c.at(3), {0, 1, 2, 3}) && one_of(c.at(5), {0, 1}), [&] {
