@@ -15,7 +15,6 @@
 #include "servobench/motion/follow_ex.hpp"
 #include "servobench/motion/pvt.hpp"
 #include "servobench/motion/pvt_table.hpp"
-#include "servobench/motion/return_code.hpp"
 
 namespace servobench::bindings {
 
@@ -62,14 +61,8 @@ int whole(double v, const char* owner, const char* field, double lo, double hi, 
 void bind_pvt(py::module_& m) {
   using namespace motion;
 
-  py::enum_<ReturnCode>(m, "ReturnCode", "Googol return codes (GUC-ECAT Tab 2-1 L165-180, iDEABOX L333-361).")
-      .value("SUCCESS", ReturnCode::Success)
-      .value("COMMAND_ERROR", ReturnCode::CommandError)
-      .value("LICENSE_ERROR", ReturnCode::LicenseError)
-      .value("PARAMETER_ERROR", ReturnCode::ParameterError)
-      .value("COMM_ERROR", ReturnCode::CommError)
-      .value("OPEN_FAILED", ReturnCode::OpenFailed)
-      .value("NO_RESPONSE", ReturnCode::NoResponse);
+  // ReturnCode (the GUC-ECAT / iDEABOX codes) is vendor::googol::GucCode, bound by bind_card_codes.cpp; servobench.pvt
+  // keeps the old name as an alias of it (decision GX4).
 
   py::class_<PvtCurve>(m, "PvtCurve",
       "A compiled PVT table: the points (time_ms ms, pos pulse, vel pulse/ms at each point) and the cubic pieces\n"

@@ -6,7 +6,11 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <string>
+
 #include "arrays.hpp"
+#include "lock_table.hpp"
+#include "object_lock.hpp"
 #include "servobench/machine/card.hpp"
 #include "servobench/vendor/googol/gts_commands.hpp"
 #include "servobench/vendor/googol/gts_config.hpp"
@@ -83,6 +87,37 @@ void bind_vendor_gts_commands(py::module_& m) {
         return py::make_tuple(static_cast<int>(c), c == g::GucCode::Success ? py::object(to_array(t)) : py::none());
       }, py::arg("count"), py::arg("pos"), py::arg("vel"), py::arg("percent"), py::arg("vel_max"), py::arg("acc"),
       py::arg("dec"), "GT_PvtContinuousCalculate: (0, point times ms, time[0] = 0) or (7, None)");
+  // the command table and the runner (gts_commands.hpp, decisions GX1-GX3)
+  m.def("gts_command_table", [] {
+        py::list rows;
+        for (const auto& r : g::gts_command_table()) rows.append(py::make_tuple(r.name, r.params, r.fail, r.doc));
+        return rows;
+      }, "The GTS commands (vendor/googol/gts_commands.hpp): (name, parameters, a read's failure placeholders "
+      "as a Python literal or '' for a command, doc).");
+  m.def("gts_command_names", &g::gts_command_names, "The commands gts_command runs.");
+  m.def("gts_command", [](Card& k, const std::string& name, const Vec& args) -> py::object {
+        g::GtsReply r;
+        {  // the card's state lock, as the Card's own methods hold it (a realtime clock may be ticking it)
+          auto lk = lock_releasing_gil(locks_of(&k)->state);
+          r = g::gts_command(k, name, args);
+        }
+        if (r.kinds.empty()) return py::int_(static_cast<int>(r.code));
+        if (r.kinds == "l") return py::make_tuple(0, r.values);
+        py::list out;
+        out.append(0);
+        for (std::size_t i = 0; i < r.values.size(); ++i)
+          out.append(r.kinds[i] == 'i' ? py::object(py::int_(static_cast<long long>(r.values[i])))
+                                       : py::object(py::float_(r.values[i])));
+        return py::tuple(out);
+      }, py::arg("card"), py::arg("name"), py::arg("args"),
+      "Runs GTS command `name` (arguments as doubles in the manual's units): its code, or (0, values...) for a "
+      "read that succeeded (a failing read: its code alone).");
+  m.def("gts_follow_data_complete", [code](Card& k, double p, double f, double n, const Vec& ms, const Vec& ss,
+                                           double vb, double ve) {
+        auto lk = lock_releasing_gil(locks_of(&k)->state);
+        return code(g::gts_follow_data_complete(k, p, f, n, ms, ss, vb, ve)); }, py::arg("card"), py::arg("profile"),
+        py::arg("fifo"), py::arg("n"), py::arg("master"), py::arg("slave"), py::arg("ratio_begin"),
+        py::arg("ratio_end"), "GT_FollowDataCompleteEx: n knots, cumulative pulse");
   // system configuration and read-backs (gts_config.hpp)
   m.def("gts_alarm", [code](Card& k, double a, bool on) { return code(g::gts_alarm(k, a, on)); }, py::arg("card"),
         py::arg("axis"), py::arg("on"), "GT_AlarmOn / GT_AlarmOff");

@@ -27,10 +27,10 @@ from ._core import (
     FollowEx,
     FollowExSetup,
     FollowSegment,
+    GucCode as ReturnCode,  # the GUC-ECAT / iDEABOX codes' name before the vendor folder existed (decision GX4)
     PvtAxis,
     PvtCurve,
     PvtTables,
-    ReturnCode,
     follow_cam,
     pvt_complete_calculate,
     pvt_continuous_calculate,

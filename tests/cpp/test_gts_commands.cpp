@@ -5,6 +5,10 @@
 
 #include <cmath>
 #include <limits>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "card_fixtures.hpp"
 #include "servobench/machine/card.hpp"
@@ -133,4 +137,33 @@ TEST(GtsConfig, SystemCallsCheckTheirRangesAndReadBack) {
   EXPECT_EQ(vg::gts_get_acc(card, 1), std::make_tuple(GucCode::Success, 0.25, 0.5));
   EXPECT_EQ(vg::gts_get_vel_filter(card, 1, true), std::make_pair(GucCode::Success, 0));
   EXPECT_EQ(vg::gts_set_stop_io(card, 0, 0, 4, 1), GucCode::ParameterError);
+}
+
+// The command runner (gts_command, decision GX1): each name of gts_command_names() is a row of the table, a NaN in
+// every position returns 7 (never a throw), a valid call does what the dialect's row did and a read says its values.
+TEST(GtsCommands, RunnerChecksEveryArgumentAndReadsInTheManualsUnits) {
+  mc::Card card(4, servobench::test::tuned_axis(1e-3));
+  std::set<std::string> rows;
+  for (const auto& r : vg::gts_command_table()) rows.insert(r.name);
+  for (const auto& name : vg::gts_command_names()) {
+    EXPECT_TRUE(rows.count(name)) << name;
+    const vg::GtsReply r = vg::gts_command(card, name, std::vector<double>(10, kNaN));
+    EXPECT_EQ(r.code, GucCode::ParameterError) << name;
+    EXPECT_TRUE(r.values.empty()) << name;
+  }
+  EXPECT_THROW(vg::gts_command(card, "GT_NoSuchCommand", {}), std::invalid_argument);
+  EXPECT_EQ(vg::gts_command(card, "GT_AxisOn", {5}).code, GucCode::ParameterError);  // 4 axes
+  EXPECT_EQ(vg::gts_command(card, "GT_AxisOn", {1}).code, GucCode::Success);
+  EXPECT_EQ(vg::gts_command(card, "GT_PrfJog", {1}).code, GucCode::Success);
+  EXPECT_EQ(vg::gts_command(card, "GT_SetVel", {1, 2.0}).code, GucCode::Success);  // pulse/ms
+  EXPECT_DOUBLE_EQ(card.state(0).staged.vel, 2.0);  // 1 ms tick: pulse/ms = pulse/tick
+  EXPECT_EQ(vg::gts_command(card, "GT_Update", {16}).code, GucCode::ParameterError);  // mask 1..15
+  const vg::GtsReply sts = vg::gts_command(card, "GT_GetSts", {1, 1});
+  EXPECT_EQ(sts.code, GucCode::Success);
+  EXPECT_EQ(sts.kinds, "i");
+  EXPECT_EQ(sts.values.size(), 1u);
+  // a crd command before GT_SetCrdPrm: the card refuses it (1); a bad crd is 7
+  EXPECT_EQ(vg::gts_command(card, "GT_LnXY", {1, 100, 0, 10, 1, 0, 0}).code, GucCode::CommandError);
+  EXPECT_EQ(vg::gts_command(card, "GT_LnXY", {3, 100, 0, 10, 1, 0, 0}).code, GucCode::ParameterError);
+  EXPECT_EQ(vg::gts_command(card, "GT_CrdSpace", {1, 0}).code, GucCode::CommandError);
 }

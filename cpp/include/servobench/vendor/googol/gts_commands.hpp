@@ -7,6 +7,7 @@
 // hold are the card's GtsCard (gts_card.hpp); servobench.dialects.gts is one row per command over these.
 #pragma once
 
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -80,5 +81,39 @@ std::pair<GucCode, std::vector<double>> gts_pvt_percent_calculate(double count, 
 // GT_PvtContinuousCalculate (GUC L1230; iDEABOX L6222-6251): (0, point times ms, time[0] = 0) or (7, {}).
 std::pair<GucCode, std::vector<double>> gts_pvt_continuous_calculate(double count,
                                                                      const motion::ContinuousPoints& pts);
+
+// -- the command table and the runner (decisions GX1-GX3) ---------------------------------------------------------
+// gts_command_table(): every GTS function servobench.dialects.gts makes from a row, described once: the manual's
+// name, its parameters as the Python names and defaults, what a read returns after the code when it fails (a
+// Python literal, "" for a command), and the docstring (what it does, units, the manual's lines).
+struct GtsCommandRow {
+  const char* name;    // GT_* as the manual spells it
+  const char* params;  // "profile, count=1", "crd, prm: TCrdPrm"
+  const char* fail;    // a read's placeholders after a failing code, e.g. "(0, 0.0)"; "" for a command
+  const char* doc;
+};
+const std::vector<GtsCommandRow>& gts_command_table();
+
+// A command's reply: the code and, for a read that succeeded, its values, each an integer ('i'), a double ('f'), or
+// all of them one list of doubles ("l": GT_GetCrdPos).
+struct GtsReply {
+  GucCode code = GucCode::Success;
+  std::vector<double> values;
+  std::string kinds;
+};
+// The names gts_command runs: the per-axis, coordinate-system (buffered and path), PVT and FollowEx commands whose
+// arguments are numbers.
+std::vector<std::string> gts_command_names();
+// Runs GTS command `name` with its arguments as doubles in the manual's units (axes/profiles from 1, crd 1..2, fifo
+// 0..1; pulse, ms, pulse/ms, pulse/ms^2). The argument checks are here, once, in the order the dialect had them:
+// the axis/crd/fifo numbers and the values' ranges (7), then the card's own refusal (1) or an invalid value (7).
+// Never throws for a name in gts_command_names() given its row's parameters; an unknown name throws
+// std::invalid_argument (a programming error of the dialect).
+GtsReply gts_command(machine::Card& card, const std::string& name, const std::vector<double>& args);
+// GT_FollowDataCompleteEx(profile, fifo, n, master, slave, velRatioBegin, velRatioEnd) (iDEABOX L4644-4677): n
+// knots 2..2^31-1 (cumulative positions, pulse), at most each array's length (7 otherwise).
+GucCode gts_follow_data_complete(machine::Card& card, double profile, double fifo, double n,
+                                 const std::vector<double>& master, const std::vector<double>& slave,
+                                 double ratio_begin, double ratio_end);
 
 }  // namespace servobench::vendor::googol
