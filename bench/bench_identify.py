@@ -6,8 +6,8 @@ a 5 s closed-loop experiment at 5 kHz with 10000 counts/rev, multiple shooting o
 (the same segments, the same data-based segment states, the same internal parameters -- the Stribeck excess --
 and the same bounds for every solver), every parameter starting 20 % off. Three solvers:
 
-* servobench: `fit_time` with a single stage (Ceres, automatic differentiation through the plant code, dense Schur
-  elimination of the segment states), one thread;
+* servobench: `fit_time` with a single stage (Ceres; the rigid segments' exact Jacobian by forward sensitivity
+  through the plant code, decision FU1; dense Schur elimination of the segment states), one thread;
 * SciPy, NumPy residual: the same model written in NumPy (exact ZOH by `scipy.linalg.expm`, the same implicit
   dry-friction step, vectorised over segments) with its 2-point Jacobian using the block sparsity -- what one writes
   without servobench. Before solving, this residual is checked against servobench's at the start point;
@@ -20,7 +20,7 @@ Ceres >= 10x faster than SciPy on the same residual; <= 1 s wall for the 5 s exp
 bench/results/identify.md and identify.json. SciPy, when missing, is installed into build/bench-deps (under
 run_all.py: reported as "not installed").
 
-Run: python bench/bench_identify.py [--repeat 3] [--quick] [--results-dir DIR]
+Run: python bench/bench_identify.py [--repeat 3] [--quick] [--results-dir DIR] [--paired-jacobians]
 """
 
 from __future__ import annotations
@@ -334,7 +334,7 @@ def run(quick: bool = False, repeat: int | None = None) -> benchlib.Result:
                          "say nothing about speed or accuracy." if quick else ""),
         "",
     ]
-    ceres_row = (f"| servobench `fit_time` (Ceres, one stage, 1 thread) | C++ plant code, autodiff | {best:.3f} | 1.0x | "
+    ceres_row = (f"| servobench `fit_time` (Ceres, one stage, 1 thread) | C++ plant code, forward sensitivity | {best:.3f} | 1.0x | "
                  f"{fit.iterations} iterations | {cost:.2f} | {err(fit.values()):.3f} % |")
     table_head = [
         "| solver | residual and Jacobian | wall [s] | vs servobench | evaluations | final cost | worst parameter "
