@@ -6,8 +6,8 @@ a 5 s closed-loop experiment at 5 kHz with 10000 counts/rev, multiple shooting o
 (the same segments, the same data-based segment states, the same internal parameters -- the Stribeck excess --
 and the same bounds for every solver), every parameter starting 20 % off. Three solvers:
 
-* servobench: `fit_time` with a single stage (Ceres, automatic differentiation through the plant code, dense Schur
-  elimination of the segment states), one thread;
+* servobench: `fit_time` with a single stage (Ceres; the rigid segments' exact Jacobian by forward sensitivity
+  through the plant code, decision FU1; dense Schur elimination of the segment states), one thread;
 * SciPy, NumPy residual: the same model written in NumPy (exact ZOH by `scipy.linalg.expm`, the same implicit
   dry-friction step, vectorised over segments) with its 2-point Jacobian using the block sparsity -- what one writes
   without servobench. Before solving, this residual is checked against servobench's at the start point;
@@ -20,7 +20,7 @@ Ceres >= 10x faster than SciPy on the same residual; <= 1 s wall for the 5 s exp
 bench/results/identify.md and identify.json. SciPy, when missing, is installed into build/bench-deps (under
 run_all.py: reported as "not installed").
 
-Run: python bench/bench_identify.py [--repeat 3] [--quick] [--results-dir DIR]
+Run: python bench/bench_identify.py [--repeat 3] [--quick] [--results-dir DIR] [--paired-jacobians]
 """
 
 from __future__ import annotations
@@ -79,6 +79,66 @@ def full_fits(repeat, duration_s=5.0):
         rows.append((name, best, fit.iterations, max(abs(fit[k] / v - 1) for k, v in true.items()) * 100, cpu,
                      sum(f.iterations for f in fit.starts)))
     return rows
+
+
+def _stages(report):
+    """The 'Stages' line of one start's report: [(segment samples, iterations), ...] and Ceres' Jacobian seconds."""
+    import re
+    line = next(ln for ln in report.splitlines() if ln.startswith("Stages"))
+    stages = [(int(a), int(b)) for a, b in re.findall(r"(\d+)(?: \(Stribeck held\))?: (\d+)", line.split(";")[0])]
+    jac = float(re.search(r"Jacobians ([0-9.e+-]+) s", line).group(1))
+    return stages, jac
+
+
+def paired_jacobians(repeat=3, duration_s=5.0):
+    """CPU time of the whole fit_time on the three bench logs with the rigid model's analytic Jacobian (the default,
+    decision FU1) and with Ceres' automatic differentiation (analytic_jacobian=False), run paired and alternating
+    in one process (ABAB...), `repeat` pairs per log: the medians, the load before and after, and per start its
+    stages' iterations and Jacobian seconds. The two-mass model has no analytic Jacobian (both columns AutoDiff)."""
+    import os
+    import statistics
+    import servobench as sb
+    from servobench import _core
+
+    def axis(plant, kp, kd):
+        return sb.Axis(law=_core.GtServoLaw(kp=kp, kd=kd),
+                       drive=_core.TorqueDrive(amps_per_volt=0.8, kt=0.5, current_bw_hz=1500.0), plant=plant,
+                       encoder=_core.Encoder(counts_per_rev=10000), servo_period_s=TS)
+    cases = [("rigid A", "rigid", TRUE, sb.run_experiment(axis(_core.RigidPlant(**TRUE), 38, 830), amplitude_v=0.1,
+                                                            duration_s=duration_s)),
+             ("rigid B", "rigid", RIGID_B,
+              sb.run_experiment(axis(_core.RigidPlant(**RIGID_B), 38, 830), amplitude_v=0.1, duration_s=duration_s)),
+             ("two-mass", "two_mass", TWO_MASS,
+              sb.run_experiment(axis(_core.TwoMassPlant(load_viscous_nms=0.0, **TWO_MASS), 20, 400),
+                                amplitude_v=0.3, duration_s=duration_s))]
+    original = _core.identify_time
+
+    def autodiff(*a, **kw):
+        return original(*a, analytic_jacobian=False, **kw)
+
+    load0 = os.getloadavg()[0]
+    rows = []
+    for name, model, true, log in cases:
+        guess = {k: v * f for (k, v), f in zip(true.items(), HALF_OFF)}
+        cpu = {"analytic": [], "autodiff": []}
+        fits = {}
+        try:
+            for _ in range(repeat):
+                for kind in ("analytic", "autodiff"):
+                    _core.identify_time = original if kind == "analytic" else autodiff
+                    c0 = time.process_time()
+                    fits[kind] = sb.fit_time(log, model, guess=guess, strict=duration_s >= 5.0)
+                    cpu[kind].append(time.process_time() - c0)
+        finally:
+            _core.identify_time = original
+        a, b = fits["analytic"], fits["autodiff"]
+        se = {k: b.parameters[k].std_error for k in true}
+        worst = max(abs(a[k] - b[k]) / se[k] for k in true if 0 < se[k] < float("inf"))
+        starts = [(_stages(s.summary), s.iterations) for s in a.starts]
+        rows.append(dict(plant=name, analytic=statistics.median(cpu["analytic"]),
+                         autodiff=statistics.median(cpu["autodiff"]), cpu=cpu, worst_se=worst,
+                         same_converged=a.converged == b.converged, starts=starts))
+    return rows, (load0, os.getloadavg()[0])
 
 
 def experiment(duration_s=5.0):
@@ -274,7 +334,7 @@ def run(quick: bool = False, repeat: int | None = None) -> benchlib.Result:
                          "say nothing about speed or accuracy." if quick else ""),
         "",
     ]
-    ceres_row = (f"| servobench `fit_time` (Ceres, one stage, 1 thread) | C++ plant code, autodiff | {best:.3f} | 1.0x | "
+    ceres_row = (f"| servobench `fit_time` (Ceres, one stage, 1 thread) | C++ plant code, forward sensitivity | {best:.3f} | 1.0x | "
                  f"{fit.iterations} iterations | {cost:.2f} | {err(fit.values()):.3f} % |")
     table_head = [
         "| solver | residual and Jacobian | wall [s] | vs servobench | evaluations | final cost | worst parameter "
@@ -370,8 +430,22 @@ def run(quick: bool = False, repeat: int | None = None) -> benchlib.Result:
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=None, help="default 3 (quick: 1)")
+    ap.add_argument("--paired-jacobians", action="store_true",
+                    help="only time fit_time with the analytic Jacobian against AutoDiff (paired, alternating; "
+                         "prints, writes nothing)")
     benchlib.add_common_args(ap)
     args = ap.parse_args(argv)
+    if args.paired_jacobians:
+        rows, load = paired_jacobians(args.repeat or 3)
+        print(f"load average {load[0]:.2f} before, {load[1]:.2f} after")
+        for r in rows:
+            print(f"{r['plant']}: CPU median analytic {r['analytic']:.3f} s, autodiff {r['autodiff']:.3f} s "
+                  f"(analytic {[round(c, 3) for c in r['cpu']['analytic']]}, autodiff "
+                  f"{[round(c, 3) for c in r['cpu']['autodiff']]}); estimates differ by at most "
+                  f"{r['worst_se']:.2e} standard errors; same converged: {r['same_converged']}")
+            for i, ((stages, jac), it) in enumerate(r["starts"]):
+                print(f"  start {i}: stages {stages}, {it} iterations, Jacobians {jac:.3f} s")
+        return 0
     res = run(args.quick, args.repeat)
     print(res.markdown)
     benchlib.write_result(res, args.results_dir)

@@ -196,6 +196,35 @@ def test_shooting_residual_and_its_jacobian():
         assert np.max(np.abs(fd - jac[:, col])) <= 1e-4 * np.max(np.abs(jac[:, col])) + 1e-9, col
 
 
+def test_the_rigid_jacobian_by_forward_sensitivity_is_the_autodiff_one():
+    # Decision FU1: the rigid segments' Jacobian in doubles (the default, checked against central differences above)
+    # is Ceres' automatic differentiation of the same simulation (analytic_jacobian=False) to rounding, here at the
+    # truth and at a point with every parameter off and every third segment starting at rest.
+    log = sb.run_experiment(axis_with(_core.RigidPlant(**RIGID_A)), amplitude_v=0.1, seed=0, duration_s=1.0)
+    kw = dict(sample_period_s=TS, measured_is_speed=False, measured_on_load=False, model="rigid",
+              current_bw_hz=1500.0, measurement_scale=log.count_rad, segment_samples=500)
+    sp = _core.identify_shooting_problem(log.torque_nm, log.measured, **kw)
+    stopped = sp["states"].copy()
+    stopped[1::6] = 0.0
+    points = [(np.array([2e-4, 3e-4, 0.03, 0.02, 2.0, 0.0]), sp["states"]),
+              (np.array([3e-4, 1e-4, 0.05, 0.01, 0.7, -0.004]), stopped)]
+    for p, x in points:
+        got = []
+        for analytic in (True, False):
+            r, (data, idx, ptr), shape = _core.identify_shooting_residual(
+                log.torque_nm, log.measured, starts=sp["starts"], counts=sp["counts"], parameters=p, states=x,
+                jacobian=True, analytic_jacobian=analytic, **kw)
+            jac = np.zeros(shape)
+            for row in range(shape[0]):
+                jac[row, idx[ptr[row]:ptr[row + 1]]] = data[ptr[row]:ptr[row + 1]]
+            got.append((r, jac))
+        (ra, ja), (rb, jb) = got
+        np.testing.assert_allclose(ra, rb, rtol=0, atol=1e-12 * max(1.0, np.max(np.abs(rb))))
+        scale = np.max(np.abs(jb), axis=0)
+        assert np.all(scale[:5] > 0)
+        assert np.max(np.abs(ja - jb) / np.where(scale > 0, scale, 1.0)) <= 1e-12
+
+
 def test_the_fit_differentiates_along_its_free_parameters_only():
     # Decision FT5: the fit's segments carry Jet directions for the free parameters only (here 3 of 6 and the 2
     # state entries: Jets of 6 instead of 8). Its white-noise standard errors, from that Jacobian, are those of the

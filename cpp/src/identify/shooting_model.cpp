@@ -1,6 +1,7 @@
 // The output-error model of the time-domain fit and the multiple-shooting problem (shooting_problem,
 // shooting_residual, simulate_model): see shooting_model.hpp. The solve is in time_fit.cpp.
 #include "shooting_model.hpp"
+#include "rigid_sensitivity.hpp"
 
 #include <algorithm>
 #include <array>
@@ -358,6 +359,13 @@ void run_segment(const FitContext& ctx, const double* p, const double* x0, int s
     simulate_segment<PlantModel::kTwoMass>(ctx, p, x0, start, count, out, false);
 }
 
+void segment_residual(const FitContext& ctx, const double* p, const double* x0, int start, int count, double* r) {
+  if (ctx.layout.model == PlantModel::kRigid)
+    simulate_segment<PlantModel::kRigid>(ctx, p, x0, start, count, r, true);
+  else
+    simulate_segment<PlantModel::kTwoMass>(ctx, p, x0, start, count, r, true);
+}
+
 void state_at(const FitContext& ctx, const double* p, const double* x0, int start, int steps, double* x_end) {
   std::vector<double> out(static_cast<std::size_t>(steps) + 1);
   if (ctx.layout.model == PlantModel::kRigid)
@@ -410,7 +418,9 @@ void add_segment_blocks(ceres::Problem& problem, const FitContext& ctx, Shooting
     using ceres::DYNAMIC;
     constexpr PlantModel R = PlantModel::kRigid, W = PlantModel::kTwoMass;
     ceres::CostFunction* cost = nullptr;
-    if (held && !linked && options.model == R && width <= 6)
+    if (held && !linked && options.model == R && options.analytic_jacobian)
+      cost = rigid_sensitivity_cost(&ctx, a, c, free);
+    else if (held && !linked && options.model == R && width <= 6)
       cost = new FreeSegmentCost<R, 6>(&ctx, a, c, free);
     else if (held && !linked && options.model == R)
       cost = new FreeSegmentCost<R, 8>(&ctx, a, c, free);

@@ -31,13 +31,16 @@ struct FitContext {
 void init_context(FitContext& ctx, const TimeLog& log, const TimeFitOptions& options);
 // Simulates samples [start, start + count) from the mechanical state x0 (internal parameters p); out per sample.
 void run_segment(const FitContext& ctx, const double* p, const double* x0, int start, int count, double* out);
+// The scaled residuals (measured - simulated) / measurement_scale of samples [start, start + count), in doubles.
+void segment_residual(const FitContext& ctx, const double* p, const double* x0, int start, int count, double* r);
 // The mechanical state `steps` samples after `start`, simulated from x0 (internal parameters p) into x_end.
 void state_at(const FitContext& ctx, const double* p, const double* x0, int start, int steps, double* x_end);
 // The log's lengths, finiteness and minimum length for these options (std::invalid_argument naming the sample).
 void check_log(const TimeLog& log, const TimeFitOptions& o);
 // One residual block per segment (AutoDiff), linked to the next one with continuity_weight > 0; with_loss: the
 // options' robust loss. held (one entry per parameter, or nullptr): the parameters the solve holds constant; an
-// unlinked segment then differentiates along the free parameters only (FreeSegmentCost, the same derivatives).
+// unlinked segment then differentiates along the free parameters only (FreeSegmentCost, the same derivatives), a
+// rigid one with options.analytic_jacobian by forward sensitivity in doubles (rigid_sensitivity.hpp).
 void add_segment_blocks(ceres::Problem& problem, const FitContext& ctx, ShootingProblem& sp, double* p,
                         const TimeFitOptions& options, bool with_loss = true,
                         const std::vector<bool>* held = nullptr);
