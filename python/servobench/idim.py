@@ -265,6 +265,13 @@ class IdimResult(JsonResult):
         another record `log` (an :class:`IdentificationLog` the fit did not use) reconstructed with these
         parameters through the same filtering (position low-pass ``cutoff_hz``, central differences, decimation by
         ``decimation``, `edge_samples` dropped), and its relative error 100 ||y - X theta|| / ||y||, %."""
+        from .idlog import IdentificationLog
+
+        if not isinstance(log, IdentificationLog):
+            raise TypeError("cross_test: log must be an IdentificationLog")
+        if log.linear != self.linear:
+            raise ValueError(f"cross_test: the log is a {'linear' if log.linear else 'rotary'} axis and the result a "
+                             f"{'linear' if self.linear else 'rotary'} one (m, N against rad, N*m)")
         offset = "offset" in self.parameters
         X, y, *_ = _prepare(log, self.dynamics_hz, self.cutoff_hz, self.decimation, edge_samples, self.friction,
                             offset)

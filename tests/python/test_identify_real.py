@@ -170,6 +170,8 @@ def test_the_60_40_split_measured_the_benchmarks_way(emps):
     assert cl["ours"] <= 1.02 * cl["asym"] and cl["ours"] < cl["sym"]   # 1.858 vs 1.843 and 2.129 um
     with pytest.raises(TypeError, match="IdentificationLog"):
         a.cross_test(val.measured)
+    with pytest.raises(ValueError, match="rotary"):
+        a.cross_test(val._replace(lead_m_per_rev=0.01).to_motor_side())
 
 
 def test_a_fit_on_part_of_a_stationary_record_loses_to_the_fit_on_all_of_it(emps):
