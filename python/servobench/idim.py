@@ -260,6 +260,24 @@ class IdimResult(JsonResult):
         """name -> value / reference - 1, for the names both have."""
         return {k: self[k] / v - 1 for k, v in reference.items() if k in self.parameters}
 
+    def cross_test(self, log, *, edge_samples: int = 49) -> float:
+        """The benchmark's cross-test validation (EMPS description eq. 11, its Script_IDIM_LS_CTV): the effort of
+        another record `log` (an :class:`IdentificationLog` the fit did not use) reconstructed with these
+        parameters through the same filtering (position low-pass ``cutoff_hz``, central differences, decimation by
+        ``decimation``, `edge_samples` dropped), and its relative error 100 ||y - X theta|| / ||y||, %."""
+        from .idlog import IdentificationLog
+
+        if not isinstance(log, IdentificationLog):
+            raise TypeError("cross_test: log must be an IdentificationLog")
+        if log.linear != self.linear:
+            raise ValueError(f"cross_test: the log is a {'linear' if log.linear else 'rotary'} axis and the result a "
+                             f"{'linear' if self.linear else 'rotary'} one (m, N against rad, N*m)")
+        offset = "offset" in self.parameters
+        X, y, *_ = _prepare(log, self.dynamics_hz, self.cutoff_hz, self.decimation, edge_samples, self.friction,
+                            offset)
+        theta = np.array([self[n] for n, _u in _names(self.friction, offset, self.linear)])
+        return float(100 * np.linalg.norm(y - X @ theta) / np.linalg.norm(y))
+
     def __str__(self) -> str:
         unit = "N" if self.linear else "N*m"
         lines = [f"{self.method} ({self.friction} friction): {self.n_samples} samples after decimation by "

@@ -129,6 +129,76 @@ def test_the_60_40_split_is_governed_by_the_machine_drift(emps):
     assert abs(moved.rms - first.rms) > 1e-3
 
 
+def _with_values(result, values):
+    """`result` carrying other parameter values (e.g. the published ones), for its cross_test."""
+    import dataclasses
+
+    return dataclasses.replace(result, parameters={k: dataclasses.replace(e, value=values[k])
+                                                   for k, e in result.parameters.items()})
+
+
+def test_the_60_40_split_measured_the_benchmarks_way(emps):
+    # session 13 (J49-J52): the open-loop shortfall is neither the simulation's initial state nor its hold, the
+    # published figure is what a fit on the whole record gives, and on the benchmark's own validation measures
+    # (cross-test force error, eq. 11; closed-loop simulation from the reference) the 60 % fit is within 1 % of the
+    # published asymmetric set and better than the published symmetric one.
+    est, val = emps.split(0.6)
+    k, q, ts = len(est), emps.measured, emps.sample_period_s
+    ls = sb.RigidModel.from_result(sb.idim_ls(est, friction="asymmetric", dynamics_hz=20.0))
+    # initial speed: validate's (q2 - q0)/2Ts against the central difference at the split on the whole record
+    v_split = float((q[k + 1] - q[k - 1]) / (2 * ts))
+    Q, _, _ = sb.simulate_rigid(ls, ts, effort=val.torque_nm, q0=float(val.measured[0]), v0=v_split)
+    moved = np.sqrt(np.mean((val.measured - Q) ** 2))
+    assert abs(moved - sb.validate(ls, val).rms) < 1e-4                       # m; measured 0.02 mm of 4.42 mm
+    # the published parameters' 2.92 mm is what the same estimator on the whole record gives (2.93 mm)
+    full = sb.RigidModel.from_result(sb.idim_ls(emps, friction="asymmetric", dynamics_hz=20.0))
+    pub_asym = sb.RigidModel(**dict(zip(("mass_kg", "fv_pos", "fc_pos", "fv_neg", "fc_neg"),
+                                        PUBLISHED_ASYM.values())))
+    pub_sym = sb.RigidModel(95.1089, 203.5034, 20.3935, offset=-3.1648)
+    assert abs(sb.validate(full, val).rms - sb.validate(pub_asym, val).rms) < 5e-5   # m
+    # the benchmark's cross-test validation on the last 40 % (relative force error, %)
+    a = sb.idim_ls(est, friction="asymmetric", dynamics_hz=20.0)
+    s = sb.idim_ls(est, dynamics_hz=20.0)
+    ct = {"ours asym": a.cross_test(val), "published asym": _with_values(a, PUBLISHED_ASYM).cross_test(val),
+          "ours sym": s.cross_test(val), "published sym": _with_values(s, PUBLISHED).cross_test(val)}
+    assert ct["ours asym"] <= 1.02 * ct["published asym"]               # measured 3.280 vs 3.247 %
+    assert ct["ours asym"] < ct["published sym"]                        # 3.280 vs 4.223 %
+    assert ct["ours sym"] <= 1.04 * ct["published sym"]                 # 4.349 vs 4.223 %
+    # closed loop from the reference with the record's controller (the benchmark's simulation), m
+    cl = {n: sb.validate(m, val).closed_loop["rms"] for n, m in (("ours", ls), ("asym", pub_asym),
+                                                                   ("sym", pub_sym))}
+    assert cl["ours"] <= 1.02 * cl["asym"] and cl["ours"] < cl["sym"]   # 1.858 vs 1.843 and 2.129 um
+    with pytest.raises(TypeError, match="IdentificationLog"):
+        a.cross_test(val.measured)
+    with pytest.raises(ValueError, match="rotary"):
+        a.cross_test(val._replace(lead_m_per_rev=0.01).to_motor_side())
+
+
+def test_a_fit_on_part_of_a_stationary_record_loses_to_the_fit_on_all_of_it(emps):
+    # on simulated records of a machine with constant parameters (the published asymmetric set) and a coloured
+    # unmeasured force, the fit on the first 60 % simulates the last 40 % open loop worse than the fit on 100 %
+    # (which saw that part's disturbance) -- so the 60/40 criterion fails without any drift (J50)
+    from scipy import signal
+
+    ts, n = emps.sample_period_s, len(emps)
+    t = np.arange(n) * ts
+    true = sb.RigidModel(**dict(zip(("mass_kg", "fv_pos", "fc_pos", "fv_neg", "fc_neg"), PUBLISHED_ASYM.values())))
+    ctrl = sb.CascadePD.from_log(emps)
+    worse = []
+    for seed in range(2):
+        rng = np.random.default_rng(seed)
+        dist = signal.lfilter([1], [1, -0.98], rng.normal(0, 0.4, n))       # N, AR(1)
+        q, _, f = sb.simulate_rigid(true, ts, reference=emps.reference, controller=ctrl, q0=float(emps.measured[0]),
+                                    disturbance=dist, position_quantum=emps.count_m)
+        r = sb.IdentificationLog.from_arrays(t, f, np.round(q / emps.count_m) * emps.count_m, command_unit="N",
+                                             measured_unit="m", reference=emps.reference, count_m=emps.count_m)
+        est, val = r.split(0.6)
+        part = sb.RigidModel.from_result(sb.idim_ls(est, friction="asymmetric", dynamics_hz=20.0))
+        whole = sb.RigidModel.from_result(sb.idim_ls(r, friction="asymmetric", dynamics_hz=20.0))
+        worse.append(sb.validate(part, val).rms / sb.validate(whole, val).rms)
+    assert all(w > 1.1 for w in worse), worse                            # measured 7.34/5.05, 3.66/2.71 mm
+
+
 def test_results_print_in_the_axis_units_and_at_the_motor(emps):
     log = emps._replace(lead_m_per_rev=0.01)       # a 10 mm screw
     r = sb.idim_ls(log, dynamics_hz=20.0)
