@@ -13,19 +13,8 @@ from __future__ import annotations
 import math
 
 from .. import _core
+from ._aps_constants import ERR_DeviceNotInitial, ERR_FunctionNotAvailable, ERR_NoError, ERR_ParametersInvalid
 from ._aps_pt import _f
-
-ERR_NoError, ERR_DeviceNotInitial, ERR_ParametersInvalid, ERR_FunctionNotAvailable = 0, -4, -10, -13
-
-# Board parameters (L1623, Table 4-4 L3527-3533).
-PRS_EMG_LOGIC = 0x00          # EMG input logic, 0 not inverse / 1 inverse (L1623)
-PRB_EMG_LOGIC = PRS_EMG_LOGIC
-PRB_PWM0_MAP_DO, PRB_PWM1_MAP_DO, PRB_PWM2_MAP_DO, PRB_PWM3_MAP_DO = 0x110, 0x111, 0x112, 0x113
-# VAO parameters (L3504-3512): N = table 0..7.
-VAO_TABLE_OUTPUT_TYPE, VAO_TABLE_INPUT_TYPE, VAO_TABLE_PWM_CONFIG, VAO_TABLE_SRC = 0x00, 0x01, 0x10, 0x20
-VAO_TABLE_PWM_Config = VAO_TABLE_PWM_CONFIG  # the manual's spelling (L3462)
-# Watchdog action bits (L4072-4074).
-WDT_ACTION_SERVO_OFF, WDT_ACTION_DO_OFF, WDT_ACTION_PWM_OFF = 0x1, 0x2, 0x4
 
 
 def _num(v):

@@ -26,105 +26,16 @@ import numpy as np
 from .. import _core
 from .._core import AdlinkPtp, ApsServoLaw, BlendMode, CardCommandRefused, MotionCommandRefused
 from ..card import Card
-from ._aps_more import (PRB_EMG_LOGIC, PRB_PWM0_MAP_DO, PRB_PWM1_MAP_DO, PRB_PWM2_MAP_DO,  # noqa: F401
-                        PRB_PWM3_MAP_DO, PRS_EMG_LOGIC, VAO_TABLE_INPUT_TYPE, VAO_TABLE_OUTPUT_TYPE,
-                        VAO_TABLE_PWM_CONFIG, VAO_TABLE_PWM_Config, VAO_TABLE_SRC, WDT_ACTION_DO_OFF,
-                        WDT_ACTION_PWM_OFF, WDT_ACTION_SERVO_OFF, _ApsMore)
-from ._aps_pt import (MAX_PT_DIM, PT_BUFFER_POINTS, PT_TABLES, PTA2CA, PTA2CE, PTB_EMPTY, PTB_FULL,  # noqa: F401
-                      PTB_WORKING, PTDWL, PTHCA, PTHCE, PTLINE, PTSTS, _ApsPointTable)
+from ._aps_constants import *  # noqa: F401,F403  (the header constants: the C++ table's, AX1)
+from ._aps_more import _ApsMore
+from ._aps_pt import PTA2CA, PTA2CE, PTDWL, PTHCA, PTHCE, PTLINE, PTSTS, _ApsPointTable  # noqa: F401
 from ._controller import DialectController, export_functions, register32, wrap32  # noqa: F401
-
-# -- return codes (APS library ErrorCodeDef.h; the manual uses ERR_NoError, L2309) -------------------------------
-ERR_NoError = 0
-ERR_DeviceNotInitial = -4
-ERR_DeviceAlreadyInitialed = -7
-ERR_ParametersInvalid = -10
-ERR_FunctionNotAvailable = -13
-ERR_DistantNotEnough = -22
-
-# -- axis parameters (hex numbers of the manual) ---------------------------------------------------------------------
-PRA_EL_LOGIC = 0x00       # PEL/MEL input logic, 0 normal / 1 inverted (L1614)
-PRA_EL_MODE = 0x02        # limit stop mode: 0 immediate (default) / 1 decelerate at PRA_SD_DEC (L3994; V28)
-PRA_SD_DEC = 0x07         # deceleration of APS_stop_move, pulse/s^2 (L2744, L4001)
-PRA_STP_DEC = PRA_SD_DEC  # the name the velocity example uses (L2613)
-PRA_SPEL_EN = 0x08        # soft PEL switch (L4002)
-PRA_SMEL_EN = 0x09        # soft MEL switch (L4003)
-PRA_SPEL_POS = 0x0A       # soft PEL position, pulse (L4004)
-PRA_SMEL_POS = 0x0B       # soft MEL position, pulse (L4005)
-PRA_HOME_MODE = 0x10      # 0 ORG, 1 EL, 2 single EZ (L2268)
-PRA_HOME_DIR = 0x11       # 0 positive, 1 negative (L2269, L2357)
-PRA_HOME_CURVE = 0x12     # home S-factor 0..1 (L2270)
-PRA_HOME_S = PRA_HOME_CURVE  # the name the mode tables use (L2359)
-PRA_HOME_ACC = 0x13       # acceleration = deceleration, pulse/s^2 (L2271)
-PRA_HOME_VM = 0x15        # search speed, pulse/s (L2272)
-PRA_HOME_SHIFT = 0x17     # final offset from the reference signal, pulse (L2275)
-PRA_HOME_EZA = 0x18       # EZ alignment 0/1 (L2276)
-PRA_HOME_VO = 0x19        # approach (low) speed, pulse/s (L2277)
-PRA_HOME_POS = 0x1B       # position set after homing, pulse (L2278)
-PRA_SF = 0x20             # S-factor 0..1 (L2236)
-PRA_CURVE = PRA_SF        # the name the velocity example uses (L2614)
-PRA_ACC = 0x21            # acceleration, pulse/s^2 (L2746)
-PRA_DEC = 0x22            # deceleration, pulse/s^2 (L2747)
-PRA_VS = 0x23             # start velocity, pulse/s (L2748)
-PRA_VM = 0x24             # maximum velocity, pulse/s (L2749)
-PRA_VE = 0x25             # end velocity, pulse/s (L2750)
-PRA_PRE_EVENT_DIST = 0x2A   # PRED when the travelled distance > this, pulse; 0 off (L3284-3292)
-PRA_POST_EVENT_DIST = 0x2B  # POSTD when the remaining distance < this, pulse; 0 off
-PRA_JG_MODE = 0x40        # jog: 0 continuous, 1 step (L2677)
-PRA_JG_DIR = 0x41         # jog direction: 0 negative, 1 positive
-PRA_JG_SF = 0x42          # jog S-factor 0..1
-PRA_JG_ACC = 0x43         # jog acceleration, pulse/s^2
-PRA_JG_DEC = 0x44         # jog deceleration, pulse/s^2
-PRA_JG_VM = 0x45          # jog speed, pulse/s
-PRA_JG_OFFSET = 0x46      # step-mode offset, pulse
-PRA_JG_DELAY = 0x47       # step-mode delay, us, 0..10,000,000
-PRA_GEAR_MASTER = 0x60    # gear master axis of this slave (L3303-3307)
-PRA_GEAR_ENGAGE_RATE = 0x61  # ratio per second the ratio ramps at (= ratio / engage time, L3313); 0 at once (V120)
-PRA_GEAR_RATIO = 0x62     # gear ratio, slave pulse per master pulse
-PRA_GANTRY_PROTECT_1 = 0x63  # gantry deviation level 1, pulse (L3337-3345; gantry mode not simulated, V122)
-PRA_GANTRY_PROTECT_2 = 0x64  # gantry deviation level 2, pulse
-PRA_JG_MAP_DI_EN = 0x48   # DI linking (not simulated: only 0 is accepted, V30)
-PRA_JG_P_JOG_DI = 0x49
-PRA_JG_N_JOG_DI = 0x4A
-PRA_JG_JOG_DI = 0x4B
-PRA_KP_GAIN = 0x90        # servo law (L1746-1762)
-PRA_KI_GAIN = 0x91
-PRA_KD_GAIN = 0x92
-PRA_KVFF_GAIN = 0x93
-PRA_KAFF_GAIN = 0x9A
-PRA_KP_SHIFT = 0x9B
-PRA_KI_SHIFT = 0x9C
-PRA_KD_SHIFT = 0x9D
-PRA_KVFF_SHIFT = 0x9E
-PRA_KAFF_SHIFT = 0x9F
-PRA_PID_SHIFT = 0xA0
-PRA_SERVO_V_BIAS = 0x120
-PRA_SERVO_V_LIMIT = 0x123
-PRA_ERR_POS_LEVEL = 0x124  # position-error protection level, pulse, 0 = off (L4019)
-PRA_SERVO_V_INVERSE = 0x125
-PRA_INTEGRAL_LIMIT = 0x12B
-
-# -- status bits (L3164-3206, L3611-3631) and stop codes (L3922-4023) ---------------------------------------------
-MTS_CSTP, MTS_VM, MTS_ACC, MTS_DEC, MTS_DIR, MTS_MDN, MTS_HMV = 0, 1, 2, 3, 4, 5, 6
-# "Not stopped": 1 while the axis moves, the complement of MDN. The home example waits `do {...} while (((msts >>
-# MTS_NSTP) & 1) == 1)` for the "motion done bit" (L2313-2317) but the status table (L3170-3180) has no such bit:
-# the card sets it in the first reserved bit (L3174 "7~9 Reserved"), so the loop ends when homing has ended (AF1).
-MTS_NSTP = 7
-MTS_WAIT, MTS_PTB, MTS_JOG, MTS_ASTP, MTS_BLD, MTS_PRED, MTS_POSTD, MTS_GER = 10, 11, 15, 16, 17, 18, 19, 28
-MIO_ALM, MIO_PEL, MIO_MEL, MIO_ORG, MIO_EMG, MIO_EZ, MIO_INP, MIO_SVON = 0, 1, 2, 3, 4, 5, 6, 7
-MIO_SPEL, MIO_SMEL = 11, 12
-STOP_NORMAL, STOP_EMG, STOP_ALM, STOP_SVNO, STOP_PEL, STOP_MEL, STOP_SPEL, STOP_SMEL = 0, 1, 2, 3, 4, 5, 6, 7
-STOP_ERROR_LEVEL = 13  # the manual prints 6 (L4023), colliding with STOP_SPEL; APS_define.h has 13 (V41)
 
 # The PRA_* ranges, defaults and where each acts are the C++ parameter table's (vendor/adlink/aps_parameters.hpp,
 # AV5); the speeds an APS_ptp_all call gives (pulse/s, pulse/s^2, S-factor) are checked against these:
 _SPEEDS = {"vs": (0.0, 1e9), "ve": (0.0, 1e9), "acc": (0.0, 1e12), "dec": (0.0, 1e12), "sf": (0.0, 1.0)}
 _POS_MAX = 2147483647
-MF_WAIT = 0x100           # APS_ptp Option bit 8: wait for APS_move_trigger (L3249, L3686-3691)
-# Interpolation Option bits 12-15, the "Buffer mode" field (L3686-3691) = the transition "Flag" (L3085): the
-# values of APS_define.h ITP_OPT_* (V114); the field value f is mode f + 1 of L3085-3143.
-ITP_OPT_ABORT_BLEND, ITP_OPT_ABORT_FORCE, ITP_OPT_ABORT_STOP = 0x0000, 0x1000, 0x2000
-ITP_OPT_BUFFERED, ITP_OPT_BLEND_DEC, ITP_OPT_BLEND_RES_DIST, ITP_OPT_BLEND_PCNT = 0x3000, 0x4000, 0x5000, 0x6000
+# Interpolation Option bits 12-15 (ITP_OPT_*, V114): the field value f is mode f + 1 of L3085-3143.
 _BLEND_MODES = (BlendMode.ABORT_BLEND, BlendMode.ABORT_FORCED, BlendMode.ABORT_STOP, BlendMode.BUFFERED,
                 BlendMode.BLEND_DECEL, BlendMode.BLEND_DISTANCE, BlendMode.BLEND_PERCENT)
 _IGNORED = {"emergency_stop_active", "direction_inhibited", "drive_alarm_active"}  # L3931-4010
@@ -643,44 +554,9 @@ class ApsController(DialectController):
 
 
 # -- sampling, position compare trigger, host interrupts (issue 10 point 3; decisions V71-V85) -------------------
-ERR_InterruptNotEnable = -8  # ErrorCodeDef.h
-ERR_TimeOut = -9
-
-# Sampling parameters (APS_define.h) and sources (Table 4-5 L3558-3588; header values; closed loop: V79).
-SAMP_PA_RATE, SAMP_PA_EDGE, SAMP_PA_LEVEL, SAMP_PA_TRIGCH = 0x0, 0x2, 0x3, 0x5
-SAMP_PA_SRC_CH0, SAMP_PA_SRC_CH1, SAMP_PA_SRC_CH2, SAMP_PA_SRC_CH3 = 0x10, 0x11, 0x12, 0x13
-SAMP_AXIS_MASK, SAMP_PARAM_MASK = 0xF00, 0xFF
-SAMP_COM_POS, SAMP_FBK_POS, SAMP_CMD_VEL, SAMP_FBK_VEL, SAMP_MIO, SAMP_MSTS = 0x00, 0x01, 0x02, 0x03, 0x04, 0x05
-SAMP_MSTS_ACC, SAMP_MSTS_MV, SAMP_MSTS_DEC, SAMP_MSTS_CSTP, SAMP_MSTS_MDN = 0x06, 0x07, 0x08, 0x09, 0x0A
-SAMP_MIO_INP, SAMP_MIO_ORG = 0x0B, 0x0D
-SAMP_CONTROL_VOL, SAMP_GTY_DEVIATION, SAMP_ENCODER_RAW, SAMP_ERROR_POS = 0x20, 0x21, 0x22, 0x23
-SAMP_COM_POS_F64, SAMP_FBK_POS_F64, SAMP_CMD_VEL_F64, SAMP_FBK_VEL_F64 = 0x10, 0x11, 0x12, 0x13
-SAMP_CONTROL_VOL_F64, SAMP_ERR_POS_F64 = 0x14, 0x15
-SAMP_SRC_COM_POS, SAMP_SRC_FBK_POS, SAMP_SRC_CMD_VEL, SAMP_SRC_FBK_VEL = 0x00, 0x01, 0x02, 0x03  # the manual's names
-SAMP_SRC_MIO, SAMP_SRC_MSTS, SAMP_SRC_CONTROL_VOL, SAMP_SRC_ENCODER_RAW, SAMP_SRC_ERR_POS = 0x04, 0x05, 0x20, 0x22, 0x23
-PID_CMD_POS_COUNT, PID_CMD_VEL_COUNT, PID_CMD_ACC_COUNT, PID_ERR_POS_COUNT = 0x40, 0x41, 0x42, 0x43  # V79
-PID_KP_CALC_COUNT, PID_KI_CALC_COUNT, PID_KD_CALC_COUNT, PID_KVFF_CALC_COUNT = 0x44, 0x45, 0x46, 0x47
-PID_KAFF_CALC_COUNT, PID_CALC_COUNT, BIQUAD_0_CALC_COUNT, BIQUAD_1_CALC_COUNT = 0x48, 0x49, 0x4A, 0x4B
-PID_ERR_POS_SUM_COUNT, PID_LAST_ERR_POS_COUNT, PID_ERR_POS_DIFF_COUNT = 0x4C, 0x4D, 0x4E
 # The sources' signals, units and bits are the C++ module's table (vendor/adlink/aps_scope.cpp, Tables 4-5/4-6).
 #: One sample of APS_wait_trigger_sampling (STR_SAMP_DATA_4CH {I32 tick; I32 data[4]}; data F64 here, V78).
 STR_SAMP_DATA_4CH = np.dtype([("tick", np.int64), ("data", np.float64, (4,))])
-
-# Trigger parameters (APS_define.h "PCI-8258"; L3356-3420) and the TRGx_SRC bits (V77).
-TGR_LCMP0_SRC, TGR_LCMP1_SRC, TGR_TCMP0_SRC, TGR_TCMP1_SRC = 0x00, 0x01, 0x02, 0x03
-TGR_TCMP0_DIR, TGR_TCMP1_DIR, TGR_TRG_EN = 0x04, 0x05, 0x06
-TGR_TRG0_SRC, TGR_TRG1_SRC, TGR_TRG2_SRC, TGR_TRG3_SRC = 0x10, 0x11, 0x12, 0x13
-TGR_TRG0_PWD, TGR_TRG1_PWD, TGR_TRG2_PWD, TGR_TRG3_PWD = 0x14, 0x15, 0x16, 0x17
-TGR_TRG0_LOGIC, TGR_TRG1_LOGIC, TGR_TRG2_LOGIC, TGR_TRG3_LOGIC = 0x18, 0x19, 0x1A, 0x1B
-TGR_TRG0_TGL, TGR_TRG1_TGL, TGR_TRG2_TGL, TGR_TRG3_TGL = 0x1C, 0x1D, 0x1E, 0x1F
-TIMR_ITV, TIMR_DIR, TIMR_RING_EN, TIMR_EN = 0x20, 0x21, 0x22, 0x23
-TRG_SRC_MANUAL, TRG_SRC_TCMP0, TRG_SRC_TCMP1, TRG_SRC_LCMP0, TRG_SRC_LCMP1 = 0x1, 0x2, 0x4, 0x8, 0x10
-TGR_SRC_COMMAND = 0x10  # a comparator source value 0x10 + n compares axis n's command position (V76)
-
-# Interrupt factors (L4120-4200): axis items 0-7, system item 8.
-IALM, IPEL, IMEL, IORG, IEZ, IINP, IEMG, ICSTP, IVM, IACC, IDEC, IMDN, IASTP = 0, 1, 2, 3, 4, 5, 6, 8, 9, 10, 11, 12, 13
-ISPEL, ISMEL, IPRED, IPOSTD = 15, 16, 18, 19
-ISYS_EMG, ILCF0, ILCF1, IFCF0, IFCF1, IMOV, IHOV = 0, 1, 2, 3, 4, 5, 6
 
 
 class _ApsScope:
