@@ -13,6 +13,7 @@
 
 #include "card_axis.hpp"
 #include "servobench/machine/card.hpp"
+#include "servobench/vendor/adlink/aps_command_table.hpp"
 #include "servobench/vendor/adlink/aps_constants.hpp"
 #include "servobench/vendor/adlink/aps_interrupts.hpp"
 #include "servobench/vendor/adlink/aps_outputs.hpp"
@@ -136,6 +137,10 @@ void bind_point_tables(py::module_& m) {
   for (const vendor::adlink::ApsCommandDoc& d : vendor::adlink::pt_commands())
     commands.append(py::make_tuple(d.name, d.args, d.doc));
   m.attr("APS_PT_COMMANDS") = commands;  // (name, arguments after Board_ID/PtbId, doc): the dialect's rows
+  py::list described;
+  for (const vendor::adlink::ApsCommandDoc& d : vendor::adlink::aps_commands())
+    described.append(py::make_tuple(d.name, d.args, d.doc));
+  m.attr("APS_COMMANDS") = described;  // (name, arguments after self, doc): the dialect's docstrings (AX2)
   py::list constants;
   for (const vendor::adlink::ApsConstant& c : vendor::adlink::aps_constants())
     constants.append(py::make_tuple(c.name, c.value, c.hex, c.doc));

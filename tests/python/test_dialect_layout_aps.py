@@ -15,7 +15,7 @@ FILES = ("aps.py", "_aps_more.py", "_aps_pt.py")
 # The aim of issue 24.3: aps.py <= 40 % of its 1441 lines when the issue was filed, the private modules counted too.
 AIM_APS_LINES = 576
 # Lines reached (session 13): a ceiling that only comes down (the dialect does not grow back).
-CEILING = {"aps.py": 870, "_aps_more.py": 248, "_aps_pt.py": 191}
+CEILING = {"aps.py": 751, "_aps_more.py": 191, "_aps_pt.py": 190}
 # The dialect's mutable attributes: the handle only (session 12); the C++ module holds the rest.
 STILL_IN_PYTHON = {"_card", "_machine"}
 # Moved into vendor/adlink/aps_scope.hpp, aps_interrupts.hpp (session 11): must not come back.
@@ -46,8 +46,8 @@ def test_line_count_only_comes_down(name):
     assert n <= CEILING[name], f"{name}: {n} lines, more than the {CEILING[name]} reached"
 
 
-@pytest.mark.xfail(strict=True, reason="issue 24.3 aim not reached in session 12 (AW8): the ApsController methods "
-                                       "and the vendor constants are still written out in Python")
+@pytest.mark.xfail(strict=True, reason="issue 24.3 aim not reached in session 13 (AX3): the ApsController adapters' "
+                                       "argument checks and calls are still Python bodies")
 def test_aim_of_issue_24_3():
     total = sum(len((DIALECTS / f).read_text().splitlines()) for f in FILES)
     assert total <= AIM_APS_LINES, f"the ADLINK dialect has {total} lines, the aim is {AIM_APS_LINES}"
@@ -166,3 +166,32 @@ def test_header_constants_are_the_cpp_tables():
             for t in targets:
                 assigned = {e.id for e in ast.walk(t) if isinstance(e, ast.Name)}
                 assert not assigned & names, f"{f}: {assigned & names} retyped (they are _aps_constants.py's)"
+
+
+def test_each_aps_function_is_described_once_by_the_cpp_table():
+    """The APS_* functions the dialect writes out take their docstrings from the C++ table (vendor/adlink/
+    aps_command_table.cpp, _core.APS_COMMANDS; AX2): each row's arguments are the function's (names, kinds,
+    defaults), its doc is the method's and the module function's, and the dialect source holds no docstring of an
+    APS_* function any more."""
+    sb = pytest.importorskip("servobench")
+    import inspect
+
+    from servobench.dialects import aps
+
+    rows = sb._core.APS_COMMANDS
+    assert len({name for name, _a, _d in rows}) == len(rows) >= 78
+    for name, args, doc in rows:
+        want = ast.parse(f"def f(self, {args}): pass").body[0].args
+        want_names = [a.arg for a in want.args][1:] + ([want.kwarg.arg] if want.kwarg else [])
+        want_defaults = [ast.literal_eval(d) for d in want.defaults]
+        sig = inspect.signature(getattr(aps.ApsController, name))
+        params = list(sig.parameters.values())[1:]
+        assert [p.name for p in params] == want_names, name
+        got_defaults = [p.default for p in params if p.default is not inspect.Parameter.empty]
+        assert got_defaults == want_defaults, name
+        assert getattr(aps.ApsController, name).__doc__ == doc == getattr(aps, name).__doc__, name
+        assert doc.strip() and "``" in doc, name  # the manual's C signature or name
+    for f in FILES:
+        for node in ast.walk(_tree(f)):
+            if isinstance(node, ast.FunctionDef) and node.name.startswith("APS_"):
+                assert ast.get_docstring(node) is None, f"{f}: {node.name} has its docstring back in Python"

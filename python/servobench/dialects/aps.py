@@ -93,9 +93,6 @@ class ApsController(DialectController):
 
     # -- system --------------------------------------------------------------------------------------------------
     def APS_initial(self, mode: int = 0, card: Card | None = None, **axis_parts):
-        """``APS_initial(&BoardID_InBits, Mode)``: opens ``card`` (or a new 4-axis PCI-8254 Card with the ADLINK
-        servo period 250 us, L1733, built from ``axis_parts``). Returns ``(rtn, board_id_in_bits)`` (board 0 -> 1).
-        ERR_DeviceAlreadyInitialed while a card is open."""
         if self._card is not None:
             return ERR_DeviceAlreadyInitialed, 0
         if card is None and not axis_parts:
@@ -114,7 +111,6 @@ class ApsController(DialectController):
         return ERR_NoError, 1
 
     def APS_close(self) -> int:
-        """``APS_close()``: releases the card."""
         if self._card is None:
             return ERR_DeviceNotInitial
         self._more_close()  # the watchdog and the interrupt watch go with the card (AW4, AW5)
@@ -123,34 +119,26 @@ class ApsController(DialectController):
 
     # -- axis parameters -----------------------------------------------------------------------------------------
     def APS_set_axis_param(self, Axis_ID, AxisPara, Data) -> int:
-        """``APS_set_axis_param(Axis_ID, AxisPara, I32 Data)``: sets a PRA_* parameter (integer value)."""
         v = _num(Data)
         if v is None or v != int(v):
             return self._bad()
         return self.APS_set_axis_param_f(Axis_ID, AxisPara, v)
 
     def APS_set_axis_param_f(self, Axis_ID, AxisPara, Data) -> int:
-        """``APS_set_axis_param_f(Axis_ID, AxisPara, F64 Data)``: sets a PRA_* parameter. Servo-law parameters
-        (90h-A0h, 120h-12Bh) take effect at the next servo tick; motion parameters at the next move;
-        limits and PRA_ERR_POS_LEVEL at once."""
         i = self._axis(Axis_ID)
         v = _num(Data)
         return self._bad() if i is None or v is None else self._prm().set(i, AxisPara, v)
 
     def APS_get_axis_param_f(self, Axis_ID, AxisPara):
-        """``APS_get_axis_param_f(Axis_ID, AxisPara, &Data)`` -> ``(rtn, data)`` (F64)."""
         i = self._axis(Axis_ID)
         return (self._bad(), 0.0) if i is None else self._prm().get(i, AxisPara)
 
     def APS_get_axis_param(self, Axis_ID, AxisPara):
-        """``APS_get_axis_param(Axis_ID, AxisPara, &Data)`` -> ``(rtn, data)`` (I32: the value truncated)."""
         rtn, v = self.APS_get_axis_param_f(Axis_ID, AxisPara)
         return rtn, int(v)
 
     # -- servo and motion ------------------------------------------------------------------------------------------
     def APS_set_servo_on(self, Axis_ID, Servo_on) -> int:
-        """``APS_set_servo_on(Axis_ID, Servo_on)``: 1 servo on (SVON), 0 off (L1603). Servo on with the drive
-        alarm latched is refused (ERR_FunctionNotAvailable)."""
         i = self._axis(Axis_ID)
         if i is None or Servo_on not in (0, 1):
             return self._bad()
@@ -180,9 +168,6 @@ class ApsController(DialectController):
         return self._do(self._card.move_ptp_wait if wait else self._card.move_ptp, i, p)
 
     def APS_relative_move(self, Axis_ID, Distance, Max_Speed) -> int:
-        """``APS_relative_move(Axis_ID, I32 Distance, I32 Max_Speed)``: point to point by ``Distance`` pulse from
-        the command position at ``Max_Speed`` pulse/s with PRA_ACC/DEC/VS/VE/SF (L2728-2740). During a PTP or
-        velocity move it changes the move on the fly (L2757-2767)."""
         i = self._axis(Axis_ID)
         d = _num(Distance)
         if i is None or d is None:
@@ -190,7 +175,6 @@ class ApsController(DialectController):
         return self._ptp(i, self._card.profile_pos(i) + d if d == int(d) else None, _num(Max_Speed))
 
     def APS_absolute_move(self, Axis_ID, Position, Max_Speed) -> int:
-        """``APS_absolute_move(Axis_ID, I32 Position, I32 Max_Speed)``: point to point to ``Position`` pulse."""
         i = self._axis(Axis_ID)
         if i is None:
             return self._bad()
@@ -211,10 +195,6 @@ class ApsController(DialectController):
         return i, target, bool(o & MF_WAIT)
 
     def APS_ptp(self, Axis_ID, Option, Position, Wait=None) -> int:
-        """``APS_ptp(Axis_ID, Option, F64 Position, ASYNCALL *Wait)``: point to point at PRA_VM with PRA_ACC/DEC/
-        VS/VE/SF. Option bit 0 absolute (0) / relative (1); bit 8 (MF_WAIT, 0x100) waits for
-        :func:`APS_move_trigger` (MTS WAIT on) (L3686-3691). The buffer modes (bits 12-15) are not simulated
-        (ERR_FunctionNotAvailable); ``Wait`` must be None/0 (a synchronous call)."""
         r = self._option(Axis_ID, Option, Position, Wait)
         if isinstance(r, int):
             return r
@@ -222,8 +202,6 @@ class ApsController(DialectController):
         return self._ptp(i, target, self._prm().motion(i).vm, wait)
 
     def APS_ptp_v(self, Axis_ID, Option, Position, Vm, Wait=None) -> int:
-        """``APS_ptp_v(Axis_ID, Option, F64 Position, F64 Vm, ASYNCALL *Wait)``: :func:`APS_ptp` at the given
-        maximum speed ``Vm`` pulse/s (L2728-2740)."""
         r = self._option(Axis_ID, Option, Position, Wait)
         if isinstance(r, int):
             return r
@@ -231,9 +209,6 @@ class ApsController(DialectController):
         return self._ptp(i, target, _num(Vm), wait)
 
     def APS_ptp_all(self, Axis_ID, Option, Position, Vs, Vm, Ve, Acc, Dec, SFac, Wait=None) -> int:
-        """``APS_ptp_all(Axis_ID, Option, F64 Position, F64 Vs, F64 Vm, F64 Ve, F64 Acc, F64 Dec, F64 SFac,
-        ASYNCALL *Wait)``: :func:`APS_ptp` with every speed given (pulse/s, pulse/s^2, S-factor 0..1); the
-        axis parameters are not changed (L2716-2718)."""
         r = self._option(Axis_ID, Option, Position, Wait)
         if isinstance(r, int):
             return r
@@ -242,9 +217,6 @@ class ApsController(DialectController):
                          sf=_num(SFac))
 
     def APS_move_trigger(self, Dimension, Axis_ID_Array) -> int:
-        """``APS_move_trigger(I32 Dimension, I32 *Axis_ID_Array)``: starts the waiting (MF_WAIT) moves of the
-        listed axes in the same servo tick (L3787-3790). Each axis then runs its own profile; an axis whose
-        move became impossible while waiting (a limit, EMG, ALM) is ignored with its stop code."""
         d = _num(Dimension)
         if self._card is None:
             return ERR_DeviceNotInitial
@@ -268,9 +240,6 @@ class ApsController(DialectController):
         return self._do(c.move_trigger, mask)
 
     def APS_home_move(self, Axis_ID) -> int:
-        """``APS_home_move(Axis_ID)``: starts homing with the PRA_HOME_* parameters (modes 0 ORG, 1 EL, 2 EZ;
-        L2246-2556). Completion: MTS MDN; failure: MTS ASTP and :func:`APS_get_stop_code` (L2308-2326).
-        Refused (ERR_FunctionNotAvailable) while the axis moves."""
         i = self._axis(Axis_ID)
         if i is None:
             return self._bad()
@@ -282,11 +251,6 @@ class ApsController(DialectController):
         return self._do(self._card.home, i, p)
 
     def APS_jog_on(self, Axis_ID, On) -> int:
-        """``APS_jog_on(Axis_ID, On)``: the software JOG-ON signal (1 on, 0 off; L2653, L2672) with the
-        PRA_JG_* parameters. Continuous mode moves while on and decelerates when off; step mode moves
-        PRA_JG_OFFSET, waits PRA_JG_DELAY, then moves on while the signal stays on, stopping on a whole
-        multiple of the offset (L2645-2657). While jogging, other motion commands are refused; while another
-        motion runs, JOG-ON is ignored (ERR_FunctionNotAvailable, L2706-2708)."""
         i = self._axis(Axis_ID)
         if i is None or On not in (0, 1):
             return self._bad()
@@ -307,8 +271,6 @@ class ApsController(DialectController):
         return ERR_NoError
 
     def APS_velocity_move(self, Axis_ID, Max_Speed) -> int:
-        """``APS_velocity_move(Axis_ID, I32 Max_Speed)``: velocity move at the signed ``Max_Speed`` pulse/s with
-        PRA_ACC/DEC/SF until a stop; a new call changes the speed on the fly (L2560-2566)."""
         i = self._axis(Axis_ID)
         v = _num(Max_Speed)
         if i is None or v is None:
@@ -319,8 +281,6 @@ class ApsController(DialectController):
         return self._do(self._card.move_velocity, i, v, self._params(i, vm=abs(v)))
 
     def APS_vel(self, Axis_ID, Dir, Vel, Wait=None) -> int:
-        """``APS_vel(Axis_ID, Dir, F64 Vel, ASYNCALL *Wait)``: velocity move at ``Vel`` pulse/s, Dir 0 positive,
-        1 negative (the example passes 0 with positive speeds, L2618; V50)."""
         i = self._axis(Axis_ID)
         v = _num(Vel)
         if i is None or v is None or Dir not in (0, 1) or Wait not in (None, 0) or not 0 < v <= 1e9:
@@ -329,7 +289,6 @@ class ApsController(DialectController):
         return self._do(self._card.move_velocity, i, -v if Dir else v, self._params(i, vm=v))
 
     def APS_stop_move(self, Axis_ID) -> int:
-        """``APS_stop_move(Axis_ID)``: decelerating stop at PRA_SD_DEC (L2570-2574), a normal stop (V45)."""
         i = self._axis(Axis_ID)
         if i is None:
             return self._bad()
@@ -338,7 +297,6 @@ class ApsController(DialectController):
         return self._do(self._card.stop_move, i, self._params(i))
 
     def APS_emg_stop(self, Axis_ID) -> int:
-        """``APS_emg_stop(Axis_ID)``: immediate stop (L2576), a normal stop (V45)."""
         i = self._axis(Axis_ID)
         if i is None:
             return self._bad()
@@ -356,11 +314,6 @@ class ApsController(DialectController):
         return _core.aps_stop_modes(self._card.kernel, i, abrupt)
 
     def APS_start_gear(self, Axis_ID, Mode) -> int:
-        """``APS_start_gear(Axis_ID, Mode)`` (the manual prints ``APS_start_gear(slave axis ID)``, L3311; the Mode
-        argument is the library's, V119): 1 engages the standard gear of slave ``Axis_ID`` on PRA_GEAR_MASTER, the
-        ratio ramping from 0 to PRA_GEAR_RATIO at PRA_GEAR_ENGAGE_RATE (ratio/s; 0 = at once; L3309-3313);
-        0 releases it (the slave holds). 2 (gantry) is not simulated (ERR_FunctionNotAvailable, V122). Refused
-        (ERR_FunctionNotAvailable) while the slave moves in another motion."""
         i = self._axis(Axis_ID)
         if i is None or Mode not in (0, 1, 2):
             return self._bad()
@@ -438,11 +391,6 @@ class ApsController(DialectController):
                                              all=all_, wait=bool(o & MF_WAIT), **geom))
 
     def APS_line(self, Dimension, Axis_ID_Array, Option, PositionArray, TransPara=0.0, Wait=None) -> int:
-        """``APS_line(I32 Dimension, I32 *Axis_ID_Array, I32 Option, F64 *PositionArray, F64 *TransPara,
-        ASYNCALL *Wait)`` (L2855; argument list V113): a straight line of 2..6 axes; the first axis is the
-        reference axis whose PRA_VS/VM/VE/ACC/DEC/SF give the vector profile (L2819-2855). Option bit 0
-        relative, bit 8 MF_WAIT, bits 12-15 the transition mode (ITP_OPT_*); TransPara the residual distance
-        (pulse) or percent of the blend modes. ``Wait`` must be None/0."""
         return self._line(Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Wait)
 
     def _line(self, Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Wait, **speeds) -> int:
@@ -459,24 +407,17 @@ class ApsController(DialectController):
         return self._interp(ids, Option, "line", TransPara, target=pos, **speeds)
 
     def APS_line_v(self, Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Vm, Wait=None) -> int:
-        """``APS_line_v(..., F64 *TransPara, F64 Vm, ASYNCALL *Wait)``: :func:`APS_line` at vector speed Vm."""
         return self._line(Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Wait, vm=Vm)
 
     def APS_line_all(self, Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Vs, Vm, Ve, Acc, Dec, SFac,
                      Wait=None) -> int:
-        """``APS_line_all(..., F64 *TransPara, F64 Vs, F64 Vm, F64 Ve, F64 Acc, F64 Dec, F64 SFac, ASYNCALL
-        *Wait)``: :func:`APS_line` with every speed of the vector profile given (the PRA values unchanged)."""
         return self._line(Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Wait, vm=Vm,
                           speeds=dict(vs=Vs, vm=Vm, ve=Ve, acc=Acc, dec=Dec, sf=SFac))
 
     def APS_absolute_linear_move(self, Dimension, Axis_ID_Array, Position_Array, Max_Linear_Speed) -> int:
-        """``APS_absolute_linear_move(I32 Dimension, I32 *Axis_ID_Array, I32 *Position_Array, I32
-        Max_Linear_Speed)`` (L2867): a line to whole-pulse positions at vector speed Max_Linear_Speed pulse/s."""
         return self._linear_move(Dimension, Axis_ID_Array, Position_Array, Max_Linear_Speed, 0)
 
     def APS_relative_linear_move(self, Dimension, Axis_ID_Array, Distance_Array, Max_Linear_Speed) -> int:
-        """``APS_relative_linear_move(I32 Dimension, I32 *Axis_ID_Array, I32 *Distance_Array, I32
-        Max_Linear_Speed)`` (L2870): a line by whole-pulse distances."""
         return self._linear_move(Dimension, Axis_ID_Array, Distance_Array, Max_Linear_Speed, 1)
 
     def _linear_move(self, Dimension, ids, values, speed, option) -> int:
@@ -511,13 +452,10 @@ class ApsController(DialectController):
 
     # -- positions -------------------------------------------------------------------------------------------------
     def APS_get_position(self, Axis_ID):
-        """``APS_get_position(Axis_ID, &Position)`` -> ``(rtn, feedback position)``, whole pulses (L2085)."""
         i = self._axis(Axis_ID)
         return (self._bad(), 0) if i is None else (ERR_NoError, register32(self._card.actual_pos(i)))
 
     def APS_set_position(self, Axis_ID, Position) -> int:
-        """``APS_set_position(Axis_ID, Position)``: sets the feedback (and command) position, at rest only
-        (ERR_FunctionNotAvailable while moving)."""
         i = self._axis(Axis_ID)
         p = _num(Position)
         if i is None or p is None or p != int(p) or abs(p) > _POS_MAX:
@@ -526,29 +464,23 @@ class ApsController(DialectController):
         return self._do(self._card.set_actual_pos, i, p)
 
     def APS_get_command(self, Axis_ID):
-        """``APS_get_command(Axis_ID, &Command)`` -> ``(rtn, command position)``, whole pulses (L2083)."""
         i = self._axis(Axis_ID)
         return (self._bad(), 0) if i is None else (ERR_NoError, register32(self._card.profile_pos(i)))
 
     def APS_get_error_position(self, Axis_ID):
-        """``APS_get_error_position(Axis_ID, &Err_Pos)`` -> ``(rtn, E)``: the law's error of the last servo tick
-        (command - feedback), pulse (SAMP_SRC_ERR_POS, L3574)."""
         i = self._axis(Axis_ID)
         return (self._bad(), 0) if i is None else (ERR_NoError, int(round(self._card.following_error(i))))
 
     # -- status ------------------------------------------------------------------------------------------------------
     def APS_motion_status(self, Axis_ID) -> int:
-        """``I32 APS_motion_status(Axis_ID)``: the motion status word (MTS_* bits) or a negative error code."""
         i = self._axis(Axis_ID)
         return self._bad() if i is None else int(_core.aps_group_motion_status(self._card.kernel, i))
 
     def APS_motion_io_status(self, Axis_ID) -> int:
-        """``I32 APS_motion_io_status(Axis_ID)``: the motion I/O word (MIO_* bits) or a negative error code."""
         i = self._axis(Axis_ID)
         return self._bad() if i is None else int(_core.aps_motion_io_status(self._card.kernel, i))
 
     def APS_get_stop_code(self, Axis_ID):
-        """``APS_get_stop_code(Axis_ID, &Code)`` -> ``(rtn, STOP_* code)`` of the last abnormal stop (0 none)."""
         i = self._axis(Axis_ID)
         return (self._bad(), 0) if i is None else (ERR_NoError, int(_core.aps_group_stop_code(self._card.kernel, i)))
 
@@ -575,23 +507,12 @@ class _ApsScope:
 
     # -- data sampling (L3544-3665): the registers and the run are vendor/adlink/aps_scope.hpp's ------------------
     def APS_set_sampling_param(self, Board_ID, ParaNum, ParaDat) -> int:
-        """``APS_set_sampling_param(Board_ID, ParaNum, ParaDat)``: SAMP_PA_RATE (a sample every N servo ticks,
-        1..65535; default the ticks of 1 ms, L3548), SAMP_PA_EDGE (0 rising, 1 falling, 2 no trigger: start at
-        once, the default; V80), SAMP_PA_LEVEL (in the trigger channel's unit), SAMP_PA_TRIGCH (0..3),
-        SAMP_PA_SRC_CH0..3 (axis << 8 | source: SAMP_* of Table 4-5, PID_* of Table 4-6)."""
         return self._scope().set_sampling_param(ParaNum, ParaDat) if self._board(Board_ID) else self._bad()
 
     def APS_get_sampling_param(self, Board_ID, ParaNum):
-        """``APS_get_sampling_param(Board_ID, ParaNum, &ParaDat)`` -> ``(rtn, ParaDat)``."""
         return self._scope().sampling_param(ParaNum) if self._board(Board_ID) else (self._bad(), 0)
 
     def APS_wait_trigger_sampling(self, Board_ID, Length, PreTrgLen, TimeOutMs):
-        """``APS_wait_trigger_sampling(Board_ID, Length, PreTrgLen, TimeOutMs, STR_SAMP_DATA_4CH *DataArr)`` ->
-        ``(rtn, DataArr)``: samples the four channels every SAMP_PA_RATE ticks, ``Length`` samples (1..1e6) of
-        which ``PreTrgLen`` before the trigger (SAMP_PA_TRIGCH crossing SAMP_PA_LEVEL on SAMP_PA_EDGE), running
-        the card until the block is full or ``TimeOutMs`` simulated ms passed (-1: V83) -> ERR_TimeOut, no data.
-        DataArr: a NumPy array of :data:`STR_SAMP_DATA_4CH` (``tick`` = card tick of the sample; ``data`` the
-        channels in their units: pulse, pulse/s, mV, bits; whole numbers for the I32 sources)."""
         rtn, data = self.APS_wait_trigger_sampling_async(Board_ID, Length, PreTrgLen, TimeOutMs)
         if rtn != ERR_NoError:
             return rtn, None
@@ -602,22 +523,15 @@ class _ApsScope:
         return rtn, (data if rtn == ERR_NoError else None)
 
     def APS_wait_trigger_sampling_async(self, Board_ID, Length, PreTrgLen, TimeOutMs):
-        """``APS_wait_trigger_sampling_async(...)`` -> ``(rtn, DataArr)``: starts the same sampling and returns at
-        once; the card fills ``DataArr`` as it runs (the samples taken so far are copied into it at each
-        APS_get_sampling_count call, V78); after ``TimeOutMs`` of card time without a full block the sampling
-        stops."""
         if not self._board(Board_ID):
             return self._bad(), None
         rtn = self._scope().start_sampling(Length, PreTrgLen, TimeOutMs)
         return rtn, (self._scope().sampling_buffer() if rtn == ERR_NoError else None)
 
     def APS_get_sampling_count(self, Board_ID):
-        """``APS_get_sampling_count(Board_ID, &SampCnt)`` -> ``(rtn, samples in DataArr)`` of the running or
-        finished asynchronous sampling (the pre-trigger samples count once the trigger came)."""
         return (ERR_NoError, self._scope().sampling_count()) if self._board(Board_ID) else (self._bad(), 0)
 
     def APS_stop_wait_sampling(self, Board_ID) -> int:
-        """``APS_stop_wait_sampling(Board_ID)``: stops the sampling; DataArr keeps what was copied."""
         if not self._board(Board_ID):
             return self._bad()
         self._scope().stop_sampling()
@@ -629,20 +543,12 @@ class _ApsScope:
         return v is not None and v == int(v) and 0 <= v < (2 if len(self._card) == 4 else 4)
 
     def APS_set_trigger_param(self, Board_ID, Param_No, Param_Val) -> int:
-        """``APS_set_trigger_param(Board_ID, Param_No, Param_Val)``: TGR_LCMPx_SRC / TGR_TCMPx_SRC (axis n = its
-        encoder, TGR_SRC_COMMAND + n its command position; V76), TGR_TCMPx_DIR (0 negative, 1 positive, 2 both),
-        TGR_TRG_EN (bit x: TRGx on), TGR_TRGx_SRC (TRG_SRC_* bits, V77), TGR_TRGx_PWD (x 100 ns, 1..10^7),
-        TGR_TRGx_LOGIC (0 active high, 1 active low), TGR_TRGx_TGL (0 pulse, 1 level toggle), the timer TIMR_ITV /
-        TIMR_DIR / TIMR_RING_EN / TIMR_EN (APS_get_timer_counter, AF15). PCI-8254 (4 axes): TRG0-1 only."""
         return self._scope().set_trigger_param(Param_No, Param_Val) if self._board(Board_ID) else self._bad()
 
     def APS_get_trigger_param(self, Board_ID, Param_No):
-        """``APS_get_trigger_param(Board_ID, Param_No, &Param_Val)`` -> ``(rtn, Param_Val)``."""
         return self._scope().trigger_param(Param_No) if self._board(Board_ID) else (self._bad(), 0)
 
     def APS_set_trigger_linear(self, Board_ID, LCmpCh, StartPoint, RepeatTimes, Interval) -> int:
-        """``APS_set_trigger_linear(Board_ID, LCmpCh, StartPoint, RepeatTimes, Interval)``: LCMP0/1 compares the
-        points StartPoint + i*Interval, i = 0..RepeatTimes-1, in the direction of Interval's sign (L3393)."""
         if not self._board(Board_ID):
             return self._bad()
         ch = _num(LCmpCh)
@@ -651,8 +557,6 @@ class _ApsScope:
         return self._do(self._card.compare_set_linear, int(ch), _num(StartPoint), _num(RepeatTimes), _num(Interval))
 
     def APS_set_trigger_table(self, Board_ID, TCmpCh, DataArr, ArraySize) -> int:
-        """``APS_set_trigger_table(Board_ID, TCmpCh, I32 *DataArr, ArraySize)``: TCMP0/1 compares the first
-        ArraySize points in order, in the TGR_TCMPx_DIR direction (L3397-3430; the library streams any length)."""
         if not self._board(Board_ID):
             return self._bad()
         ch, n = _num(TCmpCh), _num(ArraySize)
@@ -665,8 +569,6 @@ class _ApsScope:
         return self._do(self._card.compare_set_table, int(ch), pts[:int(n)])
 
     def APS_set_trigger_manual(self, Board_ID, TrgCh) -> int:
-        """``APS_set_trigger_manual(Board_ID, TrgCh)``: one pulse on TRGx now, if its source set has
-        TRG_SRC_MANUAL and it is enabled (L3380-3385)."""
         if not self._board(Board_ID):
             return self._bad()
         if not self._trg_count_ok(TrgCh):
@@ -674,7 +576,6 @@ class _ApsScope:
         return self._do(self._card.compare_manual, int(_num(TrgCh)))
 
     def APS_get_trigger_count(self, Board_ID, TrgCh):
-        """``APS_get_trigger_count(Board_ID, TrgCh, &TrgCnt)`` -> ``(rtn, pulses TRGx emitted)``."""
         if not self._board(Board_ID):
             return self._bad(), 0
         if not self._trg_count_ok(TrgCh):
@@ -682,7 +583,6 @@ class _ApsScope:
         return ERR_NoError, int(self._card.compare_count(int(_num(TrgCh))))
 
     def APS_reset_trigger_count(self, Board_ID, TrgCh) -> int:
-        """``APS_reset_trigger_count(Board_ID, TrgCh)``: TRGx's counter to 0."""
         if not self._board(Board_ID):
             return self._bad()
         if not self._trg_count_ok(TrgCh):
@@ -690,13 +590,9 @@ class _ApsScope:
         return self._do(self._card.compare_reset_count, int(_num(TrgCh)))
 
     def APS_get_trigger_linear_cmp(self, Board_ID, LCmpCh):
-        """``APS_get_trigger_linear_cmp(Board_ID, LCmpCh, &CmpVal)`` -> ``(rtn, next compare point)`` (0 once every
-        point has been compared, decision V128)."""
         return self._next_cmp(Board_ID, LCmpCh, 0)
 
     def APS_get_trigger_table_cmp(self, Board_ID, TCmpCh):
-        """``APS_get_trigger_table_cmp(Board_ID, TCmpCh, &CmpVal)`` -> ``(rtn, next compare point)`` (0 once every
-        point of the table has been compared, decision V128)."""
         return self._next_cmp(Board_ID, TCmpCh, 2)
 
     def _next_cmp(self, Board_ID, ch, base):
@@ -713,38 +609,23 @@ class _ApsScope:
         return _core.aps_interrupts(self._card.kernel)
 
     def APS_int_enable(self, Board_ID, Enable) -> int:
-        """``APS_int_enable(Board_ID, Enable)``: the main interrupt switch (1 on, 0 off); no event signals while
-        off."""
         return self._ints().set_main(Enable) if self._board(Board_ID) else self._bad()
 
     def APS_set_int_factor(self, Board_ID, Item_No, Factor_No, Enable) -> int:
-        """``I32 APS_set_int_factor(Board_ID, Item_No, Factor_No, Enable)`` -> the interrupt number (item x 32 +
-        factor bit, V82) or a negative code. Items 0..3/7 axes (IALM..ISMEL, IEZ = the index mark passing; IPRED,
-        IPOSTD not simulated:
-        ERR_FunctionNotAvailable), 8 system (IEMG, ILCF0/1, IFCF0/1; IMOV/IHOV never fire); 9/10 (DI edges): the
-        card has no digital inputs. Factor_No is the bit number; a one-bit mask such as the examples' (1 << 12)
-        is read as its bit (L4271-4274, V82)."""
         if not self._board(Board_ID):
             return self._bad()
         return self._ints().set_factor(Item_No, Factor_No, Enable)  # the module watches the card itself (AW4)
 
     def APS_get_int_factor(self, Board_ID, Item_No, Factor_No):
-        """``APS_get_int_factor(Board_ID, Item_No, Factor_No, &Enable)`` -> ``(rtn, Enable)``."""
         return self._ints().factor_enabled(Item_No, Factor_No) if self._board(Board_ID) else (self._bad(), 0)
 
     def APS_int_no_to_handle(self, Int_No):
-        """``HANDLE APS_int_no_to_handle(Int_No)``: the simulation's handle is the interrupt number itself."""
         return int(Int_No)
 
     def APS_wait_single_int(self, Int_No, Time_Out) -> int:
-        """``APS_wait_single_int(Int_No, Time_Out)``: runs the card until the interrupt is signaled (at once if it
-        already is: reset it with APS_reset_int) or ``Time_Out`` simulated ms passed (ERR_TimeOut; -1: at most
-        one simulated hour, V83). ERR_InterruptNotEnable with the main switch or the factor off."""
         return self.APS_wait_multiple_int(1, [Int_No], 1, Time_Out)
 
     def APS_wait_multiple_int(self, Int_Count, Int_No_Array, Wait_All, Time_Out) -> int:
-        """``APS_wait_multiple_int(Int_Count, *Int_No_Array, Wait_All, Time_Out)``: as APS_wait_single_int for
-        the first Int_Count numbers, until all (Wait_All 1) or any (0) are signaled."""
         if self._card is None:
             return ERR_DeviceNotInitial
         m = self._ints()
@@ -755,11 +636,9 @@ class _ApsScope:
         return ERR_NoError if m.wait_done() else ERR_TimeOut
 
     def APS_reset_int(self, Int_No) -> int:
-        """``APS_reset_int(Int_No)``: back to non-signaled (L4270)."""
         return ERR_DeviceNotInitial if self._card is None else self._ints().set_signaled(Int_No, False)
 
     def APS_set_int(self, Int_No) -> int:
-        """``APS_set_int(Int_No)``: signals the interrupt by software."""
         return ERR_DeviceNotInitial if self._card is None else self._ints().set_signaled(Int_No, True)
 
 
@@ -832,6 +711,8 @@ for _mixin in (_ApsScope, _ApsPointTable, _ApsMore):  # the blocks' functions ar
     for _name, _fn in list(vars(_mixin).items()):
         if callable(_fn) and not _name.startswith("__"):
             setattr(ApsController, _name, _fn)
+for _name, _args, _doc in _core.APS_COMMANDS:  # what each function does: the C++ table's row (AX2)
+    getattr(ApsController, _name).__doc__ = _doc
 
 #: Functions the simulation cannot carry out: they return the vendor's error code (issue 25.3).
 UNSUPPORTED = {
