@@ -13,6 +13,8 @@
 
 #include "card_axis.hpp"
 #include "servobench/machine/card.hpp"
+#include "servobench/vendor/adlink/aps_command_table.hpp"
+#include "servobench/vendor/adlink/aps_constants.hpp"
 #include "servobench/vendor/adlink/aps_interrupts.hpp"
 #include "servobench/vendor/adlink/aps_outputs.hpp"
 #include "servobench/vendor/adlink/aps_parameters.hpp"
@@ -135,6 +137,14 @@ void bind_point_tables(py::module_& m) {
   for (const vendor::adlink::ApsCommandDoc& d : vendor::adlink::pt_commands())
     commands.append(py::make_tuple(d.name, d.args, d.doc));
   m.attr("APS_PT_COMMANDS") = commands;  // (name, arguments after Board_ID/PtbId, doc): the dialect's rows
+  py::list described;
+  for (const vendor::adlink::ApsCommandDoc& d : vendor::adlink::aps_commands())
+    described.append(py::make_tuple(d.name, d.args, d.doc));
+  m.attr("APS_COMMANDS") = described;  // (name, arguments after self, doc): the dialect's docstrings (AX2)
+  py::list constants;
+  for (const vendor::adlink::ApsConstant& c : vendor::adlink::aps_constants())
+    constants.append(py::make_tuple(c.name, c.value, c.hex, c.doc));
+  m.attr("APS_CONSTANTS") = constants;  // (name, value, hex, doc): _aps_constants.py is written from it
   m.def("aps_point_tables", [](machine::Card& k) -> ApsPointTables& { return vendor::adlink::aps_point_tables(k); },
         py::arg("card"), py::return_value_policy::reference_internal,
         "the card's ADLINK point tables (created on first use, owned by the card)");

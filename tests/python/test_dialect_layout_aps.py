@@ -14,8 +14,8 @@ DIALECTS = Path(__file__).resolve().parents[2] / "python" / "servobench" / "dial
 FILES = ("aps.py", "_aps_more.py", "_aps_pt.py")
 # The aim of issue 24.3: aps.py <= 40 % of its 1441 lines when the issue was filed, the private modules counted too.
 AIM_APS_LINES = 576
-# Lines reached (session 12): a ceiling that only comes down (the dialect does not grow back).
-CEILING = {"aps.py": 994, "_aps_more.py": 258, "_aps_pt.py": 195}
+# Lines reached (session 13): a ceiling that only comes down (the dialect does not grow back).
+CEILING = {"aps.py": 751, "_aps_more.py": 191, "_aps_pt.py": 190}
 # The dialect's mutable attributes: the handle only (session 12); the C++ module holds the rest.
 STILL_IN_PYTHON = {"_card", "_machine"}
 # Moved into vendor/adlink/aps_scope.hpp, aps_interrupts.hpp (session 11): must not come back.
@@ -46,8 +46,8 @@ def test_line_count_only_comes_down(name):
     assert n <= CEILING[name], f"{name}: {n} lines, more than the {CEILING[name]} reached"
 
 
-@pytest.mark.xfail(strict=True, reason="issue 24.3 aim not reached in session 12 (AW8): the ApsController methods "
-                                       "and the vendor constants are still written out in Python")
+@pytest.mark.xfail(strict=True, reason="issue 24.3 aim not reached in session 13 (AX3): the ApsController adapters' "
+                                       "argument checks and calls are still Python bodies")
 def test_aim_of_issue_24_3():
     total = sum(len((DIALECTS / f).read_text().splitlines()) for f in FILES)
     assert total <= AIM_APS_LINES, f"the ADLINK dialect has {total} lines, the aim is {AIM_APS_LINES}"
@@ -135,3 +135,63 @@ def test_point_table_functions_are_made_from_the_cpp_command_table():
         assert fn.__doc__ == doc and re.search(r"L\d{4}", doc), name  # a line of the manual
         want = ["self", "Board_ID", "PtbId"] + [a.split("=")[0].split(":")[0].strip() for a in args.split(",") if a]
         assert list(inspect.signature(fn).parameters) == want, name
+
+
+def test_header_constants_are_the_cpp_tables():
+    """The APS header constants (ERR_*, PRA_*, MTS_*, MIO_*, STOP_*, SAMP_*, TGR_*, ...) are written once, in the C++
+    vendor module (vendor/adlink/aps_constants.cpp, AX1): the committed table module _aps_constants.py is what
+    scripts/aps_constants.py writes from _core.APS_CONSTANTS, the dialect exports those values, and no dialect file
+    assigns one of those names itself."""
+    sb = pytest.importorskip("servobench")
+    import sys
+
+    from servobench.dialects import aps
+
+    sys.path.insert(0, str(DIALECTS.parents[2] / "scripts"))
+    try:
+        import aps_constants as gen
+    finally:
+        sys.path.pop(0)
+    rows = sb._core.APS_CONSTANTS
+    assert (DIALECTS / "_aps_constants.py").read_text() == gen.render(rows), "rerun scripts/aps_constants.py"
+    assert len({name for name, *_ in rows}) == len(rows) >= 245
+    for name, value, _hex, doc in rows:
+        assert getattr(aps, name) == value and type(getattr(aps, name)) is int and doc, name
+    # the module's own values: the PRA table's number, the status bit, the stop code, the return code
+    assert aps.PRA_VM == 0x24 and aps.MTS_NSTP == 7 and aps.STOP_ERROR_LEVEL == 13 and aps.ERR_TimeOut == -9
+    names = {name for name, *_ in rows}
+    for f in FILES:
+        for node in _tree(f).body:
+            targets = node.targets if isinstance(node, ast.Assign) else []
+            for t in targets:
+                assigned = {e.id for e in ast.walk(t) if isinstance(e, ast.Name)}
+                assert not assigned & names, f"{f}: {assigned & names} retyped (they are _aps_constants.py's)"
+
+
+def test_each_aps_function_is_described_once_by_the_cpp_table():
+    """The APS_* functions the dialect writes out take their docstrings from the C++ table (vendor/adlink/
+    aps_command_table.cpp, _core.APS_COMMANDS; AX2): each row's arguments are the function's (names, kinds,
+    defaults), its doc is the method's and the module function's, and the dialect source holds no docstring of an
+    APS_* function any more."""
+    sb = pytest.importorskip("servobench")
+    import inspect
+
+    from servobench.dialects import aps
+
+    rows = sb._core.APS_COMMANDS
+    assert len({name for name, _a, _d in rows}) == len(rows) >= 78
+    for name, args, doc in rows:
+        want = ast.parse(f"def f(self, {args}): pass").body[0].args
+        want_names = [a.arg for a in want.args][1:] + ([want.kwarg.arg] if want.kwarg else [])
+        want_defaults = [ast.literal_eval(d) for d in want.defaults]
+        sig = inspect.signature(getattr(aps.ApsController, name))
+        params = list(sig.parameters.values())[1:]
+        assert [p.name for p in params] == want_names, name
+        got_defaults = [p.default for p in params if p.default is not inspect.Parameter.empty]
+        assert got_defaults == want_defaults, name
+        assert getattr(aps.ApsController, name).__doc__ == doc == getattr(aps, name).__doc__, name
+        assert doc.strip() and "``" in doc, name  # the manual's C signature or name
+    for f in FILES:
+        for node in ast.walk(_tree(f)):
+            if isinstance(node, ast.FunctionDef) and node.name.startswith("APS_"):
+                assert ast.get_docstring(node) is None, f"{f}: {node.name} has its docstring back in Python"

@@ -23,12 +23,7 @@ from dataclasses import dataclass, field
 
 from .. import _core
 from .._core import ApsPtKind as K, ApsPtSpeed as S, ApsPtTransition as T
-
-ERR_DeviceNotInitial = -4
-PT_BUFFER_POINTS = 50   # points per table (L3796, L3880)
-PT_TABLES = 2           # table IDs 0..1 (L3796, L3858)
-MAX_PT_DIM = 6          # APS type_def.h (PTLINE.Pos[6]); the card interpolates 2..6 axes (L2817)
-PTB_WORKING, PTB_FULL, PTB_EMPTY = 0x1, 0x2, 0x4  # PTSTS.BitSts bits (the example tests 0x02 = full, L3901)
+from ._aps_constants import ERR_DeviceNotInitial, MAX_PT_DIM
 
 
 @dataclass

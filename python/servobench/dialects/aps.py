@@ -26,105 +26,16 @@ import numpy as np
 from .. import _core
 from .._core import AdlinkPtp, ApsServoLaw, BlendMode, CardCommandRefused, MotionCommandRefused
 from ..card import Card
-from ._aps_more import (PRB_EMG_LOGIC, PRB_PWM0_MAP_DO, PRB_PWM1_MAP_DO, PRB_PWM2_MAP_DO,  # noqa: F401
-                        PRB_PWM3_MAP_DO, PRS_EMG_LOGIC, VAO_TABLE_INPUT_TYPE, VAO_TABLE_OUTPUT_TYPE,
-                        VAO_TABLE_PWM_CONFIG, VAO_TABLE_PWM_Config, VAO_TABLE_SRC, WDT_ACTION_DO_OFF,
-                        WDT_ACTION_PWM_OFF, WDT_ACTION_SERVO_OFF, _ApsMore)
-from ._aps_pt import (MAX_PT_DIM, PT_BUFFER_POINTS, PT_TABLES, PTA2CA, PTA2CE, PTB_EMPTY, PTB_FULL,  # noqa: F401
-                      PTB_WORKING, PTDWL, PTHCA, PTHCE, PTLINE, PTSTS, _ApsPointTable)
+from ._aps_constants import *  # noqa: F401,F403  (the header constants: the C++ table's, AX1)
+from ._aps_more import _ApsMore
+from ._aps_pt import PTA2CA, PTA2CE, PTDWL, PTHCA, PTHCE, PTLINE, PTSTS, _ApsPointTable  # noqa: F401
 from ._controller import DialectController, export_functions, register32, wrap32  # noqa: F401
-
-# -- return codes (APS library ErrorCodeDef.h; the manual uses ERR_NoError, L2309) -------------------------------
-ERR_NoError = 0
-ERR_DeviceNotInitial = -4
-ERR_DeviceAlreadyInitialed = -7
-ERR_ParametersInvalid = -10
-ERR_FunctionNotAvailable = -13
-ERR_DistantNotEnough = -22
-
-# -- axis parameters (hex numbers of the manual) ---------------------------------------------------------------------
-PRA_EL_LOGIC = 0x00       # PEL/MEL input logic, 0 normal / 1 inverted (L1614)
-PRA_EL_MODE = 0x02        # limit stop mode: 0 immediate (default) / 1 decelerate at PRA_SD_DEC (L3994; V28)
-PRA_SD_DEC = 0x07         # deceleration of APS_stop_move, pulse/s^2 (L2744, L4001)
-PRA_STP_DEC = PRA_SD_DEC  # the name the velocity example uses (L2613)
-PRA_SPEL_EN = 0x08        # soft PEL switch (L4002)
-PRA_SMEL_EN = 0x09        # soft MEL switch (L4003)
-PRA_SPEL_POS = 0x0A       # soft PEL position, pulse (L4004)
-PRA_SMEL_POS = 0x0B       # soft MEL position, pulse (L4005)
-PRA_HOME_MODE = 0x10      # 0 ORG, 1 EL, 2 single EZ (L2268)
-PRA_HOME_DIR = 0x11       # 0 positive, 1 negative (L2269, L2357)
-PRA_HOME_CURVE = 0x12     # home S-factor 0..1 (L2270)
-PRA_HOME_S = PRA_HOME_CURVE  # the name the mode tables use (L2359)
-PRA_HOME_ACC = 0x13       # acceleration = deceleration, pulse/s^2 (L2271)
-PRA_HOME_VM = 0x15        # search speed, pulse/s (L2272)
-PRA_HOME_SHIFT = 0x17     # final offset from the reference signal, pulse (L2275)
-PRA_HOME_EZA = 0x18       # EZ alignment 0/1 (L2276)
-PRA_HOME_VO = 0x19        # approach (low) speed, pulse/s (L2277)
-PRA_HOME_POS = 0x1B       # position set after homing, pulse (L2278)
-PRA_SF = 0x20             # S-factor 0..1 (L2236)
-PRA_CURVE = PRA_SF        # the name the velocity example uses (L2614)
-PRA_ACC = 0x21            # acceleration, pulse/s^2 (L2746)
-PRA_DEC = 0x22            # deceleration, pulse/s^2 (L2747)
-PRA_VS = 0x23             # start velocity, pulse/s (L2748)
-PRA_VM = 0x24             # maximum velocity, pulse/s (L2749)
-PRA_VE = 0x25             # end velocity, pulse/s (L2750)
-PRA_PRE_EVENT_DIST = 0x2A   # PRED when the travelled distance > this, pulse; 0 off (L3284-3292)
-PRA_POST_EVENT_DIST = 0x2B  # POSTD when the remaining distance < this, pulse; 0 off
-PRA_JG_MODE = 0x40        # jog: 0 continuous, 1 step (L2677)
-PRA_JG_DIR = 0x41         # jog direction: 0 negative, 1 positive
-PRA_JG_SF = 0x42          # jog S-factor 0..1
-PRA_JG_ACC = 0x43         # jog acceleration, pulse/s^2
-PRA_JG_DEC = 0x44         # jog deceleration, pulse/s^2
-PRA_JG_VM = 0x45          # jog speed, pulse/s
-PRA_JG_OFFSET = 0x46      # step-mode offset, pulse
-PRA_JG_DELAY = 0x47       # step-mode delay, us, 0..10,000,000
-PRA_GEAR_MASTER = 0x60    # gear master axis of this slave (L3303-3307)
-PRA_GEAR_ENGAGE_RATE = 0x61  # ratio per second the ratio ramps at (= ratio / engage time, L3313); 0 at once (V120)
-PRA_GEAR_RATIO = 0x62     # gear ratio, slave pulse per master pulse
-PRA_GANTRY_PROTECT_1 = 0x63  # gantry deviation level 1, pulse (L3337-3345; gantry mode not simulated, V122)
-PRA_GANTRY_PROTECT_2 = 0x64  # gantry deviation level 2, pulse
-PRA_JG_MAP_DI_EN = 0x48   # DI linking (not simulated: only 0 is accepted, V30)
-PRA_JG_P_JOG_DI = 0x49
-PRA_JG_N_JOG_DI = 0x4A
-PRA_JG_JOG_DI = 0x4B
-PRA_KP_GAIN = 0x90        # servo law (L1746-1762)
-PRA_KI_GAIN = 0x91
-PRA_KD_GAIN = 0x92
-PRA_KVFF_GAIN = 0x93
-PRA_KAFF_GAIN = 0x9A
-PRA_KP_SHIFT = 0x9B
-PRA_KI_SHIFT = 0x9C
-PRA_KD_SHIFT = 0x9D
-PRA_KVFF_SHIFT = 0x9E
-PRA_KAFF_SHIFT = 0x9F
-PRA_PID_SHIFT = 0xA0
-PRA_SERVO_V_BIAS = 0x120
-PRA_SERVO_V_LIMIT = 0x123
-PRA_ERR_POS_LEVEL = 0x124  # position-error protection level, pulse, 0 = off (L4019)
-PRA_SERVO_V_INVERSE = 0x125
-PRA_INTEGRAL_LIMIT = 0x12B
-
-# -- status bits (L3164-3206, L3611-3631) and stop codes (L3922-4023) ---------------------------------------------
-MTS_CSTP, MTS_VM, MTS_ACC, MTS_DEC, MTS_DIR, MTS_MDN, MTS_HMV = 0, 1, 2, 3, 4, 5, 6
-# "Not stopped": 1 while the axis moves, the complement of MDN. The home example waits `do {...} while (((msts >>
-# MTS_NSTP) & 1) == 1)` for the "motion done bit" (L2313-2317) but the status table (L3170-3180) has no such bit:
-# the card sets it in the first reserved bit (L3174 "7~9 Reserved"), so the loop ends when homing has ended (AF1).
-MTS_NSTP = 7
-MTS_WAIT, MTS_PTB, MTS_JOG, MTS_ASTP, MTS_BLD, MTS_PRED, MTS_POSTD, MTS_GER = 10, 11, 15, 16, 17, 18, 19, 28
-MIO_ALM, MIO_PEL, MIO_MEL, MIO_ORG, MIO_EMG, MIO_EZ, MIO_INP, MIO_SVON = 0, 1, 2, 3, 4, 5, 6, 7
-MIO_SPEL, MIO_SMEL = 11, 12
-STOP_NORMAL, STOP_EMG, STOP_ALM, STOP_SVNO, STOP_PEL, STOP_MEL, STOP_SPEL, STOP_SMEL = 0, 1, 2, 3, 4, 5, 6, 7
-STOP_ERROR_LEVEL = 13  # the manual prints 6 (L4023), colliding with STOP_SPEL; APS_define.h has 13 (V41)
 
 # The PRA_* ranges, defaults and where each acts are the C++ parameter table's (vendor/adlink/aps_parameters.hpp,
 # AV5); the speeds an APS_ptp_all call gives (pulse/s, pulse/s^2, S-factor) are checked against these:
 _SPEEDS = {"vs": (0.0, 1e9), "ve": (0.0, 1e9), "acc": (0.0, 1e12), "dec": (0.0, 1e12), "sf": (0.0, 1.0)}
 _POS_MAX = 2147483647
-MF_WAIT = 0x100           # APS_ptp Option bit 8: wait for APS_move_trigger (L3249, L3686-3691)
-# Interpolation Option bits 12-15, the "Buffer mode" field (L3686-3691) = the transition "Flag" (L3085): the
-# values of APS_define.h ITP_OPT_* (V114); the field value f is mode f + 1 of L3085-3143.
-ITP_OPT_ABORT_BLEND, ITP_OPT_ABORT_FORCE, ITP_OPT_ABORT_STOP = 0x0000, 0x1000, 0x2000
-ITP_OPT_BUFFERED, ITP_OPT_BLEND_DEC, ITP_OPT_BLEND_RES_DIST, ITP_OPT_BLEND_PCNT = 0x3000, 0x4000, 0x5000, 0x6000
+# Interpolation Option bits 12-15 (ITP_OPT_*, V114): the field value f is mode f + 1 of L3085-3143.
 _BLEND_MODES = (BlendMode.ABORT_BLEND, BlendMode.ABORT_FORCED, BlendMode.ABORT_STOP, BlendMode.BUFFERED,
                 BlendMode.BLEND_DECEL, BlendMode.BLEND_DISTANCE, BlendMode.BLEND_PERCENT)
 _IGNORED = {"emergency_stop_active", "direction_inhibited", "drive_alarm_active"}  # L3931-4010
@@ -182,9 +93,6 @@ class ApsController(DialectController):
 
     # -- system --------------------------------------------------------------------------------------------------
     def APS_initial(self, mode: int = 0, card: Card | None = None, **axis_parts):
-        """``APS_initial(&BoardID_InBits, Mode)``: opens ``card`` (or a new 4-axis PCI-8254 Card with the ADLINK
-        servo period 250 us, L1733, built from ``axis_parts``). Returns ``(rtn, board_id_in_bits)`` (board 0 -> 1).
-        ERR_DeviceAlreadyInitialed while a card is open."""
         if self._card is not None:
             return ERR_DeviceAlreadyInitialed, 0
         if card is None and not axis_parts:
@@ -203,7 +111,6 @@ class ApsController(DialectController):
         return ERR_NoError, 1
 
     def APS_close(self) -> int:
-        """``APS_close()``: releases the card."""
         if self._card is None:
             return ERR_DeviceNotInitial
         self._more_close()  # the watchdog and the interrupt watch go with the card (AW4, AW5)
@@ -212,34 +119,26 @@ class ApsController(DialectController):
 
     # -- axis parameters -----------------------------------------------------------------------------------------
     def APS_set_axis_param(self, Axis_ID, AxisPara, Data) -> int:
-        """``APS_set_axis_param(Axis_ID, AxisPara, I32 Data)``: sets a PRA_* parameter (integer value)."""
         v = _num(Data)
         if v is None or v != int(v):
             return self._bad()
         return self.APS_set_axis_param_f(Axis_ID, AxisPara, v)
 
     def APS_set_axis_param_f(self, Axis_ID, AxisPara, Data) -> int:
-        """``APS_set_axis_param_f(Axis_ID, AxisPara, F64 Data)``: sets a PRA_* parameter. Servo-law parameters
-        (90h-A0h, 120h-12Bh) take effect at the next servo tick; motion parameters at the next move;
-        limits and PRA_ERR_POS_LEVEL at once."""
         i = self._axis(Axis_ID)
         v = _num(Data)
         return self._bad() if i is None or v is None else self._prm().set(i, AxisPara, v)
 
     def APS_get_axis_param_f(self, Axis_ID, AxisPara):
-        """``APS_get_axis_param_f(Axis_ID, AxisPara, &Data)`` -> ``(rtn, data)`` (F64)."""
         i = self._axis(Axis_ID)
         return (self._bad(), 0.0) if i is None else self._prm().get(i, AxisPara)
 
     def APS_get_axis_param(self, Axis_ID, AxisPara):
-        """``APS_get_axis_param(Axis_ID, AxisPara, &Data)`` -> ``(rtn, data)`` (I32: the value truncated)."""
         rtn, v = self.APS_get_axis_param_f(Axis_ID, AxisPara)
         return rtn, int(v)
 
     # -- servo and motion ------------------------------------------------------------------------------------------
     def APS_set_servo_on(self, Axis_ID, Servo_on) -> int:
-        """``APS_set_servo_on(Axis_ID, Servo_on)``: 1 servo on (SVON), 0 off (L1603). Servo on with the drive
-        alarm latched is refused (ERR_FunctionNotAvailable)."""
         i = self._axis(Axis_ID)
         if i is None or Servo_on not in (0, 1):
             return self._bad()
@@ -269,9 +168,6 @@ class ApsController(DialectController):
         return self._do(self._card.move_ptp_wait if wait else self._card.move_ptp, i, p)
 
     def APS_relative_move(self, Axis_ID, Distance, Max_Speed) -> int:
-        """``APS_relative_move(Axis_ID, I32 Distance, I32 Max_Speed)``: point to point by ``Distance`` pulse from
-        the command position at ``Max_Speed`` pulse/s with PRA_ACC/DEC/VS/VE/SF (L2728-2740). During a PTP or
-        velocity move it changes the move on the fly (L2757-2767)."""
         i = self._axis(Axis_ID)
         d = _num(Distance)
         if i is None or d is None:
@@ -279,7 +175,6 @@ class ApsController(DialectController):
         return self._ptp(i, self._card.profile_pos(i) + d if d == int(d) else None, _num(Max_Speed))
 
     def APS_absolute_move(self, Axis_ID, Position, Max_Speed) -> int:
-        """``APS_absolute_move(Axis_ID, I32 Position, I32 Max_Speed)``: point to point to ``Position`` pulse."""
         i = self._axis(Axis_ID)
         if i is None:
             return self._bad()
@@ -300,10 +195,6 @@ class ApsController(DialectController):
         return i, target, bool(o & MF_WAIT)
 
     def APS_ptp(self, Axis_ID, Option, Position, Wait=None) -> int:
-        """``APS_ptp(Axis_ID, Option, F64 Position, ASYNCALL *Wait)``: point to point at PRA_VM with PRA_ACC/DEC/
-        VS/VE/SF. Option bit 0 absolute (0) / relative (1); bit 8 (MF_WAIT, 0x100) waits for
-        :func:`APS_move_trigger` (MTS WAIT on) (L3686-3691). The buffer modes (bits 12-15) are not simulated
-        (ERR_FunctionNotAvailable); ``Wait`` must be None/0 (a synchronous call)."""
         r = self._option(Axis_ID, Option, Position, Wait)
         if isinstance(r, int):
             return r
@@ -311,8 +202,6 @@ class ApsController(DialectController):
         return self._ptp(i, target, self._prm().motion(i).vm, wait)
 
     def APS_ptp_v(self, Axis_ID, Option, Position, Vm, Wait=None) -> int:
-        """``APS_ptp_v(Axis_ID, Option, F64 Position, F64 Vm, ASYNCALL *Wait)``: :func:`APS_ptp` at the given
-        maximum speed ``Vm`` pulse/s (L2728-2740)."""
         r = self._option(Axis_ID, Option, Position, Wait)
         if isinstance(r, int):
             return r
@@ -320,9 +209,6 @@ class ApsController(DialectController):
         return self._ptp(i, target, _num(Vm), wait)
 
     def APS_ptp_all(self, Axis_ID, Option, Position, Vs, Vm, Ve, Acc, Dec, SFac, Wait=None) -> int:
-        """``APS_ptp_all(Axis_ID, Option, F64 Position, F64 Vs, F64 Vm, F64 Ve, F64 Acc, F64 Dec, F64 SFac,
-        ASYNCALL *Wait)``: :func:`APS_ptp` with every speed given (pulse/s, pulse/s^2, S-factor 0..1); the
-        axis parameters are not changed (L2716-2718)."""
         r = self._option(Axis_ID, Option, Position, Wait)
         if isinstance(r, int):
             return r
@@ -331,9 +217,6 @@ class ApsController(DialectController):
                          sf=_num(SFac))
 
     def APS_move_trigger(self, Dimension, Axis_ID_Array) -> int:
-        """``APS_move_trigger(I32 Dimension, I32 *Axis_ID_Array)``: starts the waiting (MF_WAIT) moves of the
-        listed axes in the same servo tick (L3787-3790). Each axis then runs its own profile; an axis whose
-        move became impossible while waiting (a limit, EMG, ALM) is ignored with its stop code."""
         d = _num(Dimension)
         if self._card is None:
             return ERR_DeviceNotInitial
@@ -357,9 +240,6 @@ class ApsController(DialectController):
         return self._do(c.move_trigger, mask)
 
     def APS_home_move(self, Axis_ID) -> int:
-        """``APS_home_move(Axis_ID)``: starts homing with the PRA_HOME_* parameters (modes 0 ORG, 1 EL, 2 EZ;
-        L2246-2556). Completion: MTS MDN; failure: MTS ASTP and :func:`APS_get_stop_code` (L2308-2326).
-        Refused (ERR_FunctionNotAvailable) while the axis moves."""
         i = self._axis(Axis_ID)
         if i is None:
             return self._bad()
@@ -371,11 +251,6 @@ class ApsController(DialectController):
         return self._do(self._card.home, i, p)
 
     def APS_jog_on(self, Axis_ID, On) -> int:
-        """``APS_jog_on(Axis_ID, On)``: the software JOG-ON signal (1 on, 0 off; L2653, L2672) with the
-        PRA_JG_* parameters. Continuous mode moves while on and decelerates when off; step mode moves
-        PRA_JG_OFFSET, waits PRA_JG_DELAY, then moves on while the signal stays on, stopping on a whole
-        multiple of the offset (L2645-2657). While jogging, other motion commands are refused; while another
-        motion runs, JOG-ON is ignored (ERR_FunctionNotAvailable, L2706-2708)."""
         i = self._axis(Axis_ID)
         if i is None or On not in (0, 1):
             return self._bad()
@@ -396,8 +271,6 @@ class ApsController(DialectController):
         return ERR_NoError
 
     def APS_velocity_move(self, Axis_ID, Max_Speed) -> int:
-        """``APS_velocity_move(Axis_ID, I32 Max_Speed)``: velocity move at the signed ``Max_Speed`` pulse/s with
-        PRA_ACC/DEC/SF until a stop; a new call changes the speed on the fly (L2560-2566)."""
         i = self._axis(Axis_ID)
         v = _num(Max_Speed)
         if i is None or v is None:
@@ -408,8 +281,6 @@ class ApsController(DialectController):
         return self._do(self._card.move_velocity, i, v, self._params(i, vm=abs(v)))
 
     def APS_vel(self, Axis_ID, Dir, Vel, Wait=None) -> int:
-        """``APS_vel(Axis_ID, Dir, F64 Vel, ASYNCALL *Wait)``: velocity move at ``Vel`` pulse/s, Dir 0 positive,
-        1 negative (the example passes 0 with positive speeds, L2618; V50)."""
         i = self._axis(Axis_ID)
         v = _num(Vel)
         if i is None or v is None or Dir not in (0, 1) or Wait not in (None, 0) or not 0 < v <= 1e9:
@@ -418,7 +289,6 @@ class ApsController(DialectController):
         return self._do(self._card.move_velocity, i, -v if Dir else v, self._params(i, vm=v))
 
     def APS_stop_move(self, Axis_ID) -> int:
-        """``APS_stop_move(Axis_ID)``: decelerating stop at PRA_SD_DEC (L2570-2574), a normal stop (V45)."""
         i = self._axis(Axis_ID)
         if i is None:
             return self._bad()
@@ -427,7 +297,6 @@ class ApsController(DialectController):
         return self._do(self._card.stop_move, i, self._params(i))
 
     def APS_emg_stop(self, Axis_ID) -> int:
-        """``APS_emg_stop(Axis_ID)``: immediate stop (L2576), a normal stop (V45)."""
         i = self._axis(Axis_ID)
         if i is None:
             return self._bad()
@@ -445,11 +314,6 @@ class ApsController(DialectController):
         return _core.aps_stop_modes(self._card.kernel, i, abrupt)
 
     def APS_start_gear(self, Axis_ID, Mode) -> int:
-        """``APS_start_gear(Axis_ID, Mode)`` (the manual prints ``APS_start_gear(slave axis ID)``, L3311; the Mode
-        argument is the library's, V119): 1 engages the standard gear of slave ``Axis_ID`` on PRA_GEAR_MASTER, the
-        ratio ramping from 0 to PRA_GEAR_RATIO at PRA_GEAR_ENGAGE_RATE (ratio/s; 0 = at once; L3309-3313);
-        0 releases it (the slave holds). 2 (gantry) is not simulated (ERR_FunctionNotAvailable, V122). Refused
-        (ERR_FunctionNotAvailable) while the slave moves in another motion."""
         i = self._axis(Axis_ID)
         if i is None or Mode not in (0, 1, 2):
             return self._bad()
@@ -527,11 +391,6 @@ class ApsController(DialectController):
                                              all=all_, wait=bool(o & MF_WAIT), **geom))
 
     def APS_line(self, Dimension, Axis_ID_Array, Option, PositionArray, TransPara=0.0, Wait=None) -> int:
-        """``APS_line(I32 Dimension, I32 *Axis_ID_Array, I32 Option, F64 *PositionArray, F64 *TransPara,
-        ASYNCALL *Wait)`` (L2855; argument list V113): a straight line of 2..6 axes; the first axis is the
-        reference axis whose PRA_VS/VM/VE/ACC/DEC/SF give the vector profile (L2819-2855). Option bit 0
-        relative, bit 8 MF_WAIT, bits 12-15 the transition mode (ITP_OPT_*); TransPara the residual distance
-        (pulse) or percent of the blend modes. ``Wait`` must be None/0."""
         return self._line(Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Wait)
 
     def _line(self, Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Wait, **speeds) -> int:
@@ -548,24 +407,17 @@ class ApsController(DialectController):
         return self._interp(ids, Option, "line", TransPara, target=pos, **speeds)
 
     def APS_line_v(self, Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Vm, Wait=None) -> int:
-        """``APS_line_v(..., F64 *TransPara, F64 Vm, ASYNCALL *Wait)``: :func:`APS_line` at vector speed Vm."""
         return self._line(Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Wait, vm=Vm)
 
     def APS_line_all(self, Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Vs, Vm, Ve, Acc, Dec, SFac,
                      Wait=None) -> int:
-        """``APS_line_all(..., F64 *TransPara, F64 Vs, F64 Vm, F64 Ve, F64 Acc, F64 Dec, F64 SFac, ASYNCALL
-        *Wait)``: :func:`APS_line` with every speed of the vector profile given (the PRA values unchanged)."""
         return self._line(Dimension, Axis_ID_Array, Option, PositionArray, TransPara, Wait, vm=Vm,
                           speeds=dict(vs=Vs, vm=Vm, ve=Ve, acc=Acc, dec=Dec, sf=SFac))
 
     def APS_absolute_linear_move(self, Dimension, Axis_ID_Array, Position_Array, Max_Linear_Speed) -> int:
-        """``APS_absolute_linear_move(I32 Dimension, I32 *Axis_ID_Array, I32 *Position_Array, I32
-        Max_Linear_Speed)`` (L2867): a line to whole-pulse positions at vector speed Max_Linear_Speed pulse/s."""
         return self._linear_move(Dimension, Axis_ID_Array, Position_Array, Max_Linear_Speed, 0)
 
     def APS_relative_linear_move(self, Dimension, Axis_ID_Array, Distance_Array, Max_Linear_Speed) -> int:
-        """``APS_relative_linear_move(I32 Dimension, I32 *Axis_ID_Array, I32 *Distance_Array, I32
-        Max_Linear_Speed)`` (L2870): a line by whole-pulse distances."""
         return self._linear_move(Dimension, Axis_ID_Array, Distance_Array, Max_Linear_Speed, 1)
 
     def _linear_move(self, Dimension, ids, values, speed, option) -> int:
@@ -600,13 +452,10 @@ class ApsController(DialectController):
 
     # -- positions -------------------------------------------------------------------------------------------------
     def APS_get_position(self, Axis_ID):
-        """``APS_get_position(Axis_ID, &Position)`` -> ``(rtn, feedback position)``, whole pulses (L2085)."""
         i = self._axis(Axis_ID)
         return (self._bad(), 0) if i is None else (ERR_NoError, register32(self._card.actual_pos(i)))
 
     def APS_set_position(self, Axis_ID, Position) -> int:
-        """``APS_set_position(Axis_ID, Position)``: sets the feedback (and command) position, at rest only
-        (ERR_FunctionNotAvailable while moving)."""
         i = self._axis(Axis_ID)
         p = _num(Position)
         if i is None or p is None or p != int(p) or abs(p) > _POS_MAX:
@@ -615,72 +464,31 @@ class ApsController(DialectController):
         return self._do(self._card.set_actual_pos, i, p)
 
     def APS_get_command(self, Axis_ID):
-        """``APS_get_command(Axis_ID, &Command)`` -> ``(rtn, command position)``, whole pulses (L2083)."""
         i = self._axis(Axis_ID)
         return (self._bad(), 0) if i is None else (ERR_NoError, register32(self._card.profile_pos(i)))
 
     def APS_get_error_position(self, Axis_ID):
-        """``APS_get_error_position(Axis_ID, &Err_Pos)`` -> ``(rtn, E)``: the law's error of the last servo tick
-        (command - feedback), pulse (SAMP_SRC_ERR_POS, L3574)."""
         i = self._axis(Axis_ID)
         return (self._bad(), 0) if i is None else (ERR_NoError, int(round(self._card.following_error(i))))
 
     # -- status ------------------------------------------------------------------------------------------------------
     def APS_motion_status(self, Axis_ID) -> int:
-        """``I32 APS_motion_status(Axis_ID)``: the motion status word (MTS_* bits) or a negative error code."""
         i = self._axis(Axis_ID)
         return self._bad() if i is None else int(_core.aps_group_motion_status(self._card.kernel, i))
 
     def APS_motion_io_status(self, Axis_ID) -> int:
-        """``I32 APS_motion_io_status(Axis_ID)``: the motion I/O word (MIO_* bits) or a negative error code."""
         i = self._axis(Axis_ID)
         return self._bad() if i is None else int(_core.aps_motion_io_status(self._card.kernel, i))
 
     def APS_get_stop_code(self, Axis_ID):
-        """``APS_get_stop_code(Axis_ID, &Code)`` -> ``(rtn, STOP_* code)`` of the last abnormal stop (0 none)."""
         i = self._axis(Axis_ID)
         return (self._bad(), 0) if i is None else (ERR_NoError, int(_core.aps_group_stop_code(self._card.kernel, i)))
 
 
 # -- sampling, position compare trigger, host interrupts (issue 10 point 3; decisions V71-V85) -------------------
-ERR_InterruptNotEnable = -8  # ErrorCodeDef.h
-ERR_TimeOut = -9
-
-# Sampling parameters (APS_define.h) and sources (Table 4-5 L3558-3588; header values; closed loop: V79).
-SAMP_PA_RATE, SAMP_PA_EDGE, SAMP_PA_LEVEL, SAMP_PA_TRIGCH = 0x0, 0x2, 0x3, 0x5
-SAMP_PA_SRC_CH0, SAMP_PA_SRC_CH1, SAMP_PA_SRC_CH2, SAMP_PA_SRC_CH3 = 0x10, 0x11, 0x12, 0x13
-SAMP_AXIS_MASK, SAMP_PARAM_MASK = 0xF00, 0xFF
-SAMP_COM_POS, SAMP_FBK_POS, SAMP_CMD_VEL, SAMP_FBK_VEL, SAMP_MIO, SAMP_MSTS = 0x00, 0x01, 0x02, 0x03, 0x04, 0x05
-SAMP_MSTS_ACC, SAMP_MSTS_MV, SAMP_MSTS_DEC, SAMP_MSTS_CSTP, SAMP_MSTS_MDN = 0x06, 0x07, 0x08, 0x09, 0x0A
-SAMP_MIO_INP, SAMP_MIO_ORG = 0x0B, 0x0D
-SAMP_CONTROL_VOL, SAMP_GTY_DEVIATION, SAMP_ENCODER_RAW, SAMP_ERROR_POS = 0x20, 0x21, 0x22, 0x23
-SAMP_COM_POS_F64, SAMP_FBK_POS_F64, SAMP_CMD_VEL_F64, SAMP_FBK_VEL_F64 = 0x10, 0x11, 0x12, 0x13
-SAMP_CONTROL_VOL_F64, SAMP_ERR_POS_F64 = 0x14, 0x15
-SAMP_SRC_COM_POS, SAMP_SRC_FBK_POS, SAMP_SRC_CMD_VEL, SAMP_SRC_FBK_VEL = 0x00, 0x01, 0x02, 0x03  # the manual's names
-SAMP_SRC_MIO, SAMP_SRC_MSTS, SAMP_SRC_CONTROL_VOL, SAMP_SRC_ENCODER_RAW, SAMP_SRC_ERR_POS = 0x04, 0x05, 0x20, 0x22, 0x23
-PID_CMD_POS_COUNT, PID_CMD_VEL_COUNT, PID_CMD_ACC_COUNT, PID_ERR_POS_COUNT = 0x40, 0x41, 0x42, 0x43  # V79
-PID_KP_CALC_COUNT, PID_KI_CALC_COUNT, PID_KD_CALC_COUNT, PID_KVFF_CALC_COUNT = 0x44, 0x45, 0x46, 0x47
-PID_KAFF_CALC_COUNT, PID_CALC_COUNT, BIQUAD_0_CALC_COUNT, BIQUAD_1_CALC_COUNT = 0x48, 0x49, 0x4A, 0x4B
-PID_ERR_POS_SUM_COUNT, PID_LAST_ERR_POS_COUNT, PID_ERR_POS_DIFF_COUNT = 0x4C, 0x4D, 0x4E
 # The sources' signals, units and bits are the C++ module's table (vendor/adlink/aps_scope.cpp, Tables 4-5/4-6).
 #: One sample of APS_wait_trigger_sampling (STR_SAMP_DATA_4CH {I32 tick; I32 data[4]}; data F64 here, V78).
 STR_SAMP_DATA_4CH = np.dtype([("tick", np.int64), ("data", np.float64, (4,))])
-
-# Trigger parameters (APS_define.h "PCI-8258"; L3356-3420) and the TRGx_SRC bits (V77).
-TGR_LCMP0_SRC, TGR_LCMP1_SRC, TGR_TCMP0_SRC, TGR_TCMP1_SRC = 0x00, 0x01, 0x02, 0x03
-TGR_TCMP0_DIR, TGR_TCMP1_DIR, TGR_TRG_EN = 0x04, 0x05, 0x06
-TGR_TRG0_SRC, TGR_TRG1_SRC, TGR_TRG2_SRC, TGR_TRG3_SRC = 0x10, 0x11, 0x12, 0x13
-TGR_TRG0_PWD, TGR_TRG1_PWD, TGR_TRG2_PWD, TGR_TRG3_PWD = 0x14, 0x15, 0x16, 0x17
-TGR_TRG0_LOGIC, TGR_TRG1_LOGIC, TGR_TRG2_LOGIC, TGR_TRG3_LOGIC = 0x18, 0x19, 0x1A, 0x1B
-TGR_TRG0_TGL, TGR_TRG1_TGL, TGR_TRG2_TGL, TGR_TRG3_TGL = 0x1C, 0x1D, 0x1E, 0x1F
-TIMR_ITV, TIMR_DIR, TIMR_RING_EN, TIMR_EN = 0x20, 0x21, 0x22, 0x23
-TRG_SRC_MANUAL, TRG_SRC_TCMP0, TRG_SRC_TCMP1, TRG_SRC_LCMP0, TRG_SRC_LCMP1 = 0x1, 0x2, 0x4, 0x8, 0x10
-TGR_SRC_COMMAND = 0x10  # a comparator source value 0x10 + n compares axis n's command position (V76)
-
-# Interrupt factors (L4120-4200): axis items 0-7, system item 8.
-IALM, IPEL, IMEL, IORG, IEZ, IINP, IEMG, ICSTP, IVM, IACC, IDEC, IMDN, IASTP = 0, 1, 2, 3, 4, 5, 6, 8, 9, 10, 11, 12, 13
-ISPEL, ISMEL, IPRED, IPOSTD = 15, 16, 18, 19
-ISYS_EMG, ILCF0, ILCF1, IFCF0, IFCF1, IMOV, IHOV = 0, 1, 2, 3, 4, 5, 6
 
 
 class _ApsScope:
@@ -699,23 +507,12 @@ class _ApsScope:
 
     # -- data sampling (L3544-3665): the registers and the run are vendor/adlink/aps_scope.hpp's ------------------
     def APS_set_sampling_param(self, Board_ID, ParaNum, ParaDat) -> int:
-        """``APS_set_sampling_param(Board_ID, ParaNum, ParaDat)``: SAMP_PA_RATE (a sample every N servo ticks,
-        1..65535; default the ticks of 1 ms, L3548), SAMP_PA_EDGE (0 rising, 1 falling, 2 no trigger: start at
-        once, the default; V80), SAMP_PA_LEVEL (in the trigger channel's unit), SAMP_PA_TRIGCH (0..3),
-        SAMP_PA_SRC_CH0..3 (axis << 8 | source: SAMP_* of Table 4-5, PID_* of Table 4-6)."""
         return self._scope().set_sampling_param(ParaNum, ParaDat) if self._board(Board_ID) else self._bad()
 
     def APS_get_sampling_param(self, Board_ID, ParaNum):
-        """``APS_get_sampling_param(Board_ID, ParaNum, &ParaDat)`` -> ``(rtn, ParaDat)``."""
         return self._scope().sampling_param(ParaNum) if self._board(Board_ID) else (self._bad(), 0)
 
     def APS_wait_trigger_sampling(self, Board_ID, Length, PreTrgLen, TimeOutMs):
-        """``APS_wait_trigger_sampling(Board_ID, Length, PreTrgLen, TimeOutMs, STR_SAMP_DATA_4CH *DataArr)`` ->
-        ``(rtn, DataArr)``: samples the four channels every SAMP_PA_RATE ticks, ``Length`` samples (1..1e6) of
-        which ``PreTrgLen`` before the trigger (SAMP_PA_TRIGCH crossing SAMP_PA_LEVEL on SAMP_PA_EDGE), running
-        the card until the block is full or ``TimeOutMs`` simulated ms passed (-1: V83) -> ERR_TimeOut, no data.
-        DataArr: a NumPy array of :data:`STR_SAMP_DATA_4CH` (``tick`` = card tick of the sample; ``data`` the
-        channels in their units: pulse, pulse/s, mV, bits; whole numbers for the I32 sources)."""
         rtn, data = self.APS_wait_trigger_sampling_async(Board_ID, Length, PreTrgLen, TimeOutMs)
         if rtn != ERR_NoError:
             return rtn, None
@@ -726,22 +523,15 @@ class _ApsScope:
         return rtn, (data if rtn == ERR_NoError else None)
 
     def APS_wait_trigger_sampling_async(self, Board_ID, Length, PreTrgLen, TimeOutMs):
-        """``APS_wait_trigger_sampling_async(...)`` -> ``(rtn, DataArr)``: starts the same sampling and returns at
-        once; the card fills ``DataArr`` as it runs (the samples taken so far are copied into it at each
-        APS_get_sampling_count call, V78); after ``TimeOutMs`` of card time without a full block the sampling
-        stops."""
         if not self._board(Board_ID):
             return self._bad(), None
         rtn = self._scope().start_sampling(Length, PreTrgLen, TimeOutMs)
         return rtn, (self._scope().sampling_buffer() if rtn == ERR_NoError else None)
 
     def APS_get_sampling_count(self, Board_ID):
-        """``APS_get_sampling_count(Board_ID, &SampCnt)`` -> ``(rtn, samples in DataArr)`` of the running or
-        finished asynchronous sampling (the pre-trigger samples count once the trigger came)."""
         return (ERR_NoError, self._scope().sampling_count()) if self._board(Board_ID) else (self._bad(), 0)
 
     def APS_stop_wait_sampling(self, Board_ID) -> int:
-        """``APS_stop_wait_sampling(Board_ID)``: stops the sampling; DataArr keeps what was copied."""
         if not self._board(Board_ID):
             return self._bad()
         self._scope().stop_sampling()
@@ -753,20 +543,12 @@ class _ApsScope:
         return v is not None and v == int(v) and 0 <= v < (2 if len(self._card) == 4 else 4)
 
     def APS_set_trigger_param(self, Board_ID, Param_No, Param_Val) -> int:
-        """``APS_set_trigger_param(Board_ID, Param_No, Param_Val)``: TGR_LCMPx_SRC / TGR_TCMPx_SRC (axis n = its
-        encoder, TGR_SRC_COMMAND + n its command position; V76), TGR_TCMPx_DIR (0 negative, 1 positive, 2 both),
-        TGR_TRG_EN (bit x: TRGx on), TGR_TRGx_SRC (TRG_SRC_* bits, V77), TGR_TRGx_PWD (x 100 ns, 1..10^7),
-        TGR_TRGx_LOGIC (0 active high, 1 active low), TGR_TRGx_TGL (0 pulse, 1 level toggle), the timer TIMR_ITV /
-        TIMR_DIR / TIMR_RING_EN / TIMR_EN (APS_get_timer_counter, AF15). PCI-8254 (4 axes): TRG0-1 only."""
         return self._scope().set_trigger_param(Param_No, Param_Val) if self._board(Board_ID) else self._bad()
 
     def APS_get_trigger_param(self, Board_ID, Param_No):
-        """``APS_get_trigger_param(Board_ID, Param_No, &Param_Val)`` -> ``(rtn, Param_Val)``."""
         return self._scope().trigger_param(Param_No) if self._board(Board_ID) else (self._bad(), 0)
 
     def APS_set_trigger_linear(self, Board_ID, LCmpCh, StartPoint, RepeatTimes, Interval) -> int:
-        """``APS_set_trigger_linear(Board_ID, LCmpCh, StartPoint, RepeatTimes, Interval)``: LCMP0/1 compares the
-        points StartPoint + i*Interval, i = 0..RepeatTimes-1, in the direction of Interval's sign (L3393)."""
         if not self._board(Board_ID):
             return self._bad()
         ch = _num(LCmpCh)
@@ -775,8 +557,6 @@ class _ApsScope:
         return self._do(self._card.compare_set_linear, int(ch), _num(StartPoint), _num(RepeatTimes), _num(Interval))
 
     def APS_set_trigger_table(self, Board_ID, TCmpCh, DataArr, ArraySize) -> int:
-        """``APS_set_trigger_table(Board_ID, TCmpCh, I32 *DataArr, ArraySize)``: TCMP0/1 compares the first
-        ArraySize points in order, in the TGR_TCMPx_DIR direction (L3397-3430; the library streams any length)."""
         if not self._board(Board_ID):
             return self._bad()
         ch, n = _num(TCmpCh), _num(ArraySize)
@@ -789,8 +569,6 @@ class _ApsScope:
         return self._do(self._card.compare_set_table, int(ch), pts[:int(n)])
 
     def APS_set_trigger_manual(self, Board_ID, TrgCh) -> int:
-        """``APS_set_trigger_manual(Board_ID, TrgCh)``: one pulse on TRGx now, if its source set has
-        TRG_SRC_MANUAL and it is enabled (L3380-3385)."""
         if not self._board(Board_ID):
             return self._bad()
         if not self._trg_count_ok(TrgCh):
@@ -798,7 +576,6 @@ class _ApsScope:
         return self._do(self._card.compare_manual, int(_num(TrgCh)))
 
     def APS_get_trigger_count(self, Board_ID, TrgCh):
-        """``APS_get_trigger_count(Board_ID, TrgCh, &TrgCnt)`` -> ``(rtn, pulses TRGx emitted)``."""
         if not self._board(Board_ID):
             return self._bad(), 0
         if not self._trg_count_ok(TrgCh):
@@ -806,7 +583,6 @@ class _ApsScope:
         return ERR_NoError, int(self._card.compare_count(int(_num(TrgCh))))
 
     def APS_reset_trigger_count(self, Board_ID, TrgCh) -> int:
-        """``APS_reset_trigger_count(Board_ID, TrgCh)``: TRGx's counter to 0."""
         if not self._board(Board_ID):
             return self._bad()
         if not self._trg_count_ok(TrgCh):
@@ -814,13 +590,9 @@ class _ApsScope:
         return self._do(self._card.compare_reset_count, int(_num(TrgCh)))
 
     def APS_get_trigger_linear_cmp(self, Board_ID, LCmpCh):
-        """``APS_get_trigger_linear_cmp(Board_ID, LCmpCh, &CmpVal)`` -> ``(rtn, next compare point)`` (0 once every
-        point has been compared, decision V128)."""
         return self._next_cmp(Board_ID, LCmpCh, 0)
 
     def APS_get_trigger_table_cmp(self, Board_ID, TCmpCh):
-        """``APS_get_trigger_table_cmp(Board_ID, TCmpCh, &CmpVal)`` -> ``(rtn, next compare point)`` (0 once every
-        point of the table has been compared, decision V128)."""
         return self._next_cmp(Board_ID, TCmpCh, 2)
 
     def _next_cmp(self, Board_ID, ch, base):
@@ -837,38 +609,23 @@ class _ApsScope:
         return _core.aps_interrupts(self._card.kernel)
 
     def APS_int_enable(self, Board_ID, Enable) -> int:
-        """``APS_int_enable(Board_ID, Enable)``: the main interrupt switch (1 on, 0 off); no event signals while
-        off."""
         return self._ints().set_main(Enable) if self._board(Board_ID) else self._bad()
 
     def APS_set_int_factor(self, Board_ID, Item_No, Factor_No, Enable) -> int:
-        """``I32 APS_set_int_factor(Board_ID, Item_No, Factor_No, Enable)`` -> the interrupt number (item x 32 +
-        factor bit, V82) or a negative code. Items 0..3/7 axes (IALM..ISMEL, IEZ = the index mark passing; IPRED,
-        IPOSTD not simulated:
-        ERR_FunctionNotAvailable), 8 system (IEMG, ILCF0/1, IFCF0/1; IMOV/IHOV never fire); 9/10 (DI edges): the
-        card has no digital inputs. Factor_No is the bit number; a one-bit mask such as the examples' (1 << 12)
-        is read as its bit (L4271-4274, V82)."""
         if not self._board(Board_ID):
             return self._bad()
         return self._ints().set_factor(Item_No, Factor_No, Enable)  # the module watches the card itself (AW4)
 
     def APS_get_int_factor(self, Board_ID, Item_No, Factor_No):
-        """``APS_get_int_factor(Board_ID, Item_No, Factor_No, &Enable)`` -> ``(rtn, Enable)``."""
         return self._ints().factor_enabled(Item_No, Factor_No) if self._board(Board_ID) else (self._bad(), 0)
 
     def APS_int_no_to_handle(self, Int_No):
-        """``HANDLE APS_int_no_to_handle(Int_No)``: the simulation's handle is the interrupt number itself."""
         return int(Int_No)
 
     def APS_wait_single_int(self, Int_No, Time_Out) -> int:
-        """``APS_wait_single_int(Int_No, Time_Out)``: runs the card until the interrupt is signaled (at once if it
-        already is: reset it with APS_reset_int) or ``Time_Out`` simulated ms passed (ERR_TimeOut; -1: at most
-        one simulated hour, V83). ERR_InterruptNotEnable with the main switch or the factor off."""
         return self.APS_wait_multiple_int(1, [Int_No], 1, Time_Out)
 
     def APS_wait_multiple_int(self, Int_Count, Int_No_Array, Wait_All, Time_Out) -> int:
-        """``APS_wait_multiple_int(Int_Count, *Int_No_Array, Wait_All, Time_Out)``: as APS_wait_single_int for
-        the first Int_Count numbers, until all (Wait_All 1) or any (0) are signaled."""
         if self._card is None:
             return ERR_DeviceNotInitial
         m = self._ints()
@@ -879,11 +636,9 @@ class _ApsScope:
         return ERR_NoError if m.wait_done() else ERR_TimeOut
 
     def APS_reset_int(self, Int_No) -> int:
-        """``APS_reset_int(Int_No)``: back to non-signaled (L4270)."""
         return ERR_DeviceNotInitial if self._card is None else self._ints().set_signaled(Int_No, False)
 
     def APS_set_int(self, Int_No) -> int:
-        """``APS_set_int(Int_No)``: signals the interrupt by software."""
         return ERR_DeviceNotInitial if self._card is None else self._ints().set_signaled(Int_No, True)
 
 
@@ -956,6 +711,8 @@ for _mixin in (_ApsScope, _ApsPointTable, _ApsMore):  # the blocks' functions ar
     for _name, _fn in list(vars(_mixin).items()):
         if callable(_fn) and not _name.startswith("__"):
             setattr(ApsController, _name, _fn)
+for _name, _args, _doc in _core.APS_COMMANDS:  # what each function does: the C++ table's row (AX2)
+    getattr(ApsController, _name).__doc__ = _doc
 
 #: Functions the simulation cannot carry out: they return the vendor's error code (issue 25.3).
 UNSUPPORTED = {

@@ -13,16 +13,7 @@ namespace {
 
 constexpr double kPosMax = 2147483647.0;
 
-// PRA_* numbers (APS_define.h; the dialect's constants).
-enum Pra : int {
-  EL_LOGIC = 0x00, EL_MODE = 0x02, SD_DEC = 0x07, SPEL_EN = 0x08, SMEL_EN = 0x09, SPEL_POS = 0x0A, SMEL_POS = 0x0B,
-  HOME_MODE = 0x10, HOME_DIR = 0x11, HOME_CURVE = 0x12, HOME_ACC = 0x13, HOME_VM = 0x15, HOME_SHIFT = 0x17,
-  HOME_EZA = 0x18, HOME_VO = 0x19, HOME_POS = 0x1B, SF = 0x20, ACC = 0x21, DEC = 0x22, VS = 0x23, VM = 0x24,
-  VE = 0x25, PRE_EVENT_DIST = 0x2A, POST_EVENT_DIST = 0x2B, JG_MODE = 0x40, JG_DIR = 0x41, JG_SF = 0x42,
-  JG_ACC = 0x43, JG_DEC = 0x44, JG_VM = 0x45, JG_OFFSET = 0x46, JG_DELAY = 0x47, JG_MAP_DI_EN = 0x48,
-  JG_JOG_DI = 0x4B, GEAR_MASTER = 0x60, GEAR_ENGAGE_RATE = 0x61, GEAR_RATIO = 0x62, GANTRY_PROTECT_1 = 0x63,
-  GANTRY_PROTECT_2 = 0x64, ERR_POS_LEVEL = 0x124,
-};
+using namespace pra;  // the PRA_* numbers (aps_parameters.hpp)
 
 // A stored parameter: its field, range, whole numbers only?
 struct Field {
@@ -91,21 +82,21 @@ struct LawField {
 };
 constexpr double kGainMax = 65535, kShift = 31;
 const LawField kLaw[] = {
-    {0x90, &control::ApsServoLawParams::kp, 0, kGainMax, true},
-    {0x91, &control::ApsServoLawParams::ki, 0, kGainMax, true},
-    {0x92, &control::ApsServoLawParams::kd, 0, kGainMax, true},
-    {0x93, &control::ApsServoLawParams::kvff, 0, kGainMax, true},
-    {0x9A, &control::ApsServoLawParams::kaff, 0, kGainMax, true},
-    {0x9B, &control::ApsServoLawParams::kp_shift, -kShift, kShift, true},
-    {0x9C, &control::ApsServoLawParams::ki_shift, -kShift, kShift, true},
-    {0x9D, &control::ApsServoLawParams::kd_shift, -kShift, kShift, true},
-    {0x9E, &control::ApsServoLawParams::kvff_shift, -kShift, kShift, true},
-    {0x9F, &control::ApsServoLawParams::kaff_shift, -kShift, kShift, true},
-    {0xA0, &control::ApsServoLawParams::pid_shift, -kShift, kShift, true},
-    {0x12B, &control::ApsServoLawParams::integral_limit, 0, kPosMax, true},
-    {0x120, &control::ApsServoLawParams::v_bias, 0, 10, false},
-    {0x123, &control::ApsServoLawParams::v_limit, 0, 10, false},
-    {0x125, nullptr, 0, 1, true},  // PRA_SERVO_V_INVERSE: the bool field
+    {KP_GAIN, &control::ApsServoLawParams::kp, 0, kGainMax, true},
+    {KI_GAIN, &control::ApsServoLawParams::ki, 0, kGainMax, true},
+    {KD_GAIN, &control::ApsServoLawParams::kd, 0, kGainMax, true},
+    {KVFF_GAIN, &control::ApsServoLawParams::kvff, 0, kGainMax, true},
+    {KAFF_GAIN, &control::ApsServoLawParams::kaff, 0, kGainMax, true},
+    {KP_SHIFT, &control::ApsServoLawParams::kp_shift, -kShift, kShift, true},
+    {KI_SHIFT, &control::ApsServoLawParams::ki_shift, -kShift, kShift, true},
+    {KD_SHIFT, &control::ApsServoLawParams::kd_shift, -kShift, kShift, true},
+    {KVFF_SHIFT, &control::ApsServoLawParams::kvff_shift, -kShift, kShift, true},
+    {KAFF_SHIFT, &control::ApsServoLawParams::kaff_shift, -kShift, kShift, true},
+    {PID_SHIFT, &control::ApsServoLawParams::pid_shift, -kShift, kShift, true},
+    {INTEGRAL_LIMIT, &control::ApsServoLawParams::integral_limit, 0, kPosMax, true},
+    {SERVO_V_BIAS, &control::ApsServoLawParams::v_bias, 0, 10, false},
+    {SERVO_V_LIMIT, &control::ApsServoLawParams::v_limit, 0, 10, false},
+    {SERVO_V_INVERSE, nullptr, 0, 1, true},  // PRA_SERVO_V_INVERSE: the bool field
 };
 const LawField* law_field(int para) {
   for (const LawField& f : kLaw)

@@ -25,6 +25,23 @@
 
 namespace servobench::vendor::adlink {
 
+// The PRA_* numbers (APS_define.h; manual lines in aps_constants.cpp, whose table the dialect's constants are
+// written from).
+namespace pra {
+enum Number : int {
+  EL_LOGIC = 0x00, EL_MODE = 0x02, SD_DEC = 0x07, SPEL_EN = 0x08, SMEL_EN = 0x09, SPEL_POS = 0x0A, SMEL_POS = 0x0B,
+  HOME_MODE = 0x10, HOME_DIR = 0x11, HOME_CURVE = 0x12, HOME_ACC = 0x13, HOME_VM = 0x15, HOME_SHIFT = 0x17,
+  HOME_EZA = 0x18, HOME_VO = 0x19, HOME_POS = 0x1B, SF = 0x20, ACC = 0x21, DEC = 0x22, VS = 0x23, VM = 0x24,
+  VE = 0x25, PRE_EVENT_DIST = 0x2A, POST_EVENT_DIST = 0x2B, JG_MODE = 0x40, JG_DIR = 0x41, JG_SF = 0x42,
+  JG_ACC = 0x43, JG_DEC = 0x44, JG_VM = 0x45, JG_OFFSET = 0x46, JG_DELAY = 0x47, GEAR_MASTER = 0x60,
+  GEAR_ENGAGE_RATE = 0x61, GEAR_RATIO = 0x62, GANTRY_PROTECT_1 = 0x63, GANTRY_PROTECT_2 = 0x64,
+  JG_MAP_DI_EN = 0x48, JG_P_JOG_DI = 0x49, JG_N_JOG_DI = 0x4A, JG_JOG_DI = 0x4B, KP_GAIN = 0x90, KI_GAIN = 0x91,
+  KD_GAIN = 0x92, KVFF_GAIN = 0x93, KAFF_GAIN = 0x9A, KP_SHIFT = 0x9B, KI_SHIFT = 0x9C, KD_SHIFT = 0x9D,
+  KVFF_SHIFT = 0x9E, KAFF_SHIFT = 0x9F, PID_SHIFT = 0xA0, SERVO_V_BIAS = 0x120, SERVO_V_LIMIT = 0x123,
+  ERR_POS_LEVEL = 0x124, SERVO_V_INVERSE = 0x125, INTEGRAL_LIMIT = 0x12B,
+};
+}  // namespace pra
+
 // The stored PRA_* parameters of one axis.
 struct ApsAxisRegisters {
   motion::AdlinkPtpParams motion{0.0, 0.0, 1e5, 0.0, 1e6, 1e6, 0.0, 1e6};  // pos, vs, vm, ve, acc, dec, sf, sd_dec

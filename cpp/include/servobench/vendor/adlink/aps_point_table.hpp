@@ -25,6 +25,7 @@
 #include "servobench/machine/card.hpp"
 #include "servobench/machine/card_hooks.hpp"
 #include "servobench/motion/adlink_interpolation.hpp"
+#include "servobench/vendor/adlink/aps_command_table.hpp"
 #include "servobench/vendor/adlink/return_code.hpp"
 
 namespace servobench::vendor::adlink {
@@ -135,15 +136,7 @@ class ApsPointTables : public machine::CardHooks {
   std::map<int, Table> tables_;
 };
 
-// The APS_pt_* commands as the manual describes them (AW7): name, the arguments after (Board_ID, PtbId) as the
-// Python signature spells them ("Name", "Name=0", "Prof: STRUCT"), what the function does (units, manual lines).
-// The dialect builds its functions and their docstrings from this table (_core.APS_PT_COMMANDS).
-struct ApsCommandDoc {
-  const char* name;
-  const char* args;
-  const char* doc;
-};
-const std::vector<ApsCommandDoc>& pt_commands();
+// The APS_pt_* rows (name, arguments, doc): pt_commands() of aps_command_table.hpp (AW7).
 
 // The card's ADLINK point tables, created and attached on first use (owned by the card).
 ApsPointTables& aps_point_tables(machine::Card& card);
