@@ -47,11 +47,13 @@ identify::ParameterSetup setup_of(const py::handle& initial, const std::vector<F
 
 py::list estimates(const std::vector<identify::ParameterEstimate>& ps) {
   py::list out;
-  for (const auto& e : ps)
-    out.append(py::dict(py::arg("name") = e.name, py::arg("unit") = e.unit, py::arg("value") = e.value,
-                        py::arg("initial") = e.initial, py::arg("std_error") = e.std_error,
-                        py::arg("lower") = e.lower, py::arg("upper") = e.upper, py::arg("fixed") = e.fixed,
-                        py::arg("at_bound") = e.at_bound));
+  for (const auto& e : ps) {
+    py::dict d;
+    put_described(d, e);  // name ... at_bound, as identify::ParameterEstimate::describe() names them (OR1)
+    d["lower"] = e.lower;  // the bounds in force (the fit's setup, not an Estimate field)
+    d["upper"] = e.upper;
+    out.append(d);
+  }
   return out;
 }
 
@@ -138,6 +140,7 @@ void bind_identify(py::module_& m) {
       .described()
       .finish();
   m.attr("FIT_SUMMARY_FIELDS") = described_fields<identify::FitSummary>();  // servobench.identify.IdentifiedPlant
+  m.attr("PARAMETER_ESTIMATE_FIELDS") = described_fields<identify::ParameterEstimate>();  // servobench.identify.Estimate
   // Described once in their C++ structs (decisions OQ2, OQ3): fit_time and MechanicsIO read them.
   ParamClass<identify::TimeFitOptions>(m, "TimeFitOptions",
                                        "Options of the time-domain fit (identify/time_fit.hpp); the model and the "

@@ -32,13 +32,9 @@ namespace {
 py::dict margins_dict(const tuning::Margins& mg) {
   py::dict d;
   put_described(d, mg);  // the single figures, named as tuning::Margins::describe() names them
-  const tuning::Stability& st = mg.stability;
-  d["stability"] = py::dict(py::arg("decided") = st.decided, py::arg("stable") = st.stable,
-                            py::arg("method") = st.method, py::arg("reason") = st.reason,
-                            py::arg("max_pole_radius") = st.max_pole_radius,
-                            py::arg("unstable_poles") = st.unstable_poles,
-                            py::arg("open_loop_unstable_poles") = st.open_loop_unstable_poles,
-                            py::arg("integrators") = st.integrators);
+  py::dict stability;
+  put_described(stability, mg.stability);  // as tuning::Stability::describe() names them (OR1)
+  d["stability"] = stability;
   std::vector<double> gf, gp, pf, pg;
   for (const auto& c : mg.gain_crossovers) {
     gf.push_back(c.freq_hz);
@@ -53,9 +49,10 @@ py::dict margins_dict(const tuning::Margins& mg) {
   return d;
 }
 
-py::dict pid_dict(const tuning::PidDesign& d) {
-  return py::dict(py::arg("kc") = d.kc, py::arg("ti_s") = d.ti_s, py::arg("td_s") = d.td_s, py::arg("kp") = d.kp,
-                  py::arg("ki") = d.ki, py::arg("kd") = d.kd);
+py::dict pid_dict(const tuning::PidDesign& p) {
+  py::dict d;
+  put_described(d, p);  // kc ... kd, as tuning::PidDesign::describe() names them (OR1)
+  return d;
 }
 
 const char* status_name(tuning::SweepStatus s) {
@@ -91,6 +88,15 @@ void bind_tuning(py::module_& m) {
       .finish();
   m.attr("MARGINS_FIELDS") = described_fields<tuning::Margins>();
   m.attr("RELAY_TUNE_FIELDS") = described_fields<tuning::RelayTuneResult>();  // servobench.autotune.RelayTuneResult  // servobench.margins.Margins reads it
+  // The results' fields described once (decision OR1): servobench.autotune.ModelTuneResult and its parts, the
+  // stability verdict of a Margins, and the stepped sine's arrays (servobench.frequency.FrequencyResponse).
+  m.attr("MODEL_TUNE_FIELDS") = described_fields<tuning::ModelTuneResult>();
+  m.attr("PID_DESIGN_FIELDS") = described_fields<tuning::PidDesign>();
+  m.attr("NOTCH_DESIGN_FIELDS") = described_fields<tuning::NotchDesign>();
+  m.attr("RESONANCE_PEAK_FIELDS") = described_fields<tuning::ResonancePeak>();
+  m.attr("CROSSOVER_CANDIDATE_FIELDS") = described_fields<tuning::CrossoverCandidate>();
+  m.attr("STABILITY_FIELDS") = described_fields<tuning::Stability>();
+  m.attr("SINE_SWEEP_FIELDS") = described_fields<tuning::SineSweepResult>();
   m.attr("MODEL_TUNE_NOTCH_Q") = py::tuple(py::cast(tuning::ModelTuneOptions{}.notch_q_set));  // its default
   ParamClass<tuning::ModelTuneOptions>(m, "ModelTuneOptions",
                                        "Options of the model-based PID and notch design (tuning/model_tune.hpp).")
@@ -140,25 +146,7 @@ void bind_tuning(py::module_& m) {
         py::dict d;
         d["status"] = status_name(r.status);
         d["message"] = r.message;
-        d["freq_hz"] = to_array(r.freq_hz);
-        d["r"] = to_array(r.r);
-        d["e"] = to_array(r.e);
-        d["u"] = to_array(r.u);
-        d["y"] = to_array(r.y);
-        d["coherence"] = to_array(r.coherence);
-        d["distortion"] = to_array(r.distortion);
-        d["periods"] = to_array(r.periods);
-        d["window"] = to_array(r.window);
-        d["ticks"] = r.ticks;
-        d["stop_time_s"] = r.stop_time_s;
-        d["stop_error_pulse"] = r.stop_error_pulse;
-        d["amplitude_pulse"] = to_array(r.amplitude_pulse);
-        d["torque_amplitude_nm"] = to_array(r.torque_amplitude_nm);
-        d["dac_saturated_ticks"] = to_array(r.dac_saturated_ticks);
-        d["current_saturated_ticks"] = to_array(r.current_saturated_ticks);
-        d["torque_saturated_ticks"] = to_array(r.torque_saturated_ticks);
-        d["tries"] = to_array(r.tries);
-        d["flag"] = r.flag;
+        put_described(d, r);  // freq_hz ... tries, as tuning::SineSweepResult::describe() names them (OR1)
         const tuning::LoopPoles poles = tuning::loop_poles(axis.config(), o.loop);
         d["integrators"] = poles.integrators;
         d["open_loop_unstable_poles"] = poles.open_loop_unstable;
@@ -278,44 +266,16 @@ void bind_tuning(py::module_& m) {
         d["pid"] = pid_dict(r.pid);
         d["law"] = py::cast(r.law);
         d["filters"] = py::make_tuple(py::cast(r.filters[0]), py::cast(r.filters[1]));
-        d["crossover_hz"] = r.crossover_hz;
+        put_described(d, r);  // kp ... limited_by, as tuning::ModelTuneResult::describe() names them (OR1)
         d["margins"] = margins_dict(r.margins);
-        d["max_pole_radius"] = r.max_pole_radius;
-        d["resonance_hz"] = r.resonance_hz;
-        d["resonance_prominence_db"] = r.resonance_prominence_db;
         d["resonance_given"] = r.resonance_given;
-        py::list peaks;
-        for (const auto& p : r.resonances)
-          peaks.append(py::dict(py::arg("freq_hz") = p.freq_hz, py::arg("prominence_db") = p.prominence_db,
-                                py::arg("width_decades") = p.width_decades));
-        d["resonances"] = peaks;
-        const tuning::NotchDesign& n = r.notch;
-        d["notch"] = py::dict(py::arg("used") = n.used, py::arg("center_hz") = n.center_hz, py::arg("q") = n.q,
-                              py::arg("low_hz") = n.low_hz, py::arg("high_hz") = n.high_hz,
-                              py::arg("depth_db") = n.depth_db,
-                              py::arg("phase_at_crossover_deg") = n.phase_at_crossover_deg,
-                              py::arg("float_biquad") = py::cast(n.float_biquad),
-                              py::arg("adlink_biquad") = n.adlink_ok ? py::cast(n.adlink_biquad) : py::none());
-        d["crossover_without_notch_hz"] = r.crossover_without_notch_hz;
-        d["limited_by"] = r.limited_by;
-        std::vector<double> f, pm, pmf, gm, ms, rad, lead;
-        std::vector<bool> ok;
-        py::list reasons;
-        for (const auto& c : r.scan) {
-          f.push_back(c.freq_hz);
-          pm.push_back(c.margins.phase_margin_deg);
-          pmf.push_back(c.margins.pm_freq_hz);
-          gm.push_back(c.margins.gain_margin_db);
-          ms.push_back(c.margins.ms);
-          rad.push_back(c.max_pole_radius);
-          lead.push_back(c.pid_lead_deg);
-          ok.push_back(c.feasible);
-          reasons.append(c.reason);
-        }
-        d["scan"] = py::dict(py::arg("freq_hz") = to_array(f), py::arg("phase_margin_deg") = to_array(pm),
-                             py::arg("pm_freq_hz") = to_array(pmf), py::arg("gain_margin_db") = to_array(gm),
-                             py::arg("ms") = to_array(ms), py::arg("max_pole_radius") = to_array(rad), py::arg("pid_lead_deg") = to_array(lead),
-                             py::arg("feasible") = py::cast(ok), py::arg("reason") = reasons);
+        d["resonances"] = described_rows(r.resonances);  // each as tuning::ResonancePeak::describe() names it
+        py::dict notch;
+        put_described(notch, r.notch);  // used ... phase_at_crossover_deg (NotchDesign::describe()); the biquads:
+        notch["float_biquad"] = py::cast(r.notch.float_biquad);
+        notch["adlink_biquad"] = r.notch.adlink_ok ? py::cast(r.notch.adlink_biquad) : py::none();
+        d["notch"] = notch;
+        d["scan"] = described_columns(r.scan);  // the columns of CrossoverCandidate::describe()
         d["summary"] = r.summary;
         return d;
       },
@@ -355,8 +315,7 @@ void bind_tuning(py::module_& m) {
         } else {
           throw py::value_error("rule = '" + rule + "' must be 'ziegler_nichols' or 'tyreus_luyben'");
         }
-        return py::dict(py::arg("kc") = d.kc, py::arg("ti_s") = d.ti_s, py::arg("td_s") = d.td_s,
-                        py::arg("kp") = d.kp, py::arg("ki") = d.ki, py::arg("kd") = d.kd);
+        return pid_dict(d);
       },
       py::arg("rule"), py::arg("ku"), py::arg("tu_s"), py::arg("ts_s"),
       "Classic PID rule from an ultimate point (ku counts/pulse, tu s) as per-tick gains at ts_s.");

@@ -23,8 +23,8 @@ from dataclasses import dataclass
 from typing import Any, Callable
 
 __all__ = ["OptionField", "PythonDefault", "cpp_options", "default", "described_result", "described_options",
-           "documents_options", "option_fields",
-           "options_doc", "result_fields", "takes_options"]
+           "documents_options", "fill_keys", "keys_doc", "option_fields", "options_doc", "result_fields",
+           "takes_options"]
 
 
 @dataclass(frozen=True)
@@ -207,14 +207,48 @@ def result_fields(table) -> tuple[OptionField, ...]:
                  for d in table)
 
 
+def keys_doc(table) -> str:
+    """The keys of a dict a result carries (a C++ struct's table: ``_core.STABILITY_FIELDS`` ...), for a docstring:
+    ``"name" (unit: doc), ...`` in the table's order (decision OR1)."""
+    entries = []
+    for f in result_fields(table):
+        unit = f"{f.unit}: " if f.unit else ""
+        entries.append(f'"{f.name}" ({unit}{_rst(f.doc)})')
+    return ", ".join(entries)
+
+
+def fill_keys(doc: str | None, keys: dict) -> str | None:
+    """`doc` with each ``{name}`` placeholder of `keys` (name -> table) replaced by :func:`keys_doc` of its table,
+    filled to the placeholder's indent."""
+    if not doc:
+        return doc
+    for name, table in keys.items():
+        mark = "{" + name + "}"
+        if mark not in doc:
+            raise ValueError(f"the docstring has no {mark} placeholder")
+        head = doc.split(mark)[0].rsplit("\n", 1)[-1]
+        indent = " " * (len(head) - len(head.lstrip()))
+        text = textwrap.fill(head + keys_doc(table), 116, subsequent_indent=indent, break_on_hyphens=False)
+        doc = doc.replace(head + mark, text, 1)
+    return doc
+
+
 @typing.dataclass_transform(frozen_default=True)
-def described_result(table, *, lead: tuple[str, ...] = ()):
+def described_result(table, *, lead: tuple[str, ...] = (), after: dict[str, tuple[str, ...]] | None = None,
+                     keys: dict | None = None):
     """Class decorator for a frozen result dataclass whose single-figure fields are described in C++: the table's
     fields (names, types, units and docs read from it) come first -- after the class's own fields named in `lead`,
     which keeps a constructor's positional order (decision OQ6) -- as required fields carrying ``unit`` and ``doc``
-    in their ``metadata``, then the class's other annotated fields; the ``{fields}`` placeholder of the docstring
-    is replaced by their documentation (decision OP6)."""
+    in their ``metadata``, then the class's other annotated fields; `after` places some of the class's own fields
+    right after a table field (table field -> own fields), so a result keeps its field order (repr, positional
+    constructor) when its figures and its own fields interleave (decision OR1). The ``{fields}`` placeholder of the
+    docstring is replaced by their documentation (decision OP6); each ``{name}`` of `keys` (name -> a C++ table) by
+    the keys that table describes (:func:`fill_keys`: a dict field's keys, e.g. a notch design's)."""
     fields = result_fields(table)
+    after = dict(after or {})
+    unknown = set(after) - {f.name for f in fields}
+    if unknown:
+        raise TypeError(f"described_result(after=...) names fields the table does not describe: {sorted(unknown)}")
 
     def decorate(cls):
         own = dict(cls.__dict__.get("__annotations__", {}))
@@ -222,13 +256,19 @@ def described_result(table, *, lead: tuple[str, ...] = ()):
         if clash:
             raise TypeError(f"{cls.__name__} retypes fields described in C++: {sorted(clash)}")
         first = {name: own.pop(name) for name in lead}
-        cls.__annotations__ = {**first, **{f.name: f.type for f in fields}, **own}
+        annotations = dict(first)
+        for f in fields:
+            annotations[f.name] = f.type
+            for name in after.get(f.name, ()):
+                annotations[name] = own.pop(name)
+        cls.__annotations__ = {**annotations, **own}
         for f in fields:
             setattr(cls, f.name, dataclasses.field(metadata={"unit": f.unit, "doc": f.doc}))
         if cls.__doc__ and "{fields}" in cls.__doc__:
             indent = cls.__doc__.split("{fields}")[0].rsplit("\n", 1)[-1]
             body = textwrap.indent("\n".join(_entry(f) for f in fields), indent)[len(indent):]
             cls.__doc__ = cls.__doc__.replace("{fields}", body)
+        cls.__doc__ = fill_keys(cls.__doc__, keys or {})
         return dataclasses.dataclass(frozen=True)(cls)
 
     return decorate

@@ -10,7 +10,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import field
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -105,8 +105,8 @@ class RelayTuneResult(JsonResult):
             return self
         ku = self.ultimate_gain_v_per_pulse * 32767.0 / 10.0  # counts per pulse
         g = _core.classic_rule(name, ku, 1.0 / self.ultimate_freq_hz, self.servo_period_s)
-        return dataclasses.replace(self, kp=g["kp"], ki=g["ki"], kd=g["kd"], kc=g["kc"], ti_s=g["ti_s"],
-                                   td_s=g["td_s"], message=f"{name} rule from the same experiment",
+        pid = {f["name"]: g[f["name"]] for f in _core.PID_DESIGN_FIELDS}  # kc ... kd (tuning::PidDesign, OR1)
+        return dataclasses.replace(self, **pid, message=f"{name} rule from the same experiment",
                                    phase_margin_deg=None)
 
     def apply(self, axis, *, force: bool = False, verify: bool = True, pm_tolerance_deg: float = 5.0,
@@ -306,61 +306,59 @@ def predicted_limit_cycle(axis, *, amplitude_v: float = _RELAY_DEFAULTS.amplitud
             "describing_function": df}
 
 
-@dataclass(frozen=True)
+@_opts.described_result(_core.MODEL_TUNE_FIELDS,
+                        after={"crossover_hz": ("margins",), "max_pole_radius": ("law", "filters", "resonances"),
+                               "resonance_prominence_db": ("notch",)},
+                        keys={"resonance_keys": _core.RESONANCE_PEAK_FIELDS, "notch_keys": _core.NOTCH_DESIGN_FIELDS,
+                              "scan_keys": _core.CROSSOVER_CANDIDATE_FIELDS})
 class ModelTuneResult(JsonResult):
     """The outcome of :func:`model_based_tune`; ``str(result)`` is its summary.
 
-    kp, ki, kd
-        per-tick gains (counts/pulse; ki per pulse*tick), as designed (before the card's integers).
-    kc, ti_s, td_s
-        the same as a continuous PID kc (1 + 1/(ti s) + td s), kc in counts/pulse, times in s (ti = alpha td).
-    crossover_hz
-        the design crossover chosen, Hz.
+    {fields}
     margins
         :class:`servobench.frequency.Margins` of the analytic loop with the card law's integers and the filters
         (phase margin at the crossover, gain margin, Ms, bandwidth): what :meth:`apply` will give.
-    max_pole_radius
-        the closed loop's largest pole magnitude ``|z|`` (< 1: stable).
     law, filters
         the card law (integers, feed-forward 0) and the two biquads (notch or pass-through; pass-through) that
         :meth:`apply` writes.
     resonances
-        peaks found in the plant response: list of {"freq_hz", "prominence_db", "width_decades"}.
-    resonance_hz, resonance_prominence_db
-        the resonance notched (or the most prominent one found; 0 when none).
+        peaks found in the plant response, a list of dicts:
+        {resonance_keys}.
     notch
-        {"used", "center_hz", "q", "low_hz", "high_hz" (the -3 dB edges), "depth_db" (attenuation at the resonance
-        of the biquad run), "phase_at_crossover_deg", "float_biquad", "adlink_biquad" (the card's integers)}.
-    crossover_without_notch_hz
-        the best crossover with no notch (0: none meets the bounds), Hz.
-    limited_by
-        what failed just above the chosen crossover.
+        a dict: {notch_keys}; "float_biquad" (the pre-warped design) and "adlink_biquad" (the card's integers; None
+        when quantisation leaves none).
+    servo_period_s
+        the axis's servo period, s.
     scan
-        the chosen filter option's crossover candidates: arrays freq_hz, phase_margin_deg, pm_freq_hz,
-        gain_margin_db, ms, max_pole_radius, pid_lead_deg, feasible, and the list reason.
+        the chosen filter option's crossover candidates, a dict of columns (arrays; reason a list):
+        {scan_keys}.
     summary
         the self-explaining report.
     phase_margin_deg, min_gain_margin_db
         the design's target (deg) and gain-margin floor (dB), which :meth:`apply` checks the loop against.
     """
 
-    kp: float
-    ki: float
-    kd: float
-    kc: float
-    ti_s: float
-    td_s: float
-    crossover_hz: float
+    # The single figures (kp ... limited_by) are read at import from tuning::ModelTuneResult::describe() with their
+    # units and docs, margins, law, filters, resonances and notch placed among them as before (decision OR1);
+    # static type checkers read these names (test_options_once checks they match).
+    if TYPE_CHECKING:
+        kp: float
+        ki: float
+        kd: float
+        kc: float
+        ti_s: float
+        td_s: float
+        crossover_hz: float
+        max_pole_radius: float
+        resonance_hz: float
+        resonance_prominence_db: float
+        crossover_without_notch_hz: float
+        limited_by: str
     margins: object
-    max_pole_radius: float
     law: object
     filters: tuple
     resonances: list
-    resonance_hz: float
-    resonance_prominence_db: float
     notch: dict
-    crossover_without_notch_hz: float
-    limited_by: str
     servo_period_s: float
     scan: dict = field(repr=False)
     summary: str = field(repr=False)
@@ -449,13 +447,9 @@ def _model_based_tune(axis, *, notch_q=tuple(_core.MODEL_TUNE_NOTCH_Q), law: str
     o = _opts.cpp_options(_core.ModelTuneOptions, values, _MODEL_TUNE_PYTHON_DEFAULTS)
     d = _core.model_tune(getattr(axis, "_axis", axis), o, [float(q) for q in np.atleast_1d(notch_q)],
                          "axis" if law is None else str(law))
-    p = d["pid"]
-    return ModelTuneResult(kp=p["kp"], ki=p["ki"], kd=p["kd"], kc=p["kc"], ti_s=p["ti_s"], td_s=p["td_s"],
-                           crossover_hz=d["crossover_hz"], margins=_margins_from(d["margins"], "analytic model"),
-                           max_pole_radius=d["max_pole_radius"], law=d["law"], filters=tuple(d["filters"]),
-                           resonances=list(d["resonances"]), resonance_hz=d["resonance_hz"],
-                           resonance_prominence_db=d["resonance_prominence_db"], notch=dict(d["notch"]),
-                           crossover_without_notch_hz=d["crossover_without_notch_hz"], limited_by=d["limited_by"],
+    figures = {f["name"]: d[f["name"]] for f in _core.MODEL_TUNE_FIELDS}  # kp ... limited_by (OR1)
+    return ModelTuneResult(**figures, margins=_margins_from(d["margins"], "analytic model"), law=d["law"],
+                           filters=tuple(d["filters"]), resonances=list(d["resonances"]), notch=dict(d["notch"]),
                            servo_period_s=axis.servo_period_s,
                            scan={k: (list(v) if k == "reason" else np.asarray(v)) for k, v in d["scan"].items()},
                            summary=d["summary"], phase_margin_deg=float(o.phase_margin_deg),

@@ -19,15 +19,15 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Iterable
 
 import numpy as np
 
-from . import _checks, _core
+from . import _core
 from . import _options as _opts
+from ._identified import Estimate, IdentificationError, IdentifiedPlant
+from ._log_spectrum import LogSpectrum, ResonanceGuess, log_spectrum, resonance_guess
 from .experiment import _whole, excitation, run_experiment, torque_per_volt  # noqa: F401 (re-exported)
-from ._serialise import JsonResult, dataframe
 from .idlog import IdentificationLog
 
 __all__ = [
@@ -36,6 +36,14 @@ __all__ = [
     "model_parameters", "torque_per_volt", "log_spectrum", "LogSpectrum", "resonance_guess", "ResonanceGuess",
     "IdentificationError",
 ]
+
+# The results and the spectral view live in _identified.py and _log_spectrum.py (one concept per file, decision
+# OR2); this module stays their home: pickles, saved results (servobench._serialise names the type by module) and the
+# docs name them here.
+for _obj in (Estimate, IdentificationError, IdentifiedPlant, LogSpectrum, ResonanceGuess, log_spectrum,
+             resonance_guess):
+    _obj.__module__ = __name__
+del _obj
 
 MODELS = ("rigid", "two_mass")
 
@@ -51,352 +59,6 @@ def _model(model: str) -> str:
         raise ValueError(f"model = {model!r} is not one of 'rigid', 'two_mass'")
     return model
 
-
-# ----------------------------------------------------------------------------------------------------------------
-# Spectral view of a log: the starting point of a two-mass fit
-# ----------------------------------------------------------------------------------------------------------------
-@dataclass(frozen=True)
-class LogSpectrum(JsonResult):
-    """Torque-to-speed response of the mechanics estimated from a log (Welch, H1 = S_uv / S_uu).
-
-    freq_hz: bin centres, Hz; response: speed over torque, (rad/s)/(N*m), complex, the known current loop divided
-    out; coherence: 0..1 per bin (1: the speed is linear in the torque there; low: noise, friction, quantisation).
-    apparent_inertia_kgm2 = 1 / (``|response|`` * 2 pi f): flat at the total inertia for a rigid body; a two-mass
-    motor-side log shows a peak at the anti-resonance and a dip at the resonance.
-    """
-
-    freq_hz: np.ndarray
-    response: np.ndarray
-    coherence: np.ndarray
-
-    @property
-    def apparent_inertia_kgm2(self) -> np.ndarray:
-        with np.errstate(divide="ignore"):
-            return 1.0 / (np.abs(self.response) * 2 * np.pi * self.freq_hz)
-
-    def to_dataframe(self):
-        """One row per bin (index freq_hz, Hz): gain_db (dB re 1 (rad/s)/(N*m)), phase_deg, coherence,
-        apparent_inertia_kgm2."""
-        with np.errstate(divide="ignore"):
-            db = 20 * np.log10(np.abs(self.response))
-        return dataframe({"freq_hz": self.freq_hz, "gain_db": db, "phase_deg": np.degrees(np.angle(self.response)),
-                          "coherence": self.coherence, "apparent_inertia_kgm2": self.apparent_inertia_kgm2},
-                         {"freq_hz": "Hz", "gain_db": "dB", "phase_deg": "deg", "coherence": "1",
-                          "apparent_inertia_kgm2": "kg*m^2"}, index="freq_hz")
-
-
-def log_spectrum(log: IdentificationLog, *, segment_samples: int = 1024, instrument=None) -> LogSpectrum:
-    """The torque-to-speed response of a position or speed log (Hann windows of `segment_samples`, half overlap;
-    the speed of a position log is its per-sample difference over Ts, aligned with the torque held over that sample).
-
-    instrument
-        a signal injected into the loop during the experiment, one value per sample (default: the log's
-        ``extra["injection_v"]`` from :func:`run_experiment`, if any). With it the estimate is S_rv / S_ru, which the
-        closed loop does not bias: measurement noise fed back through the controller correlates with the torque but
-        not with the injection. Without it (a log from elsewhere) it is H1 = S_uv / S_uu, biased towards the
-        inverse of the controller where the noise dominates. The coherence is the instrument's (or the torque's)
-        with the speed.
-    """
-    _checks.has("log_spectrum", "log", log, "torque_nm", "sample_period_s")
-    n = len(log)
-    segment_samples = _whole("log_spectrum", "segment_samples", segment_samples, 16, max(16, n - 1))
-    if instrument is None:
-        instrument = log.extra.get("injection_v")
-    ts = log.sample_period_s
-    m = n - 1 if not log.measured_is_speed else n
-    u = log.torque_nm[:m]
-    v = np.diff(log.measured) / ts if not log.measured_is_speed else log.measured
-    if instrument is not None:
-        r = np.asarray(instrument, float)
-        if r.shape != (n,):
-            raise ValueError(f"log_spectrum.instrument has shape {r.shape}; it must have one value per sample ({n})")
-        r = r[:m]
-    else:
-        r = u
-    win = np.hanning(segment_samples)
-    sru = srv = srr = svv = 0.0
-    for a in range(0, m - segment_samples + 1, segment_samples // 2):
-        def ft(x):
-            x = x[a:a + segment_samples]
-            return np.fft.rfft(win * (x - x.mean()))
-        rf, uf, vf = ft(r), ft(u), ft(v)
-        sru = sru + np.conj(rf) * uf
-        srv = srv + np.conj(rf) * vf
-        srr = srr + np.abs(rf) ** 2
-        svv = svv + np.abs(vf) ** 2
-    f = np.fft.rfftfreq(segment_samples, ts)[1:]
-    sru, srv, srr, svv = sru[1:], srv[1:], srr[1:], svv[1:]
-    with np.errstate(divide="ignore", invalid="ignore"):
-        h = np.where(np.abs(sru) > 0, srv / sru, 0)
-        coh = np.where(srr * svv > 0, np.abs(srv) ** 2 / (srr * svv), 0.0)
-    if math.isfinite(log.current_bw_hz):
-        h = h * (1 + 1j * f / log.current_bw_hz)  # the known first-order current loop
-    return LogSpectrum(f, h, coh)
-
-
-@dataclass(frozen=True)
-class ResonanceGuess(JsonResult):
-    """Two-mass inertias and stiffness read off a motor-side log's spectrum: total inertia J from the low band,
-    anti-resonance fa = sqrt(k/jl)/2pi and resonance fr = sqrt(k (jm + jl)/(jm jl))/2pi from the apparent inertia's
-    peak and dip; then jm = J (fa/fr)^2, jl = J - jm, k = jl (2 pi fa)^2."""
-
-    jm_kgm2: float
-    jl_kgm2: float
-    k_nm_per_rad: float
-    anti_resonance_hz: float
-    resonance_hz: float
-    total_inertia_kgm2: float
-
-    def as_guess(self) -> dict:
-        return {"jm_kgm2": self.jm_kgm2, "jl_kgm2": self.jl_kgm2, "k_nm_per_rad": self.k_nm_per_rad}
-
-
-def resonance_guess(log: IdentificationLog, *, min_coherence: float = 0.3,
-                    segment_samples: int = 1024) -> ResonanceGuess:
-    """Starting values of jm, jl and k for a two-mass fit from a motor-side log's spectrum (:func:`log_spectrum`).
-    `min_coherence` is 0..1.
-
-    The apparent inertia of the undamped-to-lightly-damped two-mass model,
-    1 / (``|V/T|`` w) with V/T = (jl s^2 + c s + k) / (s (jm jl s^2 + c (jm + jl) s + k (jm + jl))), is matched in
-    log magnitude (weighted by the coherence; bins below `min_coherence` and above 0.4 fs left out) over a grid of
-    anti-resonance (the excited band), resonance/anti-resonance ratio (1.02..5) and anti-resonance damping
-    (0.01..0.3), the total inertia in closed form. Magnitude only: the phase carries the sampling's delays. Raises
-    :class:`IdentificationError` when the best two-mass shape explains the spectrum less than 4x better than a rigid
-    body (no resonance in the excited band) or for a load-side log."""
-    _checks.has("resonance_guess", "log", log, "measured_on_load", "sample_period_s")
-    _checks.real("resonance_guess", "min_coherence", min_coherence, 0.0, 1.0)
-    if log.measured_on_load:
-        raise IdentificationError("resonance_guess: a load-side log has no anti-resonance to read jm/jl from")
-    sp = log_spectrum(log, segment_samples=segment_samples)
-    keep = (sp.coherence >= min_coherence) & (sp.freq_hz <= 0.4 / log.sample_period_s)
-    if np.count_nonzero(keep) < 16:
-        raise IdentificationError(f"resonance_guess: only {np.count_nonzero(keep)} spectrum bins reach coherence "
-                                  f"{min_coherence}; excite the axis more (injection amplitude, duration)")
-    f, w = sp.freq_hz[keep], sp.coherence[keep]
-    la = np.log(sp.apparent_inertia_kgm2[keep])
-    wn = w / w.sum()
-    rigid = float(np.sum(wn * (la - np.sum(wn * la)) ** 2))
-    # Shape with J = 1: fa, fr, damping zeta_a = c / (2 sqrt(k jl)) on a grid; s = j 2 pi f.
-    fa = np.geomspace(f[0], f[-1], 64)[:, None, None, None]
-    ratio = np.geomspace(1.02, 5.0, 48)[None, :, None, None]
-    zeta = np.array([0.01, 0.03, 0.1, 0.3])[None, None, :, None]
-    wa = 2 * np.pi * fa
-    jm = ratio ** -2.0
-    jl = 1.0 - jm
-    k = jl * wa ** 2
-    c = 2 * zeta * np.sqrt(k * jl)
-    s_ = 2j * np.pi * f[None, None, None, :]
-    vt = (jl * s_ ** 2 + c * s_ + k) / (s_ * (jm * jl * s_ ** 2 + c * s_ + k))
-    lshape = -np.log(np.abs(vt) * 2 * np.pi * f)
-    log_j = np.sum(wn * (la - lshape), axis=-1, keepdims=True)
-    cost = np.sum(wn * (la - lshape - log_j) ** 2, axis=-1)
-    i = np.unravel_index(int(np.argmin(cost)), cost.shape)
-    best = float(cost[i])
-    if not best * 4 < rigid:
-        raise IdentificationError(
-            f"resonance_guess: no two-mass resonance in the coherent band {f[0]:.0f}..{f[-1]:.0f} Hz (the best "
-            f"two-mass shape fits the spectrum only {rigid / max(best, 1e-300):.1f}x better than a rigid body)")
-    j_total = float(np.exp(log_j[i][0]))
-    f_anti = float(fa[i[0], 0, 0, 0])
-    f_res = f_anti * float(ratio[0, i[1], 0, 0])
-    jm_v = j_total * (f_anti / f_res) ** 2
-    jl_v = j_total - jm_v
-    return ResonanceGuess(jm_v, jl_v, jl_v * (2 * np.pi * f_anti) ** 2, f_anti, f_res, j_total)
-
-
-# ----------------------------------------------------------------------------------------------------------------
-# Results
-# ----------------------------------------------------------------------------------------------------------------
-@dataclass(frozen=True)
-class Estimate(JsonResult):
-    """One parameter: value and standard error in `unit`; fixed ones were held at their initial value."""
-
-    name: str
-    value: float
-    std_error: float
-    unit: str
-    initial: float
-    fixed: bool
-    at_bound: bool
-
-    @property
-    def relative_std_error(self) -> float:
-        return self.std_error / abs(self.value) if self.value else math.inf
-
-    def __str__(self) -> str:
-        if self.fixed:
-            return f"{self.name:28s} {self.value:12.6g} {self.unit:10s} (fixed)"
-        bound = "  at a bound" if self.at_bound else ""
-        return (f"{self.name:28s} {self.value:12.6g} {self.unit:10s} +- {self.std_error:.3g} "
-                f"({100 * self.relative_std_error:.2g} %){bound}")
-
-
-class IdentificationError(ValueError):
-    """The data cannot determine a parameter (the message says which, and why)."""
-
-
-@_opts.described_result(_core.FIT_SUMMARY_FIELDS, lead=("model", "parameters"))
-class IdentifiedPlant(JsonResult):
-    """The outcome of :func:`fit_time` or :func:`fit_frequency`.
-
-    model: 'rigid' or 'two_mass'; parameters: name -> :class:`Estimate`; then the solver's figures, read from the
-    C++ summary (identify/fit_report.hpp, decision OQ6):
-
-    {fields}
-
-    summary: Ceres-style report; not_identifiable: what the data could not
-    determine; time-domain fits keep predicted/residual per sample (NaN outside the segments used); warnings: what the
-    data say against the model (:attr:`misfit`); segment_states: a time fit's fitted start state of every shooting
-    segment (segments x state size: angle rad and speed rad/s of each mass, the fit's internal layout), where its
-    error bars are evaluated.
-    """
-
-    model: str
-    parameters: dict
-    # nrmse ... seconds follow, read at import from identify::FitSummary::describe() with their units and docs;
-    # static type checkers read these names (test_options_once checks they match).
-    if TYPE_CHECKING:
-        nrmse: float
-        residual_rms: float
-        converged: bool
-        iterations: int
-        seconds: float
-    summary: str
-    not_identifiable: list
-    stribeck_exponent: float = 2.0
-    time_s: np.ndarray | None = field(default=None, repr=False)
-    measured: np.ndarray | None = field(default=None, repr=False)
-    predicted: np.ndarray | None = field(default=None, repr=False)
-    residual: np.ndarray | None = field(default=None, repr=False)
-    freq_hz: np.ndarray | None = field(default=None, repr=False)
-    response: np.ndarray | None = field(default=None, repr=False)
-    predicted_response: np.ndarray | None = field(default=None, repr=False)
-    starts: list = field(default_factory=list, repr=False)
-    disagreement: list = field(default_factory=list)
-    segment_samples: int | None = None
-    linear: bool = False
-    start_guess: dict = field(default_factory=dict, repr=False)
-    warnings: list = field(default_factory=list)
-    asymmetry_p_value: float = math.nan
-    lead_m_per_rev: float | None = None
-    segment_states: np.ndarray | None = field(default=None, repr=False, compare=False)
-
-    @property
-    def misfit(self) -> bool:
-        """True when the data reject the fitted friction model (a rigid time fit: the segment score test of
-        Fv+ = Fv- at the 1 % level; see ``warnings``)."""
-        return bool(self.asymmetry_p_value < 0.01)
-
-    def __getitem__(self, name: str) -> float:
-        return self.parameters[_LINEAR_ALIASES.get(name, (name,))[0]].value
-
-    def values(self) -> dict:
-        """name -> value (SI)."""
-        return {k: e.value for k, e in self.parameters.items()}
-
-    def to_dict(self) -> dict:
-        return {k: {"value": e.value, "std_error": e.std_error, "unit": e.unit, "fixed": e.fixed}
-                for k, e in self.parameters.items()}
-
-    def to_dataframe(self, which: str = "parameters"):
-        """A pandas DataFrame: ``"parameters"`` (default) one row per parameter (index ``name``: value, std_error,
-        relative_std_error, unit, initial, fixed, at_bound); ``"samples"`` the time-domain fit per sample (time_s,
-        measured, predicted, residual; NaN outside the segments used); ``"frequency"`` the frequency fit per point
-        (freq_hz; measured and predicted response as gain in dB and phase in deg)."""
-        if which == "parameters":
-            rows = list(self.parameters.values())
-            return dataframe({"name": [e.name for e in rows], "value": [e.value for e in rows],
-                              "std_error": [e.std_error for e in rows],
-                              "relative_std_error": [e.relative_std_error for e in rows],
-                              "unit": [e.unit for e in rows], "initial": [e.initial for e in rows],
-                              "fixed": [e.fixed for e in rows], "at_bound": [e.at_bound for e in rows]},
-                             index="name")
-        if which == "samples":
-            if self.time_s is None:
-                raise ValueError("to_dataframe: this is a frequency-domain fit: use which='frequency'")
-            return dataframe({"time_s": self.time_s, "measured": self.measured, "predicted": self.predicted,
-                              "residual": self.residual}, {"time_s": "s"})
-        if which == "frequency":
-            if self.freq_hz is None:
-                raise ValueError("to_dataframe: this is a time-domain fit: use which='samples'")
-            cols = {"freq_hz": self.freq_hz}
-            for name, h in (("measured", self.response), ("predicted", self.predicted_response)):
-                with np.errstate(divide="ignore"):
-                    cols[f"{name}_db"] = 20 * np.log10(np.abs(h))
-                cols[f"{name}_deg"] = np.degrees(np.angle(h))
-            return dataframe(cols, {"freq_hz": "Hz", "measured_db": "dB", "measured_deg": "deg",
-                                    "predicted_db": "dB", "predicted_deg": "deg"}, index="freq_hz")
-        raise ValueError(f"to_dataframe: which = {which!r} must be 'parameters', 'samples' or 'frequency'")
-
-    def __str__(self) -> str:
-        if self.linear:  # the axis's own units: m, N, kg
-            shown = []
-            for e in self.parameters.values():
-                alias = _LINEAR_NAMES.get(e.name)
-                shown.append(str(dataclasses.replace(e, name=alias[0], unit=alias[1])) if alias else str(e))
-            from .idlog import motor_side_line
-
-            side = motor_side_line([(_LINEAR_NAMES[e.name][0], e.value, _LINEAR_NAMES[e.name][1])
-                                    for e in self.parameters.values() if e.name in _LINEAR_NAMES],
-                                   self.lead_m_per_rev)
-            if side:
-                shown.append(side)
-        else:
-            shown = [str(e) for e in self.parameters.values()]
-        return "\n".join([self.summary, ""] + shown)
-
-    @property
-    def agrees(self) -> bool:
-        """True when every converged start landed within 2 combined standard errors of the others."""
-        return not self.disagreement
-
-    def to_plant(self):
-        """The identified plant as a :class:`RigidPlant` / :class:`TwoMassPlant` for an :class:`Axis` (and so for the
-        model-based tuning rule)."""
-        v = {k: e.value for k, e in self.parameters.items() if k != "delay_s"}
-        if self.model == "rigid":
-            if v["static_nm"] <= v["coulomb_nm"]:
-                v["static_nm"] = 0.0
-            return _core.RigidPlant(stribeck_exponent=self.stribeck_exponent, **v)
-        if v["motor_static_nm"] <= v["motor_coulomb_nm"]:
-            v["motor_static_nm"] = 0.0
-        return _core.TwoMassPlant(motor_stribeck_exponent=self.stribeck_exponent, **v)
-
-    def plot_residuals(self, *, path: str | None = None, ax=None):
-        """Measured vs predicted and the residual (time fits: in encoder-count-sized units of the measurement;
-        frequency fits: gain and phase). Returns the figure."""
-        import matplotlib.pyplot as plt
-        if self.freq_hz is not None:
-            fig, (a1, a2) = plt.subplots(2, 1, sharex=True, figsize=(8, 5))
-            a1.semilogx(self.freq_hz, 20 * np.log10(np.abs(self.response)), "o", ms=3, label="measured")
-            a1.semilogx(self.freq_hz, 20 * np.log10(np.abs(self.predicted_response)), "-", label="fitted model")
-            a1.set_ylabel("gain, dB")
-            a1.legend()
-            a2.semilogx(self.freq_hz, np.degrees(np.unwrap(np.angle(self.response))), "o", ms=3)
-            a2.semilogx(self.freq_hz, np.degrees(np.unwrap(np.angle(self.predicted_response))), "-")
-            a2.set_ylabel("phase, deg")
-            a2.set_xlabel("frequency, Hz")
-        else:
-            fig, (a1, a2) = plt.subplots(2, 1, sharex=True, figsize=(8, 5))
-            a1.plot(self.time_s, self.measured, lw=0.8, label="measured")
-            a1.plot(self.time_s, self.predicted, lw=0.8, label="model (per segment)")
-            a1.set_ylabel("measured")
-            a1.legend()
-            a2.plot(self.time_s, self.residual, lw=0.6)
-            a2.set_ylabel("residual")
-            a2.set_xlabel("time, s")
-        fig.suptitle(f"{self.model} fit: NRMSE {self.nrmse:.3g}")
-        fig.tight_layout()
-        if path:
-            fig.savefig(path, dpi=110)
-        return fig
-
-
-# a linear axis's log fitted by the rotary model (kg*m^2 <-> kg, N*m <-> N, rad <-> m): names and units shown
-_LINEAR_NAMES = {"inertia_kgm2": ("mass_kg", "kg"), "viscous_nms": ("viscous_ns_per_m", "N*s/m"),
-                 "coulomb_nm": ("coulomb_n", "N"), "static_nm": ("static_n", "N"),
-                 "stribeck_speed_rad_s": ("stribeck_speed_m_s", "m/s"), "load_nm": ("offset_n", "N")}
-_LINEAR_ALIASES = {v[0]: (k,) for k, v in _LINEAR_NAMES.items()}
 
 _SCALE_PARAMETERS = ("inertia_kgm2", "jm_kgm2", "jl_kgm2", "k_nm_per_rad")
 
@@ -447,8 +109,7 @@ def _setup(model: str, guess: dict, fixed: Iterable[str], bounds: dict | None):
 
 
 def _estimates(ps) -> dict:
-    return {p["name"]: Estimate(p["name"], p["value"], p["std_error"], p["unit"], p["initial"], p["fixed"],
-                                p["at_bound"]) for p in ps}
+    return {p["name"]: Estimate(**{f["name"]: p[f["name"]] for f in _core.PARAMETER_ESTIMATE_FIELDS}) for p in ps}
 
 
 # The options of the time fit a caller gives (identify/time_fit.hpp's TimeFitOptions, described once there; decision

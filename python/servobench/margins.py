@@ -22,18 +22,17 @@ def _core_axis(axis):
     return getattr(axis, "_axis", axis)
 
 
-@_opts.described_result(_core.MARGINS_FIELDS)
+@_opts.described_result(_core.MARGINS_FIELDS, keys={"stability_keys": _core.STABILITY_FIELDS})
 class Margins(JsonResult):
     """Stability first, then the margins and loop figures of merit (from :func:`margins`,
     :func:`analytic_margins` or :meth:`FrequencyResponse.margins`). ``str(m)`` starts with "UNSTABLE" for an
     unstable loop.
 
     stable, stability
-        the verdict and how it was reached: ``stability`` = {"decided", "stable", "method" ("closed-loop poles" for
-        the linear model, "Nyquist" for data), "reason" (one sentence with the figures), "max_pole_radius" (largest
-        closed-loop ``|z|``, poles only), "unstable_poles" (closed-loop poles outside the unit circle; -1 undecided),
-        "open_loop_unstable_poles", "integrators"}. ``stable`` is False when unstable *or* undecided. The margins of
-        a loop that is not stable are meaningless (python-control reports them all the same).
+        the verdict and how it was reached ("closed-loop poles" for the linear model, "Nyquist" for data).
+        ``stable`` is False when unstable *or* undecided. The margins of a loop that is not stable are meaningless
+        (python-control reports them all the same). ``stability`` is a dict:
+        {stability_keys}.
     gain_crossovers, phase_crossovers
         every crossing (MATLAB's allmargin): {"freq_hz", "phase_margin_deg"} and {"freq_hz", "gain_margin_db",
         "kind"} arrays, by frequency; kind "upper" (``|L|`` < 1: the gain may rise) or "lower" (it may fall).

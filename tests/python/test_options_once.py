@@ -233,11 +233,43 @@ def test_cli_defaults_read_from_the_structs():
     assert _core.RelayTuneOptions().phase_margin_deg == _core.ModelTuneOptions().phase_margin_deg
 
 
+def _class_node(cls):
+    """The class statement of `cls`, in whichever module of the package defines it (a result may be defined in a
+    private module and published, with its __module__, by a public one; decision OR2)."""
+    import ast
+    import pathlib
+    import sys
+
+    for name, mod in list(sys.modules.items()):
+        if not name.startswith("servobench.") or getattr(mod, cls.__name__, None) is not cls:
+            continue
+        path = getattr(mod, "__file__", None)
+        if not path or not path.endswith(".py"):
+            continue
+        tree = ast.parse(pathlib.Path(path).read_text())
+        for n in tree.body:
+            if isinstance(n, ast.ClassDef) and n.name == cls.__name__:
+                return n
+    raise AssertionError(f"no module of the package defines {cls.__qualname__}")
+
+
 RESULTS = [  # (Python result, its C++ field table, the Python fields that come before the table's)
     ("autotune.RelayTuneResult", "RELAY_TUNE_FIELDS", ("status", "message")),
     ("identify.IdentifiedPlant", "FIT_SUMMARY_FIELDS", ("model", "parameters")),
     ("margins.Margins", "MARGINS_FIELDS", ()),
+    ("autotune.ModelTuneResult", "MODEL_TUNE_FIELDS", ()),
+    ("identify.Estimate", "PARAMETER_ESTIMATE_FIELDS", ()),
 ]
+
+# Results whose own fields sit among the described ones (described_result's `after`, decision OR1): their whole
+# field order, as it was before the figures were read from C++ (repr and positional constructor unchanged).
+FIELD_ORDER = {
+    "autotune.ModelTuneResult": ["kp", "ki", "kd", "kc", "ti_s", "td_s", "crossover_hz", "margins", "max_pole_radius",
+                                 "law", "filters", "resonances", "resonance_hz", "resonance_prominence_db", "notch",
+                                 "crossover_without_notch_hz", "limited_by", "servo_period_s", "scan", "summary",
+                                 "phase_margin_deg", "min_gain_margin_db"],
+    "identify.Estimate": ["name", "value", "std_error", "unit", "initial", "fixed", "at_bound"],
+}
 
 
 @pytest.mark.parametrize("qualname, table_name, lead", RESULTS, ids=[r[0] for r in RESULTS])
@@ -248,7 +280,6 @@ def test_result_fields_read_from_the_struct(qualname, table_name, lead):
     import ast
     import dataclasses
     import importlib
-    import pathlib
 
     module_name, cls_name = qualname.split(".")
     module = importlib.import_module(f"servobench.{module_name}")
@@ -256,7 +287,11 @@ def test_result_fields_read_from_the_struct(qualname, table_name, lead):
     table = _options.result_fields(getattr(_core, table_name))
     fields = dataclasses.fields(cls)
     assert [f.name for f in fields[: len(lead)]] == list(lead)
-    described = fields[len(lead): len(lead) + len(table)]
+    if qualname in FIELD_ORDER:
+        assert [f.name for f in fields] == FIELD_ORDER[qualname]
+        described = [f for f in fields if f.name in {t.name for t in table}]
+    else:
+        described = fields[len(lead): len(lead) + len(table)]
     assert [f.name for f in described] == [t.name for t in table]
     doc = cls.__doc__
     assert "{fields}" not in doc
@@ -265,7 +300,48 @@ def test_result_fields_read_from_the_struct(qualname, table_name, lead):
         assert f.type == t.type
         assert f"{t.name} ({t.type}" + (f", {t.unit})" if t.unit else ")") in doc
         assert " ".join(_options._rst(t.doc).split()[:6]) in " ".join(doc.split())
-    tree = ast.parse(pathlib.Path(module.__file__).read_text())
-    node = next(n for n in tree.body if isinstance(n, ast.ClassDef) and n.name == cls_name)
+    node = _class_node(cls)
     block = next(n for n in node.body if isinstance(n, ast.If))
     assert [(a.target.id, ast.unparse(a.annotation)) for a in block.body] == [(t.name, t.type) for t in table]
+
+
+def _names(table_name):
+    return [t.name for t in _options.result_fields(getattr(_core, table_name))]
+
+
+def test_result_parts_keys_read_from_the_structs():
+    """The dicts a result carries -- a model-based design's pid, notch, resonances and scan, a Margins' stability, a
+    classic rule's PID, the stepped sine's signals, a fit's estimates -- have the keys their C++ struct's describe()
+    names, in its order, and the docstrings list them (decision OR1)."""
+    import servobench as sb
+    from servobench import autotune, frequency, margins
+    from servobench.examples import resonant_axis
+
+    axis = resonant_axis()
+    res = sb.model_based_tune(axis)
+    d = _core.model_tune(getattr(axis, "_axis", axis), _core.ModelTuneOptions(), list(_core.MODEL_TUNE_NOTCH_Q), "axis")
+    assert list(d["pid"]) == _names("PID_DESIGN_FIELDS")
+    assert list(res.notch)[:-2] == _names("NOTCH_DESIGN_FIELDS")
+    assert list(res.notch)[-2:] == ["float_biquad", "adlink_biquad"]
+    assert res.resonances and all(list(p) == _names("RESONANCE_PEAK_FIELDS") for p in res.resonances)
+    assert list(res.scan) == _names("CROSSOVER_CANDIDATE_FIELDS")
+    assert list(res.margins.stability) == _names("STABILITY_FIELDS")
+    for name in _names("MODEL_TUNE_FIELDS"):
+        assert getattr(res, name) == d[name]
+    assert list(_core.classic_rule("ziegler_nichols", 10.0, 0.01, 1e-4)) == _names("PID_DESIGN_FIELDS")
+    docs = " ".join(autotune.ModelTuneResult.__doc__.split())
+    for table in ("RESONANCE_PEAK_FIELDS", "NOTCH_DESIGN_FIELDS", "CROSSOVER_CANDIDATE_FIELDS"):
+        for t in _options.result_fields(getattr(_core, table)):
+            assert f'"{t.name}" (' in docs
+    assert "{" + "notch_keys}" not in docs and "{" + "scan_keys}" not in docs
+    mdoc = " ".join(margins.Margins.__doc__.split())
+    assert all(f'"{n}" (' in mdoc for n in _names("STABILITY_FIELDS"))
+
+    sweep = frequency.sine_sweep(axis, start_hz=20, end_hz=200, points=3, update_s=0.05, progress=None)
+    signals = [n for n in _names("SINE_SWEEP_FIELDS") if n not in ("freq_hz", "coherence", "distortion", "flag")]
+    assert list(sweep.signals) == signals
+    fdoc = " ".join(frequency.FrequencyResponse.__doc__.split())
+    assert all(f'"{n}" (' in fdoc for n in signals)
+    raw = _core.sine_sweep(getattr(axis, "_axis", axis), _core.SineSweepOptions(start_hz=20, end_hz=200, points=3, update_s=0.05))
+    assert set(_names("SINE_SWEEP_FIELDS")) | {"status", "message", "integrators", "open_loop_unstable_poles"} \
+        == set(raw)

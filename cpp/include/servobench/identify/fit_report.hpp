@@ -19,6 +19,20 @@ struct ParameterEstimate {
   double upper = 0.0;
   bool fixed = false;      // held at its initial value
   bool at_bound = false;   // ended on a bound (its standard error then describes the unconstrained curvature only)
+
+  // The fields a Python estimate carries (name, member, unit, meaning): servobench.identify.Estimate reads them from
+  // here, in its constructor's order (decision OR1). The bounds are the binding's too (the fit's setup).
+  template <class V>
+  static void describe(V&& v) {
+    using E = ParameterEstimate;
+    v("name", &E::name, "", "the parameter's name");
+    v("value", &E::value, "", "the estimate, in `unit`");
+    v("std_error", &E::std_error, "", "its standard error, in `unit`, from the covariance (0 for a fixed parameter; inf if not identifiable)");
+    v("unit", &E::unit, "", "the parameter's SI unit");
+    v("initial", &E::initial, "", "the starting guess, in `unit`");
+    v("fixed", &E::fixed, "", "held at its initial value");
+    v("at_bound", &E::at_bound, "", "ended on a bound (its standard error then describes the unconstrained curvature only)");
+  }
 };
 
 struct FitSummary {

@@ -47,6 +47,20 @@ struct Stability {
   int unstable_poles = -1;        // closed-loop poles outside the unit circle (-1: undecided)
   int open_loop_unstable_poles = 0;  // P of the Nyquist criterion
   int integrators = 0;            // open-loop poles at z = 1 (Nyquist: given or inferred)
+
+  // The verdict's fields (name, member, unit, meaning): the keys of Margins.stability in Python (decision OR1).
+  template <class V>
+  static void describe(V&& v) {
+    using S = Stability;
+    v("decided", &S::decided, "", "the data (or the model) tell stable from unstable; false: `reason` says why not, and `stable` is false");
+    v("stable", &S::stable, "", "the closed loop is stable");
+    v("method", &S::method, "", "how it was decided: \"closed-loop poles\" or \"Nyquist\"");
+    v("reason", &S::reason, "", "one sentence with the figures");
+    v("max_pole_radius", &S::max_pole_radius, "", "largest closed-loop pole |z| (poles only; NaN for Nyquist)");
+    v("unstable_poles", &S::unstable_poles, "", "closed-loop poles outside the unit circle (-1: undecided)");
+    v("open_loop_unstable_poles", &S::open_loop_unstable_poles, "", "open-loop poles outside the unit circle (the Nyquist criterion's P)");
+    v("integrators", &S::integrators, "", "open-loop poles at z = 1 (Nyquist: given or inferred)");
+  }
 };
 
 // One gain crossover |L| = 1: where (Hz) and its phase margin 180 + angle L (deg, wrapped to (-180, 180]).

@@ -81,6 +81,15 @@ struct ModelTuneOptions {
 // that height in decades.
 struct ResonancePeak {
   double freq_hz = 0, prominence_db = 0, width_decades = 0;
+
+  // Its fields (name, member, unit, meaning): the keys of each of ModelTuneResult.resonances in Python (OR1).
+  template <class V>
+  static void describe(V&& v) {
+    using P = ResonancePeak;
+    v("freq_hz", &P::freq_hz, "Hz", "the peak's frequency");
+    v("prominence_db", &P::prominence_db, "dB", "its height above the -40 dB/decade line");
+    v("width_decades", &P::width_decades, "decades", "its width at half that height");
+  }
 };
 
 // One crossover candidate of the scan.
@@ -92,6 +101,21 @@ struct CrossoverCandidate {
   double pid_lead_deg = 0;        // the PID's phase at the design frequency, deg
   Margins margins;                // of the whole loop with the card law's integers (when a PID was found)
   double max_pole_radius = 0;     // largest closed-loop pole |z| (0 when no PID)
+
+  // The columns of the scan (name, member, unit, meaning): ModelTuneResult.scan's keys in Python (OR1).
+  template <class V>
+  static void describe(V&& v) {
+    using C = CrossoverCandidate;
+    v("freq_hz", &C::freq_hz, "Hz", "the design frequency of the candidate");
+    v("phase_margin_deg", &C::margins, &Margins::phase_margin_deg, "deg", "phase margin of the whole loop with the card law's integers");
+    v("pm_freq_hz", &C::margins, &Margins::pm_freq_hz, "Hz", "its gain crossover");
+    v("gain_margin_db", &C::margins, &Margins::gain_margin_db, "dB", "gain margin of the whole loop");
+    v("ms", &C::margins, &Margins::ms, "", "peak sensitivity max |1/(1 + L)|");
+    v("max_pole_radius", &C::max_pole_radius, "", "largest closed-loop pole |z| (0 when no PID)");
+    v("pid_lead_deg", &C::pid_lead_deg, "deg", "the PID's phase at the design frequency");
+    v("feasible", &C::feasible, "", "the candidate meets every bound");
+    v("reason", &C::reason, "", "why not (\"\" when feasible)");
+  }
 };
 
 struct NotchDesign {
@@ -103,6 +127,20 @@ struct NotchDesign {
   control::FloatBiquadParams float_biquad;  // pre-warped bilinear design
   control::AdlinkBiquadParams adlink_biquad;  // the card's integers (quantize_adlink)
   bool adlink_ok = false;           // the integers exist (quantisation kept the poles inside)
+
+  // Its figures (name, member, unit, meaning): the keys of ModelTuneResult.notch in Python, beside float_biquad
+  // and adlink_biquad (the biquads themselves, None for integers that do not exist; decision OR1).
+  template <class V>
+  static void describe(V&& v) {
+    using N = NotchDesign;
+    v("used", &N::used, "", "the notch is in the design (it raised the crossover)");
+    v("center_hz", &N::center_hz, "Hz", "notch centre");
+    v("q", &N::q, "", "quality factor");
+    v("low_hz", &N::low_hz, "Hz", "lower -3 dB edge (analogue prototype)");
+    v("high_hz", &N::high_hz, "Hz", "upper -3 dB edge");
+    v("depth_db", &N::depth_db, "dB", "attenuation of the biquad actually run at the resonance (> 0)");
+    v("phase_at_crossover_deg", &N::phase_at_crossover_deg, "deg", "the notch's phase at the chosen crossover (< 0: lag)");
+  }
 };
 
 struct ModelTuneResult {
@@ -121,6 +159,25 @@ struct ModelTuneResult {
   std::string limited_by;                            // what failed just above the chosen crossover
   std::vector<CrossoverCandidate> scan;              // the chosen filter option's scan, by frequency
   std::string summary;
+
+  // The single figures (name, member, unit, meaning): the one place the Python result (servobench.autotune.
+  // ModelTuneResult) reads their names, units and docs from (decision OR1).
+  template <class V>
+  static void describe(V&& v) {
+    using R = ModelTuneResult;
+    v("kp", &R::pid, &PidDesign::kp, "counts/pulse", "proportional gain per tick, as designed (before the card's integers)");
+    v("ki", &R::pid, &PidDesign::ki, "counts/(pulse*tick)", "integral gain per tick");
+    v("kd", &R::pid, &PidDesign::kd, "counts*tick/pulse", "derivative gain per tick");
+    v("kc", &R::pid, &PidDesign::kc, "counts/pulse", "the same PID in continuous form kc (1 + 1/(ti s) + td s): its gain");
+    v("ti_s", &R::pid, &PidDesign::ti_s, "s", "its integral time (ti = alpha td)");
+    v("td_s", &R::pid, &PidDesign::td_s, "s", "its derivative time");
+    v("crossover_hz", &R::crossover_hz, "Hz", "the design crossover chosen");
+    v("max_pole_radius", &R::max_pole_radius, "", "the closed loop's largest pole magnitude |z| (< 1: stable)");
+    v("resonance_hz", &R::resonance_hz, "Hz", "the resonance notched (or the most prominent one found; 0 when none)");
+    v("resonance_prominence_db", &R::resonance_prominence_db, "dB", "its height above the -40 dB/decade line (0 when none)");
+    v("crossover_without_notch_hz", &R::crossover_without_notch_hz, "Hz", "the best crossover with no notch (0: none meets the bounds)");
+    v("limited_by", &R::limited_by, "", "what failed just above the chosen crossover");
+  }
 };
 
 // Designs the PID (and notch) for the axis described by `config`. Throws std::invalid_argument for a pulse-input

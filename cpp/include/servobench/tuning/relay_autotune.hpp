@@ -65,6 +65,19 @@ enum class TuneStatus { kCompleted, kUserStop, kLimitOrAlarm, kDeviationExceeded
 struct PidDesign {
   double kc = 0, ti_s = 0, td_s = 0;
   double kp = 0, ki = 0, kd = 0;  // per tick, counts/pulse (ki per pulse*tick)
+
+  // Its figures (name, member, unit, meaning): the keys of a PID design in Python (classic_rule, model_tune's pid;
+  // decision OR1).
+  template <class V>
+  static void describe(V&& v) {
+    using P = PidDesign;
+    v("kc", &P::kc, "counts/pulse", "gain of the continuous PID kc (1 + 1/(ti s) + td s)");
+    v("ti_s", &P::ti_s, "s", "its integral time");
+    v("td_s", &P::td_s, "s", "its derivative time");
+    v("kp", &P::kp, "counts/pulse", "proportional gain per tick (the card law's unit)");
+    v("ki", &P::ki, "counts/(pulse*tick)", "integral gain per tick");
+    v("kd", &P::kd, "counts*tick/pulse", "derivative gain per tick");
+  }
 };
 
 struct RelayTuneResult {

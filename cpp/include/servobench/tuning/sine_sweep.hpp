@@ -114,6 +114,32 @@ struct SineSweepResult {
   long long ticks = 0;                 // servo ticks run in total
   double stop_time_s = 0;              // time from the sweep's start at which it ended, s
   double stop_error_pulse = 0;         // the following error that tripped the deviation limit, pulse
+
+  // Its per-point arrays and run figures (name, member, unit, meaning): the keys of the binding's dict and of
+  // FrequencyResponse.signals in Python (servobench.frequency; decision OR1). Status and message are named apart.
+  template <class V>
+  static void describe(V&& v) {
+    using R = SineSweepResult;
+    v("freq_hz", &R::freq_hz, "Hz", "the points measured (fewer than requested if the sweep ended early)");
+    v("coherence", &R::coherence, "", "per point: share of Y's variance explained by the fundamental, 0..1");
+    v("distortion", &R::distortion, "", "per point: harmonic distortion of Y (2nd..5th over the fundamental), amplitude ratio");
+    v("flag", &R::flag, "", "per point: \"\" for a good point, else the reasons (\"; \"-separated)");
+    v("r", &R::r, "pulse", "per point: fundamental of the reference R (complex)");
+    v("e", &R::e, "pulse", "per point: fundamental of the following error E (complex)");
+    v("u", &R::u, "counts", "per point: fundamental of the DAC output U (complex)");
+    v("y", &R::y, "pulse", "per point: fundamental of the feedback Y (complex)");
+    v("periods", &R::periods, "", "per point: whole periods analysed");
+    v("window", &R::window, "", "per point: samples analysed");
+    v("ticks", &R::ticks, "", "servo ticks run in total");
+    v("stop_time_s", &R::stop_time_s, "s", "time from the sweep's start at which it ended");
+    v("stop_error_pulse", &R::stop_error_pulse, "pulse", "the following error that tripped the deviation limit");
+    v("amplitude_pulse", &R::amplitude_pulse, "pulse", "per point: the excitation amplitude used");
+    v("torque_amplitude_nm", &R::torque_amplitude_nm, "N*m", "per point: fundamental of the motor torque");
+    v("dac_saturated_ticks", &R::dac_saturated_ticks, "", "per point: ticks of DAC saturation over its whole run (the last try)");
+    v("current_saturated_ticks", &R::current_saturated_ticks, "", "per point: ticks the drive's current command was clamped (torque drive)");
+    v("torque_saturated_ticks", &R::torque_saturated_ticks, "", "per point: ticks the motor torque was at the velocity drive's limit");
+    v("tries", &R::tries, "", "per point: runs of the point (> 1: the amplitude was halved)");
+  }
 };
 
 // Called after each point with (points done, points requested); returning false stops the sweep (the user's
