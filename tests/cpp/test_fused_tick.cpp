@@ -45,9 +45,13 @@ struct Case {
   bool profile = false, inject = false;
 };
 
+// What a run records: every signal, fb_pos only (the benchmarks' runs), or nothing (decision SR1).
+enum class Rec { kAll, kFeedback, kNothing };
+
 // Runs the same command in three pieces (continuation) and the state read after it; `kernel` the fused tick's kernel
-// (decision SP1).
-std::vector<double> run_case(const Case& c, bool fused, mc::TickKernel kernel = mc::TickKernel::kAuto) {
+// (decision SP1), `rec` what it records (the slots not recorded keep their fill value in both loops).
+std::vector<double> run_case(const Case& c, bool fused, mc::TickKernel kernel = mc::TickKernel::kAuto,
+                             Rec rec = Rec::kAll) {
   mc::Axis axis(c.cfg);
   axis.set_fused_tick(fused);
   axis.set_tick_kernel(kernel);
@@ -73,7 +77,12 @@ std::vector<double> run_case(const Case& c, bool fused, mc::TickKernel kernel = 
     if (c.inject) in.volts_add = inj.data() + start;
     in.n = piece;
     std::vector<std::vector<double>> buf;
-    const mc::Trace tr = all_signals(buf, piece);
+    const mc::Trace all = all_signals(buf, piece);
+    mc::Trace tr = all;
+    if (rec != Rec::kAll) {
+      tr = mc::Trace{};
+      if (rec == Rec::kFeedback) tr.fb_pos = all.fb_pos;
+    }
     const mc::RunOutcome o = axis.run(in, tr, c.guard);
     for (const auto& s : buf) out.insert(out.end(), s.begin(), s.end());
     out.push_back(static_cast<double>(o.ticks));
@@ -197,6 +206,30 @@ TEST(FusedTick, EveryKernelGivesTheSameDoubles) {
       ASSERT_EQ(fused.size(), general.size()) << c.name << " " << mc::tick_kernel_name(k);
       EXPECT_EQ(0, std::memcmp(fused.data(), general.data(), fused.size() * sizeof(double)))
           << c.name << " " << mc::tick_kernel_name(k);
+    }
+  }
+}
+
+// Decision SR1: a run that records fb_pos only, or nothing (the fused loop skips its recording block), gives the
+// general loop's feedback, outcome and end state bit for bit on every case, with each kernel.
+TEST(FusedTick, FeedbackOnlyRunsGiveTheSameDoubles) {
+  std::vector<mc::TickKernel> kernels{mc::TickKernel::kPortable};
+  if (mc::tick_kernel_available(mc::TickKernel::kSse41)) kernels.push_back(mc::TickKernel::kSse41);
+  for (const Case& c : cases()) {
+    const std::vector<double> all = run_case(c, false);
+    for (Rec rec : {Rec::kFeedback, Rec::kNothing}) {
+      const std::vector<double> general = run_case(c, false, mc::TickKernel::kAuto, rec);
+      ASSERT_EQ(general.size(), all.size()) << c.name;
+      // The general loop itself: the same state at the end whatever it records.
+      EXPECT_EQ(0, std::memcmp(general.data() + general.size() - 10, all.data() + all.size() - 10,
+                               10 * sizeof(double)))
+          << c.name;
+      for (mc::TickKernel k : kernels) {
+        const std::vector<double> fused = run_case(c, true, k, rec);
+        ASSERT_EQ(fused.size(), general.size()) << c.name << " " << mc::tick_kernel_name(k);
+        EXPECT_EQ(0, std::memcmp(fused.data(), general.data(), fused.size() * sizeof(double)))
+            << c.name << " " << mc::tick_kernel_name(k) << (rec == Rec::kFeedback ? " fb_pos" : " nothing");
+      }
     }
   }
 }

@@ -52,6 +52,31 @@ def test_the_fused_tick_gives_the_general_loops_doubles(index, kernel):
     assert axis.tick == ref.tick and axis.angle_rad == ref.angle_rad and axis.speed_rad_s == ref.speed_rad_s
 
 
+
+@pytest.mark.parametrize("kernel", ["portable", "sse4.1"])
+@pytest.mark.parametrize("index", range(3))
+def test_a_feedback_only_run_gives_the_general_loops_doubles(index, kernel):
+    """Decision SR1: a run recording fb_pos only (the benchmarks' runs; the fused loop skips its recording block):
+    its feedback, the state it leaves and a continued run match the general loop bit for bit."""
+    if kernel not in _kernels():
+        pytest.skip("this CPU has no SSE4.1: only the portable kernel runs here")
+    axis = list(_axes())[index]
+    axis._axis.set_tick_kernel(kernel)
+    ref = list(_axes())[index]
+    ref._axis.set_fused_tick(False)
+    cmd = _move()
+    a = axis.run(cmd, signals=["fb_pos"])
+    b = ref.run(cmd, signals="all")
+    assert list(a.signals) == ["fb_pos"]
+    assert np.array_equal(a.fb_pos, b.fb_pos)
+    assert axis.tick == ref.tick and axis.angle_rad == ref.angle_rad and axis.speed_rad_s == ref.speed_rad_s
+    a2 = axis.run(cmd.pos[:700] * 0.5, continue_=True, signals=["fb_pos"])
+    b2 = ref.run(cmd.pos[:700] * 0.5, continue_=True, signals=["fb_pos"])
+    assert np.array_equal(a2.fb_pos, b2.fb_pos)
+    assert axis.angle_rad == ref.angle_rad and axis.speed_rad_s == ref.speed_rad_s
+    assert axis.load_angle_rad == ref.load_angle_rad and axis.load_speed_rad_s == ref.load_speed_rad_s
+    assert axis.feedback_pulse == ref.feedback_pulse and axis.tick == ref.tick
+
 def test_a_default_run_records_the_small_set_and_replays_the_rest_exactly():
     assert sb.DEFAULT_SIGNALS == ("time_s", "cmd_pos", "fb_pos", "error", "u", "volts")
     cmd = _move()
