@@ -170,10 +170,10 @@ def _fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | Non
     start_threads
         how many starts run at once (default 1: one after the other). Threads help wall time only: the starts
         are independent one-thread solves that release the GIL, so they overlap (measured 1.47x less wall time for
-        3 starts on 2 shared cores) but the CPU time is the sum of the starts (0.4-0.7 s each on the 5 s bench
-        experiment). Results do not depend on it. With `progress` the starts run one after the other. Ctrl-C
-        stops a parallel run at every start's next iteration, which on a loaded machine took 0.6 s (one iteration
-        of a 100,000-sample fit), hence the sequential default.
+        3 starts on 2 shared cores) but the CPU time is the sum of the starts (a rigid start 0.14-0.19 s on the 5 s
+        bench experiment with the analytic Jacobian, decision FU1). Results do not depend on it. With `progress`
+        the starts run one after the other. Ctrl-C stops a parallel run at every start's next iteration, which on a
+        loaded machine took 0.6 s (one iteration of a 100,000-sample fit), hence the sequential default.
     progress
         None, or a callable(iteration, cost) -> bool (False stops the solve).
     """

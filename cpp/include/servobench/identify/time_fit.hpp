@@ -93,8 +93,8 @@ struct TimeFitOptions {
     v("num_threads", &O::num_threads, "",
       "Ceres threads inside one fit, 1..64; 1 (default) is deterministic (bit-identical estimates). More threads "
       "evaluate the segments in parallel (the Jacobian is about 90 % of a solve, the report's Stages line) but do "
-      "not lower CPU time (5 s bench experiment, rigid A, one start: 0.30-0.34 s CPU with 2 threads against "
-      "0.30-0.32 s with 1 at load 13 on 2 cores, decision FT6; wall time 0.94x with 2 threads idle, issue 22); "
+      "not lower CPU time (5 s bench experiment, rigid A, one start, automatic differentiation before FU1: 0.30-0.34 s "
+      "CPU with 2 threads against 0.30-0.32 s with 1 at load 13 on 2 cores, decision FT6; wall time 0.94x with 2 threads idle, issue 22); "
       "with more than one, Ceres sums the Schur complement in a varying order (estimates differ at ~1e-8)");
     v("max_relative_std_error", &O::max_relative_std_error, "", "a free parameter whose standard error exceeds this fraction of its own value is not identifiable, > 0");
   }
