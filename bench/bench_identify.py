@@ -50,9 +50,9 @@ GOAL_S = 1.0
 GOAL_CPU_S = 0.5
 
 
-def full_fits(repeat, duration_s=5.0):
-    """(plant, wall s best of `repeat`, iterations of the chosen start, worst error %, CPU s best of `repeat`,
-    iterations of all starts) of the whole fit_time (3 starts) on the test plants."""
+def bench_logs(duration_s=5.0):
+    """The three bench logs (name, model, true parameters, log): 5 s closed-loop experiments at 5 kHz on the
+    rigid plants A and B and the two-mass plant (resonance 338 Hz)."""
     import servobench as sb
     from servobench import _core
 
@@ -60,13 +60,21 @@ def full_fits(repeat, duration_s=5.0):
         return sb.Axis(law=_core.GtServoLaw(kp=kp, kd=kd),
                        drive=_core.TorqueDrive(amps_per_volt=0.8, kt=0.5, current_bw_hz=1500.0), plant=plant,
                        encoder=_core.Encoder(counts_per_rev=10000), servo_period_s=TS)
-    cases = [("rigid A", "rigid", TRUE, sb.run_experiment(axis(_core.RigidPlant(**TRUE), 38, 830), amplitude_v=0.1,
-                                                            duration_s=duration_s)),
-             ("rigid B", "rigid", RIGID_B,
-              sb.run_experiment(axis(_core.RigidPlant(**RIGID_B), 38, 830), amplitude_v=0.1, duration_s=duration_s)),
-             ("two-mass (resonance 338 Hz)", "two_mass", TWO_MASS,
-              sb.run_experiment(axis(_core.TwoMassPlant(load_viscous_nms=0.0, **TWO_MASS), 20, 400),
-                                amplitude_v=0.3, duration_s=duration_s))]
+    return [("rigid A", "rigid", TRUE, sb.run_experiment(axis(_core.RigidPlant(**TRUE), 38, 830), amplitude_v=0.1,
+                                                         duration_s=duration_s)),
+            ("rigid B", "rigid", RIGID_B,
+             sb.run_experiment(axis(_core.RigidPlant(**RIGID_B), 38, 830), amplitude_v=0.1, duration_s=duration_s)),
+            ("two-mass (resonance 338 Hz)", "two_mass", TWO_MASS,
+             sb.run_experiment(axis(_core.TwoMassPlant(load_viscous_nms=0.0, **TWO_MASS), 20, 400),
+                               amplitude_v=0.3, duration_s=duration_s))]
+
+
+def full_fits(repeat, duration_s=5.0):
+    """(plant, wall s best of `repeat`, iterations of the chosen start, worst error %, CPU s best of `repeat`,
+    iterations of all starts) of the whole fit_time (3 starts) on the test plants."""
+    import servobench as sb
+
+    cases = bench_logs(duration_s)
     rows = []
     for name, model, true, log in cases:
         guess = {k: v * f for (k, v), f in zip(true.items(), HALF_OFF)}
@@ -100,17 +108,7 @@ def paired_jacobians(repeat=3, duration_s=5.0):
     import servobench as sb
     from servobench import _core
 
-    def axis(plant, kp, kd):
-        return sb.Axis(law=_core.GtServoLaw(kp=kp, kd=kd),
-                       drive=_core.TorqueDrive(amps_per_volt=0.8, kt=0.5, current_bw_hz=1500.0), plant=plant,
-                       encoder=_core.Encoder(counts_per_rev=10000), servo_period_s=TS)
-    cases = [("rigid A", "rigid", TRUE, sb.run_experiment(axis(_core.RigidPlant(**TRUE), 38, 830), amplitude_v=0.1,
-                                                            duration_s=duration_s)),
-             ("rigid B", "rigid", RIGID_B,
-              sb.run_experiment(axis(_core.RigidPlant(**RIGID_B), 38, 830), amplitude_v=0.1, duration_s=duration_s)),
-             ("two-mass", "two_mass", TWO_MASS,
-              sb.run_experiment(axis(_core.TwoMassPlant(load_viscous_nms=0.0, **TWO_MASS), 20, 400),
-                                amplitude_v=0.3, duration_s=duration_s))]
+    cases = bench_logs(duration_s)
     original = _core.identify_time
 
     def autodiff(*a, **kw):
