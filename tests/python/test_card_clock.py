@@ -317,7 +317,10 @@ def test_realtime_delay_waits_for_the_card_and_run_is_refused():
 
 def test_realtime_wait_until_a_move_ends():
     g = gt_card()
-    with g.card.set_clock("realtime", speed=20.0):       # 2000 ticks of move = 20 ms of wall time at k = 20
+    # The move (2000 pulses at 2 pulse/tick: ~1100 ticks) lasts ~110 ms of wall time at k = 2, so a scheduling delay
+    # of a few ms between GT_Update and the wait (a GIL switch interval is 5 ms) cannot eat the 1000 ticks the wait
+    # must see; at k = 20 (11 ms) one such delay failed a CI run (waited 429; decision VK14).
+    with g.card.set_clock("realtime", speed=2.0):
         assert gt_start_move(g, pos=2000, vel=2, acc=0.02) == 0
         waited = g.wait_until(lambda: not g.GT_GetSts()[1] & 0x400, max_ticks=10**6)
         assert g.card.profile_pos(0) == 2000 and waited >= 1000
