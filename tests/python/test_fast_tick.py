@@ -31,15 +31,21 @@ def _kernels():
     return ["portable"] + (["sse4.1"] if sb._core.tick_kernel() == "sse4.1" else [])
 
 
-@pytest.mark.parametrize("kernel", ["portable", "sse4.1"])
-@pytest.mark.parametrize("index", range(3))
-def test_the_fused_tick_gives_the_general_loops_doubles(index, kernel):
+def _fused_and_general(index, kernel):
+    """Axis `index` of _axes() twice: on the fused tick with `kernel`, and on the general loop (the reference)."""
     if kernel not in _kernels():
         pytest.skip("this CPU has no SSE4.1: only the portable kernel runs here")
     axis = list(_axes())[index]
     axis._axis.set_tick_kernel(kernel)
     ref = list(_axes())[index]
     ref._axis.set_fused_tick(False)
+    return axis, ref
+
+
+@pytest.mark.parametrize("kernel", ["portable", "sse4.1"])
+@pytest.mark.parametrize("index", range(3))
+def test_the_fused_tick_gives_the_general_loops_doubles(index, kernel):
+    axis, ref = _fused_and_general(index, kernel)
     cmd = _move()
     a = axis.run(cmd, signals="all")
     b = ref.run(cmd, signals="all")
@@ -58,12 +64,7 @@ def test_the_fused_tick_gives_the_general_loops_doubles(index, kernel):
 def test_a_feedback_only_run_gives_the_general_loops_doubles(index, kernel):
     """Decision SR1: a run recording fb_pos only (the benchmarks' runs; the fused loop skips its recording block):
     its feedback, the state it leaves and a continued run match the general loop bit for bit."""
-    if kernel not in _kernels():
-        pytest.skip("this CPU has no SSE4.1: only the portable kernel runs here")
-    axis = list(_axes())[index]
-    axis._axis.set_tick_kernel(kernel)
-    ref = list(_axes())[index]
-    ref._axis.set_fused_tick(False)
+    axis, ref = _fused_and_general(index, kernel)
     cmd = _move()
     a = axis.run(cmd, signals=["fb_pos"])
     b = ref.run(cmd, signals="all")
