@@ -52,13 +52,22 @@ void bind_vendor_gt(py::module_& m) {
       .def_readwrite("enc_sns", &vendor::googol::GtSystemRegs::enc_sns)
       .def_readwrite("step_pulse", &vendor::googol::GtSystemRegs::step_pulse)
       .def_readwrite("adc_chn", &vendor::googol::GtSystemRegs::adc_chn)
-      .def_readwrite("enc_zero", &vendor::googol::GtSystemRegs::enc_zero)
-      .def_readwrite("capt_set", &vendor::googol::GtSystemRegs::capt_set)
-      .def_readwrite("capt_armed", &vendor::googol::GtSystemRegs::capt_armed)
-      .def_readwrite("capt_captured", &vendor::googol::GtSystemRegs::capt_captured)
-      .def_readwrite("capt_tick", &vendor::googol::GtSystemRegs::capt_tick)
-      .def_readwrite("capt_raw", &vendor::googol::GtSystemRegs::capt_raw)
-      .def_readwrite("capt_value", &vendor::googol::GtSystemRegs::capt_value);
+;
+
+  py::class_<vendor::googol::AuxInputs>(
+      m, "GtAuxInputs",
+      "What the machine gives the GT auxiliary-encoder inputs at one read (gt_aux_encoder.hpp): counts(n, t_s) the\n"
+      "raw whole count (pulse) of encoder n (0, 1) at card time t_s (s), the wiring's reversed bits (4, 5) and\n"
+      "encoder 1's index marks (counts per index, 0 = none; the offset of one mark, pulse).")
+      .def(py::init([](std::function<long long(int, double)> counts, int reversed, long long counts_per_index,
+                       double index_offset) {
+             return vendor::googol::AuxInputs{std::move(counts), reversed, counts_per_index, index_offset};
+           }), py::arg("counts"), py::arg("reversed") = 0, py::arg("counts_per_index") = 0,
+           py::arg("index_offset") = 0.0);
+  m.def("aux_index_mark_between", &vendor::googol::index_mark_between, py::arg("a"), py::arg("b"),
+        py::arg("counts_per_index"), py::arg("index_offset"),
+        "the first index-mark count (pulse) reached moving from count a to count b, marks at index_offset + k\n"
+        "counts_per_index; None when none is (gt_aux_encoder.hpp)");
 
   py::class_<GtCard, std::unique_ptr<GtCard, py::nodelete>>(
       m, "GtCard",
@@ -86,6 +95,33 @@ void bind_vendor_gt(py::module_& m) {
       .def_property_readonly("system", [](GtCard& g) { return &g.system(); }, py::return_value_policy::reference_internal,
                              "the I/O and system registers")
       .def("hard_reset", [](GtCard& g) { return code(g.hard_reset()); })
+      // -- encoders (gt_aux_encoder.hpp) ----------------------------------------------------------------------
+      .def("set_encoder_sense", [](GtCard& g, double s, const vendor::googol::AuxInputs& in) {
+             return code(g.set_encoder_sense(s, in));
+           }, py::arg("sense"), py::arg("inputs"))
+      .def("aux_position", [](GtCard& g, double n, const vendor::googol::AuxInputs& in) {
+             const auto [c, v] = g.aux_position(n, in);
+             return py::make_tuple(code(c), v);
+           }, py::arg("num"), py::arg("inputs"))
+      .def("aux_velocity", [](GtCard& g, double n, const vendor::googol::AuxInputs& in) {
+             const auto [c, v] = g.aux_velocity(n, in);
+             return py::make_tuple(code(c), v);
+           }, py::arg("num"), py::arg("inputs"))
+      .def("clear_aux_position", [](GtCard& g, double n, const vendor::googol::AuxInputs& in) {
+             return code(g.clear_aux_position(n, in));
+           }, py::arg("num"), py::arg("inputs"))
+      .def("arm_aux_capture", [](GtCard& g, const vendor::googol::AuxInputs& in) { return code(g.arm_aux_capture(in)); },
+           py::arg("inputs"))
+      .def("aux_capture_status", [](GtCard& g, const vendor::googol::AuxInputs& in) {
+             const auto [c, v] = g.aux_capture_status(in);
+             return py::make_tuple(code(c), v);
+           }, py::arg("inputs"))
+      .def("aux_capture_value", [](GtCard& g, const vendor::googol::AuxInputs& in) {
+             const auto [c, v] = g.aux_capture_value(in);
+             return py::make_tuple(code(c), v);
+           }, py::arg("inputs"))
+      .def_property_readonly("aux_zero", [](const GtCard& g) { return g.aux().zero(); },
+                             "the auxiliary encoders' zero offsets, pulse")
       // -- coordinated list ------------------------------------------------------------------------------------
       .def("map_axis", [](GtCard& g, double a, const std::vector<double>& c) { return code(g.crd().map_axis(a, c)); },
            py::arg("axis"), py::arg("counts"))

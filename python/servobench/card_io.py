@@ -23,7 +23,7 @@ import math
 from dataclasses import dataclass
 from typing import Callable, Union
 
-from . import _checks
+from . import _checks, _core
 
 __all__ = ["AuxEncoder", "CardIO", "of"]
 
@@ -60,24 +60,14 @@ class AuxEncoder:
     def counts(self, t_s: float) -> int:
         """Whole counts at card time ``t_s`` (s)."""
         p = float(self.position(t_s)) if callable(self.position) else float(self.position)
-        if not math.isfinite(p):
-            raise ValueError(f"AuxEncoder.position({t_s}) = {p} is not a finite number of pulses")
+        if not abs(p) < 2.0**62:
+            raise ValueError(f"AuxEncoder.position({t_s}) = {p} is not a finite number of pulses within +-2^62")
         return math.floor(p)
 
     def index_between(self, a: int, b: int) -> int | None:
-        """The index-mark count reached moving from count ``a`` to count ``b`` (the first one, in the direction
-        of travel), or None."""
-        n = self.counts_per_index
-        if n == 0 or a == b:
-            return None
-        off = self.index_offset
-        if b > a:
-            k = math.floor((a - off) / n) + 1
-            mark = off + k * n
-            return math.floor(mark) if mark <= b else None
-        k = math.ceil((a - off) / n) - 1
-        mark = off + k * n
-        return math.floor(mark) if mark >= b else None
+        """The index-mark count (pulse) reached moving from count ``a`` to count ``b`` (the first one, in the
+        direction of travel), or None; the arithmetic is the card's (``vendor/googol/gt_aux_encoder.hpp``)."""
+        return _core.aux_index_mark_between(a, b, self.counts_per_index, self.index_offset)
 
 
 class CardIO:
@@ -119,6 +109,12 @@ class CardIO:
         if isinstance(v, bool) or not isinstance(v, (int,)) or not 0 <= v <= 0xFFFF:
             raise ValueError(f"CardIO.inputs gave {v!r} at t = {t_s} s; it must be an int 0..65535 (EXI0..EXI15)")
         return int(v)
+
+    def aux_counts(self, n: int, t_s: float) -> int:
+        """Whole counts (pulse) of auxiliary encoder ``n`` (0 = No. 1, 1 = No. 2) at card time ``t_s`` (s); 0 when
+        nothing is connected."""
+        enc = self.aux_encoders[n]
+        return 0 if enc is None else enc.counts(t_s)
 
     def volts(self, channel: int, t_s: float) -> float:
         """Analog input ``channel`` (0..7) at card time ``t_s`` (s), V."""

@@ -198,27 +198,6 @@ class _GtSystem:
             return rtn
         return self._gt().refuse("not_simulated")
 
-    # -- encoder direction (L595-635, L3267-3300) ----------------------------------------------------------------
-    def GT_EncSns(self, Sense) -> int:
-        """Encoder count direction, bits 0-3 axes 1-4, bits 4-5 auxiliary encoders 1-2: 1 reverses the count
-        (Table 11-2). The machine's wiring is ``card_io.of(card).encoder_reversed``: an axis whose setting does not
-        correct its wiring would run with positive feedback, which the simulated axis cannot (it returns 1,
-        nothing changed); the auxiliary encoders' counts are reversed as asked (decision GF5)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        g = self._gt()
-        if g.check(Sense, 0, 0x3F):
-            return RTN_PARAMETER_ERROR
-        if (int(Sense) ^ self._io().encoder_reversed) & 0xF:
-            return g.refuse("not_simulated")
-        st = g.system
-        for n in (0, 1):  # the position read stays where it is when the direction flips
-            before = self._aux_value(n)
-            st.enc_sns = (st.enc_sns & ~(1 << (4 + n))) | (int(Sense) & (1 << (4 + n)))
-            st.enc_zero = [z + (self._aux_value(n) - before) * (k == n) for k, z in enumerate(st.enc_zero)]
-        st.enc_sns = int(Sense)
-        return RTN_SUCCESS
-
     # -- pulse output form (L664-672, L5104-5128) -----------------------------------------------------------------
     def _step(self, pulse: bool) -> int:
         if self._card is None:
@@ -293,82 +272,14 @@ class _GtSystem:
         code = min(2047, int(abs(v) / 10.0 * 2048))
         return RTN_SUCCESS, code if v >= 0 else 2048 + code
 
-    # -- auxiliary encoders (L3124-3136, L3241-3330, L3727-3759, L4733-4747) --------------------------------------
-    def _aux_raw(self, n: int, t_s: float) -> int:
-        enc = self._io().aux_encoders[n]
-        return 0 if enc is None else enc.counts(t_s)
-
-    def _aux_sign(self, n: int) -> int:
-        flip = (self._io().encoder_reversed ^ self._gt().system.enc_sns) >> (4 + n) & 1
-        return -1 if flip else 1
-
-    def _aux_value(self, n: int, t_s: float | None = None) -> int:
-        t = self._t_s() if t_s is None else t_s
-        return self._aux_sign(n) * self._aux_raw(n, t) - self._gt().system.enc_zero[n]
-
-    def _enc_read(self, num, read):
-        """(rtn, read(encoder 0/1)) for auxiliary encoder ``num`` 1 or 2; 7 for another number."""
-        if self._card is None:
-            return RTN_COMM_ERROR, 0
-        rtn = self._gt().check(num, 1, 2)
-        return (rtn, 0) if rtn else (RTN_SUCCESS, read(int(num) - 1))
-
-    def GT_EncPos(self, Enc_Num):
-        """(rtn, position of auxiliary encoder 1 or 2, pulse) (L3241-3262)."""
-        return self._enc_read(Enc_Num, self._aux_value)
-
-    def GT_EncVel(self, Enc_Num):
-        """(rtn, velocity of auxiliary encoder 1 or 2, pulse/ST): its count change over the last sample time
-        (L3302-3323)."""
-        t = self._t_s() if self._card is not None else 0.0
-        ts = self._card.servo_period_s if self._card is not None else 0.0
-        return self._enc_read(Enc_Num, lambda n: float(self._aux_value(n, t) - self._aux_value(n, max(0.0, t - ts))))
-
-    def GT_ClrEncPos(self, EncNum) -> int:
-        """Sets the position of auxiliary encoder 1 or 2 to 0 (L3124-3136); 0 success, -1 failure (a number other
-        than 1, 2)."""
-        if self._card is None or not _int_in(EncNum, 1, 2):
-            return RTN_COMM_ERROR
-        st, n = self._gt().system, int(EncNum) - 1
-        st.enc_zero = [z + self._aux_value(n) * (k == n) for k, z in enumerate(st.enc_zero)]
-        return RTN_SUCCESS
-
-    def GT_SetEncCapt(self) -> int:
-        """Arms the INDEX capture of auxiliary encoder 1 and clears its captured flag (L4733-4747)."""
-        if self._card is None:
-            return RTN_COMM_ERROR
-        st = self._gt().system
-        st.capt_set, st.capt_armed, st.capt_captured = True, True, False
-        st.capt_tick, st.capt_raw = self._card.tick, self._aux_raw(0, self._t_s())
-        return RTN_SUCCESS
-
-    def _capt_scan(self):
-        """Looks at auxiliary encoder 1 tick by tick since the last look for its first index mark."""
-        st = self._gt().system
-        if not st.capt_armed:
-            return st
-        enc, ts = self._io().aux_encoders[0], self._card.servo_period_s
-        for k in range(st.capt_tick + 1, self._card.tick + 1):
-            raw = self._aux_raw(0, k * ts)
-            mark = enc.index_between(st.capt_raw, raw) if enc is not None else None
-            st.capt_raw, st.capt_tick = raw, k
-            if mark is not None:
-                st.capt_armed, st.capt_captured = False, True
-                st.capt_value = self._aux_sign(0) * mark - st.enc_zero[0]
-                break
-        st.capt_tick = max(st.capt_tick, self._card.tick)
-        return st
-
-    def GT_GetEncSts(self):
-        """(rtn, auxiliary encoder capture status): bit 3 = the INDEX mark was captured since GT_SetEncCapt
-        (L3741-3753)."""
-        return (RTN_COMM_ERROR, 0) if self._card is None else (RTN_SUCCESS, 0x8 if self._capt_scan().capt_captured
-                                                               else 0)
-
-    def GT_GetEncCapt(self):
-        """(rtn, position of auxiliary encoder 1 at the captured INDEX mark, pulse); the previous value while
-        nothing is captured (L3727-3739)."""
-        return (RTN_COMM_ERROR, 0) if self._card is None else (RTN_SUCCESS, self._capt_scan().capt_value)
+    # -- encoders (L595-635, L3267-3300) and auxiliary encoders (L3124-3136, L3241-3330, L3727-3759, L4733-4747) ------
+    def _aux(self) -> _core.GtAuxInputs:
+        """What the machine gives the card's auxiliary-encoder inputs at this read (``card_io``'s wiring): the
+        module (``vendor/googol/gt_aux_encoder.hpp``) asks for each count it needs, ``CardIO.aux_counts(n, t_s)``."""
+        io = self._io()
+        enc = io.aux_encoders[0]
+        return _core.GtAuxInputs(io.aux_counts, io.encoder_reversed, enc.counts_per_index if enc else 0,
+                                 enc.index_offset if enc else 0.0)
 
 
 def _int_in(value, lo, hi) -> bool:
@@ -378,6 +289,44 @@ def _int_in(value, lo, hi) -> bool:
     except (TypeError, ValueError):
         return False
     return math.isfinite(v) and v == int(v) and lo <= v <= hi
+
+
+def _aux_row(name: str, params: str, call, doc: str, read: bool = True):
+    """A row over the GT module's encoder commands: ``call(module, *args, inputs)``; -1 (or (-1, 0)) without a card."""
+    def body(self, *args):
+        if self._card is None:
+            return (RTN_COMM_ERROR, 0) if read else RTN_COMM_ERROR
+        return call(self._gt(), *args, self._aux())
+
+    return gt_adapter(name, params, body, doc, returns=None if read else "int")
+
+
+_ENCODER_ROWS = [
+    _aux_row("GT_EncSns", "Sense", lambda g, s, i: g.set_encoder_sense(s, i),
+             "Encoder count direction, bits 0-3 axes 1-4, bits 4-5 auxiliary encoders 1-2: 1 reverses the count "
+             "(Table 11-2, L595-635, L3267-3300). The machine's wiring is ``card_io.of(card).encoder_reversed``: an "
+             "axis whose setting does not correct its wiring would run with positive feedback, which the simulated "
+             "axis cannot (it returns 1, nothing changed); the auxiliary encoders' counts are reversed as asked, "
+             "their reads staying where they are (decision GF5). 7 outside 0..0x3F.", read=False),
+    _aux_row("GT_EncPos", "Enc_Num", lambda g, n, i: g.aux_position(n, i),
+             "(rtn, position of auxiliary encoder 1 or 2, pulse) (L3241-3262); 7 for another number."),
+    _aux_row("GT_EncVel", "Enc_Num", lambda g, n, i: g.aux_velocity(n, i),
+             "(rtn, velocity of auxiliary encoder 1 or 2, pulse/ST): its count change over the last sample time "
+             "(L3302-3323); 7 for another number."),
+    _aux_row("GT_ClrEncPos", "EncNum", lambda g, n, i: g.clear_aux_position(n, i),
+             "Sets the position of auxiliary encoder 1 or 2 to 0 (L3124-3136); 0 success, -1 failure (a number "
+             "other than 1, 2).", read=False),
+    _aux_row("GT_SetEncCapt", "", lambda g, i: g.arm_aux_capture(i),
+             "Arms the INDEX capture of auxiliary encoder 1 and clears its captured flag (L4733-4747).", read=False),
+    _aux_row("GT_GetEncSts", "", lambda g, i: g.aux_capture_status(i),
+             "(rtn, auxiliary encoder capture status): bit 3 = the INDEX mark was captured since GT_SetEncCapt "
+             "(L3741-3753)."),
+    _aux_row("GT_GetEncCapt", "", lambda g, i: g.aux_capture_value(i),
+             "(rtn, position of auxiliary encoder 1 at the captured INDEX mark, pulse); the previous value while "
+             "nothing is captured (L3727-3739)."),
+]
+for _fn in _ENCODER_ROWS:
+    setattr(_GtSystem, _fn.__name__, _fn)
 
 
 def _unsupported(name: str, read: bool):

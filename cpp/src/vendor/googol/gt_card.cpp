@@ -13,7 +13,7 @@ namespace servobench::vendor::googol {
 
 using machine::CommandFault;
 
-GtCard::GtCard(machine::Card& card) : card_(card), crd_(*this), intr_(*this) {
+GtCard::GtCard(machine::Card& card) : card_(card), crd_(*this), intr_(*this), aux_(card) {
   if (card.axis_count() != 4)
     throw std::invalid_argument("a GT card has 4 axes (GT L752-756)");
 }
@@ -124,6 +124,36 @@ GtCode GtCard::capture_probe() {
   return run([&] {
     for (std::size_t k : free) card_.arm_capture(k, machine::CaptureTrigger::Probe);
   });
+}
+
+GtCode GtCard::set_encoder_sense(double sense, const AuxInputs& in) {
+  if (GtCode c = check(sense, 0, 0x3F); c != GtCode::Success) return c;
+  const int s = static_cast<int>(sense);
+  if ((s ^ in.reversed) & 0xF) return refuse(CommandFault::NotSimulated);
+  aux_.keep_position_on_sense(sys_.enc_sns, s, in);
+  sys_.enc_sns = s;
+  return GtCode::Success;
+}
+
+std::pair<GtCode, long long> GtCard::aux_position(double num, const AuxInputs& in) {
+  if (GtCode c = check(num, 1, 2); c != GtCode::Success) return {c, 0};
+  return {GtCode::Success, aux_.position(static_cast<int>(num) - 1, sys_.enc_sns, in)};
+}
+
+std::pair<GtCode, double> GtCard::aux_velocity(double num, const AuxInputs& in) {
+  if (GtCode c = check(num, 1, 2); c != GtCode::Success) return {c, 0.0};
+  return {GtCode::Success, aux_.velocity(static_cast<int>(num) - 1, sys_.enc_sns, in)};
+}
+
+GtCode GtCard::clear_aux_position(double num, const AuxInputs& in) {
+  if (!(num == 1.0 || num == 2.0)) return GtCode::CommError;
+  aux_.clear(static_cast<int>(num) - 1, sys_.enc_sns, in);
+  return GtCode::Success;
+}
+
+GtCode GtCard::arm_aux_capture(const AuxInputs& in) {
+  aux_.arm_capture(in);
+  return GtCode::Success;
 }
 
 GtCode GtCard::hard_reset() {

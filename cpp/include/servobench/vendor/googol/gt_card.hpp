@@ -1,8 +1,8 @@
 // GtCard: the GT series' (GT-400 / GT-800, GT manual seed 000, digest gt.md) registers that the neutral card kernel
 // does not hold, as a card module (machine/card_hooks.hpp): the current axis (GT_Axis), the limit sense word
 // (GT_LmtSns), the GT_Index choice per axis, the coordinated-motion list (gt_crd_list.hpp), the interrupt
-// registers and their request / service machine (gt_interrupts.hpp), and the system registers of the I/O
-// commands (encoder sense, pulse form, A/D channels, auxiliary encoder zero and capture). Every GT command
+// registers and their request / service machine (gt_interrupts.hpp), the system registers of the I/O commands
+// (encoder sense, pulse form, A/D channels) and the two auxiliary encoders (gt_aux_encoder.hpp). Every GT command
 // returns the manual's code (GtCode, Table 2-1 L393-408), never throws; the dialect
 // (servobench.dialects.gt) is a table of one-line adapters over it.
 //
@@ -16,9 +16,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <utility>
 
 #include "servobench/machine/card.hpp"
 #include "servobench/machine/card_hooks.hpp"
+#include "servobench/vendor/googol/gt_aux_encoder.hpp"
 #include "servobench/vendor/googol/gt_crd_list.hpp"
 #include "servobench/vendor/googol/gt_interrupts.hpp"
 #include "servobench/vendor/googol/return_code.hpp"
@@ -33,14 +35,6 @@ struct GtSystemRegs {
   int enc_sns = 0;                        // GT_EncSns: bits 0-3 axes, 4-5 auxiliary encoders (Table 11-2)
   std::array<bool, 4> step_pulse{};       // GT_StepPulse (true, CW/CCW) / GT_StepDir (false, the default)
   int adc_chn = 8;                        // GT_SetAdcChn: channels converted, 1..8 (default 8, GF7)
-  std::array<long long, 2> enc_zero{};    // GT_ClrEncPos / GT_EncSns: the auxiliary encoders' zero, pulse
-  // GT_SetEncCapt (L4733-4747): the INDEX capture of auxiliary encoder 1.
-  bool capt_set = false;                  // GT_SetEncCapt ran at least once
-  bool capt_armed = false;
-  bool capt_captured = false;             // GT_GetEncSts bit 3
-  long long capt_tick = 0;                // the last tick the scan looked at
-  long long capt_raw = 0;                 // the encoder's raw count at that tick
-  long long capt_value = 0;               // GT_GetEncCapt: the captured position, pulse
 };
 
 class GtCard final : public machine::CardHooks {
@@ -86,6 +80,26 @@ class GtCard final : public machine::CardHooks {
   // GT_CaptProb (L3008-3049, V85): arms the probe on every axis whose capture register is free; 1 if none is.
   GtCode capture_probe();
 
+  // -- encoders (GT_EncSns L595-635, L3267-3300; the auxiliary encoders L3124-3136, L3241-3330, L3727-3759,
+  // L4733-4747; gt_aux_encoder.hpp) ----------------------------------------------------------------------------
+  // GT_EncSns: 7 outside 0..0x3F; 1 (not simulated) when bits 0-3 do not correct the axes' wiring (in.reversed:
+  // the simulated axis cannot run with positive feedback, GF5); else the auxiliary reads stay where they are.
+  GtCode set_encoder_sense(double sense, const AuxInputs& in);
+  // GT_EncPos / GT_EncVel: (0, pulse / pulse per ST) of auxiliary encoder num 1..2; (7, 0) for another number.
+  std::pair<GtCode, long long> aux_position(double num, const AuxInputs& in);
+  std::pair<GtCode, double> aux_velocity(double num, const AuxInputs& in);
+  // GT_ClrEncPos: 0, or -1 ("failure", L3130) for a number other than 1, 2.
+  GtCode clear_aux_position(double num, const AuxInputs& in);
+  // GT_SetEncCapt / GT_GetEncSts (bit 3 = captured) / GT_GetEncCapt (pulse).
+  GtCode arm_aux_capture(const AuxInputs& in);
+  std::pair<GtCode, int> aux_capture_status(const AuxInputs& in) {
+    return {GtCode::Success, aux_.scan(sys_.enc_sns, in).captured ? 0x8 : 0};
+  }
+  std::pair<GtCode, long long> aux_capture_value(const AuxInputs& in) {
+    return {GtCode::Success, aux_.scan(sys_.enc_sns, in).value};
+  }
+  const GtAuxEncoders& aux() const { return aux_; }
+
   // -- the parts -------------------------------------------------------------------------------------------------
   GtCrdList& crd() { return crd_; }
   const GtCrdList& crd() const { return crd_; }
@@ -107,6 +121,7 @@ class GtCard final : public machine::CardHooks {
   GtCrdList crd_;
   GtInterrupts intr_;
   GtSystemRegs sys_{};
+  GtAuxEncoders aux_;
 };
 
 // The card's GT module (created and attached on first use).
