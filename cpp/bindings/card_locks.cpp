@@ -28,14 +28,6 @@ using machine::Card;
 
 namespace {
 
-// The C++ object behind a pybind11 instance, or null for anything else.
-void* cpp_object(py::handle h) {
-  auto* type = py::detail::get_type_info(Py_TYPE(h.ptr()));
-  if (type == nullptr) return nullptr;
-  auto* inst = reinterpret_cast<py::detail::instance*>(h.ptr());
-  return inst->get_value_and_holder(type).value_ptr();
-}
-
 // The objects sharing each live card's locks (held with the GIL): forgotten when the card's Python object goes.
 std::unordered_map<const void*, std::vector<const void*>>& shared_with() {
   static auto* m = new std::unordered_map<const void*, std::vector<const void*>>();
@@ -53,40 +45,9 @@ std::string doc_of(py::handle f) {
   return d.is_none() ? std::string() : py::str(d).cast<std::string>();
 }
 
-// A method or property accessor that holds its object's state lock (the card's, once shared) while it runs.
-py::object locked_method(py::object f, const std::string& name, py::handle scope, bool method) {
-  if (f.is_none()) return f;
-  py::options opts;
-  opts.disable_function_signatures();
-  std::string doc = doc_of(f);
-  if (method && !doc.empty() && doc.front() == '(') doc = name + doc;
-  return py::cpp_function(
-      [f](py::args args, py::kwargs kw) -> py::object {
-        std::unique_lock<std::recursive_mutex> lk;
-        if (args.size() > 0)
-          if (const void* key = cpp_object(args[0])) lk = lock_releasing_gil(locks_of(key)->state);
-        return f(*args, **kw);
-      },
-      py::name(name.c_str()), py::is_method(scope), py::doc(doc.c_str()));
-}
-
+// Wraps a module type's methods once (serialise_methods, object_lock.hpp: the one wrapper, keyed by the instance).
 void serialise_type(py::handle cls) {
-  if (!serialised_types().insert(cls.ptr()).second) return;
-  const py::dict d = cls.attr("__dict__");
-  const py::object property = py::module_::import("builtins").attr("property");
-  std::vector<std::pair<std::string, py::object>> items;
-  for (auto item : d) items.emplace_back(py::str(item.first).cast<std::string>(), py::reinterpret_borrow<py::object>(item.second));
-  for (auto& [name, value] : items) {
-    if (name.size() > 4 && name.rfind("__", 0) == 0 && name != "__repr__") continue;
-    if (py::isinstance(value, property)) {
-      py::setattr(cls, name.c_str(),
-                  property(locked_method(value.attr("fget"), name, cls, false),
-                           locked_method(value.attr("fset"), name, cls, false), py::none(), value.attr("__doc__")));
-    } else if (PyInstanceMethod_Check(value.ptr())) {
-      py::object fn = py::reinterpret_borrow<py::object>(PyInstanceMethod_GET_FUNCTION(value.ptr()));
-      py::setattr(cls, name.c_str(), locked_method(fn, name, cls, true));
-    }
-  }
+  if (serialised_types().insert(cls.ptr()).second) serialise_methods(cls);
 }
 
 // A result the card returned by reference (Python does not own it: a module inside the card) shares its locks.

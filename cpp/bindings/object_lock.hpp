@@ -93,46 +93,55 @@ inline void check_signals() {
   if (PyErr_CheckSignals() != 0) throw py::error_already_set();
 }
 
+// The C++ object behind a pybind11 instance (the key of its locks in lock_table.hpp), or null for anything else.
+inline void* cpp_object(py::handle h) {
+  auto* type = py::detail::get_type_info(Py_TYPE(h.ptr()));
+  if (type == nullptr) return nullptr;
+  auto* inst = reinterpret_cast<py::detail::instance*>(h.ptr());
+  return inst->get_value_and_holder(type).value_ptr();
+}
+
+// `f` (a method or a property accessor) wrapped so that each call holds the state lock of the object it is called
+// on (keyed by the instance's C++ pointer: its own locks, or its card's once shared, lock_table.hpp). The wrapper
+// keeps the wrapped function's docstring, whose first line is its typed signature: help(), the stubs
+// (pybind11-stubgen) and the text signature of signatures.hpp read it, so (*args, **kwargs) stays hidden. A method
+// bound without a name (cls.attr(n) = cpp_function(...)) has a signature line without one: named here.
+inline py::object locked_method(py::object f, const std::string& name, py::handle scope, bool method) {
+  if (f.is_none()) return f;
+  py::options opts;
+  opts.disable_function_signatures();
+  const py::object original_doc = py::getattr(f, "__doc__", py::none());
+  std::string doc = original_doc.is_none() ? "" : py::str(original_doc).cast<std::string>();
+  if (method && !doc.empty() && doc.front() == '(') doc = name + doc;
+  return py::cpp_function(
+      [f](py::args args, py::kwargs kw) -> py::object {
+        std::unique_lock<std::recursive_mutex> lk;
+        if (args.size() > 0)
+          if (const void* key = cpp_object(args[0])) lk = lock_releasing_gil(locks_of(key)->state);
+        return f(*args, **kw);
+      },
+      py::name(name.c_str()), py::is_method(scope), py::doc(doc.c_str()));
+}
+
 // Wraps every method and property of a bound class (except the listed names and dunders other than __repr__)
-// so that each call holds the object's state lock: methods then never run between the ticks of a chunk.
-template <class T, class... Extra>
-void serialise_methods(py::class_<T, Extra...>& cls, const std::vector<std::string>& except) {
-  py::dict d = cls.attr("__dict__");
+// so that each call holds the object's state lock: methods then never run between the ticks of a chunk. Used by
+// the classes with their own locks (Axis, Card, HomingRun) and by card_locks.cpp for the vendor modules that share
+// their card's locks: one wrapper, keyed by the instance pointer.
+inline void serialise_methods(py::handle cls, const std::vector<std::string>& except = {}) {
+  const py::dict d = cls.attr("__dict__");
   const py::object property = py::module_::import("builtins").attr("property");
-  // The wrapper keeps the wrapped function's docstring, whose first line is its typed signature: help(), the
-  // stubs (pybind11-stubgen) and the text signature of signatures.hpp read it, so (*args, **kwargs) stays hidden.
-  // A method bound without a name (cls.attr(n) = cpp_function(...)) has a signature line without one: named here.
-  auto wrap = [](py::object f, const char* name, py::handle scope, bool method) -> py::object {
-    if (f.is_none()) return f;
-    py::options opts;
-    opts.disable_function_signatures();
-    const py::object original_doc = py::getattr(f, "__doc__", py::none());
-    std::string doc = original_doc.is_none() ? "" : py::str(original_doc).cast<std::string>();
-    if (method && !doc.empty() && doc.front() == '(') doc = name + doc;
-    return py::cpp_function(
-        [f](py::args args, py::kwargs kw) -> py::object {
-          std::unique_lock<std::recursive_mutex> lk;
-          if (args.size() > 0 && py::isinstance<T>(args[0])) {
-            const void* key = &args[0].cast<T&>();
-            lk = lock_releasing_gil(locks_of(key)->state);
-          }
-          return f(*args, **kw);
-        },
-        py::name(name), py::is_method(scope), py::doc(doc.c_str()));
-  };
   std::vector<std::pair<std::string, py::object>> items;
   for (auto item : d) items.emplace_back(py::str(item.first).cast<std::string>(), py::reinterpret_borrow<py::object>(item.second));
   for (auto& [name, value] : items) {
     if (std::find(except.begin(), except.end(), name) != except.end()) continue;
     if (name.size() > 4 && name.rfind("__", 0) == 0 && name != "__repr__") continue;
     if (py::isinstance(value, property)) {
-      py::object fget = value.attr("fget"), fset = value.attr("fset");
-      py::object doc = value.attr("__doc__");
       py::setattr(cls, name.c_str(),
-                  property(wrap(fget, name.c_str(), cls, false), wrap(fset, name.c_str(), cls, false), py::none(), doc));
+                  property(locked_method(value.attr("fget"), name, cls, false),
+                           locked_method(value.attr("fset"), name, cls, false), py::none(), value.attr("__doc__")));
     } else if (PyInstanceMethod_Check(value.ptr())) {  // a bound C++ method (pybind11 wraps them so)
       py::object fn = py::reinterpret_borrow<py::object>(PyInstanceMethod_GET_FUNCTION(value.ptr()));
-      py::setattr(cls, name.c_str(), wrap(fn, name.c_str(), cls, true));
+      py::setattr(cls, name.c_str(), locked_method(fn, name, cls, true));
     }
   }
 }
