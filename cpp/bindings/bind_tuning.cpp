@@ -216,7 +216,6 @@ void bind_tuning(py::module_& m) {
         py::dict d;
         d["status"] = names[static_cast<int>(r.status)];
         d["message"] = r.message;
-        d["sampling_time_s"] = r.sampling_time_s;
         d["period_s"] = to_array(r.period_s);
         d["amplitude_pulse"] = to_array(r.amplitude_pulse);
         d["peak_pulse"] = to_array(r.peak_pulse);
@@ -231,16 +230,12 @@ void bind_tuning(py::module_& m) {
         d["mean"] = pid_dict(r.mean);
         py::dict figures;
         put_described(figures, r);  // kp ... sampling_time_s, as RelayTuneResult::describe() names them (OQ6)
-        d["figures"] = figures;
-        d["kp_spread"] = r.kp_spread;
-        d["ki_spread"] = r.ki_spread;
-        d["kd_spread"] = r.kd_spread;
-        d["ultimate_freq_hz"] = r.ultimate_freq_hz;
-        d["ultimate_gain_v_per_pulse"] = r.ultimate_gain_v_per_pulse;
+        d["figures"] = figures;     // the one place of the single figures (no top-level copies: GZ8)
         d["ticks"] = r.ticks;
         return d;
       },
-      py::arg("axis"), py::arg("options"), py::arg("progress") = py::none(), "Relay auto-tuning (ADLINK L1764-1847). Releases the GIL.");
+      py::arg("axis"), py::arg("options"), py::arg("progress") = py::none(), "Relay auto-tuning (ADLINK L1764-1847). Releases the GIL. The dict: status, message, the per-set arrays, the\n"
+      "record, mean (the PidDesign), ticks, and figures: the single figures RELAY_TUNE_FIELDS describes.");
 
   m.def(
       "model_tune",
