@@ -26,8 +26,6 @@
 #include <functional>
 #include <optional>
 
-#include "servobench/vendor/googol/return_code.hpp"
-
 namespace servobench::machine {
 class Card;
 }
@@ -38,7 +36,8 @@ namespace servobench::vendor::googol {
 struct AuxInputs {
   // raw whole count (pulse) of encoder n (0 = No. 1, 1 = No. 2) at card time t_s (s); 0 when nothing is connected.
   std::function<long long(int n, double t_s)> counts;
-  int reversed = 0;                // the wiring: bits 4, 5 = encoder 1, 2 counts against the motor (card_io)
+  int reversed = 0;                // the wiring (card_io encoder_reversed): bits 0-3 axes 1-4, bits 4, 5 encoder
+                                   // 1, 2; 1 = counts against the motor
   long long counts_per_index = 0;  // encoder 1: counts between two index marks, 0 = no mark
   double index_offset = 0.0;       // encoder 1: the position of one index mark, pulse
 };
