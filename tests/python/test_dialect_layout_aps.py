@@ -14,8 +14,8 @@ DIALECTS = Path(__file__).resolve().parents[2] / "python" / "servobench" / "dial
 FILES = ("aps.py", "_aps_more.py", "_aps_pt.py")
 # The aim of issue 24.3: aps.py <= 40 % of its 1441 lines when the issue was filed, the private modules counted too.
 AIM_APS_LINES = 576
-# Lines reached (session 13): a ceiling that only comes down (the dialect does not grow back).
-CEILING = {"aps.py": 751, "_aps_more.py": 191, "_aps_pt.py": 190}
+# Lines reached (session 14): a ceiling that only comes down (the dialect does not grow back).
+CEILING = {"aps.py": 253, "_aps_more.py": 103, "_aps_pt.py": 191}
 # The dialect's mutable attributes: the handle only (session 12); the C++ module holds the rest.
 STILL_IN_PYTHON = {"_card", "_machine"}
 # Moved into vendor/adlink/aps_scope.hpp, aps_interrupts.hpp (session 11): must not come back.
@@ -46,8 +46,6 @@ def test_line_count_only_comes_down(name):
     assert n <= CEILING[name], f"{name}: {n} lines, more than the {CEILING[name]} reached"
 
 
-@pytest.mark.xfail(strict=True, reason="issue 24.3 aim not reached in session 13 (AX3): the ApsController adapters' "
-                                       "argument checks and calls are still Python bodies")
 def test_aim_of_issue_24_3():
     total = sum(len((DIALECTS / f).read_text().splitlines()) for f in FILES)
     assert total <= AIM_APS_LINES, f"the ADLINK dialect has {total} lines, the aim is {AIM_APS_LINES}"
@@ -195,3 +193,63 @@ def test_each_aps_function_is_described_once_by_the_cpp_table():
         for node in ast.walk(_tree(f)):
             if isinstance(node, ast.FunctionDef) and node.name.startswith("APS_"):
                 assert ast.get_docstring(node) is None, f"{f}: {node.name} has its docstring back in Python"
+
+
+def test_the_runner_functions_are_made_from_the_cpp_tables():
+    """The motion, interpolation, position, status and compare-trigger functions are one C++ runner's rows
+    (vendor/adlink/aps_commands.hpp, AY1): each is generated from its row of _core.APS_COMMANDS / APS_ARC_COMMANDS
+    (signature, doc) and the runner's shape (one kind per argument), and the arcs' docs are C++'s too (AY4)."""
+    sb = pytest.importorskip("servobench")
+    import inspect
+
+    from servobench.dialects import aps
+
+    shapes = {name: (kinds, reply) for name, kinds, reply in sb._core.APS_COMMAND_SHAPES}
+    assert len(shapes) == len(sb._core.APS_COMMAND_SHAPES) == 64  # motion 32, interpolation 23, compare 9
+    rows = {name: (args, doc) for name, args, doc in (*sb._core.APS_COMMANDS, *sb._core.APS_ARC_COMMANDS)}
+    assert len(sb._core.APS_ARC_COMMANDS) == 18 and set(shapes) <= set(rows)
+    for name, (kinds, reply) in shapes.items():
+        fn = getattr(aps.ApsController, name)
+        params = list(inspect.signature(fn).parameters)[1:]
+        assert len(params) == len(kinds) and set(kinds) <= {"n", "a"}, name
+        assert all(p.endswith(("Array", "Arr")) == (k == "a") for p, k in zip(params, kinds)), name  # *Array, DataArr
+        assert fn.__doc__ == rows[name][1] == getattr(aps, name).__doc__, name
+        returns_int = inspect.signature(fn).return_annotation == "int"
+        assert returns_int == (reply in ("", "w")), name
+
+
+def test_the_runner_checks_every_argument_and_never_raises():
+    """A value that is not a number, or an array that is not one, in any argument of any runner function gives the
+    APS code (ERR_ParametersInvalid with a card, ERR_DeviceNotInitial or ERR_ParametersInvalid without one), never
+    an exception: the checks are C++'s (AY1)."""
+    sb = pytest.importorskip("servobench")
+    from servobench.dialects import aps
+    from servobench.dialects.aps import ApsController
+
+    a = ApsController()
+    assert a.APS_initial()[0] == 0
+    try:
+        for name, kinds, reply in sb._core.APS_COMMAND_SHAPES:
+            for bad in ("x", float("nan"), float("inf"), object()):
+                for k in range(len(kinds)):
+                    args = [[0, 1] if kind == "a" else 0 for kind in kinds]
+                    args[k] = bad
+                    for ctrl, want in ((a, {aps.ERR_ParametersInvalid}),
+                                       (ApsController(), {aps.ERR_DeviceNotInitial, aps.ERR_ParametersInvalid})):
+                        r = getattr(ctrl, name)(*args)
+                        code = r if reply in ("", "w") else r[0]
+                        assert code in want, (name, k, bad, r)
+    finally:
+        a.APS_close()
+
+
+def test_no_argument_check_left_in_the_dialect():
+    """The argument checks and card calls of the runner's functions are C++'s: no range constant, number parser or
+    axis check of the old adapters is defined in the dialect any more (AY1)."""
+    gone = {"_num", "_int", "_axis", "_SPEEDS", "_POS_MAX", "_BLEND_MODES", "_IGNORED", "_ptp", "_option", "_interp",
+            "_line", "_arc", "_linear_move", "_multi", "_do", "_params", "_ARCS", "_next_cmp", "_trg_count_ok"}
+    for f in FILES:
+        defined = {n.name for n in ast.walk(_tree(f)) if isinstance(n, (ast.FunctionDef, ast.ClassDef))}
+        defined |= {t.id for n in ast.walk(_tree(f)) if isinstance(n, ast.Assign) for t in n.targets
+                    if isinstance(t, ast.Name)}
+        assert not defined & gone, f"{f}: {defined & gone}"

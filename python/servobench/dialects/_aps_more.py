@@ -1,33 +1,19 @@
 """More ADLINK functions of :class:`~servobench.dialects.aps.ApsController` (mixed in; issue 25.3, decisions
-AF13-AF24): the ``*_multi`` stops and ``APS_vel_all`` (L2566-2584), the position and counter reads (L2056-2099),
-the compare timer counter (L3363-3378), the watchdog (L4025-4084), the VAO (velocity -> PWM power) tables
+AF13-AF24): the watchdog (L4025-4084), the VAO (velocity -> PWM power) tables
 (L3436-3542), the board parameters and the drive control mode (L1498, L1623, L3520-3533), and the digital
 outputs the point table and the watchdog write (APS_read_d_output / APS_write_d_output of the APS library).
 
+(The ``*_multi`` stops, ``APS_vel_all``, the position and counter reads and the compare timer counter are rows
+of the C++ runner, AY1.)
 Units: pulse, pulse/s, pulse/s^2; the watchdog's time-out in 100 ms (L4070); VAO powers in the table's unit
 (mode 1: duty in 0.05 %, modes 2-3: Hz; L3489-3495).
 """
 
 from __future__ import annotations
 
-import math
-
 from .. import _core
-from ._aps_constants import ERR_DeviceNotInitial, ERR_FunctionNotAvailable, ERR_NoError, ERR_ParametersInvalid
+from ._aps_constants import ERR_DeviceNotInitial, ERR_NoError, ERR_ParametersInvalid
 from ._aps_pt import _f
-
-
-def _num(v):
-    try:
-        x = float(v)
-    except (TypeError, ValueError):
-        return None
-    return x if math.isfinite(x) else None
-
-
-def _int(v):
-    x = _num(v)
-    return int(x) if x is not None and x == int(x) else None
 
 
 class _ApsMore:
@@ -45,75 +31,6 @@ class _ApsMore:
         """The watchdog and the interrupt watch go with the card (their vendor watches end)."""
         _core.aps_watchdog(self._card.kernel).power_on()
         _core.aps_interrupts(self._card.kernel).power_on()
-
-    # -- stops and velocity (L2566-2584) ---------------------------------------------------------------------
-    def _multi(self, Dimension, Axis_ID_Array, stop) -> int:
-        if self._card is None:
-            return ERR_DeviceNotInitial
-        d = _int(Dimension)
-        try:
-            ids = [self._axis(a) for a in list(Axis_ID_Array)[: d or 0]]
-        except TypeError:
-            return ERR_ParametersInvalid
-        if d is None or not 1 <= d <= len(self._card) or len(ids) != d or None in ids:
-            return ERR_ParametersInvalid
-        rtn = ERR_NoError
-        for i in ids:                    # one call: no card time passes between the axes (the same tick)
-            r = stop(i)
-            rtn = rtn if r == ERR_NoError else r
-        return rtn
-
-    def APS_stop_move_multi(self, Dimension, Axis_ID_Array) -> int:
-        return self._multi(Dimension, Axis_ID_Array, self.APS_stop_move)
-
-    def APS_emg_stop_multi(self, Dimension, Axis_ID_Array) -> int:
-        return self._multi(Dimension, Axis_ID_Array, self.APS_emg_stop)
-
-    def APS_vel_all(self, Axis_ID, Option, Vs, Vm, Ve, Acc, Dec, SFac, Wait=None) -> int:
-        i = self._axis(Axis_ID)
-        vals = [_num(x) for x in (Vs, Vm, Ve, Acc, Dec, SFac)]
-        if i is None or None in vals or Option not in (0, 1) or Wait not in (None, 0):
-            return self._bad()
-        vs, vm, ve, acc, dec, sf = vals
-        if not 0 < vm <= 1e9 or not 0 <= vs <= vm or not 0 <= ve <= 1e9 or not 0 < acc <= 1e12 \
-                or not 0 < dec <= 1e12 or not 0 <= sf <= 1:
-            return ERR_ParametersInvalid
-        self._release_limits(i)
-        return self._do(self._card.move_velocity, i, -vm if Option else vm,
-                        self._params(i, vs=vs, vm=vm, acc=acc, dec=dec, sf=sf))
-
-    # -- positions and counters (L2056-2099; unit factor 1: coordinates = motor pulses, AF14) -------------------
-    def APS_get_command_f(self, Axis_ID):
-        i = self._axis(Axis_ID)
-        return (self._bad(), 0.0) if i is None else (ERR_NoError, float(self._card.profile_pos(i)))
-
-    def APS_set_command(self, Axis_ID, Command) -> int:
-        i = self._axis(Axis_ID)
-        p = _num(Command)
-        if i is None or p is None or p != int(p) or abs(p) > 2147483647:
-            return self._bad()
-        c = self._card
-        self._release_modes(i)
-        return self._do(c.set_actual_pos, i, float(c.actual_pos(i)) + (p - float(c.profile_pos(i))))
-
-    def APS_get_encoder(self, Axis_ID):
-        i = self._axis(Axis_ID)
-        return (self._bad(), 0) if i is None else (ERR_NoError, _reg32(self._card.actual_pos(i)))
-
-    def APS_get_command_counter(self, Axis_ID):
-        i = self._axis(Axis_ID)
-        return (self._bad(), 0) if i is None else (ERR_NoError, _reg32(self._card.profile_pos(i)))
-
-    # -- compare timer (L3363-3378; TIMR_* of APS_set_trigger_param): vendor/adlink/aps_scope.hpp's (AF15) ------
-    def APS_get_timer_counter(self, Board_ID, TmrCh):
-        if not self._board(Board_ID):
-            return self._bad(), 0
-        return (ERR_NoError, self._scope().timer_counter()) if _num(TmrCh) == 0 else (ERR_ParametersInvalid, 0)
-
-    def APS_set_timer_counter(self, Board_ID, TmrCh, Cnt) -> int:
-        if not self._board(Board_ID):
-            return self._bad()
-        return self._scope().set_timer_counter(Cnt) if _num(TmrCh) == 0 else ERR_ParametersInvalid
 
     # -- watchdog (L4025-4084): vendor/adlink/aps_watchdog.hpp's (AW5) -------------------------------------------
     def _watchdog(self, call, *args):
@@ -184,8 +101,3 @@ class _ApsMore:
             raise ValueError(f"vao_output.ctrl = {ctrl!r} must be 0 or 1 (the VAO controllers)")
         _core.aps_point_tables(self._card.kernel).sync()
         return self._outs().vao_output(ctrl)
-
-
-def _reg32(v: float) -> int:
-    x = int(round(v))
-    return ((x + 2**31) % 2**32) - 2**31

@@ -17,6 +17,7 @@ module call of each.
 
 from __future__ import annotations
 
+import ast
 import inspect
 import math
 from dataclasses import dataclass, field
@@ -149,11 +150,11 @@ _CALLS = {
 
 
 def _param(text: str) -> inspect.Parameter:
-    """``"Name"``, ``"Name=0"`` or ``"Name: TYPE"`` as a parameter (the annotation kept as the text it was)."""
+    """``"Name"``, ``"Name=0.0"`` or ``"Name: TYPE"`` as a parameter (the annotation kept as the text it was)."""
     P = inspect.Parameter
     name, _, default = text.partition("=")
     name, _, ann = name.partition(": ")
-    return P(name, P.POSITIONAL_OR_KEYWORD, **({"default": int(default)} if default else {}),
+    return P(name, P.POSITIONAL_OR_KEYWORD, **({"default": ast.literal_eval(default)} if default else {}),
              **({"annotation": ann} if ann else {}))
 
 

@@ -278,4 +278,65 @@ const std::vector<ApsCommandDoc>& aps_commands() {
   return kCommands;
 }
 
+// The arc and spiral commands (L2899-3063; argument lists V113), moved from the dialect's _ARCS in session 14 (AY4):
+// each in three forms, the PRA speeds, _v (at vector speed Vm, pulse/s) and _all (every speed given). Positions in
+// pulse, angles in degrees; Option and TransPara as APS_line; Wait must be None/0.
+const std::vector<ApsCommandDoc>& aps_arc_commands() {
+  static const std::vector<ApsCommandDoc> kCommands = {
+      {"APS_arc2_ca", "Axis_ID_Array, Option, CenterArray, Angle, TransPara=0.0, Wait=None",
+       "``APS_arc2_ca(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 Angle, F64 *TransPara, ASYNCALL "
+       "*Wait)`` (L2978): a 2-D arc about the centre by Angle degrees (+ CCW, ``|Angle|`` > 360 = laps)."},
+      {"APS_arc2_ca_v", "Axis_ID_Array, Option, CenterArray, Angle, TransPara, Vm, Wait=None",
+       ":func:`APS_arc2_ca` at vector speed Vm (pulse/s)."},
+      {"APS_arc2_ca_all", "Axis_ID_Array, Option, CenterArray, Angle, TransPara, Vs, Vm, Ve, Acc, Dec, SFac, Wait=None",
+       ":func:`APS_arc2_ca` with every speed given (the PRA values unchanged)."},
+      {"APS_arc2_ce", "Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara=0.0, Wait=None",
+       "``APS_arc2_ce(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *EndArray, I16 Dir, F64 *TransPa"
+       "ra, ASYNCALL *Wait)`` (L2981): a 2-D arc to an exact end point, Angle = theta + Dir*360 (L2943-2958)"
+       "; exactly 180 deg or 360 deg is ERR_ParametersInvalid (L2930-2933)."},
+      {"APS_arc2_ce_v", "Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara, Vm, Wait=None",
+       ":func:`APS_arc2_ce` at vector speed Vm (pulse/s)."},
+      {"APS_arc2_ce_all", "Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara, Vs, Vm, Ve, Acc, Dec, SFac, "
+                          "Wait=None",
+       ":func:`APS_arc2_ce` with every speed given (the PRA values unchanged)."},
+      {"APS_arc3_ca", "Axis_ID_Array, Option, CenterArray, NormalArray, Angle, TransPara=0.0, Wait=None",
+       "``APS_arc3_ca(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *NormalArray, F64 Angle, F64 *Tr"
+       "ansPara, ASYNCALL *Wait)`` (L2899): a 3-D arc, right-hand rule about the normal (Gram-Schmidt, L2911"
+       ")."},
+      {"APS_arc3_ca_v", "Axis_ID_Array, Option, CenterArray, NormalArray, Angle, TransPara, Vm, Wait=None",
+       ":func:`APS_arc3_ca` at vector speed Vm (pulse/s)."},
+      {"APS_arc3_ca_all", "Axis_ID_Array, Option, CenterArray, NormalArray, Angle, TransPara, Vs, Vm, Ve, Acc, Dec, "
+                          "SFac, Wait=None",
+       ":func:`APS_arc3_ca` with every speed given (the PRA values unchanged)."},
+      {"APS_arc3_ce", "Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara=0.0, Wait=None",
+       "``APS_arc3_ce(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *EndArray, I16 Dir, F64 *TransPa"
+       "ra, ASYNCALL *Wait)`` (L2900): a 3-D arc to an exact end point (no half or full circle)."},
+      {"APS_arc3_ce_v", "Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara, Vm, Wait=None",
+       ":func:`APS_arc3_ce` at vector speed Vm (pulse/s)."},
+      {"APS_arc3_ce_all", "Axis_ID_Array, Option, CenterArray, EndArray, Dir, TransPara, Vs, Vm, Ve, Acc, Dec, SFac, "
+                          "Wait=None",
+       ":func:`APS_arc3_ce` with every speed given (the PRA values unchanged)."},
+      {"APS_sprial_ca", "Axis_ID_Array, Option, CenterArray, NormalArray, Angle, DeltaH, FinalR, TransPara=0.0, "
+                        "Wait=None",
+       "``APS_sprial_ca(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *NormalArray, F64 Angle, F64 D"
+       "eltaH, F64 FinalR, F64 *TransPara, ASYNCALL *Wait)`` (the manual's spelling, L3047): a conical spira"
+       "l, rise DeltaH along the normal, radius to FinalR (L3001-3035)."},
+      {"APS_sprial_ca_v", "Axis_ID_Array, Option, CenterArray, NormalArray, Angle, DeltaH, FinalR, TransPara, Vm, "
+                          "Wait=None",
+       ":func:`APS_sprial_ca` at vector speed Vm (pulse/s)."},
+      {"APS_sprial_ca_all", "Axis_ID_Array, Option, CenterArray, NormalArray, Angle, DeltaH, FinalR, TransPara, Vs, "
+                            "Vm, Ve, Acc, Dec, SFac, Wait=None",
+       ":func:`APS_sprial_ca` with every speed given (the PRA values unchanged)."},
+      {"APS_sprial_ce", "Axis_ID_Array, Option, CenterArray, NormalArray, EndArray, Dir, TransPara=0.0, Wait=None",
+       "``APS_sprial_ce(I32 *Axis_ID_Array, I32 Option, F64 *CenterArray, F64 *NormalArray, F64 *EndArray, I"
+       "16 Dir, F64 *TransPara, ASYNCALL *Wait)`` (L3050): a spiral to an exact end point (L3037-3063)."},
+      {"APS_sprial_ce_v", "Axis_ID_Array, Option, CenterArray, NormalArray, EndArray, Dir, TransPara, Vm, Wait=None",
+       ":func:`APS_sprial_ce` at vector speed Vm (pulse/s)."},
+      {"APS_sprial_ce_all", "Axis_ID_Array, Option, CenterArray, NormalArray, EndArray, Dir, TransPara, Vs, Vm, Ve, "
+                            "Acc, Dec, SFac, Wait=None",
+       ":func:`APS_sprial_ce` with every speed given (the PRA values unchanged)."},
+  };
+  return kCommands;
+}
+
 }  // namespace servobench::vendor::adlink

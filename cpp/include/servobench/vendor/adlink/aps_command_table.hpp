@@ -24,4 +24,9 @@ const std::vector<ApsCommandDoc>& pt_commands();
 // _core.APS_COMMANDS.
 const std::vector<ApsCommandDoc>& aps_commands();
 
+// The arcs and spirals (APS_arc2_ca ... APS_sprial_ce, each with its _v and _all form; L2899-3063): their own table,
+// as the _v / _all forms' one-line docs name their base function rather than the manual's C signature.
+// _core.APS_ARC_COMMANDS.
+const std::vector<ApsCommandDoc>& aps_arc_commands();
+
 }  // namespace servobench::vendor::adlink
