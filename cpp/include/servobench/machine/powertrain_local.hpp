@@ -70,7 +70,13 @@ class PowerTrain::Local {
       return p.body_index_[0].angle == kAngle && p.body_index_[0].speed == kSpeed && p.body_index_[0].input == 1 &&
              p.motor_angle_ == kAngle && p.load_angle_ == kAngle && p.motor_speed_ == kSpeed &&
              p.load_speed_ == kSpeed && p.drive_states_ == N - 2;
-    return true;
+    // Two bodies: the two-mass layout (drive states, then motor angle and speed, load angle and speed; torque input
+    // columns 1 and 2), so the two-body solve indexes the state with constants (decision TK2).
+    const auto same = [](const plant::BodyIndex& a, const plant::BodyIndex& b) {
+      return a.angle == b.angle && a.speed == b.speed && a.input == b.input;
+    };
+    return same(p.body_index_[0], kTwoMass[0]) && same(p.body_index_[1], kTwoMass[1]) && p.motor_angle_ == N - 4 &&
+           p.motor_speed_ == N - 3 && p.load_angle_ == N - 2 && p.load_speed_ == N - 1 && p.drive_states_ == N - 4;
   }
 
   // Writes the state back (the tables are the PowerTrain's own and unchanged).
@@ -126,7 +132,7 @@ class PowerTrain::Local {
     if constexpr (NB == 1) {
       one_body_substep(t_motor, t_load);
     } else {
-      plant::advance_with_dry_friction(static_cast<std::size_t>(NB), idx_, dry_, f_.phi, f_.gamma, i_cmd_, t_motor,
+      plant::advance_with_dry_friction(static_cast<std::size_t>(NB), kTwoMass, dry_, f_.phi, f_.gamma, i_cmd_, t_motor,
                                        t_load, x_, x_free_, stuck_);
     }
   }
@@ -224,16 +230,18 @@ class PowerTrain::Local {
   }
 
   // One body: the angle and speed are the last two states (after the drive's), known at compile time.
-  double motor_angle_rad() const { return NB == 1 ? x_[kAngle] : x_[motor_angle_]; }
-  double motor_speed_rad_s() const { return NB == 1 ? x_[kSpeed] : x_[motor_speed_]; }
-  double load_angle_rad() const { return NB == 1 ? x_[kAngle] : x_[load_angle_]; }
-  double load_speed_rad_s() const { return NB == 1 ? x_[kSpeed] : x_[load_speed_]; }
-  double current_a() const { return (NB == 1 ? N == 3 : drive_states_ > 0) ? x_[0] : i_cmd_; }
+  // Two bodies: the two-mass layout applies() checked.
+  double motor_angle_rad() const { return NB == 1 ? x_[kAngle] : x_[N - 4]; }
+  double motor_speed_rad_s() const { return NB == 1 ? x_[kSpeed] : x_[N - 3]; }
+  double load_angle_rad() const { return NB == 1 ? x_[kAngle] : x_[N - 2]; }
+  double load_speed_rad_s() const { return NB == 1 ? x_[kSpeed] : x_[N - 1]; }
+  double current_a() const { return (NB == 1 ? N == 3 : N == 5) ? x_[0] : i_cmd_; }
   double torque_nm() const { return kt_ * current_a(); }
   bool alarm() const { return alarm_; }
 
  private:
   static constexpr int kAngle = N - 2, kSpeed = N - 1;
+  static constexpr plant::BodyIndex kTwoMass[2] = {{N - 4, N - 3, 1}, {N - 2, N - 1, 2}};
   const Fixed<N>& f_;
   const plant::Disturbances dist_;
   const double amps_per_volt_, i_max_, kt_, h_, alarm_at_s_;
