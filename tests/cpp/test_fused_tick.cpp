@@ -162,6 +162,47 @@ std::vector<Case> cases() {
       }
     }
   }
+  // The plain kernel (decision TK1): rigid, pass-through filters, a profile with its velocity and acceleration, no
+  // injection, one sub-step, no cogging or unbalance, no encoder noise -- with friction that keeps its sliding levels
+  // fixed (Coulomb, asymmetric Coulomb) and friction that does not (a Stribeck peak, viscous asymmetry), a load.
+  pl::RigidPlantParams coulomb, stribeck;
+  coulomb.coulomb_nm = 0.01;
+  coulomb.coulomb_asym_nm = 0.002;
+  coulomb.load_nm = 0.003;
+  stribeck.coulomb_nm = 0.01;
+  stribeck.static_nm = 0.015;
+  stribeck.stribeck_speed_rad_s = 0.5;
+  stribeck.viscous_asym_nms = 2e-5;
+  for (const mc::LawParams& law : {mc::LawParams{gt}, mc::LawParams{aps}}) {
+    for (const pl::RigidPlantParams& plant : {pl::RigidPlantParams{}, coulomb, stribeck}) {
+      for (const dr::TorqueDriveParams& d : {lag, ideal}) {
+        Case c;
+        c.name = "plain case " + std::to_string(i++);
+        c.cfg.law = law;
+        c.cfg.plant = plant;
+        c.cfg.drive = d;
+        c.cfg.servo_period_s = 250e-6;
+        c.profile = true;
+        c.guard.error_limit_pulse = i % 2 ? 20000.0 : 0.0;
+        cs.push_back(c);
+      }
+    }
+  }
+  Case plain_trip = cs[cs.size() - 1];
+  plain_trip.name = "plain, error-limit trip";
+  plain_trip.guard.error_limit_pulse = 40.0;
+  cs.push_back(plain_trip);
+  Case plain_alarm = cs[cs.size() - 3];
+  plain_alarm.name = "plain, drive alarm";
+  dr::TorqueDriveParams alarming = lag;
+  alarming.alarm_at_s = 0.2;
+  plain_alarm.cfg.drive = alarming;
+  plain_alarm.guard.stop_on_alarm = true;
+  cs.push_back(plain_alarm);
+  plain_alarm.name = "plain, drive alarm, run on";
+  plain_alarm.guard.stop_on_alarm = false;
+  cs.push_back(plain_alarm);
+
   Case trip = cs[0];  // the error limit trips inside the second piece
   trip.name = "error-limit trip";
   trip.guard.error_limit_pulse = 40.0;
@@ -231,6 +272,62 @@ TEST(FusedTick, FeedbackOnlyRunsGiveTheSameDoubles) {
             << c.name << " " << mc::tick_kernel_name(k) << (rec == Rec::kFeedback ? " fb_pos" : " nothing");
       }
     }
+  }
+}
+
+// Decision TK1: a pass-through run keeps no filter history in the loop but replays the law's last two outputs into
+// the filters at the end, so filters set afterwards see the same past: a fused pass-through run followed by a real
+// low-pass and a notch gives the general loop's doubles, for runs of 4, 5 and 3000 ticks.
+TEST(FusedTick, FiltersSetAfterAPassThroughRunSeeTheSamePast) {
+  ctl::AdlinkBiquadParams fir, pole;
+  fir.b0 = 2;
+  fir.b1 = 1;
+  fir.b2 = 1;
+  fir.div = 4;
+  pole.b0 = 1;
+  pole.a1 = 1;
+  pole.div = 2;
+  for (std::size_t first : {std::size_t{4}, std::size_t{5}, std::size_t{3000}}) {
+    std::vector<double> out[2];
+    for (bool fused : {false, true}) {
+      mc::AxisConfig cfg;
+      cfg.servo_period_s = 250e-6;
+      ctl::GtServoLawParams gt;
+      gt.kp = 30;
+      gt.kd = 600;
+      gt.kvff = 50;
+      cfg.law = gt;
+      mc::Axis axis(cfg);
+      axis.set_fused_tick(fused);
+      const std::size_t n = first + 500;
+      std::vector<double> pos(n), vel(n), acc(n), fb(n);
+      for (std::size_t k = 0; k < n; ++k) {
+        const double t = static_cast<double>(k);
+        pos[k] = 0.01 * t * t + 2.0 * std::sin(t / 9.0);
+        vel[k] = 0.02 * t;
+        acc[k] = 0.02;
+      }
+      mc::CommandInput in;
+      in.pos = pos.data();
+      in.vel = vel.data();
+      in.acc = acc.data();
+      in.n = first;
+      mc::Trace tr;
+      tr.fb_pos = fb.data();
+      axis.run(in, tr, {});
+      axis.set_filters({fir, pole});
+      mc::CommandInput rest = in;
+      rest.pos += first;
+      rest.vel += first;
+      rest.acc += first;
+      rest.n = n - first;
+      mc::Trace tr2;
+      tr2.fb_pos = fb.data() + first;
+      axis.run(rest, tr2, {});
+      out[fused] = fb;
+      out[fused].push_back(axis.angle_rad());
+    }
+    EXPECT_EQ(0, std::memcmp(out[0].data(), out[1].data(), out[0].size() * sizeof(double))) << first << " ticks";
   }
 }
 

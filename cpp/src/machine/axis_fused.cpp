@@ -30,6 +30,12 @@ bool records_more_than_feedback(const Trace& tr) {
 }
 }  // namespace
 
+bool Axis::plain_run(const CommandInput& command, const Trace& trace) const {
+  const plant::EncoderParams& e = encoder_.params();
+  return trace.fb_pos && !records_more_than_feedback(trace) && command.vel && command.acc && !command.volts_add &&
+         e.quantize && !(e.noise_counts > 0.0) && dac_.params().quantize;
+}
+
 bool Axis::run_fused(const CommandInput& command, const Trace& trace, const RunGuard& guard, RunOutcome& outcome) {
   // Runs of a few ticks (the card's and the motion loop's one tick per call) take the general loop: the same
   // doubles, without the copies in and out that a long run pays once.
@@ -41,12 +47,29 @@ bool Axis::run_fused(const CommandInput& command, const Trace& trace, const RunG
   std::visit(
       [&](auto& law) {
         using L = std::decay_t<decltype(law)>;
+        // Both filter slots pass-through (the cards' default) is a kernel of its own: no filter history to carry
+        // through the loop, only the law's last two outputs, replayed into the filters at the end.
+        const bool pass = biquads_[0].bypass() && biquads_[1].bypass();
         const auto run = [&](auto n, auto nb) {
           constexpr int kN = decltype(n)::value, kNB = decltype(nb)::value;
+          if constexpr (kNB == 1) {
+            // The plain kernel: a pass-through rigid axis recording its feedback only, driven by a profile with
+            // its own velocity and acceleration, with a quantising encoder without noise, a quantising DAC, one
+            // power-train sub-step per tick and no cogging or unbalance -- each of those a constant of the loop.
+            if (pass && plain_run(command, trace) && PowerTrain::Local<kN, 1>::plain(power_)) {
 #if SERVOBENCH_SSE41_KERNEL
-          if (kernel == TickKernel::kSse41) return fused_sse41<L, kN, kNB>(law, command, trace, guard);
+              if (kernel == TickKernel::kSse41) return fused_sse41<L, kN, 1, true, true>(law, command, trace, guard);
 #endif
-          return fused_portable<L, kN, kNB>(law, command, trace, guard);
+              return fused_portable<L, kN, 1, true, true>(law, command, trace, guard);
+            }
+          }
+#if SERVOBENCH_SSE41_KERNEL
+          if (kernel == TickKernel::kSse41)
+            return pass ? fused_sse41<L, kN, kNB, true, false>(law, command, trace, guard)
+                        : fused_sse41<L, kN, kNB, false, false>(law, command, trace, guard);
+#endif
+          return pass ? fused_portable<L, kN, kNB, true, false>(law, command, trace, guard)
+                      : fused_portable<L, kN, kNB, false, false>(law, command, trace, guard);
         };
         using std::integral_constant;
         if (PowerTrain::Local<2, 1>::applies(power_))
@@ -67,20 +90,20 @@ bool Axis::run_fused(const CommandInput& command, const Trace& trace, const RunG
 
 // Each kernel is flattened: every call inside it that can be inlined is (the power train's friction solve included),
 // so a kernel is one function with its state in registers and, for SSE4.1, SSE4.1 code throughout.
-template <class Law, int N, int NB>
+template <class Law, int N, int NB, bool kPass, bool kPlain>
 __attribute__((flatten)) RunOutcome Axis::fused_portable(Law& law, const CommandInput& command, const Trace& trace,
                                                          const RunGuard& guard) {
-  return fused_loop<Law, N, NB, PortableRounding>(law, command, trace, guard);
+  return fused_loop<Law, N, NB, kPass, kPlain, PortableRounding>(law, command, trace, guard);
 }
 
 #if SERVOBENCH_SSE41_KERNEL
 // The same loop compiled for SSE4.1: everything in it is inlined (fused_loop is always_inline, the law, filters, DAC,
 // encoder and power train are header inline functions), so the whole tick is SSE4.1 code and rounds with `roundsd`;
 // no other instruction set (no AVX, no FMA) enters, so the arithmetic is the portable kernel's.
-template <class Law, int N, int NB>
+template <class Law, int N, int NB, bool kPass, bool kPlain>
 __attribute__((target("sse4.1"), flatten)) RunOutcome Axis::fused_sse41(Law& law, const CommandInput& command,
                                                                         const Trace& trace, const RunGuard& guard) {
-  return fused_loop<Law, N, NB, Sse41Rounding>(law, command, trace, guard);
+  return fused_loop<Law, N, NB, kPass, kPlain, Sse41Rounding>(law, command, trace, guard);
 }
 #endif
 
@@ -116,7 +139,7 @@ void Axis::set_tick_kernel(TickKernel k) {
   kernel_ = k;
 }
 
-template <class Law, int N, int NB, class Round>
+template <class Law, int N, int NB, bool kPass, bool kPlain, class Round>
 __attribute__((always_inline)) inline RunOutcome Axis::fused_loop(Law& law_state, const CommandInput& command,
                                                                   const Trace& tr, const RunGuard& guard) {
   RunOutcome outcome;
@@ -125,7 +148,7 @@ __attribute__((always_inline)) inline RunOutcome Axis::fused_loop(Law& law_state
   const double ts = *config_.servo_period_s;
   const plant::SwitchParams& sw = config_.switches;
   const bool on_load = config_.encoder.on_load;
-  const bool more = records_more_than_feedback(tr);
+  const bool more = !kPlain && records_more_than_feedback(tr);
   const double* const pos = command.pos;
   const double* const vel_in = command.vel;
   const double* const acc_in = command.acc;
@@ -134,29 +157,42 @@ __attribute__((always_inline)) inline RunOutcome Axis::fused_loop(Law& law_state
 
   Law law = law_state;
   control::Biquad bq0 = biquads_[0], bq1 = biquads_[1];
+  // kPass: the law's outputs of the last two stepped ticks (indexed by tick parity), kept in memory rather than in
+  // registers; the filters' histories are those outputs (a pass-through keeps x1 = y1 = its last input).
+  double law_out[2] = {0.0, 0.0};
   const drive::Dac dac = dac_;
+  const double dac_fs = dac.params().full_scale_v, dac_cpv = dac.codes_per_volt(), dac_vpc = dac.volts_per_code();
   plant::Encoder& encoder = encoder_;
+  const double enc_cpr = encoder.counts_per_rad();
   PowerTrain::Local<N, NB> pt(power_);
   double pending = pending_volts_, prev_cmd = prev_cmd_, prev_vel = prev_vel_, prev_enc = prev_encoder_angle_;
   bool primed = primed_;
   long long tick = tick_;
 
+  const std::size_t n = command.n;
   std::size_t k = 0;
   bool trip = false;
-  for (; k < command.n; ++k) {
+  for (; k < n; ++k) {
     const double r = pos[k];
-    if (!primed) {
+    double v, a;
+    if constexpr (kPlain) {  // the profile's own velocity and acceleration; prev_cmd/prev_vel are set at the end
+      v = vel_in[k];
+      a = acc_in[k];
+    } else {
+      if (!primed) {
+        prev_cmd = r;
+        prev_vel = 0.0;
+        primed = true;
+      }
+      v = vel_in ? vel_in[k] : r - prev_cmd;
+      a = acc_in ? acc_in[k] : v - prev_vel;
       prev_cmd = r;
-      prev_vel = 0.0;
-      primed = true;
+      prev_vel = v;
     }
-    const double v = vel_in ? vel_in[k] : r - prev_cmd;
-    const double a = acc_in ? acc_in[k] : v - prev_vel;
-    prev_cmd = r;
-    prev_vel = v;
 
     const double enc_angle = on_load ? pt.load_angle_rad() : pt.motor_angle_rad();
-    const double y = encoder.read<Round>(enc_angle);
+    // Plain: Encoder::read of a quantising encoder without noise, written out on the loop's constant.
+    const double y = kPlain ? Round::floor(enc_angle * enc_cpr + 0.5) : encoder.read<Round>(enc_angle);
     if (guarded) {
       if (limit > 0.0 && !(std::fabs(r - y) <= limit)) {  // NaN trips
         trip = true;
@@ -172,18 +208,28 @@ __attribute__((always_inline)) inline RunOutcome Axis::fused_loop(Law& law_state
     double f0 = 0.0, f1 = 0.0, volts = 0.0;
     if (!trip) {
       t = law.step(r, y, v, a);
-      f0 = bq0.step(t.total);
-      f1 = bq1.step(f0);
+      if constexpr (kPass) {
+        f0 = f1 = t.total;
+        law_out[k & 1] = t.total;
+      } else {
+        f0 = bq0.step(t.total);
+        f1 = bq1.step(f0);
+      }
       const double request = law.counts_to_volts(f1);
-      volts = dac.convert<Round>(volts_add ? request + volts_add[k] : request);
+      if constexpr (kPlain) {  // Dac::convert of a quantising DAC, on the loop's constants
+        const double c = request > dac_fs ? dac_fs : (request < -dac_fs ? -dac_fs : request);
+        volts = Round::nearbyint(c * dac_cpv) * dac_vpc;
+      } else {
+        volts = dac.convert<Round>(volts_add ? request + volts_add[k] : request);
+      }
     } else {
       // The servo turns off at the tripping tick: no law, no filters, 0 V (plus any injection).
       t.vel = v;
       t.acc = a;
-      if (volts_add) volts = dac.convert<Round>(volts_add[k]);
+      if (!kPlain && volts_add) volts = dac.convert<Round>(volts_add[k]);
     }
 
-    if (fb_out) fb_out[k] = y;
+    if (kPlain || fb_out) fb_out[k] = y;
     if (more) {
       if (tr.time_s) tr.time_s[k] = static_cast<double>(tick) * ts;
       if (tr.cmd_pos) tr.cmd_pos[k] = r;
@@ -215,13 +261,31 @@ __attribute__((always_inline)) inline RunOutcome Axis::fused_loop(Law& law_state
     }
     prev_enc = enc_angle;
 
-    pt.advance_tick();
+    if constexpr (kPlain)
+      pt.advance_plain();
+    else
+      pt.advance_tick();
     pending = volts;
     ++tick;
     if (trip) break;
   }
 
+  if constexpr (kPlain) {  // what the general loop leaves: the last tick's command and velocity
+    const std::size_t last = trip ? k : n - 1;
+    prev_cmd = pos[last];
+    prev_vel = vel_in[last];
+    primed = true;
+  }
   law_state = law;
+  if constexpr (kPass) {
+    // Every tick before a trip stepped the filters: replay the last two outputs (a pass-through's state after
+    // step(a), step(b) is x1 = y1 = b, x2 = y2 = a, whatever it held before).
+    const std::size_t stepped = trip ? k : n;
+    for (std::size_t j = stepped >= 2 ? stepped - 2 : 0; j < stepped; ++j) {
+      bq0.step(law_out[j & 1]);
+      bq1.step(law_out[j & 1]);
+    }
+  }
   biquads_[0] = bq0;
   biquads_[1] = bq1;
   pt.store(power_);
@@ -235,7 +299,7 @@ __attribute__((always_inline)) inline RunOutcome Axis::fused_loop(Law& law_state
     servo_on_ = false;
     outcome.ticks = k + 1;
   } else {
-    outcome.ticks = command.n;
+    outcome.ticks = n;
   }
   return outcome;
 }

@@ -75,6 +75,8 @@ class Biquad {
   // New coefficients; the history is kept (the card changes parameters between ticks).
   void set_params(const BiquadParams& params);
   void reset() { x1_ = x2_ = y1_ = y2_ = 0.0; }
+  // True for the pass-through coefficients (B0 = DIV = 1, all else 0): step(x) returns x.
+  bool bypass() const { return bypass_; }
 
   double step(double x) {
     // Pass-through (B0 = DIV = 1, all else 0: the card's default): y = x, which is exactly what the full expression

@@ -33,6 +33,7 @@ class Dac {
     return v;
   }
   double volts_per_code() const { return volts_per_code_; }
+  double codes_per_volt() const { return codes_per_volt_; }
   double max_code() const { return max_code_; }
 
  private:

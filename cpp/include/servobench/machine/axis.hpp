@@ -158,14 +158,17 @@ class Axis {
   // local copies of compile-time size and one loop specialised per (law, state count, body count). Returns false,
   // having done nothing, where it does not apply.
   bool run_fused(const CommandInput& command, const Trace& trace, const RunGuard& guard, RunOutcome& outcome);
-  template <class Law, int N, int NB, class Round>
+  // Whether a run may take the plain kernel as far as the command, the recording, the encoder and the DAC go
+  // (axis_fused.cpp; the power train's own conditions are PowerTrain::Local::plain).
+  bool plain_run(const CommandInput& command, const Trace& trace) const;
+  template <class Law, int N, int NB, bool kPass, bool kPlain, class Round>
   RunOutcome fused_loop(Law& law, const CommandInput& command, const Trace& trace, const RunGuard& guard);
   // The kernels: fused_loop inlined into a function compiled for the baseline ISA, and into one compiled for SSE4.1
   // (`roundsd`), with the matching rounding policy (common/rounding.hpp).
-  template <class Law, int N, int NB>
+  template <class Law, int N, int NB, bool kPass, bool kPlain>
   RunOutcome fused_portable(Law& law, const CommandInput& command, const Trace& trace, const RunGuard& guard);
 #if SERVOBENCH_SSE41_KERNEL
-  template <class Law, int N, int NB>
+  template <class Law, int N, int NB, bool kPass, bool kPlain>
   __attribute__((target("sse4.1"))) RunOutcome fused_sse41(Law& law, const CommandInput& command,
                                                            const Trace& trace, const RunGuard& guard);
 #endif

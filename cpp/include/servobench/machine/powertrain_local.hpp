@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 
 #include "servobench/machine/powertrain.hpp"
 
@@ -38,12 +39,26 @@ class PowerTrain::Local {
         volts_(p.volts_),
         i_cmd_(p.i_cmd_),
         alarm_(p.alarm_),
-        alarm_before_(p.alarm_) {
+        alarm_before_(p.alarm_),
+        alarm_sub_(first_alarm_substep(p.substep_count_, p.h_, p.alarm_at_s_)),
+        cogging_(dist_.cogging_nm != 0.0),
+        unbalance_(dist_.unbalance_nm != 0.0) {
     for (int i = 0; i < N; ++i) x_[i] = p.x_[i];
     for (int b = 0; b < NB; ++b) {
       idx_[b] = p.body_index_[b];
       dry_[b] = p.dry_[b];
       stuck_[b] = p.stuck_[b];
+    }
+    // One body's friction levels, fixed for the run: the breakaway levels always; the sliding levels when they do
+    // not depend on the speed (no Stribeck peak, no viscous asymmetry) -- then directional_sliding_nm(fr, w, dir)
+    // is Fc + dir * a for every finite w (a + 0 * |w| = a), the same doubles as calling it every sub-step.
+    const plant::DryFriction<double>& fr = dry_[0];
+    fs_pos_ = plant::directional_breakaway_nm(fr, 1.0);
+    fs_neg_ = plant::directional_breakaway_nm(fr, -1.0);
+    slip_fixed_ = fr.breakaway_nm == fr.coulomb_nm && fr.viscous_asym_nms == 0.0;
+    if (slip_fixed_) {
+      slip_pos_ = plant::directional_sliding_nm(fr, 1.0, 1.0);
+      slip_neg_ = plant::directional_sliding_nm(fr, -1.0, -1.0);
     }
   }
 
@@ -55,7 +70,13 @@ class PowerTrain::Local {
       return p.body_index_[0].angle == kAngle && p.body_index_[0].speed == kSpeed && p.body_index_[0].input == 1 &&
              p.motor_angle_ == kAngle && p.load_angle_ == kAngle && p.motor_speed_ == kSpeed &&
              p.load_speed_ == kSpeed && p.drive_states_ == N - 2;
-    return true;
+    // Two bodies: the two-mass layout (drive states, then motor angle and speed, load angle and speed; torque input
+    // columns 1 and 2), so the two-body solve indexes the state with constants (decision TK2).
+    const auto same = [](const plant::BodyIndex& a, const plant::BodyIndex& b) {
+      return a.angle == b.angle && a.speed == b.speed && a.input == b.input;
+    };
+    return same(p.body_index_[0], kTwoMass[0]) && same(p.body_index_[1], kTwoMass[1]) && p.motor_angle_ == N - 4 &&
+           p.motor_speed_ == N - 3 && p.load_angle_ == N - 2 && p.load_speed_ == N - 1 && p.drive_states_ == N - 4;
   }
 
   // Writes the state back (the tables are the PowerTrain's own and unchanged).
@@ -71,35 +92,70 @@ class PowerTrain::Local {
   }
 
   // PowerTrain::set_input for a torque drive.
-  void set_input(double volts) {
+  __attribute__((always_inline)) void set_input(double volts) {
     volts_ = volts;
     const double i = amps_per_volt_ * volts;
     i_cmd_ = alarm_ ? 0.0 : (i > i_max_ ? i_max_ : (i < -i_max_ ? -i_max_ : i));
   }
 
-  // PowerTrain::advance_tick for a torque drive: every sub-step with the held input.
-  void advance_tick() {
-    for (int s = 0; s < n_sub_; ++s) {
-      if (!alarm_ && static_cast<double>(substep_count_) * h_ >= alarm_at_s_) alarm_ = true;
-      if (alarm_) i_cmd_ = 0.0;
-      ++substep_count_;
-      double t_motor = 0.0;
-      if (dist_.cogging_nm != 0.0) t_motor = dist_.cogging_nm * std::sin(dist_.cogging_periods * motor_angle_rad());
-      double t_load = -dist_.load_nm;
-      if (dist_.unbalance_nm != 0.0) t_load -= dist_.unbalance_nm * std::sin(load_angle_rad());
-      if constexpr (NB == 1) {
-        one_body_substep(t_motor, t_load);
-      } else {
-        plant::advance_with_dry_friction(static_cast<std::size_t>(NB), idx_, dry_, f_.phi, f_.gamma, i_cmd_,
-                                         t_motor, t_load, x_, x_free_, stuck_);
-      }
+  // PowerTrain::advance_tick for a torque drive: every sub-step with the held input (one sub-step per tick, the
+  // torque drive's default, without a loop around it).
+  __attribute__((always_inline)) void advance_tick() {
+    if (n_sub_ == 1) {
+      substep();
+    } else {
+      for (int s = 0; s < n_sub_; ++s) substep();
     }
+  }
+
+  // Whether advance_plain() applies to `p`: one sub-step per tick and no cogging or unbalance torque.
+  static bool plain(const PowerTrain& p) {
+    return p.n_sub_ == 1 && p.mech_.disturbances.cogging_nm == 0.0 && p.mech_.disturbances.unbalance_nm == 0.0;
+  }
+
+  // advance_tick() where plain() holds: the one sub-step with t_motor = 0 known at compile time.
+  __attribute__((always_inline)) void advance_plain() {
+    if (!alarm_ && substep_count_ >= alarm_sub_) alarm_ = true;
+    if (alarm_) i_cmd_ = 0.0;
+    ++substep_count_;
+    one_body_substep(0.0, -dist_.load_nm);
+  }
+
+  __attribute__((always_inline)) void substep() {
+    if (!alarm_ && substep_count_ >= alarm_sub_) alarm_ = true;  // = count * h >= alarm_at_s
+    if (alarm_) i_cmd_ = 0.0;
+    ++substep_count_;
+    double t_motor = 0.0;
+    if (cogging_) t_motor = dist_.cogging_nm * std::sin(dist_.cogging_periods * motor_angle_rad());
+    double t_load = -dist_.load_nm;
+    if (unbalance_) t_load -= dist_.unbalance_nm * std::sin(load_angle_rad());
+    if constexpr (NB == 1) {
+      one_body_substep(t_motor, t_load);
+    } else {
+      plant::advance_with_dry_friction(static_cast<std::size_t>(NB), kTwoMass, dry_, f_.phi, f_.gamma, i_cmd_, t_motor,
+                                       t_load, x_, x_free_, stuck_);
+    }
+  }
+
+  // The first sub-step count c >= from at which PowerTrain::substep's test `double(c) * h >= at_s` holds (the
+  // drive alarm's time), or LLONG_MAX if none can be reached: the test is monotonic in c (h > 0, rounding to nearest
+  // is monotonic), so the loop compares two integers instead of converting and multiplying every sub-step.
+  static long long first_alarm_substep(long long from, double h, double at_s) {
+    constexpr long long kNever = std::numeric_limits<long long>::max();
+    const auto holds = [&](long long c) { return static_cast<double>(c) * h >= at_s; };
+    if (holds(from)) return from;
+    if (!(at_s / h < 0x1p62)) return kNever;  // +inf, NaN (never holds) or beyond any reachable count
+    long long c = static_cast<long long>(std::ceil(at_s / h));
+    if (c <= from) c = from + 1;
+    while (c > from + 1 && holds(c - 1)) --c;
+    while (!holds(c)) ++c;
+    return c;
   }
 
   // plant::advance_with_dry_friction for one body (a rigid plant), written out on scalars: the same operations in
   // the same order (zoh_product's rows summed left to right from 0.0, add_input's zero skips, solve_dry_friction's
   // single sweep, the locked re-solve), so the same doubles, with the state in registers.
-  void one_body_substep(double t_motor, double t_load) {
+  __attribute__((always_inline)) void one_body_substep(double t_motor, double t_load) {
     const Eigen::Matrix<double, N, N>& phi0 = f_.phi[0];
     const Eigen::Matrix<double, N, 3>& gam0 = f_.gamma[0];
     double xf[N];
@@ -120,13 +176,14 @@ class PowerTrain::Local {
       const double g = gam0(sv, in);
       const double gth = gam0(sa, in);
       const double dir = v0 > 0.0 ? 1.0 : -1.0;
-      const double f_slip = -dir * plant::directional_sliding_nm(fr, v0, dir);
+      const double level =
+          slip_fixed_ ? (v0 > 0.0 ? slip_pos_ : slip_neg_) : plant::directional_sliding_nm(fr, v0, dir);
+      const double f_slip = -dir * level;
       if (v0 != 0.0 && (v_free + g * f_slip) * dir > 0.0) {
         fb = f_slip;
       } else {
         const double f_stick = -v_free / g;
-        const double fs_pos = plant::directional_breakaway_nm(fr, 1.0);
-        const double fs_neg = plant::directional_breakaway_nm(fr, -1.0);
+        const double fs_pos = fs_pos_, fs_neg = fs_neg_;
         if (f_stick <= fs_neg && f_stick >= -fs_pos) {
           fb = f_stick;
           st = true;
@@ -156,8 +213,9 @@ class PowerTrain::Local {
   }
 
   // zoh_product and add_input: xf = phi x + gamma [i_cmd, t_motor, t_load], each input skipped when exactly 0.
-  void free_motion(const Eigen::Matrix<double, N, N>& phi, const Eigen::Matrix<double, N, 3>& gam, double t_motor,
-                   double t_load, double* xf) const {
+  __attribute__((always_inline)) void free_motion(const Eigen::Matrix<double, N, N>& phi,
+                                                  const Eigen::Matrix<double, N, 3>& gam, double t_motor, double t_load,
+                                                  double* xf) const {
     for (int i = 0; i < N; ++i) {
       double s = 0.0;
       for (int k = 0; k < N; ++k) s += phi(i, k) * x_[k];
@@ -172,16 +230,18 @@ class PowerTrain::Local {
   }
 
   // One body: the angle and speed are the last two states (after the drive's), known at compile time.
-  double motor_angle_rad() const { return NB == 1 ? x_[kAngle] : x_[motor_angle_]; }
-  double motor_speed_rad_s() const { return NB == 1 ? x_[kSpeed] : x_[motor_speed_]; }
-  double load_angle_rad() const { return NB == 1 ? x_[kAngle] : x_[load_angle_]; }
-  double load_speed_rad_s() const { return NB == 1 ? x_[kSpeed] : x_[load_speed_]; }
-  double current_a() const { return (NB == 1 ? N == 3 : drive_states_ > 0) ? x_[0] : i_cmd_; }
+  // Two bodies: the two-mass layout applies() checked.
+  double motor_angle_rad() const { return NB == 1 ? x_[kAngle] : x_[N - 4]; }
+  double motor_speed_rad_s() const { return NB == 1 ? x_[kSpeed] : x_[N - 3]; }
+  double load_angle_rad() const { return NB == 1 ? x_[kAngle] : x_[N - 2]; }
+  double load_speed_rad_s() const { return NB == 1 ? x_[kSpeed] : x_[N - 1]; }
+  double current_a() const { return (NB == 1 ? N == 3 : N == 5) ? x_[0] : i_cmd_; }
   double torque_nm() const { return kt_ * current_a(); }
   bool alarm() const { return alarm_; }
 
  private:
   static constexpr int kAngle = N - 2, kSpeed = N - 1;
+  static constexpr plant::BodyIndex kTwoMass[2] = {{N - 4, N - 3, 1}, {N - 2, N - 1, 2}};
   const Fixed<N>& f_;
   const plant::Disturbances dist_;
   const double amps_per_volt_, i_max_, kt_, h_, alarm_at_s_;
@@ -193,6 +253,10 @@ class PowerTrain::Local {
   long long substep_count_;
   double volts_, i_cmd_;
   bool alarm_, alarm_before_;
+  long long alarm_sub_;
+  const bool cogging_, unbalance_;  // the disturbances' torques are not 0 (tested once, not every sub-step)
+  double fs_pos_ = 0.0, fs_neg_ = 0.0, slip_pos_ = 0.0, slip_neg_ = 0.0;  // body 0's levels (constructor)
+  bool slip_fixed_ = false;
 };
 
 }  // namespace servobench::machine

@@ -21,6 +21,12 @@
 
 #include <Eigen/Core>
 
+// The fused tick's kernels (machine/axis_fused.cpp) are compiled with a target attribute (SSE4.1), and GCC does not
+// inline a plain inline function into them across the different target options, even under `flatten`: measured, the
+// two-body solve and the sliding level stayed calls, ~600 of the full chain's instructions per tick. These helpers
+// are the tick's hot path, so they are always inlined (decision TK2).
+#define SERVOBENCH_TICK_INLINE __attribute__((always_inline)) inline
+
 namespace servobench::plant {
 
 // Where a body lives in the state vector, and its column in the discretisation's input matrix.
@@ -50,18 +56,18 @@ struct DryFriction {
 // The sliding level in the direction dir (+1 / -1) at speed w (N*m): the symmetric level plus, for an asymmetric
 // body, dir * (a + bv |w|) -- friction -dir * level then gives Fc+/- and the viscous difference.
 template <class T>
-T directional_sliding_nm(const DryFriction<T>& f, const T& speed_rad_s, double dir);
+SERVOBENCH_TICK_INLINE T directional_sliding_nm(const DryFriction<T>& f, const T& speed_rad_s, double dir);
 
 // The breakaway level resisting motion in the direction dir (+1 / -1), N*m: Fs + dir * a.
 template <class T>
-T directional_breakaway_nm(const DryFriction<T>& f, double dir) {
+SERVOBENCH_TICK_INLINE T directional_breakaway_nm(const DryFriction<T>& f, double dir) {
   if (f.coulomb_asym_nm == 0.0) return f.breakaway_nm;
   return f.breakaway_nm + dir * f.coulomb_asym_nm;
 }
 
 // Sliding friction level at speed w (N*m, >= 0): Fc + (Fs - Fc) exp(-(|w|/ws)^delta).
 template <class T>
-T sliding_friction_nm(const DryFriction<T>& f, const T& speed_rad_s) {
+SERVOBENCH_TICK_INLINE T sliding_friction_nm(const DryFriction<T>& f, const T& speed_rad_s) {
   using std::abs;
   using std::exp;
   using std::pow;
@@ -79,7 +85,7 @@ T sliding_friction_nm(const DryFriction<T>& f, const T& speed_rad_s) {
 }
 
 template <class T>
-T directional_sliding_nm(const DryFriction<T>& f, const T& speed_rad_s, double dir) {
+SERVOBENCH_TICK_INLINE T directional_sliding_nm(const DryFriction<T>& f, const T& speed_rad_s, double dir) {
   using std::abs;
   if (!f.asymmetric()) return sliding_friction_nm(f, speed_rad_s);
   return sliding_friction_nm(f, speed_rad_s) + dir * (f.coulomb_asym_nm + f.viscous_asym_nms * abs(speed_rad_s));
@@ -89,8 +95,9 @@ T directional_sliding_nm(const DryFriction<T>& f, const T& speed_rad_s, double d
 // is x_free (gamma: the discretisation's input matrix in use; bodies in the `locked` bit mask are frozen and get
 // f = 0, stick = true). Two bodies are coupled through the shaft: three Gauss-Seidel sweeps.
 template <class T, class Vec, class Mat>
-void solve_dry_friction(std::size_t nb, const BodyIndex* idx, const DryFriction<T>* fr, const Vec& x0,
-                        const Vec& x_free, const Mat& gamma, unsigned locked, T* f, bool* stick) {
+SERVOBENCH_TICK_INLINE void solve_dry_friction(std::size_t nb, const BodyIndex* idx, const DryFriction<T>* fr,
+                                               const Vec& x0, const Vec& x_free, const Mat& gamma, unsigned locked, T* f,
+                                               bool* stick) {
   using std::abs;
   const int sweeps = nb > 1 ? 3 : 1;
   // Each body's levels depend only on its speed at the sub-step's start: computed once, not once per sweep (the
@@ -186,7 +193,7 @@ struct NoInput {};
 // trains) an unrolled loop summing each row left to right from 0 -- the order Eigen's run-time-sized GEMV uses, so
 // the result is the same double -- with no size checks, no zeroing pass and no call; otherwise Eigen's product.
 template <class Vec, class Mat>
-void zoh_product(Vec& y, const Mat& a, const Vec& x) {
+SERVOBENCH_TICK_INLINE void zoh_product(Vec& y, const Mat& a, const Vec& x) {
   if constexpr (Vec::RowsAtCompileTime != Eigen::Dynamic && std::is_same<typename Vec::Scalar, double>::value) {
     constexpr int n = Vec::RowsAtCompileTime;
     for (int i = 0; i < n; ++i) {
@@ -203,7 +210,7 @@ void zoh_product(Vec& y, const Mat& a, const Vec& x) {
 // logged command) costs a scaling of the column rather than a product of Jets; an exactly zero double input costs
 // nothing; NoInput is not even looked up.
 template <int C, class Vec, class Gamma, class U>
-void add_input(Vec& x_free, const Gamma& gamma, const U& u) {
+SERVOBENCH_TICK_INLINE void add_input(Vec& x_free, const Gamma& gamma, const U& u) {
   if constexpr (!std::is_same<U, NoInput>::value) {
     if constexpr (std::is_same<U, double>::value)
       if (u == 0.0) return;
@@ -213,9 +220,10 @@ void add_input(Vec& x_free, const Gamma& gamma, const U& u) {
 
 // u0, u1, u2 (and u3, an optional fourth input column) may each be T or double (see add_input).
 template <class T, class Vec, class PhiSet, class GammaSet, class U0, class U1, class U2, class U3 = NoInput>
-void advance_with_dry_friction(std::size_t nb, const BodyIndex* idx, const DryFriction<T>* fr, const PhiSet& phis,
-                               const GammaSet& gammas, const U0& u0, const U1& u1, const U2& u2, Vec& x, Vec& x_free,
-                               char* stuck, const U3& u3 = U3()) {
+SERVOBENCH_TICK_INLINE void advance_with_dry_friction(std::size_t nb, const BodyIndex* idx, const DryFriction<T>* fr,
+                                                      const PhiSet& phis, const GammaSet& gammas, const U0& u0,
+                                                      const U1& u1, const U2& u2, Vec& x, Vec& x_free, char* stuck,
+                                                      const U3& u3 = U3()) {
   const auto& gamma0 = gammas[0];
   zoh_product(x_free, phis[0], x);
   add_input<0>(x_free, gamma0, u0);
