@@ -88,3 +88,25 @@ def test_the_program_module_is_the_cards_and_shares_its_locks(tmp_path):
     assert module.thread_status(4) == (0, 0, 0, 5.0, module.thread_status(4)[4])
     assert c.GT_GetThreadSts(4)[1] == gts.TThreadSts(*module.thread_status(4)[1:])
     assert not module.any_active()
+
+
+@pytest.mark.parametrize("name", PROGRAM_FUNCTIONS)
+def test_program_functions_return_codes_for_any_argument(name, tmp_path):
+    """NaN, a string, None, -1 or 2.5 in every position gives a code (7 or 1) -- never an exception -- with a
+    program downloaded, and -1 without a card (GT_Compile needs none: it compiles on the PC)."""
+    import inspect
+    import math
+
+    c = gts.GtsController()
+    fn = getattr(c, name)
+    n = sum(1 for p in inspect.signature(fn).parameters.values() if p.default is inspect.Parameter.empty)
+    if name != "GT_Compile":
+        none = fn(*([1] * n))
+        assert (none[0] if isinstance(none, tuple) else none) == gts.RTN_COMM_ERROR
+    path = tmp_path / "p.py"
+    path.write_text("x = 1\n\ndef f(a):\n    yield\n", encoding="utf-8")
+    assert c.GT_Open(sb.Card(4)) == 0 and c.GT_Download(str(path)) == 0
+    for bad in (math.nan, "x", None, -1, 2.5):
+        rtn = fn(*([bad] * n))
+        code = rtn[0] if isinstance(rtn, tuple) else rtn
+        assert code in (gts.RTN_PARAMETER_ERROR, gts.RTN_COMMAND_ERROR), (name, bad, rtn)
