@@ -24,6 +24,13 @@ using vendor::googol::GucStepEnd;
 namespace {
 int code(vendor::googol::GucCode c) { return static_cast<int>(c); }
 using FunctionRow = std::tuple<std::string, std::vector<std::string>, std::vector<bool>, int>;
+
+py::object step_tuple(const std::optional<vendor::googol::GucStep>& s) {
+  if (!s) return py::none();
+  py::dict args;
+  for (const auto& [name, v] : s->args) args[py::str(name)] = v;
+  return py::make_tuple(s->thread, s->start, s->fun_id, args);
+}
 }  // namespace
 
 void bind_vendor_guc_program(py::module_& m) {
@@ -73,20 +80,15 @@ void bind_vendor_guc_program(py::module_& m) {
              const auto [c, v] = p.var_value(page, id, function, count);
              return py::make_tuple(code(c), v);
            }, py::arg("page"), py::arg("id"), py::arg("function"), py::arg("count"), "GT_GetVarValue: (code, values)")
-      .def("next_step", [](GucProgram& p, int after) -> py::object {
-             const auto s = p.next_step(after);
-             if (!s) return py::none();
-             py::dict args;
-             for (const auto& [name, v] : s->args) args[py::str(name)] = v;
-             return py::make_tuple(s->thread, s->start, s->fun_id, args);
-           }, py::arg("after"),
+      .def("next_step", [](GucProgram& p, int after) { return step_tuple(p.next_step(after)); }, py::arg("after"),
            "the next thread after `after` (-1: the first) to step this tick: (thread, start, fun_id, start "
            "arguments by name) or None")
       .def("stepped", [](GucProgram& p, int t, int end, double value, int line,
                          const std::vector<std::optional<double>>& locals) {
-             p.stepped(t, static_cast<GucStepEnd>(end), value, line, locals);
+             return step_tuple(p.stepped(t, static_cast<GucStepEnd>(end), value, line, locals));
            }, py::arg("thread"), py::arg("end"), py::arg("value"), py::arg("line"), py::arg("locals"),
-           "a step's outcome: end 0 yielded, 1 returned value, 2 raised; line (0 unchanged); the locals (None unset)")
+           "a step's outcome: end 0 yielded, 1 returned value, 2 raised; line (0 unchanged); the locals (None "
+           "unset); returns next_step(thread)")
       .def("record_error", &GucProgram::record_error, py::arg("code"), "the current thread's last GT call code")
       .def_property_readonly("global_names", &GucProgram::global_names)
       .def_property_readonly("global_values", &GucProgram::global_values)

@@ -29,13 +29,10 @@ void load(vg::GucProgram& p) {
          {"count", "flag", "done"}, {0, 0, 0});
 }
 
-// One host tick: every thread the module names steps once, with `end` for all.
+// One host tick: every thread the module names steps once, with `end` for all (stepped() names the next one).
 std::vector<int> tick(vg::GucProgram& p, GucStepEnd end = GucStepEnd::Yielded) {
   std::vector<int> stepped;
-  for (auto s = p.next_step(-1); s; s = p.next_step(s->thread)) {
-    stepped.push_back(s->thread);
-    p.stepped(s->thread, end, 0.0, 0, {});
-  }
+  for (auto s = p.next_step(-1); s; s = p.stepped(s->thread, end, 0.0, 0, {})) stepped.push_back(s->thread);
   return stepped;
 }
 }  // namespace
@@ -111,13 +108,12 @@ TEST(GucProgram, ThreadStateMachineGucL2178To2213) {
   EXPECT_EQ(s1->thread, 1);
   EXPECT_TRUE(s1->start);
   EXPECT_EQ(s1->fun_id, 3);
-  p.stepped(1, GucStepEnd::Yielded, 0, 40, {});
-  auto s2 = p.next_step(1);
+  auto s2 = p.stepped(1, GucStepEnd::Yielded, 0, 40, {});  // the next thread to step
   ASSERT_TRUE(s2);
   EXPECT_EQ(s2->thread, 2);
+  EXPECT_TRUE(s2->start);
   p.record_error(7);  // a GT call of the current thread
-  p.stepped(2, GucStepEnd::Yielded, 0, 25, {});
-  EXPECT_FALSE(p.next_step(2));
+  EXPECT_FALSE(p.stepped(2, GucStepEnd::Yielded, 0, 25, {}));  // the last this tick
   EXPECT_EQ(p.thread_status(2).second.error, 7);
   EXPECT_EQ(p.thread_status(2).second.line, 25);
   p.record_error(1);  // outside a step: nobody's

@@ -242,9 +242,8 @@ def _step(card) -> None:
                 end = 2
             frame = getattr(host.frames.get(thread), "gi_frame", None) if end == 0 else None
             loc = frame.f_locals if frame is not None else {}
-            prog.stepped(thread, end, value, frame.f_lineno if frame is not None else 0,
-                         [_value(loc[n]) if n in loc else None for n in f.__code__.co_varnames])
-            step = prog.next_step(thread)
+            step = prog.stepped(thread, end, value, frame.f_lineno if frame is not None else 0,
+                                [_value(loc[n]) if n in loc else None for n in f.__code__.co_varnames])
     prog.set_global_values([_value(ns.get(n)) for n in names])
     if not prog.any_active():
         card.remove_event(host.sid)

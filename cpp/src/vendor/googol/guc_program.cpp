@@ -232,8 +232,14 @@ std::optional<GucStep> GucProgram::next_step(int after) {
   return std::nullopt;
 }
 
-void GucProgram::stepped(int thread, GucStepEnd end, double value, int line,
-                         const std::vector<std::optional<double>>& locals) {
+std::optional<GucStep> GucProgram::stepped(int thread, GucStepEnd end, double value, int line,
+                                           const std::vector<std::optional<double>>& locals) {
+  record_step(thread, end, value, line, locals);
+  return next_step(thread);
+}
+
+void GucProgram::record_step(int thread, GucStepEnd end, double value, int line,
+                             const std::vector<std::optional<double>>& locals) {
   current_ = -1;
   if (thread < 0 || thread >= kThreads) throw std::invalid_argument("GucProgram.stepped: thread outside 0..31");
   if (end != GucStepEnd::Yielded && end != GucStepEnd::Returned && end != GucStepEnd::Raised)

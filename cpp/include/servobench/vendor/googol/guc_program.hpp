@@ -115,8 +115,9 @@ class GucProgram final : public machine::CardHooks {
   std::optional<GucStep> next_step(int after);
   // The outcome of the current thread's step: yielded (still running), returned `value`, raised (error 1, the
   // thread stops); `line` the line it stands on (0: unchanged); `locals` its variables' values now, in the
-  // function's variable order (nullopt: not bound yet).
-  void stepped(int thread, GucStepEnd end, double value, int line, const std::vector<std::optional<double>>& locals);
+  // function's variable order (nullopt: not bound yet). Returns next_step(thread): the host's next thread this tick.
+  std::optional<GucStep> stepped(int thread, GucStepEnd end, double value, int line,
+                                 const std::vector<std::optional<double>>& locals);
   // The code of a GT call the current thread made (TThreadSts.error); ignored outside a step.
   void record_error(int code);
   // The globals as the program's namespace holds them: the host writes them into the namespace before it steps
@@ -140,6 +141,8 @@ class GucProgram final : public machine::CardHooks {
     std::vector<std::pair<std::string, double>> args;  // the start arguments (taken at GT_RunThread)
   };
 
+  void record_step(int thread, GucStepEnd end, double value, int line,
+                   const std::vector<std::optional<double>>& locals);
   Thread* thread_at(double thread);
   const Thread* thread_at(double thread) const;
   // The variable names `count` from id on, on `page`, or nullopt.
