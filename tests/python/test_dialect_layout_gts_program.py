@@ -15,7 +15,7 @@ from servobench.dialects import gts
 
 FILE = Path(__file__).resolve().parents[2] / "python" / "servobench" / "dialects" / "_gts_program.py"
 # Session 13 left 409 lines (the whole machinery in Python); what session 14 reached: the count may only go down.
-CEILING = 331
+CEILING = 330
 # The classes the file may define: the manual's C structs (dataclasses) and the host's part of a downloaded program
 # (its namespace, functions and generator frames: what IS Python, GS13), plus the mixin the rows are set on.
 STRUCTS = {"TCompileInfo", "TVarInfo", "TThreadSts"}

@@ -250,7 +250,7 @@ def _step(card) -> None:
         host.sid = None
 
 
-def _read_values(count, rtn, values):
+def _read_values(rtn, values):
     """GT_GetVarValue's (rtn, value) or, count 2..8, (rtn, [values]); (rtn, 0) when refused."""
     if rtn != GOOGOL_SUCCESS:
         return rtn, 0
@@ -309,7 +309,7 @@ _ROWS = (
      "data page (the arguments the page's thread starts with) (L2215-2225)."),
     ("GT_GetVarValue", "page, pVarInfo, count=1", None,
      lambda self, page, info, count: (GOOGOL_COMM_ERROR, 0) if self._card is None else _read_values(
-         count, *_prog(self._card).var_value(_f(page), *_var(info), _f(count))),
+         *_prog(self._card).var_value(_f(page), *_var(info), _f(count))),
      "(rtn, value) or, count 2..8, (rtn, [values]): globals (page -1) or the locals of data page 0..31 (as\n"
      "the running thread has them now, else as set) (L2227-2233)."),
 )
