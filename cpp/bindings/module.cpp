@@ -26,6 +26,7 @@ void bind_vendor_ge(py::module_& m);  // bind_vendor_ge.cpp: the GE list module 
 void bind_vendor_gt(py::module_& m);
 void bind_vendor_gts(py::module_& m);
 void bind_vendor_gts_commands(py::module_& m);
+void bind_vendor_guc_program(py::module_& m);  // bind_vendor_guc_program.cpp: the GUC motion program
 void bind_vendor_adlink(py::module_& m);  // bind_vendor_adlink.cpp: the ADLINK vendor module
 void bind_vendor_adlink_commands(py::module_& m);  // bind_vendor_adlink_commands.cpp: the APS runner
 void bind_excitation(py::module_& m);
@@ -58,6 +59,7 @@ PYBIND11_MODULE(_core, m) {
   servobench::bindings::bind_vendor_gt(m);
   servobench::bindings::bind_vendor_gts(m);
   servobench::bindings::bind_vendor_gts_commands(m);
+  servobench::bindings::bind_vendor_guc_program(m);
   servobench::bindings::bind_vendor_adlink(m);
   servobench::bindings::bind_vendor_adlink_commands(m);
   servobench::bindings::bind_excitation(m);
