@@ -289,6 +289,18 @@ class CardClock:
                 self._lock.release()
 
     @contextlib.contextmanager
+    def inside_tick(self):
+        """Vendor calls made inside this block count as made inside the servo tick, as calls from an event callback
+        do: no bus time is charged for them (the GUC motion program's threads run on the card, decision GS13)."""
+        local = self._local
+        depth = getattr(local, "depth", 0)
+        local.depth = depth + 1
+        try:
+            yield
+        finally:
+            local.depth = depth
+
+    @contextlib.contextmanager
     def hold(self):
         """Holds the card still (realtime: no tick runs) for a group of calls a program wants to see at one tick
         (``with clock.hold(): pos = GT_GetAtlPos(); sts = GT_GetSts()``). The calls inside still cost their time

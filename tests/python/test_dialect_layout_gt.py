@@ -57,13 +57,14 @@ AIMS = {"gt.py": 431, "gts.py": 341}
 HANDLES = {"_card", "_cards", "_card_no", "_machine", "_isa_addr"}
 GT_FILES = ("gt.py", "_gt_system.py")
 # GTS: the look-ahead windows and the configuration registers are the card's GtsCard (decision GT11); the motion
-# program's threads (_gts_program.py) are the host's Python code and stay (GT12, GU6); every command is a row of the
-# C++ command table with its argument checks in C++ (GU1-GU4, GX1-GX3).
+# program's threads, pages and status words are the C++ GucProgram module and _gts_program.py holds only the host's
+# stepping and its rows (GY1, its own test_dialect_layout_gts_program.py); every command is a row of the C++ command
+# table with its argument checks in C++ (GU1-GU4, GX1-GX3).
 GTS_FILES = ("gts.py", "_gts_config.py")
 # What session 13 reached: the line counts may only go down.
 CEILINGS = {"gts.py": 232, "_gts_config.py": 172}
 # The GTS commands still written out as methods: the open/close/reset of the card handle (they also stop the
-# motion-program threads, GT12/GU6).
+# motion-program threads, GY1).
 GTS_WRITTEN_OUT = {"GT_Open", "GT_Close", "GT_Reset"}
 def _tree(name: str) -> ast.Module:
     return ast.parse((DIALECTS / name).read_text(), filename=name)

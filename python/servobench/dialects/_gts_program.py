@@ -203,21 +203,6 @@ def _run_thread(self, thread) -> int:
     return rtn
 
 
-@contextlib.contextmanager
-def _inside_tick(card):
-    """The program's GT calls count as made inside the tick (the clock's nesting depth, as calls from an event
-    callback): no bus time (GS13)."""
-    local = getattr(card.clock, "_local", None)
-    depth = getattr(local, "depth", 0)
-    if local is not None:
-        local.depth = depth + 1
-    try:
-        yield
-    finally:
-        if local is not None:
-            local.depth = depth
-
-
 def _step(card) -> None:
     """One servo tick of the program's threads: the C++ module says which thread steps (thread order, L2117-2120),
     the host runs its generator to its next ``yield`` and reports how it ended, its line and its locals. The
@@ -225,7 +210,8 @@ def _step(card) -> None:
     prog, host = _prog(card), _HOSTS[card]
     names, ns = prog.global_names, host.ns
     ns.update(zip(names, map(_dint, prog.global_values)))
-    with _inside_tick(card):
+    clock = card.clock  # the program's GT calls count as made inside the tick: no bus time (GS13)
+    with clock.inside_tick() if clock is not None else contextlib.nullcontext():
         step = prog.next_step(-1)
         while step is not None:
             thread, start, fun_id, args = step
