@@ -63,7 +63,9 @@ class ApsServoLaw {
 
   // One servo tick. The law computes CmdVel and CmdAcc from the command history itself, as the manual
   // defines them; the profile's velocity/acceleration arguments are ignored by this law.
-  LawTerms step(double cmd_pos, double fbk_pos, double /*profile_vel*/, double /*profile_acc*/) {
+  // Always inlined into the fused tick's kernels (TK3).
+  __attribute__((always_inline)) LawTerms step(double cmd_pos, double fbk_pos, double /*profile_vel*/,
+                                               double /*profile_acc*/) {
     if (!primed_) {
       prev_cmd_ = cmd_pos;
       prev_vel_ = 0.0;

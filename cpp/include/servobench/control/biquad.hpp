@@ -78,7 +78,7 @@ class Biquad {
   // True for the pass-through coefficients (B0 = DIV = 1, all else 0): step(x) returns x.
   bool bypass() const { return bypass_; }
 
-  double step(double x) {
+  __attribute__((always_inline)) double step(double x) {  // always inlined into the fused tick (TK3)
     // Pass-through (B0 = DIV = 1, all else 0: the card's default): y = x, which is exactly what the full expression
     // gives (1*x + 0*... = x, /1 exact); skips the division on the tick's critical path. The history is kept current,
     // so coefficients set later see the same past as if the expression had been evaluated.

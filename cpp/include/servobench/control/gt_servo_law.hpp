@@ -47,7 +47,9 @@ class GtServoLaw {
 
   // One servo tick. cmd_pos = P_target, fbk_pos = P_actual (pulse), vel = V_target (pulse/ST),
   // acc = A_target (pulse/ST^2): the profile's own velocity and acceleration, as the card feeds them (L776).
-  LawTerms step(double cmd_pos, double fbk_pos, double vel, double acc) {
+  // Always inlined: the fused tick's kernels carry a target attribute, across which GCC with LTO did not inline it
+  // (decision TK3).
+  __attribute__((always_inline)) LawTerms step(double cmd_pos, double fbk_pos, double vel, double acc) {
     const double error = cmd_pos - fbk_pos;
     const double lim = params_.ilmt;
     double sum = sum_ + error;

@@ -96,8 +96,8 @@ SERVOBENCH_TICK_INLINE T directional_sliding_nm(const DryFriction<T>& f, const T
 // f = 0, stick = true). Two bodies are coupled through the shaft: three Gauss-Seidel sweeps.
 template <class T, class Vec, class Mat>
 SERVOBENCH_TICK_INLINE void solve_dry_friction(std::size_t nb, const BodyIndex* idx, const DryFriction<T>* fr,
-                                               const Vec& x0, const Vec& x_free, const Mat& gamma, unsigned locked, T* f,
-                                               bool* stick) {
+                                               const Vec& x0, const Vec& x_free, const Mat& gamma, unsigned locked,
+                                               T* f, bool* stick) {
   using std::abs;
   const int sweeps = nb > 1 ? 3 : 1;
   // Each body's levels depend only on its speed at the sub-step's start: computed once, not once per sweep (the
@@ -214,7 +214,13 @@ SERVOBENCH_TICK_INLINE void add_input(Vec& x_free, const Gamma& gamma, const U& 
   if constexpr (!std::is_same<U, NoInput>::value) {
     if constexpr (std::is_same<U, double>::value)
       if (u == 0.0) return;
-    x_free += gamma.col(C) * u;
+    if constexpr (Vec::RowsAtCompileTime != Eigen::Dynamic && std::is_same<typename Vec::Scalar, double>::value) {
+      // Written out: with LTO, Eigen's compound assignment stayed an out-of-line call in the fused tick (TK3);
+      // the same doubles (one product, one sum per element).
+      for (int i = 0; i < Vec::RowsAtCompileTime; ++i) x_free[i] += gamma(i, C) * u;
+    } else {
+      x_free += gamma.col(C) * u;
+    }
   }
 }
 
