@@ -98,6 +98,19 @@ std::vector<double> run_case(const Case& c, bool fused, mc::TickKernel kernel = 
   return out;
 }
 
+// Two integer-form filters (ADLINK): an FIR (2 + z^-1 + z^-2) / 4 and a pole 1 / (2 - z^-1).
+std::array<ctl::BiquadParams, 2> integer_filters() {
+  ctl::AdlinkBiquadParams fir, pole;
+  fir.b0 = 2;
+  fir.b1 = 1;
+  fir.b2 = 1;
+  fir.div = 4;
+  pole.b0 = 1;
+  pole.a1 = 1;
+  pole.div = 2;
+  return {fir, pole};
+}
+
 std::vector<Case> cases() {
   std::vector<Case> cs;
   ctl::GtServoLawParams gt;
@@ -131,14 +144,6 @@ std::vector<Case> cases() {
   two.cogging_nm = 0.002;
   two.cogging_periods = 6;
   two.unbalance_nm = 0.001;
-  ctl::AdlinkBiquadParams fir, pole;
-  fir.b0 = 2;
-  fir.b1 = 1;
-  fir.b2 = 1;
-  fir.div = 4;
-  pole.b0 = 1;
-  pole.a1 = 1;
-  pole.div = 2;
   int i = 0;
   for (const mc::LawParams& law : {mc::LawParams{gt}, mc::LawParams{aps}}) {
     for (const mc::PlantParams& plant : {mc::PlantParams{pl::RigidPlantParams{}}, mc::PlantParams{rigid},
@@ -153,7 +158,7 @@ std::vector<Case> cases() {
         c.profile = i % 2 == 0;
         c.inject = i % 3 == 0;
         c.cfg.substeps = 1 + i % 3;
-        if (i % 4 == 1) c.cfg.filters = {fir, pole};
+        if (i % 4 == 1) c.cfg.filters = integer_filters();
         if (i % 5 == 2) c.cfg.encoder.noise_counts = 0.7;
         if (i % 3 == 2 && std::holds_alternative<pl::TwoMassPlantParams>(plant)) c.cfg.encoder.on_load = true;
         c.guard.error_limit_pulse = i % 2 ? 20000.0 : 0.0;
@@ -276,17 +281,9 @@ TEST(FusedTick, FeedbackOnlyRunsGiveTheSameDoubles) {
 }
 
 // Decision TK1: a pass-through run keeps no filter history in the loop but replays the law's last two outputs into
-// the filters at the end, so filters set afterwards see the same past: a fused pass-through run followed by a real
-// low-pass and a notch gives the general loop's doubles, for runs of 4, 5 and 3000 ticks.
+// the filters at the end, so filters set afterwards see the same past: a fused pass-through run followed by the two
+// integer filters gives the general loop's doubles, for runs of 4, 5 and 3000 ticks.
 TEST(FusedTick, FiltersSetAfterAPassThroughRunSeeTheSamePast) {
-  ctl::AdlinkBiquadParams fir, pole;
-  fir.b0 = 2;
-  fir.b1 = 1;
-  fir.b2 = 1;
-  fir.div = 4;
-  pole.b0 = 1;
-  pole.a1 = 1;
-  pole.div = 2;
   for (std::size_t first : {std::size_t{4}, std::size_t{5}, std::size_t{3000}}) {
     std::vector<double> out[2];
     for (bool fused : {false, true}) {
@@ -315,7 +312,7 @@ TEST(FusedTick, FiltersSetAfterAPassThroughRunSeeTheSamePast) {
       mc::Trace tr;
       tr.fb_pos = fb.data();
       axis.run(in, tr, {});
-      axis.set_filters({fir, pole});
+      axis.set_filters(integer_filters());
       mc::CommandInput rest = in;
       rest.pos += first;
       rest.vel += first;
