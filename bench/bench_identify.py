@@ -99,10 +99,10 @@ def _stages(report):
 
 
 def paired_jacobians(repeat=3, duration_s=5.0):
-    """CPU time of the whole fit_time on the three bench logs with the rigid model's analytic Jacobian (the default,
-    decision FU1) and with Ceres' automatic differentiation (analytic_jacobian=False), run paired and alternating
-    in one process (ABAB...), `repeat` pairs per log: the medians, the load before and after, and per start its
-    stages' iterations and Jacobian seconds. The two-mass model has no analytic Jacobian (both columns AutoDiff)."""
+    """CPU time of the whole fit_time on the three bench logs with the segments' analytic Jacobian (the default,
+    decisions FU1 rigid, FV1 two-mass) and with Ceres' automatic differentiation (analytic_jacobian=False), run
+    paired and alternating in one process (ABAB...), `repeat` pairs per log: the medians, the load before and after,
+    and per start its stages' iterations and Jacobian seconds."""
     import os
     import statistics
     import servobench as sb

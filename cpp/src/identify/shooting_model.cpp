@@ -1,7 +1,7 @@
 // The output-error model of the time-domain fit and the multiple-shooting problem (shooting_problem,
 // shooting_residual, simulate_model): see shooting_model.hpp. The solve is in time_fit.cpp.
 #include "shooting_model.hpp"
-#include "rigid_sensitivity.hpp"
+#include "segment_sensitivity.hpp"
 
 #include <algorithm>
 #include <array>
@@ -418,8 +418,8 @@ void add_segment_blocks(ceres::Problem& problem, const FitContext& ctx, Shooting
     using ceres::DYNAMIC;
     constexpr PlantModel R = PlantModel::kRigid, W = PlantModel::kTwoMass;
     ceres::CostFunction* cost = nullptr;
-    if (held && !linked && options.model == R && options.analytic_jacobian)
-      cost = rigid_sensitivity_cost(&ctx, a, c, free);
+    if (held && !linked && options.analytic_jacobian)
+      cost = sensitivity_cost(&ctx, a, c, free);
     else if (held && !linked && options.model == R && width <= 6)
       cost = new FreeSegmentCost<R, 6>(&ctx, a, c, free);
     else if (held && !linked && options.model == R)

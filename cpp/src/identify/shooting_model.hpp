@@ -40,7 +40,7 @@ void check_log(const TimeLog& log, const TimeFitOptions& o);
 // One residual block per segment (AutoDiff), linked to the next one with continuity_weight > 0; with_loss: the
 // options' robust loss. held (one entry per parameter, or nullptr): the parameters the solve holds constant; an
 // unlinked segment then differentiates along the free parameters only (FreeSegmentCost, the same derivatives), a
-// rigid one with options.analytic_jacobian by forward sensitivity in doubles (rigid_sensitivity.hpp).
+// with options.analytic_jacobian by forward sensitivity in doubles (segment_sensitivity.hpp).
 void add_segment_blocks(ceres::Problem& problem, const FitContext& ctx, ShootingProblem& sp, double* p,
                         const TimeFitOptions& options, bool with_loss = true,
                         const std::vector<bool>* held = nullptr);

@@ -9,9 +9,9 @@
 // its own free initial mechanical state (nuisance parameters) and is simulated from the logged torque; the residual
 // is the measured minus the simulated output, divided by `measurement_scale`. Short segments keep the problem
 // well-conditioned (an open-loop simulation of an integrating plant drifts) and the initial states absorb the
-// quantisation offset. Derivatives: the rigid model by forward sensitivity in doubles (rigid_sensitivity.cpp, the
-// default analytic_jacobian), the two-mass model by Ceres automatic differentiation (Jets) through the sub-step; the
-// discretisation's derivatives by Van Loan's block exponential.
+// quantisation offset. Derivatives: by forward sensitivity in doubles through the sub-step (segment_sensitivity.cpp,
+// the default analytic_jacobian), or by Ceres automatic differentiation (Jets) of the same code (linked segments,
+// analytic_jacobian false); the discretisation's derivatives by Van Loan's block exponential.
 #pragma once
 
 #include <functional>
@@ -59,8 +59,8 @@ struct TimeFitOptions {
   double loss_scale = 3.0;          // where the robust loss departs from least squares, in measurement_scale units
   // With the Stribeck peak free, a first stage holds its level and speed at their guesses (see fit_time_domain).
   bool hold_stribeck_first = true;
-  // The rigid model's segment Jacobian by forward sensitivity in doubles (exact; Ceres' AutoDiff to rounding,
-  // decision FU1); false: automatic differentiation on Jets. The two-mass model and linked segments use AutoDiff.
+  // The segments' Jacobian by forward sensitivity in doubles (exact; Ceres' AutoDiff to rounding, decisions FU1
+  // and FV1); false: automatic differentiation on Jets. Linked segments use AutoDiff.
   bool analytic_jacobian = true;
   int max_iterations = 200;         // 1..10000
   int num_threads = 1;              // 1..64
@@ -88,7 +88,7 @@ struct TimeFitOptions {
     v("continuity_weight", &O::continuity_weight, "", "weight of the multiple-shooting continuity residuals, >= 0; 0: independent segments");
     v("loss_scale", &O::loss_scale, "scale", "where the robust loss departs from least squares, > 0");
     v("hold_stribeck_first", &O::hold_stribeck_first, "", "with the Stribeck peak free, solve a first stage with its level and speed held at their guesses (far from the truth the peak otherwise tends to vanish, ws -> 0, and stay vanished)");
-    v("analytic_jacobian", &O::analytic_jacobian, "", "rigid model: the shooting segments' Jacobian by forward sensitivity in plain doubles (exact: the automatic differentiation's to rounding, 1e-12 relative; the whole rigid fit_time about half the CPU time, decision FU1); false: Ceres' automatic differentiation on Jets. The two-mass model and linked segments (continuity_weight > 0) always use automatic differentiation");
+    v("analytic_jacobian", &O::analytic_jacobian, "", "the shooting segments' Jacobian by forward sensitivity in plain doubles (exact: the automatic differentiation's to rounding, 1e-12 relative; rigid and two-mass, decisions FU1, FV1); false: Ceres' automatic differentiation on Jets. Linked segments (continuity_weight > 0) always use automatic differentiation");
     v("max_iterations", &O::max_iterations, "", "solver iterations per stage at most, 1..10000");
     v("num_threads", &O::num_threads, "",
       "Ceres threads inside one fit, 1..64; 1 (default) is deterministic (bit-identical estimates). More threads "

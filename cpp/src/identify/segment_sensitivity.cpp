@@ -1,0 +1,389 @@
+// The shooting-segment cost by forward sensitivity: see segment_sensitivity.hpp.
+#include "segment_sensitivity.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+
+namespace servobench::identify::detail {
+
+namespace {
+
+// The sizes of a model with NB bodies (1: rigid, 2: two-mass), as plant_model.hpp orders its parameter vector.
+template <int NB>
+struct Shape {
+  static constexpr int kStates = 2 * NB;              // angle, speed per body
+  static constexpr int kParams = NB == 1 ? 6 : 11;    // internal parameters
+  static constexpr int kLinear = NB == 1 ? 2 : 6;     // the first ones: they enter Phi, Gamma
+  static constexpr int kLoad = kParams - 1;           // the constant load torque, last
+  static constexpr int kDirs = kParams + kStates;     // then the segment's start state
+  static constexpr int kMasks = 1 << NB;              // discretisations: the bodies locked by stiction
+};
+
+// A body's dry friction: its levels and where their derivatives go. The motor (rigid: the body) has a Stribeck
+// peak (Coulomb, excess, Stribeck speed); the two-mass load has Coulomb friction only (breakaway = Coulomb, the
+// excess identically 0: lanes < 0).
+struct BodyFriction {
+  double fc = 0.0, fs = 0.0, ws = 1.0;
+  int lane_fc = 0, lane_excess = -1, lane_ws = -1;
+  int angle = 0, speed = 1, input = 1;  // mechanical state indices and input column
+  bool active() const { return fs > 0.0; }  // DryFriction::active (the fit's friction is symmetric)
+};
+
+template <int NB>
+class Simulation {
+ public:
+  using S_ = Shape<NB>;
+  static constexpr int n = S_::kStates, nd = S_::kDirs, nlin = S_::kLinear;
+  using Lanes = std::array<double, nd>;  // d(value) / d[p, x0]
+
+  // One discretisation (a stiction mask) on the mechanical state, with its derivatives along the linear
+  // parameters. Input columns: command, torque on the motor body, torque on the load body (the load torque; rigid:
+  // the same body), the current loop's torque (the lag state's column of phi; 0 without a current loop).
+  struct Step {
+    double phi[n][n], gam[n][4];
+    double dphi[nlin][n][n], dgam[nlin][n][4];  // [linear parameter][row][column]
+  };
+
+  Simulation(const FitContext& ctx, const double* p) : ctx_(ctx), p_(p) {
+    const int nl = ctx.layout.lag_states();
+    const auto disc = ctx.cache->get(p, true);
+    for (int m = 0; m < S_::kMasks; ++m) steps_[m] = mechanical_step(*disc, static_cast<unsigned>(m), nl);
+    expo_ = ctx.layout.stribeck_exponent;
+    if constexpr (NB == 1) {
+      body_[0] = BodyFriction{p[2], p[2] + p[3], p[4], 2, 3, 4, 0, 1, 1};
+    } else {
+      body_[0] = BodyFriction{p[6], p[6] + p[7], p[8], 6, 7, 8, 0, 1, 1};
+      body_[1] = BodyFriction{p[9], p[9], 1.0, 9, -1, -1, 2, 3, 2};
+    }
+  }
+
+  // One sub-step (plant::advance_with_dry_friction): x, S advanced in place; stuck[b] carried between sub-steps.
+  void substep(double x[n], Lanes S[n], char stuck[NB], double u, double lag) const {
+    double xf[n];
+    Lanes dxf[n];
+    free_motion(steps_[0], x, S, u, lag, xf, dxf);
+    bool any_dry = false;
+    for (int b = 0; b < NB; ++b) any_dry = any_dry || body_[b].active();
+    if (!any_dry) {
+      commit(x, S, xf, dxf);
+      return;
+    }
+    double f[NB] = {};
+    Lanes df[NB] = {};
+    bool stick[NB] = {};
+    solve(x, S, xf, dxf, steps_[0], 0u, f, df, stick);
+    unsigned locked = 0;  // bodies at rest that static friction keeps at rest: integrated locked
+    for (int b = 0; b < NB; ++b)
+      if (stick[b] && stuck[b] && x[body_[b].speed] == 0.0) locked |= 1u << b;
+    const Step* g = &steps_[0];
+    if (locked != 0) {
+      g = &steps_[locked];
+      free_motion(*g, x, S, u, lag, xf, dxf);
+      solve(x, S, xf, dxf, *g, locked, f, df, stick);
+    }
+    for (int b = 0; b < NB; ++b) {
+      if ((locked & (1u << b)) || f[b] == 0.0) continue;
+      const int c = body_[b].input;
+      for (int i = 0; i < n; ++i) {
+        xf[i] += g->gam[i][c] * f[b];
+        for (int j = 0; j < nd; ++j) dxf[i][j] += g->gam[i][c] * df[b][j];
+        for (int k = 0; k < nlin; ++k) dxf[i][k] += g->dgam[k][i][c] * f[b];
+      }
+    }
+    for (int b = 0; b < NB; ++b) {
+      if (locked & (1u << b)) {
+        stuck[b] = 1;
+        continue;
+      }
+      if (stick[b]) {  // stopped inside the sub-step
+        xf[body_[b].speed] = 0.0;
+        dxf[body_[b].speed].fill(0.0);
+      }
+      stuck[b] = stick[b] ? 1 : 0;
+    }
+    commit(x, S, xf, dxf);
+  }
+
+  const BodyFriction& body(int b) const { return body_[b]; }
+
+ private:
+  static Step mechanical_step(const Discretisation& d, unsigned mask, int nl) {
+    Step s{};
+    for (int r = 0; r < n; ++r) {
+      for (int c = 0; c < n; ++c) s.phi[r][c] = d.phi[mask](nl + r, nl + c);
+      for (int c = 0; c < 3; ++c) s.gam[r][c] = d.gamma[mask](nl + r, c);
+      s.gam[r][3] = nl ? d.phi[mask](nl + r, 0) : 0.0;
+      for (int k = 0; k < nlin; ++k) {
+        const auto kk = static_cast<std::size_t>(k);
+        for (int c = 0; c < n; ++c) s.dphi[k][r][c] = d.dphi[mask][kk](nl + r, nl + c);
+        for (int c = 0; c < 3; ++c) s.dgam[k][r][c] = d.dgamma[mask][kk](nl + r, c);
+        s.dgam[k][r][3] = nl ? d.dphi[mask][kk](nl + r, 0) : 0.0;
+      }
+    }
+    return s;
+  }
+
+  static void commit(double x[n], Lanes S[n], const double xf[n], const Lanes dxf[n]) {
+    for (int i = 0; i < n; ++i) {
+      x[i] = xf[i];
+      S[i] = dxf[i];
+    }
+  }
+
+  // xf = Phi x + Gamma [u, 0, t_load, lag] and its lanes (a zero command or current-loop torque is skipped as
+  // add_input skips it; the load is a parameter and always enters).
+  void free_motion(const Step& s, const double x[n], const Lanes S[n], double u, double lag, double xf[n],
+                   Lanes dxf[n]) const {
+    const double t_load = -p_[S_::kLoad];
+    for (int i = 0; i < n; ++i) {
+      double v = 0.0;
+      for (int c = 0; c < n; ++c) v += s.phi[i][c] * x[c];
+      xf[i] = v;
+      Lanes& d = dxf[i];
+      for (int j = 0; j < nd; ++j) {
+        double a = 0.0;
+        for (int c = 0; c < n; ++c) a += s.phi[i][c] * S[c][j];
+        d[j] = a;
+      }
+      for (int k = 0; k < nlin; ++k)
+        for (int c = 0; c < n; ++c) d[k] += s.dphi[k][i][c] * x[c];
+      if (u != 0.0) {
+        xf[i] += s.gam[i][0] * u;
+        for (int k = 0; k < nlin; ++k) d[k] += s.dgam[k][i][0] * u;
+      }
+      if (ctx_.has_load) {
+        xf[i] += s.gam[i][2] * t_load;
+        for (int k = 0; k < nlin; ++k) d[k] += s.dgam[k][i][2] * t_load;
+        d[S_::kLoad] -= s.gam[i][2];
+      }
+      if (lag != 0.0) {
+        xf[i] += s.gam[i][3] * lag;
+        for (int k = 0; k < nlin; ++k) d[k] += s.dgam[k][i][3] * lag;
+      }
+    }
+  }
+
+  // The sliding level Fc + (Fs - Fc) exp(-(|v|/ws)^delta) at the sub-step's start speed v and its lanes.
+  double sliding(const BodyFriction& bf, double v, const Lanes& dv, Lanes& out) const {
+    out.fill(0.0);
+    if (bf.lane_excess < 0) {  // no peak: the level is Fc (the Jets' (Fs - Fc) term is exactly 0 with its lanes)
+      out[bf.lane_fc] = 1.0;
+      return bf.fc;
+    }
+    const double sg = std::copysign(1.0, v);
+    const double r = std::fabs(v) / bf.ws;
+    Lanes dr;
+    for (int j = 0; j < nd; ++j) dr[j] = sg * dv[j];
+    dr[bf.lane_ws] -= r;  // d|v|/ws = (d|v| - r dws) / ws
+    for (int j = 0; j < nd; ++j) dr[j] /= bf.ws;
+    double shape, slope;
+    if (expo_ == 2.0) {
+      shape = r * r;
+      slope = 2.0 * r;
+    } else {
+      shape = std::pow(r, expo_);
+      slope = expo_ * std::pow(r, expo_ - 1.0);
+    }
+    const double e = std::exp(-shape);
+    const double excess = bf.fs - bf.fc;
+    for (int j = 0; j < nd; ++j) out[j] = -excess * e * slope * dr[j];
+    out[bf.lane_fc] += 1.0;
+    out[bf.lane_excess] += e;
+    return bf.fc + excess * e;
+  }
+
+  // plant::solve_dry_friction with lanes: the held friction f[b] of every body for the sub-step from x whose
+  // friction-free end is xf (step g; bodies in `locked` get f = 0, stick). f, df carry the previous solve's forces
+  // in (the Gauss-Seidel start of a second, locked solve), as the plant's f[] does.
+  void solve(const double x[n], const Lanes S[n], const double xf[n], const Lanes dxf[n], const Step& g,
+             unsigned locked, double f[NB], Lanes df[NB], bool stick[NB]) const {
+    constexpr int sweeps = NB > 1 ? 3 : 1;
+    double slip[NB] = {};
+    Lanes dslip[NB];
+    for (int b = 0; b < NB; ++b) {
+      if (locked & (1u << b)) {
+        f[b] = 0.0;
+        df[b].fill(0.0);
+        stick[b] = true;
+      } else if (body_[b].active() && x[body_[b].speed] != 0.0) {
+        slip[b] = sliding(body_[b], x[body_[b].speed], S[body_[b].speed], dslip[b]);
+      }
+    }
+    for (int sweep = 0; sweep < sweeps; ++sweep) {
+      for (int b = 0; b < NB; ++b) {
+        if (locked & (1u << b)) continue;
+        const BodyFriction& bf = body_[b];
+        stick[b] = false;
+        if (!bf.active()) {
+          f[b] = 0.0;
+          df[b].fill(0.0);
+          continue;
+        }
+        const int sp = bf.speed, an = bf.angle, in = bf.input;
+        // End speed and displacement of this body without its own friction (the others' included).
+        double v_free = xf[sp], d = xf[an] - x[an];
+        Lanes dv, dd;
+        for (int j = 0; j < nd; ++j) {
+          dv[j] = dxf[sp][j];
+          dd[j] = dxf[an][j] - S[an][j];
+        }
+        for (int o = 0; o < NB; ++o) {
+          if (o == b) continue;
+          const int oc = body_[o].input;
+          v_free += g.gam[sp][oc] * f[o];
+          d += g.gam[an][oc] * f[o];
+          for (int j = 0; j < nd; ++j) {
+            dv[j] += g.gam[sp][oc] * df[o][j];
+            dd[j] += g.gam[an][oc] * df[o][j];
+          }
+          for (int k = 0; k < nlin; ++k) {
+            dv[k] += g.dgam[k][sp][oc] * f[o];
+            dd[k] += g.dgam[k][an][oc] * f[o];
+          }
+        }
+        const double gv = g.gam[sp][in], gth = g.gam[an][in];
+        const double v0 = x[sp];
+        const double dir = v0 > 0.0 ? 1.0 : -1.0;
+        double fb = 0.0;
+        Lanes dfb{};
+        bool st = false, sliding_branch = false;
+        if (v0 != 0.0) {
+          const double f_slip = -dir * slip[b];
+          if ((v_free + gv * f_slip) * dir > 0.0) {  // keeps sliding the same way
+            fb = f_slip;
+            for (int j = 0; j < nd; ++j) dfb[j] = -dir * dslip[b][j];
+            sliding_branch = true;
+          }
+        }
+        if (!sliding_branch) {
+          const double q = v_free / gv;
+          const double f_stick = -q;  // holds the body at rest at the sub-step's end
+          if (f_stick <= bf.fs && f_stick >= -bf.fs) {
+            fb = f_stick;
+            for (int j = 0; j < nd; ++j) dfb[j] = -dv[j] / gv;
+            for (int k = 0; k < nlin; ++k) dfb[k] += q * g.dgam[k][sp][in] / gv;
+            st = true;
+          } else {  // breaks away, or passes zero: -Fs or +Fs, dFs = dFc + d(excess)
+            const double sgn = v_free > 0.0 ? -1.0 : 1.0;
+            fb = sgn * bf.fs;
+            dfb[bf.lane_fc] = sgn;
+            if (bf.lane_excess >= 0) dfb[bf.lane_excess] = sgn;
+          }
+        }
+        // Sliding friction may only oppose the net displacement over the sub-step.
+        if (!(st && v0 == 0.0) && fb * (d + gth * fb) > 0.0) {
+          st = false;
+          double cap = 0.0;
+          Lanes dcap{};
+          if (gth > 0.0) {
+            cap = std::fabs(d) / gth;
+            const double sd = std::copysign(1.0, d);
+            for (int j = 0; j < nd; ++j) dcap[j] = sd * dd[j] / gth;
+            for (int k = 0; k < nlin; ++k) dcap[k] -= cap * g.dgam[k][an][in] / gth;
+          }
+          const double sf = std::copysign(1.0, fb);
+          double mag;
+          Lanes dmag;
+          if (std::fabs(fb) < cap) {
+            mag = std::fabs(fb);
+            for (int j = 0; j < nd; ++j) dmag[j] = sf * dfb[j];
+          } else {
+            mag = cap;
+            dmag = dcap;
+          }
+          if (d == 0.0) {
+            fb = 0.0;
+            dfb.fill(0.0);
+          } else {
+            const double s = d > 0.0 ? -1.0 : 1.0;
+            fb = s * mag;
+            for (int j = 0; j < nd; ++j) dfb[j] = s * dmag[j];
+          }
+        }
+        f[b] = fb;
+        df[b] = dfb;
+        stick[b] = st;
+      }
+    }
+  }
+
+  const FitContext& ctx_;
+  const double* p_;
+  Step steps_[S_::kMasks];
+  BodyFriction body_[NB];
+  double expo_ = 2.0;
+};
+
+template <int NB>
+class SensitivityCost final : public ceres::CostFunction {
+ public:
+  using S_ = Shape<NB>;
+  static constexpr int n = S_::kStates, np = S_::kParams;
+
+  SensitivityCost(const FitContext* ctx, int start, int count, std::vector<int> free)
+      : ctx_(ctx), start_(start), count_(count) {
+    set_num_residuals(count);
+    mutable_parameter_block_sizes()->push_back(np);
+    mutable_parameter_block_sizes()->push_back(n);
+    if (free.empty())
+      moves_.fill(true);
+    else
+      for (int i : free) moves_[static_cast<std::size_t>(i)] = true;
+  }
+
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    if (!jacobians || (!jacobians[0] && !jacobians[1])) {
+      segment_residual(*ctx_, parameters[0], parameters[1], start_, count_, residuals);
+      return true;
+    }
+    const FitContext& ctx = *ctx_;
+    const int nl = ctx.layout.lag_states();
+    const Simulation<NB> sim(ctx, parameters[0]);
+    using Lanes = typename Simulation<NB>::Lanes;
+    double x[n];
+    Lanes S[n];
+    char stuck[NB];
+    for (int i = 0; i < n; ++i) {
+      x[i] = parameters[1][i];
+      S[i].fill(0.0);
+      S[i][np + i] = 1.0;
+    }
+    for (int b = 0; b < NB; ++b) stuck[b] = x[sim.body(b).speed] == 0.0 ? 1 : 0;
+    const int oi = ctx.output_index - nl;
+    const std::vector<double>& u = ctx.log->torque_nm;
+    const std::vector<double>& y = ctx.log->measured;
+    double lag = nl ? ctx.lag[static_cast<std::size_t>(start_)] : 0.0;
+    for (int k = 0; k < count_; ++k) {
+      const std::size_t s = static_cast<std::size_t>(start_ + k);
+      residuals[k] = (x[oi] - y[s]) * ctx.inv_scale;
+      if (jacobians[0]) {
+        double* row = jacobians[0] + static_cast<std::ptrdiff_t>(k) * np;
+        for (int j = 0; j < np; ++j) row[j] = moves_[static_cast<std::size_t>(j)] ? S[oi][j] * ctx.inv_scale : 0.0;
+      }
+      if (jacobians[1])
+        for (int i = 0; i < n; ++i) jacobians[1][static_cast<std::ptrdiff_t>(k) * n + i] = S[oi][np + i] * ctx.inv_scale;
+      if (k + 1 == count_) break;
+      for (int sub = 0; sub < ctx.substeps; ++sub) {
+        sim.substep(x, S, stuck, u[s], lag);
+        if (nl) lag = ctx.lag_decay * lag + (1.0 - ctx.lag_decay) * u[s];
+      }
+    }
+    return true;
+  }
+
+ private:
+  const FitContext* ctx_;
+  int start_, count_;
+  std::array<bool, np> moves_{};
+};
+
+}  // namespace
+
+ceres::CostFunction* sensitivity_cost(const FitContext* ctx, int start, int count, std::vector<int> free) {
+  if (ctx->layout.model == PlantModel::kRigid) return new SensitivityCost<1>(ctx, start, count, std::move(free));
+  return new SensitivityCost<2>(ctx, start, count, std::move(free));
+}
+
+}  // namespace servobench::identify::detail
