@@ -17,45 +17,71 @@ struct Shape {
   static constexpr int kParams = NB == 1 ? 6 : 11;    // internal parameters
   static constexpr int kLinear = NB == 1 ? 2 : 6;     // the first ones: they enter Phi, Gamma
   static constexpr int kLoad = kParams - 1;           // the constant load torque, last
-  static constexpr int kDirs = kParams + kStates;     // then the segment's start state
   static constexpr int kMasks = 1 << NB;              // discretisations: the bodies locked by stiction
 };
+
+// Where each derivative goes: one lane per free parameter, in the parameter vector's order (so the free linear
+// parameters, which come first, are lanes 0..free_linear-1), then one per start state. A held parameter has no
+// lane (-1): its Jacobian column is 0 and nothing is carried for it (decision FV2).
+struct LaneMap {
+  std::array<int, 11> of{};  // lane of parameter i, or -1
+  int free = 0;              // free parameters: the start states' lanes begin here
+  int free_linear = 0;       // free linear parameters
+  std::array<int, 6> linear{};  // the free linear parameters, in lane order
+};
+
+inline LaneMap lane_map(int np, int nlin, const std::vector<int>& free) {
+  LaneMap m;
+  m.of.fill(-1);
+  for (int i = 0; i < np; ++i) {
+    const bool moves = free.empty() || std::find(free.begin(), free.end(), i) != free.end();
+    if (!moves) continue;
+    if (i < nlin) m.linear[static_cast<std::size_t>(m.free_linear++)] = i;
+    m.of[static_cast<std::size_t>(i)] = m.free++;
+  }
+  return m;
+}
 
 // A body's dry friction: its levels and where their derivatives go. The motor (rigid: the body) has a Stribeck
 // peak (Coulomb, excess, Stribeck speed); the two-mass load has Coulomb friction only (breakaway = Coulomb, the
 // excess identically 0: lanes < 0).
 struct BodyFriction {
   double fc = 0.0, fs = 0.0, ws = 1.0;
-  int lane_fc = 0, lane_excess = -1, lane_ws = -1;
+  bool peak = true;                              // false: Fs = Fc, no Stribeck term
+  int lane_fc = -1, lane_excess = -1, lane_ws = -1;  // -1: held (or, without a peak, absent)
   int angle = 0, speed = 1, input = 1;  // mechanical state indices and input column
   bool active() const { return fs > 0.0; }  // DryFriction::active (the fit's friction is symmetric)
 };
 
-template <int NB>
+// ND: the lanes carried (at least the free parameters and the start states; the rest stay 0).
+template <int NB, int ND>
 class Simulation {
  public:
   using S_ = Shape<NB>;
-  static constexpr int n = S_::kStates, nd = S_::kDirs, nlin = S_::kLinear;
-  using Lanes = std::array<double, nd>;  // d(value) / d[p, x0]
+  static constexpr int n = S_::kStates, nd = ND, nlin = S_::kLinear;
+  using Lanes = std::array<double, nd>;  // d(value) / d[free p, x0]
 
   // One discretisation (a stiction mask) on the mechanical state, with its derivatives along the linear
   // parameters. Input columns: command, torque on the motor body, torque on the load body (the load torque; rigid:
   // the same body), the current loop's torque (the lag state's column of phi; 0 without a current loop).
+  // The derivatives are those of the free linear parameters only, in lane order (dphi[t]: lane t).
   struct Step {
     double phi[n][n], gam[n][4];
-    double dphi[nlin][n][n], dgam[nlin][n][4];  // [linear parameter][row][column]
+    double dphi[nlin][n][n], dgam[nlin][n][4];  // [lane][row][column]
   };
 
-  Simulation(const FitContext& ctx, const double* p) : ctx_(ctx), p_(p) {
+  Simulation(const FitContext& ctx, const double* p, const LaneMap& lanes)
+      : ctx_(ctx), p_(p), nlf_(lanes.free_linear), lane_load_(lanes.of[S_::kLoad]) {
     const int nl = ctx.layout.lag_states();
     const auto disc = ctx.cache->get(p, true);
-    for (int m = 0; m < S_::kMasks; ++m) steps_[m] = mechanical_step(*disc, static_cast<unsigned>(m), nl);
+    for (int m = 0; m < S_::kMasks; ++m) steps_[m] = mechanical_step(*disc, static_cast<unsigned>(m), nl, lanes);
     expo_ = ctx.layout.stribeck_exponent;
+    const auto& of = lanes.of;
     if constexpr (NB == 1) {
-      body_[0] = BodyFriction{p[2], p[2] + p[3], p[4], 2, 3, 4, 0, 1, 1};
+      body_[0] = BodyFriction{p[2], p[2] + p[3], p[4], true, of[2], of[3], of[4], 0, 1, 1};
     } else {
-      body_[0] = BodyFriction{p[6], p[6] + p[7], p[8], 6, 7, 8, 0, 1, 1};
-      body_[1] = BodyFriction{p[9], p[9], 1.0, 9, -1, -1, 2, 3, 2};
+      body_[0] = BodyFriction{p[6], p[6] + p[7], p[8], true, of[6], of[7], of[8], 0, 1, 1};
+      body_[1] = BodyFriction{p[9], p[9], 1.0, false, of[9], -1, -1, 2, 3, 2};
     }
   }
 
@@ -89,7 +115,7 @@ class Simulation {
       for (int i = 0; i < n; ++i) {
         xf[i] += g->gam[i][c] * f[b];
         for (int j = 0; j < nd; ++j) dxf[i][j] += g->gam[i][c] * df[b][j];
-        for (int k = 0; k < nlin; ++k) dxf[i][k] += g->dgam[k][i][c] * f[b];
+        for (int k = 0; k < nlf_; ++k) dxf[i][k] += g->dgam[k][i][c] * f[b];
       }
     }
     for (int b = 0; b < NB; ++b) {
@@ -109,14 +135,14 @@ class Simulation {
   const BodyFriction& body(int b) const { return body_[b]; }
 
  private:
-  static Step mechanical_step(const Discretisation& d, unsigned mask, int nl) {
+  static Step mechanical_step(const Discretisation& d, unsigned mask, int nl, const LaneMap& lanes) {
     Step s{};
     for (int r = 0; r < n; ++r) {
       for (int c = 0; c < n; ++c) s.phi[r][c] = d.phi[mask](nl + r, nl + c);
       for (int c = 0; c < 3; ++c) s.gam[r][c] = d.gamma[mask](nl + r, c);
       s.gam[r][3] = nl ? d.phi[mask](nl + r, 0) : 0.0;
-      for (int k = 0; k < nlin; ++k) {
-        const auto kk = static_cast<std::size_t>(k);
+      for (int k = 0; k < lanes.free_linear; ++k) {
+        const auto kk = static_cast<std::size_t>(lanes.linear[static_cast<std::size_t>(k)]);
         for (int c = 0; c < n; ++c) s.dphi[k][r][c] = d.dphi[mask][kk](nl + r, nl + c);
         for (int c = 0; c < 3; ++c) s.dgam[k][r][c] = d.dgamma[mask][kk](nl + r, c);
         s.dgam[k][r][3] = nl ? d.dphi[mask][kk](nl + r, 0) : 0.0;
@@ -147,20 +173,20 @@ class Simulation {
         for (int c = 0; c < n; ++c) a += s.phi[i][c] * S[c][j];
         d[j] = a;
       }
-      for (int k = 0; k < nlin; ++k)
+      for (int k = 0; k < nlf_; ++k)
         for (int c = 0; c < n; ++c) d[k] += s.dphi[k][i][c] * x[c];
       if (u != 0.0) {
         xf[i] += s.gam[i][0] * u;
-        for (int k = 0; k < nlin; ++k) d[k] += s.dgam[k][i][0] * u;
+        for (int k = 0; k < nlf_; ++k) d[k] += s.dgam[k][i][0] * u;
       }
       if (ctx_.has_load) {
         xf[i] += s.gam[i][2] * t_load;
-        for (int k = 0; k < nlin; ++k) d[k] += s.dgam[k][i][2] * t_load;
-        d[S_::kLoad] -= s.gam[i][2];
+        for (int k = 0; k < nlf_; ++k) d[k] += s.dgam[k][i][2] * t_load;
+        if (lane_load_ >= 0) d[lane_load_] -= s.gam[i][2];
       }
       if (lag != 0.0) {
         xf[i] += s.gam[i][3] * lag;
-        for (int k = 0; k < nlin; ++k) d[k] += s.dgam[k][i][3] * lag;
+        for (int k = 0; k < nlf_; ++k) d[k] += s.dgam[k][i][3] * lag;
       }
     }
   }
@@ -168,15 +194,15 @@ class Simulation {
   // The sliding level Fc + (Fs - Fc) exp(-(|v|/ws)^delta) at the sub-step's start speed v and its lanes.
   double sliding(const BodyFriction& bf, double v, const Lanes& dv, Lanes& out) const {
     out.fill(0.0);
-    if (bf.lane_excess < 0) {  // no peak: the level is Fc (the Jets' (Fs - Fc) term is exactly 0 with its lanes)
-      out[bf.lane_fc] = 1.0;
+    if (!bf.peak) {  // the level is Fc (the Jets' (Fs - Fc) term is exactly 0 with its lanes)
+      if (bf.lane_fc >= 0) out[bf.lane_fc] = 1.0;
       return bf.fc;
     }
     const double sg = std::copysign(1.0, v);
     const double r = std::fabs(v) / bf.ws;
     Lanes dr;
     for (int j = 0; j < nd; ++j) dr[j] = sg * dv[j];
-    dr[bf.lane_ws] -= r;  // d|v|/ws = (d|v| - r dws) / ws
+    if (bf.lane_ws >= 0) dr[bf.lane_ws] -= r;  // d|v|/ws = (d|v| - r dws) / ws
     for (int j = 0; j < nd; ++j) dr[j] /= bf.ws;
     double shape, slope;
     if (expo_ == 2.0) {
@@ -189,8 +215,8 @@ class Simulation {
     const double e = std::exp(-shape);
     const double excess = bf.fs - bf.fc;
     for (int j = 0; j < nd; ++j) out[j] = -excess * e * slope * dr[j];
-    out[bf.lane_fc] += 1.0;
-    out[bf.lane_excess] += e;
+    if (bf.lane_fc >= 0) out[bf.lane_fc] += 1.0;
+    if (bf.lane_excess >= 0) out[bf.lane_excess] += e;
     return bf.fc + excess * e;
   }
 
@@ -238,7 +264,7 @@ class Simulation {
             dv[j] += g.gam[sp][oc] * df[o][j];
             dd[j] += g.gam[an][oc] * df[o][j];
           }
-          for (int k = 0; k < nlin; ++k) {
+          for (int k = 0; k < nlf_; ++k) {
             dv[k] += g.dgam[k][sp][oc] * f[o];
             dd[k] += g.dgam[k][an][oc] * f[o];
           }
@@ -263,12 +289,12 @@ class Simulation {
           if (f_stick <= bf.fs && f_stick >= -bf.fs) {
             fb = f_stick;
             for (int j = 0; j < nd; ++j) dfb[j] = -dv[j] / gv;
-            for (int k = 0; k < nlin; ++k) dfb[k] += q * g.dgam[k][sp][in] / gv;
+            for (int k = 0; k < nlf_; ++k) dfb[k] += q * g.dgam[k][sp][in] / gv;
             st = true;
           } else {  // breaks away, or passes zero: -Fs or +Fs, dFs = dFc + d(excess)
             const double sgn = v_free > 0.0 ? -1.0 : 1.0;
             fb = sgn * bf.fs;
-            dfb[bf.lane_fc] = sgn;
+            if (bf.lane_fc >= 0) dfb[bf.lane_fc] = sgn;
             if (bf.lane_excess >= 0) dfb[bf.lane_excess] = sgn;
           }
         }
@@ -281,7 +307,7 @@ class Simulation {
             cap = std::fabs(d) / gth;
             const double sd = std::copysign(1.0, d);
             for (int j = 0; j < nd; ++j) dcap[j] = sd * dd[j] / gth;
-            for (int k = 0; k < nlin; ++k) dcap[k] -= cap * g.dgam[k][an][in] / gth;
+            for (int k = 0; k < nlf_; ++k) dcap[k] -= cap * g.dgam[k][an][in] / gth;
           }
           const double sf = std::copysign(1.0, fb);
           double mag;
@@ -311,26 +337,24 @@ class Simulation {
 
   const FitContext& ctx_;
   const double* p_;
+  int nlf_;        // free linear parameters: lanes 0..nlf_-1
+  int lane_load_;  // the load's lane, or -1
   Step steps_[S_::kMasks];
   BodyFriction body_[NB];
   double expo_ = 2.0;
 };
 
-template <int NB>
+template <int NB, int ND>
 class SensitivityCost final : public ceres::CostFunction {
  public:
   using S_ = Shape<NB>;
   static constexpr int n = S_::kStates, np = S_::kParams;
 
-  SensitivityCost(const FitContext* ctx, int start, int count, std::vector<int> free)
-      : ctx_(ctx), start_(start), count_(count) {
+  SensitivityCost(const FitContext* ctx, int start, int count, const LaneMap& lanes)
+      : ctx_(ctx), start_(start), count_(count), lanes_(lanes) {
     set_num_residuals(count);
     mutable_parameter_block_sizes()->push_back(np);
     mutable_parameter_block_sizes()->push_back(n);
-    if (free.empty())
-      moves_.fill(true);
-    else
-      for (int i : free) moves_[static_cast<std::size_t>(i)] = true;
   }
 
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
@@ -340,15 +364,16 @@ class SensitivityCost final : public ceres::CostFunction {
     }
     const FitContext& ctx = *ctx_;
     const int nl = ctx.layout.lag_states();
-    const Simulation<NB> sim(ctx, parameters[0]);
-    using Lanes = typename Simulation<NB>::Lanes;
+    const Simulation<NB, ND> sim(ctx, parameters[0], lanes_);
+    using Lanes = typename Simulation<NB, ND>::Lanes;
+    const int nf = lanes_.free;
     double x[n];
     Lanes S[n];
     char stuck[NB];
     for (int i = 0; i < n; ++i) {
       x[i] = parameters[1][i];
       S[i].fill(0.0);
-      S[i][np + i] = 1.0;
+      S[i][static_cast<std::size_t>(nf + i)] = 1.0;
     }
     for (int b = 0; b < NB; ++b) stuck[b] = x[sim.body(b).speed] == 0.0 ? 1 : 0;
     const int oi = ctx.output_index - nl;
@@ -360,10 +385,14 @@ class SensitivityCost final : public ceres::CostFunction {
       residuals[k] = (x[oi] - y[s]) * ctx.inv_scale;
       if (jacobians[0]) {
         double* row = jacobians[0] + static_cast<std::ptrdiff_t>(k) * np;
-        for (int j = 0; j < np; ++j) row[j] = moves_[static_cast<std::size_t>(j)] ? S[oi][j] * ctx.inv_scale : 0.0;
+        for (int j = 0; j < np; ++j) {
+          const int l = lanes_.of[static_cast<std::size_t>(j)];
+          row[j] = l >= 0 ? S[oi][static_cast<std::size_t>(l)] * ctx.inv_scale : 0.0;
+        }
       }
       if (jacobians[1])
-        for (int i = 0; i < n; ++i) jacobians[1][static_cast<std::ptrdiff_t>(k) * n + i] = S[oi][np + i] * ctx.inv_scale;
+        for (int i = 0; i < n; ++i)
+          jacobians[1][static_cast<std::ptrdiff_t>(k) * n + i] = S[oi][static_cast<std::size_t>(nf + i)] * ctx.inv_scale;
       if (k + 1 == count_) break;
       for (int sub = 0; sub < ctx.substeps; ++sub) {
         sim.substep(x, S, stuck, u[s], lag);
@@ -376,14 +405,22 @@ class SensitivityCost final : public ceres::CostFunction {
  private:
   const FitContext* ctx_;
   int start_, count_;
-  std::array<bool, np> moves_{};
+  LaneMap lanes_;
 };
 
 }  // namespace
 
 ceres::CostFunction* sensitivity_cost(const FitContext* ctx, int start, int count, std::vector<int> free) {
-  if (ctx->layout.model == PlantModel::kRigid) return new SensitivityCost<1>(ctx, start, count, std::move(free));
-  return new SensitivityCost<2>(ctx, start, count, std::move(free));
+  // The lanes carried: the free parameters and the start states, rounded up to one of a few widths.
+  if (ctx->layout.model == PlantModel::kRigid) {
+    const LaneMap lanes = lane_map(6, 2, free);
+    if (lanes.free + 2 <= 6) return new SensitivityCost<1, 6>(ctx, start, count, lanes);
+    return new SensitivityCost<1, 8>(ctx, start, count, lanes);
+  }
+  const LaneMap lanes = lane_map(11, 6, free);
+  if (lanes.free + 4 <= 10) return new SensitivityCost<2, 10>(ctx, start, count, lanes);
+  if (lanes.free + 4 <= 12) return new SensitivityCost<2, 12>(ctx, start, count, lanes);
+  return new SensitivityCost<2, 15>(ctx, start, count, lanes);
 }
 
 }  // namespace servobench::identify::detail

@@ -2,8 +2,9 @@
 // identify/; decisions FU1, rigid, and FV1, two-mass). It simulates what simulate_segment<M> simulates -- the
 // zero-order-hold step, the logged command, the known current loop's torque, the constant load and the implicit
 // dry-friction sub-step of plant/dry_friction.hpp (one body and one sweep, or two bodies and three Gauss-Seidel
-// sweeps) -- and carries alongside the mechanical state x its sensitivity S = dx / d[p, x0] (rigid 2 x 8: six
-// internal parameters, then the segment's two start states; two-mass 4 x 15: eleven parameters, four states):
+// sweeps) -- and carries alongside the mechanical state x its sensitivity S = dx / d[p, x0] (rigid at most 2 x 8: six
+// internal parameters, then the segment's two start states; two-mass at most 4 x 15: eleven parameters, four
+// states; a parameter the solve holds has no lane, decision FV2):
 //
 //   free motion   xf = Phi x + Gamma [u, 0, -load, lag],    dxf = Phi S + (dPhi/dp) x + (dGamma/dp) [..] + Gamma d[..]
 //   friction      f_b (the branch the values choose, each sweep seeing the other body's latest force), df_b from
