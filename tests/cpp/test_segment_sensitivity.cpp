@@ -41,6 +41,18 @@ double worst_relative_difference(const identify::SparseJacobian& a, const identi
 
 // Compares the two Jacobians of `model` on six random points around `truth` for each case; returns the points
 // checked and counts the segment speeds that start exactly at rest.
+// A torque command of random levels in [-amplitude, amplitude] N*m, each held `hold` samples (0 first).
+std::vector<double> torque_levels(std::mt19937& rng, int samples, int hold, double amplitude) {
+  std::uniform_real_distribution<double> level(-amplitude, amplitude);
+  std::vector<double> torque;
+  double u = 0.0;
+  for (int k = 0; k < samples; ++k) {
+    if (k % hold == 0) u = k == 0 ? 0.0 : level(rng);
+    torque.push_back(u);
+  }
+  return torque;
+}
+
 // tolerance: of a Jacobian entry, relative to its column's largest.
 int compare_on_random_points(identify::PlantModel model, const std::vector<Case>& cases,
                              const std::vector<double>& truth, double tolerance, std::mt19937& rng,
@@ -64,12 +76,7 @@ int compare_on_random_points(identify::PlantModel model, const std::vector<Case>
     log.sample_period_s = 200e-6;
     log.measured_is_speed = c.speed;
     log.measured_on_load = on_load;
-    std::uniform_real_distribution<double> level(-0.15, 0.15);
-    double u = 0.0;
-    for (int k = 0; k < 6000; ++k) {
-      if (k % 300 == 0) u = k == 0 ? 0.0 : level(rng);
-      log.torque_nm.push_back(u);
-    }
+    log.torque_nm = torque_levels(rng, 6000, 300, 0.15);
     std::vector<double> y = identify::simulate_model(log, truth, std::vector<double>(ns, 0.0), o);
     if (c.speed) {  // speeds: the angle's difference per sample
       std::vector<double> v(y.size(), 0.0);
@@ -121,6 +128,28 @@ int compare_on_random_points(identify::PlantModel model, const std::vector<Case>
   return points;
 }
 
+// The whole fit with either Jacobian: the same estimates and standard errors (the derivatives differ by rounding
+// only), the same iterations and convergence.
+void expect_the_same_fit(const identify::TimeLog& log, const identify::ParameterSetup& setup,
+                         const identify::TimeFitOptions& o) {
+  identify::TimeFitOptions ad = o;
+  ad.analytic_jacobian = false;
+  const identify::TimeFitResult a = identify::fit_time_domain(log, setup, o);
+  const identify::TimeFitResult b = identify::fit_time_domain(log, setup, ad);
+  ASSERT_EQ(a.parameters.size(), b.parameters.size());
+  for (std::size_t i = 0; i < a.parameters.size(); ++i) {
+    const auto& ea = a.parameters[i];
+    const auto& eb = b.parameters[i];
+    EXPECT_NEAR(ea.value, eb.value, 1e-6 * std::max(std::fabs(eb.value), eb.std_error)) << ea.name;
+    if (std::isinf(eb.std_error))  // not identified by either (e.g. no Stribeck speed visited in the log)
+      EXPECT_TRUE(std::isinf(ea.std_error)) << ea.name;
+    else
+      EXPECT_NEAR(ea.std_error, eb.std_error, 1e-6 * eb.std_error) << ea.name;
+  }
+  EXPECT_EQ(a.summary.converged, b.summary.converged);
+  EXPECT_EQ(a.summary.iterations, b.summary.iterations);
+}
+
 }  // namespace
 
 TEST(SegmentSensitivity, RigidJacobianIsTheAutoDiffOnesOnRandomPoints) {
@@ -159,35 +188,19 @@ TEST(SegmentSensitivity, TwoMassJacobianIsTheAutoDiffOnesOnRandomPoints) {
 }
 
 TEST(SegmentSensitivity, RigidFitIsTheAutoDiffFitsToRounding) {
-  // The whole fit with either Jacobian: the same estimates (the derivatives differ by rounding only).
   identify::TimeFitOptions o;
   o.current_bw_hz = 1500.0;
   o.measurement_scale = 2.0 * M_PI / 10000.0;
   identify::TimeLog log;
   log.sample_period_s = 200e-6;
   std::mt19937 rng(5);
-  std::uniform_real_distribution<double> level(-0.15, 0.15);
-  double u = 0.0;
-  for (int k = 0; k < 10000; ++k) {
-    if (k % 400 == 0) u = k == 0 ? 0.0 : level(rng);
-    log.torque_nm.push_back(u);
-  }
+  log.torque_nm = torque_levels(rng, 10000, 400, 0.15);
   const std::vector<double> truth = {2e-4, 3e-4, 0.03, 0.05, 2.0, 0.004};
   log.measured = identify::simulate_model(log, truth, {0.0, 0.0}, o);
   for (double& v : log.measured) v = std::round(v / o.measurement_scale) * o.measurement_scale;
   identify::ParameterSetup setup;
   setup.initial = {3e-4, 2e-4, 0.02, 0.06, 3.0, 0.0};
-  identify::TimeFitOptions ad = o;
-  ad.analytic_jacobian = false;
-  const identify::TimeFitResult a = identify::fit_time_domain(log, setup, o);
-  const identify::TimeFitResult b = identify::fit_time_domain(log, setup, ad);
-  for (std::size_t i = 0; i < truth.size(); ++i) {
-    const auto& ea = a.parameters[i];
-    const auto& eb = b.parameters[i];
-    EXPECT_NEAR(ea.value, eb.value, 1e-6 * std::max(std::fabs(eb.value), eb.std_error)) << ea.name;
-    EXPECT_NEAR(ea.std_error, eb.std_error, 1e-6 * eb.std_error) << ea.name;
-  }
-  EXPECT_EQ(a.summary.converged, b.summary.converged);
+  expect_the_same_fit(log, setup, o);
 }
 
 TEST(SegmentSensitivity, TwoMassFitIsTheAutoDiffFitsToRounding) {
@@ -200,31 +213,12 @@ TEST(SegmentSensitivity, TwoMassFitIsTheAutoDiffFitsToRounding) {
   identify::TimeLog log;
   log.sample_period_s = 200e-6;
   std::mt19937 rng(7);
-  std::uniform_real_distribution<double> level(-0.3, 0.3);
-  double u = 0.0;
-  for (int k = 0; k < 10000; ++k) {
-    if (k % 40 == 0) u = k == 0 ? 0.0 : level(rng);  // a rich input: steps every 8 ms excite the resonance
-    log.torque_nm.push_back(u);
-  }
+  log.torque_nm = torque_levels(rng, 10000, 40, 0.3);  // a rich input: steps every 8 ms excite the resonance
   const std::vector<double> truth = {1e-4, 2e-4, 300.0, 0.01, 2e-4, 0.0, 0.03, 0.02, 2.0, 0.0, 0.0};
   log.measured = identify::simulate_model(log, truth, {0.0, 0.0, 0.0, 0.0}, o);
   for (double& v : log.measured) v = std::round(v / o.measurement_scale) * o.measurement_scale;
   identify::ParameterSetup setup;
   setup.initial = {1.3e-4, 1.5e-4, 380.0, 0.013, 1.5e-4, 0.0, 0.04, 0.015, 2.5, 0.0, 0.0};
   setup.fixed = {false, false, false, false, false, true, false, false, false, true, true};
-  identify::TimeFitOptions ad = o;
-  ad.analytic_jacobian = false;
-  const identify::TimeFitResult a = identify::fit_time_domain(log, setup, o);
-  const identify::TimeFitResult b = identify::fit_time_domain(log, setup, ad);
-  for (std::size_t i = 0; i < truth.size(); ++i) {
-    const auto& ea = a.parameters[i];
-    const auto& eb = b.parameters[i];
-    EXPECT_NEAR(ea.value, eb.value, 1e-6 * std::max(std::fabs(eb.value), eb.std_error)) << ea.name;
-    if (std::isinf(eb.std_error))  // not identified by either (no Stribeck speed visited in this log)
-      EXPECT_TRUE(std::isinf(ea.std_error)) << ea.name;
-    else
-      EXPECT_NEAR(ea.std_error, eb.std_error, 1e-6 * eb.std_error) << ea.name;
-  }
-  EXPECT_EQ(a.summary.converged, b.summary.converged);
-  EXPECT_EQ(a.summary.iterations, b.summary.iterations);
+  expect_the_same_fit(log, setup, o);
 }
