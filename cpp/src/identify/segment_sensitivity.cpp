@@ -53,8 +53,9 @@ struct BodyFriction {
   bool active() const { return fs > 0.0; }  // DryFriction::active (the fit's friction is symmetric)
 };
 
-// ND: the lanes carried (at least the free parameters and the start states; the rest stay 0).
-template <int NB, int ND>
+// ND: the lanes carried (at least the free parameters and the start states; the rest stay 0). AL: every linear
+// parameter is free (their loops then have a compile-time length).
+template <int NB, int ND, bool AL>
 class Simulation {
  public:
   using S_ = Shape<NB>;
@@ -115,7 +116,7 @@ class Simulation {
       for (int i = 0; i < n; ++i) {
         xf[i] += g->gam[i][c] * f[b];
         for (int j = 0; j < nd; ++j) dxf[i][j] += g->gam[i][c] * df[b][j];
-        for (int k = 0; k < nlf_; ++k) dxf[i][k] += g->dgam[k][i][c] * f[b];
+        for (int k = 0; k < nlf(); ++k) dxf[i][k] += g->dgam[k][i][c] * f[b];
       }
     }
     for (int b = 0; b < NB; ++b) {
@@ -135,6 +136,11 @@ class Simulation {
   const BodyFriction& body(int b) const { return body_[b]; }
 
  private:
+  int nlf() const {
+    if constexpr (AL) return nlin;
+    return nlf_;
+  }
+
   static Step mechanical_step(const Discretisation& d, unsigned mask, int nl, const LaneMap& lanes) {
     Step s{};
     for (int r = 0; r < n; ++r) {
@@ -164,37 +170,37 @@ class Simulation {
                    Lanes dxf[n]) const {
     const double t_load = -p_[S_::kLoad];
     for (int i = 0; i < n; ++i) {
-      double v = 0.0;
-      for (int c = 0; c < n; ++c) v += s.phi[i][c] * x[c];
+      double v = s.phi[i][0] * x[0];
+      for (int c = 1; c < n; ++c) v += s.phi[i][c] * x[c];
       xf[i] = v;
       Lanes& d = dxf[i];
       for (int j = 0; j < nd; ++j) {
-        double a = 0.0;
-        for (int c = 0; c < n; ++c) a += s.phi[i][c] * S[c][j];
+        double a = s.phi[i][0] * S[0][j];
+        for (int c = 1; c < n; ++c) a += s.phi[i][c] * S[c][j];
         d[j] = a;
       }
-      for (int k = 0; k < nlf_; ++k)
+      for (int k = 0; k < nlf(); ++k)
         for (int c = 0; c < n; ++c) d[k] += s.dphi[k][i][c] * x[c];
       if (u != 0.0) {
         xf[i] += s.gam[i][0] * u;
-        for (int k = 0; k < nlf_; ++k) d[k] += s.dgam[k][i][0] * u;
+        for (int k = 0; k < nlf(); ++k) d[k] += s.dgam[k][i][0] * u;
       }
       if (ctx_.has_load) {
         xf[i] += s.gam[i][2] * t_load;
-        for (int k = 0; k < nlf_; ++k) d[k] += s.dgam[k][i][2] * t_load;
+        for (int k = 0; k < nlf(); ++k) d[k] += s.dgam[k][i][2] * t_load;
         if (lane_load_ >= 0) d[lane_load_] -= s.gam[i][2];
       }
       if (lag != 0.0) {
         xf[i] += s.gam[i][3] * lag;
-        for (int k = 0; k < nlf_; ++k) d[k] += s.dgam[k][i][3] * lag;
+        for (int k = 0; k < nlf(); ++k) d[k] += s.dgam[k][i][3] * lag;
       }
     }
   }
 
   // The sliding level Fc + (Fs - Fc) exp(-(|v|/ws)^delta) at the sub-step's start speed v and its lanes.
   double sliding(const BodyFriction& bf, double v, const Lanes& dv, Lanes& out) const {
-    out.fill(0.0);
     if (!bf.peak) {  // the level is Fc (the Jets' (Fs - Fc) term is exactly 0 with its lanes)
+      out.fill(0.0);
       if (bf.lane_fc >= 0) out[bf.lane_fc] = 1.0;
       return bf.fc;
     }
@@ -248,32 +254,30 @@ class Simulation {
           continue;
         }
         const int sp = bf.speed, an = bf.angle, in = bf.input;
-        // End speed and displacement of this body without its own friction (the others' included).
+        // End speed and displacement of this body without its own friction (the others' included). Their lanes
+        // are needed on the sticking and the capped branches only, and are formed there (the sliding branch, the
+        // common one in motion, carries the sliding level's lanes alone).
         double v_free = xf[sp], d = xf[an] - x[an];
-        Lanes dv, dd;
-        for (int j = 0; j < nd; ++j) {
-          dv[j] = dxf[sp][j];
-          dd[j] = dxf[an][j] - S[an][j];
-        }
         for (int o = 0; o < NB; ++o) {
           if (o == b) continue;
-          const int oc = body_[o].input;
-          v_free += g.gam[sp][oc] * f[o];
-          d += g.gam[an][oc] * f[o];
-          for (int j = 0; j < nd; ++j) {
-            dv[j] += g.gam[sp][oc] * df[o][j];
-            dd[j] += g.gam[an][oc] * df[o][j];
-          }
-          for (int k = 0; k < nlf_; ++k) {
-            dv[k] += g.dgam[k][sp][oc] * f[o];
-            dd[k] += g.dgam[k][an][oc] * f[o];
-          }
+          v_free += g.gam[sp][body_[o].input] * f[o];
+          d += g.gam[an][body_[o].input] * f[o];
         }
+        // d(row's free end value) = dxf[row] - base[row] + the others' friction lanes.
+        const auto free_lanes = [&](int row, const Lanes* base, Lanes& out) {
+          for (int j = 0; j < nd; ++j) out[j] = base ? dxf[row][j] - (*base)[j] : dxf[row][j];
+          for (int o = 0; o < NB; ++o) {
+            if (o == b) continue;
+            const int oc = body_[o].input;
+            for (int j = 0; j < nd; ++j) out[j] += g.gam[row][oc] * df[o][j];
+            for (int k = 0; k < nlf(); ++k) out[k] += g.dgam[k][row][oc] * f[o];
+          }
+        };
         const double gv = g.gam[sp][in], gth = g.gam[an][in];
         const double v0 = x[sp];
         const double dir = v0 > 0.0 ? 1.0 : -1.0;
         double fb = 0.0;
-        Lanes dfb{};
+        Lanes& dfb = df[b];  // every branch below sets all of its lanes (free_lanes reads the others' only)
         bool st = false, sliding_branch = false;
         if (v0 != 0.0) {
           const double f_slip = -dir * slip[b];
@@ -288,12 +292,15 @@ class Simulation {
           const double f_stick = -q;  // holds the body at rest at the sub-step's end
           if (f_stick <= bf.fs && f_stick >= -bf.fs) {
             fb = f_stick;
+            Lanes dv;
+            free_lanes(sp, nullptr, dv);
             for (int j = 0; j < nd; ++j) dfb[j] = -dv[j] / gv;
-            for (int k = 0; k < nlf_; ++k) dfb[k] += q * g.dgam[k][sp][in] / gv;
+            for (int k = 0; k < nlf(); ++k) dfb[k] += q * g.dgam[k][sp][in] / gv;
             st = true;
           } else {  // breaks away, or passes zero: -Fs or +Fs, dFs = dFc + d(excess)
             const double sgn = v_free > 0.0 ? -1.0 : 1.0;
             fb = sgn * bf.fs;
+            dfb.fill(0.0);
             if (bf.lane_fc >= 0) dfb[bf.lane_fc] = sgn;
             if (bf.lane_excess >= 0) dfb[bf.lane_excess] = sgn;
           }
@@ -306,8 +313,10 @@ class Simulation {
           if (gth > 0.0) {
             cap = std::fabs(d) / gth;
             const double sd = std::copysign(1.0, d);
+            Lanes dd;
+            free_lanes(an, &S[an], dd);
             for (int j = 0; j < nd; ++j) dcap[j] = sd * dd[j] / gth;
-            for (int k = 0; k < nlf_; ++k) dcap[k] -= cap * g.dgam[k][an][in] / gth;
+            for (int k = 0; k < nlf(); ++k) dcap[k] -= cap * g.dgam[k][an][in] / gth;
           }
           const double sf = std::copysign(1.0, fb);
           double mag;
@@ -329,7 +338,6 @@ class Simulation {
           }
         }
         f[b] = fb;
-        df[b] = dfb;
         stick[b] = st;
       }
     }
@@ -344,7 +352,60 @@ class Simulation {
   double expo_ = 2.0;
 };
 
-template <int NB, int ND>
+// The segment's residuals and Jacobian rows (the loop of SensitivityCost::Evaluate), one function with everything
+// it calls inlined (flatten). An AVX2 + FMA copy chosen at run time was measured and left out (decision FV3).
+template <int NB, int ND, bool AL>
+__attribute__((always_inline)) inline void segment_lanes(const Simulation<NB, ND, AL>& sim, const FitContext& ctx,
+                                                         const LaneMap& lanes, const double* x0, int start,
+                                                         int count, double* residuals, double** jacobians) {
+  using Sim = Simulation<NB, ND, AL>;
+  constexpr int n = Sim::n, np = Shape<NB>::kParams;
+  using Lanes = typename Sim::Lanes;
+  const int nl = ctx.layout.lag_states();
+  const int nf = lanes.free;
+  double x[n];
+  Lanes S[n];
+  char stuck[NB];
+  for (int i = 0; i < n; ++i) {
+    x[i] = x0[i];
+    S[i].fill(0.0);
+    S[i][static_cast<std::size_t>(nf + i)] = 1.0;
+  }
+  for (int b = 0; b < NB; ++b) stuck[b] = x[sim.body(b).speed] == 0.0 ? 1 : 0;
+  const int oi = ctx.output_index - nl;
+  const std::vector<double>& u = ctx.log->torque_nm;
+  const std::vector<double>& y = ctx.log->measured;
+  double lag = nl ? ctx.lag[static_cast<std::size_t>(start)] : 0.0;
+  for (int k = 0; k < count; ++k) {
+    const std::size_t s = static_cast<std::size_t>(start + k);
+    residuals[k] = (x[oi] - y[s]) * ctx.inv_scale;
+    if (jacobians[0]) {
+      double* row = jacobians[0] + static_cast<std::ptrdiff_t>(k) * np;
+      for (int j = 0; j < np; ++j) {
+        const int l = lanes.of[static_cast<std::size_t>(j)];
+        row[j] = l >= 0 ? S[oi][static_cast<std::size_t>(l)] * ctx.inv_scale : 0.0;
+      }
+    }
+    if (jacobians[1])
+      for (int i = 0; i < n; ++i)
+        jacobians[1][static_cast<std::ptrdiff_t>(k) * n + i] = S[oi][static_cast<std::size_t>(nf + i)] * ctx.inv_scale;
+    if (k + 1 == count) break;
+    for (int sub = 0; sub < ctx.substeps; ++sub) {
+      sim.substep(x, S, stuck, u[s], lag);
+      if (nl) lag = ctx.lag_decay * lag + (1.0 - ctx.lag_decay) * u[s];
+    }
+  }
+}
+
+template <int NB, int ND, bool AL>
+__attribute__((flatten)) void segment_lanes_flat(const Simulation<NB, ND, AL>& sim, const FitContext& ctx,
+                                                     const LaneMap& lanes, const double* x0, int start, int count,
+                                                     double* residuals, double** jacobians) {
+  segment_lanes(sim, ctx, lanes, x0, start, count, residuals, jacobians);
+}
+
+
+template <int NB, int ND, bool AL>
 class SensitivityCost final : public ceres::CostFunction {
  public:
   using S_ = Shape<NB>;
@@ -362,43 +423,8 @@ class SensitivityCost final : public ceres::CostFunction {
       segment_residual(*ctx_, parameters[0], parameters[1], start_, count_, residuals);
       return true;
     }
-    const FitContext& ctx = *ctx_;
-    const int nl = ctx.layout.lag_states();
-    const Simulation<NB, ND> sim(ctx, parameters[0], lanes_);
-    using Lanes = typename Simulation<NB, ND>::Lanes;
-    const int nf = lanes_.free;
-    double x[n];
-    Lanes S[n];
-    char stuck[NB];
-    for (int i = 0; i < n; ++i) {
-      x[i] = parameters[1][i];
-      S[i].fill(0.0);
-      S[i][static_cast<std::size_t>(nf + i)] = 1.0;
-    }
-    for (int b = 0; b < NB; ++b) stuck[b] = x[sim.body(b).speed] == 0.0 ? 1 : 0;
-    const int oi = ctx.output_index - nl;
-    const std::vector<double>& u = ctx.log->torque_nm;
-    const std::vector<double>& y = ctx.log->measured;
-    double lag = nl ? ctx.lag[static_cast<std::size_t>(start_)] : 0.0;
-    for (int k = 0; k < count_; ++k) {
-      const std::size_t s = static_cast<std::size_t>(start_ + k);
-      residuals[k] = (x[oi] - y[s]) * ctx.inv_scale;
-      if (jacobians[0]) {
-        double* row = jacobians[0] + static_cast<std::ptrdiff_t>(k) * np;
-        for (int j = 0; j < np; ++j) {
-          const int l = lanes_.of[static_cast<std::size_t>(j)];
-          row[j] = l >= 0 ? S[oi][static_cast<std::size_t>(l)] * ctx.inv_scale : 0.0;
-        }
-      }
-      if (jacobians[1])
-        for (int i = 0; i < n; ++i)
-          jacobians[1][static_cast<std::ptrdiff_t>(k) * n + i] = S[oi][static_cast<std::size_t>(nf + i)] * ctx.inv_scale;
-      if (k + 1 == count_) break;
-      for (int sub = 0; sub < ctx.substeps; ++sub) {
-        sim.substep(x, S, stuck, u[s], lag);
-        if (nl) lag = ctx.lag_decay * lag + (1.0 - ctx.lag_decay) * u[s];
-      }
-    }
+    const Simulation<NB, ND, AL> sim(*ctx_, parameters[0], lanes_);
+    segment_lanes_flat(sim, *ctx_, lanes_, parameters[1], start_, count_, residuals, jacobians);
     return true;
   }
 
@@ -408,19 +434,25 @@ class SensitivityCost final : public ceres::CostFunction {
   LaneMap lanes_;
 };
 
+template <int NB, int ND>
+ceres::CostFunction* make_cost(const FitContext* ctx, int start, int count, const LaneMap& lanes) {
+  if (lanes.free_linear == Shape<NB>::kLinear) return new SensitivityCost<NB, ND, true>(ctx, start, count, lanes);
+  return new SensitivityCost<NB, ND, false>(ctx, start, count, lanes);
+}
+
 }  // namespace
 
 ceres::CostFunction* sensitivity_cost(const FitContext* ctx, int start, int count, std::vector<int> free) {
   // The lanes carried: the free parameters and the start states, rounded up to one of a few widths.
   if (ctx->layout.model == PlantModel::kRigid) {
     const LaneMap lanes = lane_map(6, 2, free);
-    if (lanes.free + 2 <= 6) return new SensitivityCost<1, 6>(ctx, start, count, lanes);
-    return new SensitivityCost<1, 8>(ctx, start, count, lanes);
+    if (lanes.free + 2 <= 6) return make_cost<1, 6>(ctx, start, count, lanes);
+    return make_cost<1, 8>(ctx, start, count, lanes);
   }
   const LaneMap lanes = lane_map(11, 6, free);
-  if (lanes.free + 4 <= 10) return new SensitivityCost<2, 10>(ctx, start, count, lanes);
-  if (lanes.free + 4 <= 12) return new SensitivityCost<2, 12>(ctx, start, count, lanes);
-  return new SensitivityCost<2, 15>(ctx, start, count, lanes);
+  if (lanes.free + 4 <= 10) return make_cost<2, 10>(ctx, start, count, lanes);
+  if (lanes.free + 4 <= 12) return make_cost<2, 12>(ctx, start, count, lanes);
+  return make_cost<2, 15>(ctx, start, count, lanes);
 }
 
 }  // namespace servobench::identify::detail
