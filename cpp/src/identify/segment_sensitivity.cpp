@@ -356,8 +356,9 @@ class Simulation {
 // it calls inlined (flatten). An AVX2 + FMA copy chosen at run time was measured and left out (decision FV3).
 template <int NB, int ND, bool AL>
 __attribute__((always_inline)) inline void segment_lanes(const Simulation<NB, ND, AL>& sim, const FitContext& ctx,
-                                                         const LaneMap& lanes, const double* x0, int start,
-                                                         int count, double* residuals, double** jacobians) {
+                                                         const LaneMap& lanes, bool free_block, const double* x0,
+                                                         int start, int count, double* residuals,
+                                                         double** jacobians) {
   using Sim = Simulation<NB, ND, AL>;
   constexpr int n = Sim::n, np = Shape<NB>::kParams;
   using Lanes = typename Sim::Lanes;
@@ -379,7 +380,10 @@ __attribute__((always_inline)) inline void segment_lanes(const Simulation<NB, ND
   for (int k = 0; k < count; ++k) {
     const std::size_t s = static_cast<std::size_t>(start + k);
     residuals[k] = (x[oi] - y[s]) * ctx.inv_scale;
-    if (jacobians[0]) {
+    if (jacobians[0] && free_block) {  // a column per free parameter: the lanes in order
+      double* row = jacobians[0] + static_cast<std::ptrdiff_t>(k) * nf;
+      for (int j = 0; j < nf; ++j) row[j] = S[oi][static_cast<std::size_t>(j)] * ctx.inv_scale;
+    } else if (jacobians[0]) {
       double* row = jacobians[0] + static_cast<std::ptrdiff_t>(k) * np;
       for (int j = 0; j < np; ++j) {
         const int l = lanes.of[static_cast<std::size_t>(j)];
@@ -399,9 +403,9 @@ __attribute__((always_inline)) inline void segment_lanes(const Simulation<NB, ND
 
 template <int NB, int ND, bool AL>
 __attribute__((flatten)) void segment_lanes_flat(const Simulation<NB, ND, AL>& sim, const FitContext& ctx,
-                                                     const LaneMap& lanes, const double* x0, int start, int count,
-                                                     double* residuals, double** jacobians) {
-  segment_lanes(sim, ctx, lanes, x0, start, count, residuals, jacobians);
+                                                 const LaneMap& lanes, bool free_block, const double* x0, int start,
+                                                 int count, double* residuals, double** jacobians) {
+  segment_lanes(sim, ctx, lanes, free_block, x0, start, count, residuals, jacobians);
 }
 
 
@@ -411,20 +415,30 @@ class SensitivityCost final : public ceres::CostFunction {
   using S_ = Shape<NB>;
   static constexpr int n = S_::kStates, np = S_::kParams;
 
-  SensitivityCost(const FitContext* ctx, int start, int count, const LaneMap& lanes)
-      : ctx_(ctx), start_(start), count_(count), lanes_(lanes) {
+  SensitivityCost(const FitContext* ctx, int start, int count, const LaneMap& lanes, const double* base)
+      : ctx_(ctx), start_(start), count_(count), lanes_(lanes), base_(base) {
     set_num_residuals(count);
-    mutable_parameter_block_sizes()->push_back(np);
+    mutable_parameter_block_sizes()->push_back(base ? lanes.free : np);
     mutable_parameter_block_sizes()->push_back(n);
   }
 
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    double full[np];
+    const double* p = parameters[0];
+    if (base_) {  // the block holds the free parameters (lane order): the held ones from base
+      std::copy(base_, base_ + np, full);
+      for (int i = 0; i < np; ++i) {
+        const int l = lanes_.of[static_cast<std::size_t>(i)];
+        if (l >= 0) full[i] = parameters[0][l];
+      }
+      p = full;
+    }
     if (!jacobians || (!jacobians[0] && !jacobians[1])) {
-      segment_residual(*ctx_, parameters[0], parameters[1], start_, count_, residuals);
+      segment_residual(*ctx_, p, parameters[1], start_, count_, residuals);
       return true;
     }
-    const Simulation<NB, ND, AL> sim(*ctx_, parameters[0], lanes_);
-    segment_lanes_flat(sim, *ctx_, lanes_, parameters[1], start_, count_, residuals, jacobians);
+    const Simulation<NB, ND, AL> sim(*ctx_, p, lanes_);
+    segment_lanes_flat(sim, *ctx_, lanes_, base_ != nullptr, parameters[1], start_, count_, residuals, jacobians);
     return true;
   }
 
@@ -432,27 +446,30 @@ class SensitivityCost final : public ceres::CostFunction {
   const FitContext* ctx_;
   int start_, count_;
   LaneMap lanes_;
+  const double* base_;  // nullptr: parameter block 0 is the whole vector
 };
 
 template <int NB, int ND>
-ceres::CostFunction* make_cost(const FitContext* ctx, int start, int count, const LaneMap& lanes) {
-  if (lanes.free_linear == Shape<NB>::kLinear) return new SensitivityCost<NB, ND, true>(ctx, start, count, lanes);
-  return new SensitivityCost<NB, ND, false>(ctx, start, count, lanes);
+ceres::CostFunction* make_cost(const FitContext* ctx, int start, int count, const LaneMap& lanes, const double* base) {
+  if (lanes.free_linear == Shape<NB>::kLinear)
+    return new SensitivityCost<NB, ND, true>(ctx, start, count, lanes, base);
+  return new SensitivityCost<NB, ND, false>(ctx, start, count, lanes, base);
 }
 
 }  // namespace
 
-ceres::CostFunction* sensitivity_cost(const FitContext* ctx, int start, int count, std::vector<int> free) {
+ceres::CostFunction* sensitivity_cost(const FitContext* ctx, int start, int count, std::vector<int> free,
+                                      const double* base) {
   // The lanes carried: the free parameters and the start states, rounded up to one of a few widths.
   if (ctx->layout.model == PlantModel::kRigid) {
     const LaneMap lanes = lane_map(6, 2, free);
-    if (lanes.free + 2 <= 6) return make_cost<1, 6>(ctx, start, count, lanes);
-    return make_cost<1, 8>(ctx, start, count, lanes);
+    if (lanes.free + 2 <= 6) return make_cost<1, 6>(ctx, start, count, lanes, base);
+    return make_cost<1, 8>(ctx, start, count, lanes, base);
   }
   const LaneMap lanes = lane_map(11, 6, free);
-  if (lanes.free + 4 <= 10) return make_cost<2, 10>(ctx, start, count, lanes);
-  if (lanes.free + 4 <= 12) return make_cost<2, 12>(ctx, start, count, lanes);
-  return make_cost<2, 15>(ctx, start, count, lanes);
+  if (lanes.free + 4 <= 10) return make_cost<2, 10>(ctx, start, count, lanes, base);
+  if (lanes.free + 4 <= 12) return make_cost<2, 12>(ctx, start, count, lanes, base);
+  return make_cost<2, 15>(ctx, start, count, lanes, base);
 }
 
 }  // namespace servobench::identify::detail

@@ -32,7 +32,10 @@ namespace servobench::identify::detail {
 // The cost of the segment [start, start + count) of ctx's model (rigid or two-mass): residuals (measured -
 // simulated) / measurement_scale, with the Jacobian with respect to the model's internal parameters and the
 // segment's start states. `free`: the parameters the solve moves (the other parameters' Jacobian columns are 0, as
-// FreeSegmentCost's); empty: every one.
-ceres::CostFunction* sensitivity_cost(const FitContext* ctx, int start, int count, std::vector<int> free);
+// FreeSegmentCost's); empty: every one. base (nullptr, or the whole internal parameter vector, read at every
+// evaluation): parameter block 0 is then the free parameters alone, in `free`'s order, the held ones read from base,
+// and the Jacobian has their columns only (decision FV4).
+ceres::CostFunction* sensitivity_cost(const FitContext* ctx, int start, int count, std::vector<int> free,
+                                      const double* base = nullptr);
 
 }  // namespace servobench::identify::detail

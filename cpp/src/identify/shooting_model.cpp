@@ -173,27 +173,34 @@ struct SegmentCost {
 template <PlantModel M, int K>
 class FreeSegmentCost final : public ceres::CostFunction {
  public:
-  FreeSegmentCost(const FitContext* ctx, int start, int count, std::vector<int> free)
-      : ctx_(ctx), start_(start), count_(count), free_(std::move(free)) {
+  FreeSegmentCost(const FitContext* ctx, int start, int count, std::vector<int> free, const double* base)
+      : ctx_(ctx), start_(start), count_(count), free_(std::move(free)), base_(base) {
     set_num_residuals(count);
-    mutable_parameter_block_sizes()->push_back(parameter_count(M));
+    mutable_parameter_block_sizes()->push_back(base ? static_cast<int>(free_.size()) : parameter_count(M));
     mutable_parameter_block_sizes()->push_back(kStates<M>);
     lin_dir_.fill(-1);
     for (std::size_t j = 0; j < free_.size(); ++j)
       if (free_[j] < linear_parameter_count(M)) lin_dir_[static_cast<std::size_t>(free_[j])] = static_cast<int>(j);
   }
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    constexpr int np = M == PlantModel::kRigid ? 6 : 11;
+    const int nf = static_cast<int>(free_.size());
+    double full[np];
+    const double* pv = parameters[0];
+    if (base_) {  // the block holds the free parameters: the held ones from base
+      std::copy(base_, base_ + np, full);
+      for (int j = 0; j < nf; ++j) full[free_[static_cast<std::size_t>(j)]] = parameters[0][j];
+      pv = full;
+    }
     if (!jacobians || (!jacobians[0] && !jacobians[1])) {
-      simulate_segment<M>(*ctx_, parameters[0], parameters[1], start_, count_, residuals, true);
+      simulate_segment<M>(*ctx_, pv, parameters[1], start_, count_, residuals, true);
       return true;
     }
     using J = ceres::Jet<double, K>;
-    constexpr int np = M == PlantModel::kRigid ? 6 : 11;
     constexpr int ns = kStates<M>;
-    const int nf = static_cast<int>(free_.size());
     std::array<J, np> p;
     std::array<J, ns> x0;
-    for (int i = 0; i < np; ++i) p[static_cast<std::size_t>(i)] = J(parameters[0][i]);
+    for (int i = 0; i < np; ++i) p[static_cast<std::size_t>(i)] = J(pv[i]);
     for (int j = 0; j < nf; ++j) p[static_cast<std::size_t>(free_[static_cast<std::size_t>(j)])].v[j] = 1.0;
     for (int i = 0; i < ns; ++i) x0[static_cast<std::size_t>(i)] = J(parameters[1][i], nf + i);
     std::vector<J> out(static_cast<std::size_t>(count_));
@@ -202,7 +209,10 @@ class FreeSegmentCost final : public ceres::CostFunction {
     for (int k = 0; k < count_; ++k) {
       const J& r = out[static_cast<std::size_t>(k)];
       residuals[k] = r.a;
-      if (jacobians[0]) {
+      if (jacobians[0] && base_) {
+        double* row = jacobians[0] + static_cast<std::ptrdiff_t>(k) * nf;
+        for (int j = 0; j < nf; ++j) row[j] = r.v[j];
+      } else if (jacobians[0]) {
         double* row = jacobians[0] + static_cast<std::ptrdiff_t>(k) * np;
         std::fill(row, row + np, 0.0);
         for (int j = 0; j < nf; ++j) row[free_[static_cast<std::size_t>(j)]] = r.v[j];
@@ -217,6 +227,7 @@ class FreeSegmentCost final : public ceres::CostFunction {
   const FitContext* ctx_;
   int start_, count_;
   std::vector<int> free_;           // the free parameters, in Jet-direction order
+  const double* base_;              // nullptr: parameter block 0 is the whole vector; else its held values
   std::array<int, 6> lin_dir_{};    // Jet direction of each linear parameter (-1: held)
 };
 
@@ -401,8 +412,9 @@ void check_log(const TimeLog& log, const TimeFitOptions& o) {
 
 // One residual block per segment: the model simulated from the segment's state (the AutoDiff cost); with
 // continuity_weight > 0, adjacent segments are linked. with_loss: the robust loss of the options.
-void add_segment_blocks(ceres::Problem& problem, const FitContext& ctx, ShootingProblem& sp, double* p,
-                        const TimeFitOptions& options, bool with_loss, const std::vector<bool>* held) {
+bool add_segment_blocks(ceres::Problem& problem, const FitContext& ctx, ShootingProblem& sp, double* p,
+                        const TimeFitOptions& options, bool with_loss, const std::vector<bool>* held,
+                        double* free_block) {
   const int nseg = static_cast<int>(sp.starts.size());
   const std::size_t ns = static_cast<std::size_t>(sp.state_size);
   std::vector<int> free;
@@ -410,6 +422,16 @@ void add_segment_blocks(ceres::Problem& problem, const FitContext& ctx, Shooting
     for (int i = 0; i < parameter_count(options.model); ++i)
       if (!(*held)[static_cast<std::size_t>(i)]) free.push_back(i);
   const int width = static_cast<int>(free.size()) + sp.state_size;
+  bool any_link = false;
+  for (int s = 0; s + 1 < nseg; ++s) {
+    const std::size_t u = static_cast<std::size_t>(s);
+    any_link = any_link || (options.continuity_weight > 0.0 && sp.starts[u + 1] == sp.starts[u] + sp.counts[u]);
+  }
+  // The free parameters as a block of their own (every cost then reads the held ones from p): no SubsetManifold,
+  // whose projection Ceres computes as a dense product per residual block and evaluation (decision FV4).
+  const bool reduced = held && free_block && !any_link && !free.empty();
+  const double* base = reduced ? p : nullptr;
+  double* block = reduced ? free_block : p;
   for (int s = 0; s < nseg; ++s) {
     const std::size_t u = static_cast<std::size_t>(s);
     const int a = sp.starts[u], c = sp.counts[u];
@@ -419,15 +441,15 @@ void add_segment_blocks(ceres::Problem& problem, const FitContext& ctx, Shooting
     constexpr PlantModel R = PlantModel::kRigid, W = PlantModel::kTwoMass;
     ceres::CostFunction* cost = nullptr;
     if (held && !linked && options.analytic_jacobian)
-      cost = sensitivity_cost(&ctx, a, c, free);
+      cost = sensitivity_cost(&ctx, a, c, free, base);
     else if (held && !linked && options.model == R && width <= 6)
-      cost = new FreeSegmentCost<R, 6>(&ctx, a, c, free);
+      cost = new FreeSegmentCost<R, 6>(&ctx, a, c, free, base);
     else if (held && !linked && options.model == R)
-      cost = new FreeSegmentCost<R, 8>(&ctx, a, c, free);
+      cost = new FreeSegmentCost<R, 8>(&ctx, a, c, free, base);
     else if (held && !linked && options.model == W && width <= 10)
-      cost = new FreeSegmentCost<W, 10>(&ctx, a, c, free);
+      cost = new FreeSegmentCost<W, 10>(&ctx, a, c, free, base);
     else if (held && !linked && options.model == W)
-      cost = new FreeSegmentCost<W, 15>(&ctx, a, c, free);
+      cost = new FreeSegmentCost<W, 15>(&ctx, a, c, free, base);
     else if (options.model == R && linked)
       cost = new AutoDiffCostFunction<LinkedSegmentCost<R>, DYNAMIC, 6, 2, 2>(new LinkedSegmentCost<R>{&ctx, a, c}, c + 2);
     else if (options.model == R)
@@ -439,10 +461,11 @@ void add_segment_blocks(ceres::Problem& problem, const FitContext& ctx, Shooting
     ceres::LossFunction* loss = with_loss ? make_loss(options) : nullptr;
     double* x = sp.states.data() + u * ns;
     if (linked)
-      problem.AddResidualBlock(cost, loss, p, x, x + ns);
+      problem.AddResidualBlock(cost, loss, block, x, x + ns);
     else
-      problem.AddResidualBlock(cost, loss, p, x);
+      problem.AddResidualBlock(cost, loss, block, x);
   }
+  return reduced;
 }
 
 }  // namespace detail

@@ -49,6 +49,9 @@ using detail::state_at;
 struct Stage {
   ShootingProblem shooting;
   std::unique_ptr<ceres::Problem> problem;
+  std::vector<int> free;       // the parameters this stage moves
+  std::vector<double> block;   // their values: the problem's parameter block when `reduced`
+  bool reduced = false;        // false: p itself is the block, its held entries under a SubsetManifold
   ceres::Solver::Summary summary;
   double seconds = 0.0;
 };
@@ -145,13 +148,19 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
         constant.push_back(i);
         held[static_cast<std::size_t>(i)] = true;
       }
-    add_segment_blocks(problem, ctx, st.shooting, p.data(), options, true, &held);
-    if (!constant.empty()) problem.SetManifold(p.data(), new ceres::SubsetManifold(np, constant));
-    for (int i = 0; i < np; ++i) {
-      const std::size_t u = static_cast<std::size_t>(i);
-      if (fixed[u]) continue;
-      if (std::isfinite(lower[u])) problem.SetParameterLowerBound(p.data(), i, lower[u]);
-      if (std::isfinite(upper[u])) problem.SetParameterUpperBound(p.data(), i, upper[u]);
+    for (int i = 0; i < np; ++i)
+      if (!held[static_cast<std::size_t>(i)]) {
+        st.free.push_back(i);
+        st.block.push_back(p[static_cast<std::size_t>(i)]);
+      }
+    st.reduced = add_segment_blocks(problem, ctx, st.shooting, p.data(), options, true, &held, st.block.data());
+    if (!st.reduced && !constant.empty()) problem.SetManifold(p.data(), new ceres::SubsetManifold(np, constant));
+    for (std::size_t j = 0; j < st.free.size(); ++j) {
+      const std::size_t u = static_cast<std::size_t>(st.free[j]);
+      double* block = st.reduced ? st.block.data() : p.data();
+      const int at = st.reduced ? static_cast<int>(j) : st.free[j];
+      if (std::isfinite(lower[u])) problem.SetParameterLowerBound(block, at, lower[u]);
+      if (std::isfinite(upper[u])) problem.SetParameterUpperBound(block, at, upper[u]);
     }
     // A speed log does not see the absolute angle: hold the motor angle of each segment (the twist stays free).
     if (log.measured_is_speed)
@@ -182,6 +191,8 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
     const auto t0 = std::chrono::steady_clock::now();
     ceres::Solve(sopt, &problem, &st.summary);
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (st.reduced)
+      for (std::size_t j = 0; j < st.free.size(); ++j) p[static_cast<std::size_t>(st.free[j])] = st.block[j];
 
   };
 
@@ -253,7 +264,7 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
 
   // Standard errors: the Jacobian at the solution, segment states eliminated.
   ceres::Problem::EvaluateOptions eopt;
-  eopt.parameter_blocks.push_back(p.data());
+  eopt.parameter_blocks.push_back(st.reduced ? st.block.data() : p.data());
   for (int s = 0; s < nseg; ++s) eopt.parameter_blocks.push_back(x0(s));
   eopt.apply_loss_function = false;
   eopt.num_threads = options.num_threads;
