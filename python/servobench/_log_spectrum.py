@@ -151,9 +151,11 @@ def resonance_guess(log: IdentificationLog, *, min_coherence: float = 0.3,
     jl = 1.0 - jm
     k = jl * wa ** 2
     c = 2 * zeta * np.sqrt(k * jl)
-    s_ = 2j * np.pi * f[None, None, None, :]
-    vt = (jl * s_ ** 2 + c * s_ + k) / (s_ * (jm * jl * s_ ** 2 + c * s_ + k))
-    lshape = -np.log(np.abs(vt) * 2 * np.pi * f)
+    # log of the apparent inertia 1 / (|V/T| w) in real arithmetic: at s = j w,
+    # |V/T| w = |k - jl w^2 + j c w| / |k - jm jl w^2 + j c w|.
+    w2 = (2 * np.pi * f[None, None, None, :]) ** 2
+    cw2 = c ** 2 * w2
+    lshape = 0.5 * np.log(((k - jm * jl * w2) ** 2 + cw2) / ((k - jl * w2) ** 2 + cw2))
     log_j = np.sum(wn * (la - lshape), axis=-1, keepdims=True)
     cost = np.sum(wn * (la - lshape - log_j) ** 2, axis=-1)
     i = np.unravel_index(int(np.argmin(cost)), cost.shape)

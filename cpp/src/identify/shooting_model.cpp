@@ -168,8 +168,9 @@ struct SegmentCost {
 // A segment's cost with derivatives along the free parameters only (decision FT5): Jets of K directions, the free
 // parameters first, then the segment's state, where the AutoDiff cost above carries one direction per parameter,
 // held or not. The Jet arithmetic is element by element, so every derivative is the AutoDiff cost's to the bit; the
-// Jacobian columns of held parameters are zero (Ceres projects them out: SubsetManifold). K: the smallest of the
-// instantiated widths that holds free + state directions.
+// Jacobian columns of held parameters are zero, or absent when the block holds the free parameters only (decision
+// FV4; otherwise a SubsetManifold projects them out). K: the smallest of the instantiated widths that holds free +
+// state directions.
 template <PlantModel M, int K>
 class FreeSegmentCost final : public ceres::CostFunction {
  public:

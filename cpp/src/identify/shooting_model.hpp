@@ -41,10 +41,11 @@ void check_log(const TimeLog& log, const TimeFitOptions& o);
 // options' robust loss. held (one entry per parameter, or nullptr): the parameters the solve holds constant; an
 // unlinked segment then differentiates along the free parameters only (FreeSegmentCost, the same derivatives), a
 // with options.analytic_jacobian by forward sensitivity in doubles (segment_sensitivity.hpp).
-// free_block (room for the free parameters, filled with their values, or nullptr): where held parameters exist and no
-// segment is linked, the residual blocks take free_block as their parameter block and read the held values from p
-// (which must then stay in place and unchanged through the solve), and the call returns true; otherwise p is the
-// parameter block (the caller holds its constant entries with a SubsetManifold) and it returns false.
+// free_block (room for the parameters `held` leaves free, in order, filled with their values; or nullptr): when held
+// is given and no segment is linked, the residual blocks take free_block as their parameter block and read the held
+// values from p (which must then stay in place and unchanged through the solve), and the call returns true;
+// otherwise p is the parameter block (the caller holds its constant entries with a SubsetManifold) and it returns
+// false.
 bool add_segment_blocks(ceres::Problem& problem, const FitContext& ctx, ShootingProblem& sp, double* p,
                         const TimeFitOptions& options, bool with_loss = true,
                         const std::vector<bool>* held = nullptr, double* free_block = nullptr);
