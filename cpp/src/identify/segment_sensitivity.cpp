@@ -53,13 +53,27 @@ struct BodyFriction {
   bool active() const { return fs > 0.0; }  // DryFriction::active (the fit's friction is symmetric)
 };
 
-// ND: the lanes carried (at least the free parameters and the start states; the rest stay 0). AL: every linear
-// parameter is free (their loops then have a compile-time length).
-template <int NB, int ND, bool AL>
+// No lanes at all: a Simulation<NB, 0> computes the residuals alone.
+inline const LaneMap& no_lanes() {
+  static const LaneMap m = [] {
+    LaneMap l;
+    l.of.fill(-1);
+    return l;
+  }();
+  return m;
+}
+
+// ND: the lanes carried (at least the free parameters and the start states; the rest stay 0). The loops over the
+// linear parameters' lanes run over all kLinear of them, of compile-time length: a held linear parameter's
+// dPhi/dp, dGamma/dp are 0 in Step, so its iterations add exact zeros to lanes that are not its own (decision FV6).
+template <int NB, int ND>
 class Simulation {
  public:
   using S_ = Shape<NB>;
   static constexpr int n = S_::kStates, nd = ND, nlin = S_::kLinear;
+  // The linear parameters' lanes (0..kLinear-1); none without lanes (ND = 0: the residuals alone).
+  static constexpr int nlin_lanes = nd > 0 ? nlin : 0;
+  static_assert(nd == 0 || nd >= nlin, "the linear parameters' loops run over lanes 0..kLinear-1");
   using Lanes = std::array<double, nd>;  // d(value) / d[free p, x0]
 
   // One discretisation (a stiction mask) on the mechanical state, with its derivatives along the linear
@@ -72,9 +86,9 @@ class Simulation {
   };
 
   Simulation(const FitContext& ctx, const double* p, const LaneMap& lanes)
-      : ctx_(ctx), p_(p), nlf_(lanes.free_linear), lane_load_(lanes.of[S_::kLoad]) {
+      : ctx_(ctx), p_(p), lane_load_(lanes.of[S_::kLoad]) {
     const int nl = ctx.layout.lag_states();
-    const auto disc = ctx.cache->get(p, true);
+    const auto disc = ctx.cache->get(p, nd > 0);
     for (int m = 0; m < S_::kMasks; ++m) steps_[m] = mechanical_step(*disc, static_cast<unsigned>(m), nl, lanes);
     expo_ = ctx.layout.stribeck_exponent;
     const auto& of = lanes.of;
@@ -98,9 +112,10 @@ class Simulation {
       return;
     }
     double f[NB] = {};
-    Lanes df[NB] = {};
+    Lanes df[NB];           // set where known[b]; a body not known has f = 0 and no lanes
+    bool known[NB] = {};
     bool stick[NB] = {};
-    solve(x, S, xf, dxf, steps_[0], 0u, f, df, stick);
+    solve(x, S, xf, dxf, steps_[0], 0u, f, df, known, stick);
     unsigned locked = 0;  // bodies at rest that static friction keeps at rest: integrated locked
     for (int b = 0; b < NB; ++b)
       if (stick[b] && stuck[b] && x[body_[b].speed] == 0.0) locked |= 1u << b;
@@ -108,15 +123,15 @@ class Simulation {
     if (locked != 0) {
       g = &steps_[locked];
       free_motion(*g, x, S, u, lag, xf, dxf);
-      solve(x, S, xf, dxf, *g, locked, f, df, stick);
+      solve(x, S, xf, dxf, *g, locked, f, df, known, stick);
     }
     for (int b = 0; b < NB; ++b) {
-      if ((locked & (1u << b)) || f[b] == 0.0) continue;
+      if ((locked & (1u << b)) || f[b] == 0.0 || !known[b]) continue;
       const int c = body_[b].input;
       for (int i = 0; i < n; ++i) {
         xf[i] += g->gam[i][c] * f[b];
         for (int j = 0; j < nd; ++j) dxf[i][j] += g->gam[i][c] * df[b][j];
-        for (int k = 0; k < nlf(); ++k) dxf[i][k] += g->dgam[k][i][c] * f[b];
+        for (int k = 0; k < nlin_lanes; ++k) dxf[i][k] += g->dgam[k][i][c] * f[b];
       }
     }
     for (int b = 0; b < NB; ++b) {
@@ -136,11 +151,6 @@ class Simulation {
   const BodyFriction& body(int b) const { return body_[b]; }
 
  private:
-  int nlf() const {
-    if constexpr (AL) return nlin;
-    return nlf_;
-  }
-
   static Step mechanical_step(const Discretisation& d, unsigned mask, int nl, const LaneMap& lanes) {
     Step s{};
     for (int r = 0; r < n; ++r) {
@@ -179,20 +189,21 @@ class Simulation {
         for (int c = 1; c < n; ++c) a += s.phi[i][c] * S[c][j];
         d[j] = a;
       }
-      for (int k = 0; k < nlf(); ++k)
+      for (int k = 0; k < nlin_lanes; ++k)
         for (int c = 0; c < n; ++c) d[k] += s.dphi[k][i][c] * x[c];
       if (u != 0.0) {
         xf[i] += s.gam[i][0] * u;
-        for (int k = 0; k < nlf(); ++k) d[k] += s.dgam[k][i][0] * u;
+        for (int k = 0; k < nlin_lanes; ++k) d[k] += s.dgam[k][i][0] * u;
       }
       if (ctx_.has_load) {
         xf[i] += s.gam[i][2] * t_load;
-        for (int k = 0; k < nlf(); ++k) d[k] += s.dgam[k][i][2] * t_load;
-        if (lane_load_ >= 0) d[lane_load_] -= s.gam[i][2];
+        for (int k = 0; k < nlin_lanes; ++k) d[k] += s.dgam[k][i][2] * t_load;
+        if constexpr (nd > 0)
+          if (lane_load_ >= 0) d[lane_load_] -= s.gam[i][2];
       }
       if (lag != 0.0) {
         xf[i] += s.gam[i][3] * lag;
-        for (int k = 0; k < nlf(); ++k) d[k] += s.dgam[k][i][3] * lag;
+        for (int k = 0; k < nlin_lanes; ++k) d[k] += s.dgam[k][i][3] * lag;
       }
     }
   }
@@ -200,16 +211,13 @@ class Simulation {
   // The sliding level Fc + (Fs - Fc) exp(-(|v|/ws)^delta) at the sub-step's start speed v and its lanes.
   double sliding(const BodyFriction& bf, double v, const Lanes& dv, Lanes& out) const {
     if (!bf.peak) {  // the level is Fc (the Jets' (Fs - Fc) term is exactly 0 with its lanes)
-      out.fill(0.0);
-      if (bf.lane_fc >= 0) out[bf.lane_fc] = 1.0;
+      if constexpr (nd > 0) {
+        out.fill(0.0);
+        if (bf.lane_fc >= 0) out[bf.lane_fc] = 1.0;
+      }
       return bf.fc;
     }
-    const double sg = std::copysign(1.0, v);
     const double r = std::fabs(v) / bf.ws;
-    Lanes dr;
-    for (int j = 0; j < nd; ++j) dr[j] = sg * dv[j];
-    if (bf.lane_ws >= 0) dr[bf.lane_ws] -= r;  // d|v|/ws = (d|v| - r dws) / ws
-    for (int j = 0; j < nd; ++j) dr[j] /= bf.ws;
     double shape, slope;
     if (expo_ == 2.0) {
       shape = r * r;
@@ -220,24 +228,32 @@ class Simulation {
     }
     const double e = std::exp(-shape);
     const double excess = bf.fs - bf.fc;
-    for (int j = 0; j < nd; ++j) out[j] = -excess * e * slope * dr[j];
-    if (bf.lane_fc >= 0) out[bf.lane_fc] += 1.0;
-    if (bf.lane_excess >= 0) out[bf.lane_excess] += e;
+    if constexpr (nd > 0) {
+      const double sg = std::copysign(1.0, v);
+      Lanes dr;
+      for (int j = 0; j < nd; ++j) dr[j] = sg * dv[j];
+      if (bf.lane_ws >= 0) dr[bf.lane_ws] -= r;  // d|v|/ws = (d|v| - r dws) / ws
+      for (int j = 0; j < nd; ++j) dr[j] /= bf.ws;
+      for (int j = 0; j < nd; ++j) out[j] = -excess * e * slope * dr[j];
+      if (bf.lane_fc >= 0) out[bf.lane_fc] += 1.0;
+      if (bf.lane_excess >= 0) out[bf.lane_excess] += e;
+    }
     return bf.fc + excess * e;
   }
 
   // plant::solve_dry_friction with lanes: the held friction f[b] of every body for the sub-step from x whose
   // friction-free end is xf (step g; bodies in `locked` get f = 0, stick). f, df carry the previous solve's forces
-  // in (the Gauss-Seidel start of a second, locked solve), as the plant's f[] does.
+  // in (the Gauss-Seidel start of a second, locked solve), as the plant's f[] does; known[b]: df[b] is set (a body
+  // not known has f[b] = 0 and lanes 0, which are not stored).
   void solve(const double x[n], const Lanes S[n], const double xf[n], const Lanes dxf[n], const Step& g,
-             unsigned locked, double f[NB], Lanes df[NB], bool stick[NB]) const {
+             unsigned locked, double f[NB], Lanes df[NB], bool known[NB], bool stick[NB]) const {
     constexpr int sweeps = NB > 1 ? 3 : 1;
     double slip[NB] = {};
     Lanes dslip[NB];
     for (int b = 0; b < NB; ++b) {
       if (locked & (1u << b)) {
         f[b] = 0.0;
-        df[b].fill(0.0);
+        known[b] = false;
         stick[b] = true;
       } else if (body_[b].active() && x[body_[b].speed] != 0.0) {
         slip[b] = sliding(body_[b], x[body_[b].speed], S[body_[b].speed], dslip[b]);
@@ -250,7 +266,7 @@ class Simulation {
         stick[b] = false;
         if (!bf.active()) {
           f[b] = 0.0;
-          df[b].fill(0.0);
+          known[b] = false;
           continue;
         }
         const int sp = bf.speed, an = bf.angle, in = bf.input;
@@ -267,10 +283,10 @@ class Simulation {
         const auto free_lanes = [&](int row, const Lanes* base, Lanes& out) {
           for (int j = 0; j < nd; ++j) out[j] = base ? dxf[row][j] - (*base)[j] : dxf[row][j];
           for (int o = 0; o < NB; ++o) {
-            if (o == b) continue;
+            if (o == b || !known[o]) continue;
             const int oc = body_[o].input;
             for (int j = 0; j < nd; ++j) out[j] += g.gam[row][oc] * df[o][j];
-            for (int k = 0; k < nlf(); ++k) out[k] += g.dgam[k][row][oc] * f[o];
+            for (int k = 0; k < nlin_lanes; ++k) out[k] += g.dgam[k][row][oc] * f[o];
           }
         };
         const double gv = g.gam[sp][in], gth = g.gam[an][in];
@@ -295,14 +311,16 @@ class Simulation {
             Lanes dv;
             free_lanes(sp, nullptr, dv);
             for (int j = 0; j < nd; ++j) dfb[j] = -dv[j] / gv;
-            for (int k = 0; k < nlf(); ++k) dfb[k] += q * g.dgam[k][sp][in] / gv;
+            for (int k = 0; k < nlin_lanes; ++k) dfb[k] += q * g.dgam[k][sp][in] / gv;
             st = true;
           } else {  // breaks away, or passes zero: -Fs or +Fs, dFs = dFc + d(excess)
             const double sgn = v_free > 0.0 ? -1.0 : 1.0;
             fb = sgn * bf.fs;
-            dfb.fill(0.0);
-            if (bf.lane_fc >= 0) dfb[bf.lane_fc] = sgn;
-            if (bf.lane_excess >= 0) dfb[bf.lane_excess] = sgn;
+            if constexpr (nd > 0) {
+              dfb.fill(0.0);
+              if (bf.lane_fc >= 0) dfb[bf.lane_fc] = sgn;
+              if (bf.lane_excess >= 0) dfb[bf.lane_excess] = sgn;
+            }
           }
         }
         // Sliding friction may only oppose the net displacement over the sub-step.
@@ -316,7 +334,7 @@ class Simulation {
             Lanes dd;
             free_lanes(an, &S[an], dd);
             for (int j = 0; j < nd; ++j) dcap[j] = sd * dd[j] / gth;
-            for (int k = 0; k < nlf(); ++k) dcap[k] -= cap * g.dgam[k][an][in] / gth;
+            for (int k = 0; k < nlin_lanes; ++k) dcap[k] -= cap * g.dgam[k][an][in] / gth;
           }
           const double sf = std::copysign(1.0, fb);
           double mag;
@@ -338,6 +356,7 @@ class Simulation {
           }
         }
         f[b] = fb;
+        known[b] = true;
         stick[b] = st;
       }
     }
@@ -345,7 +364,6 @@ class Simulation {
 
   const FitContext& ctx_;
   const double* p_;
-  int nlf_;        // free linear parameters: lanes 0..nlf_-1
   int lane_load_;  // the load's lane, or -1
   Step steps_[S_::kMasks];
   BodyFriction body_[NB];
@@ -354,12 +372,12 @@ class Simulation {
 
 // The segment's residuals and Jacobian rows (the loop of SensitivityCost::Evaluate), one function with everything
 // it calls inlined (flatten). An AVX2 + FMA copy chosen at run time was measured and left out (decision FV3).
-template <int NB, int ND, bool AL>
-__attribute__((always_inline)) inline void segment_lanes(const Simulation<NB, ND, AL>& sim, const FitContext& ctx,
+template <int NB, int ND>
+__attribute__((always_inline)) inline void segment_lanes(const Simulation<NB, ND>& sim, const FitContext& ctx,
                                                          const LaneMap& lanes, bool free_block, const double* x0,
                                                          int start, int count, double* residuals,
                                                          double** jacobians) {
-  using Sim = Simulation<NB, ND, AL>;
+  using Sim = Simulation<NB, ND>;
   constexpr int n = Sim::n, np = Shape<NB>::kParams;
   using Lanes = typename Sim::Lanes;
   const int nl = ctx.layout.lag_states();
@@ -369,8 +387,10 @@ __attribute__((always_inline)) inline void segment_lanes(const Simulation<NB, ND
   char stuck[NB];
   for (int i = 0; i < n; ++i) {
     x[i] = x0[i];
-    S[i].fill(0.0);
-    S[i][static_cast<std::size_t>(nf + i)] = 1.0;
+    if constexpr (ND > 0) {
+      S[i].fill(0.0);
+      S[i][static_cast<std::size_t>(nf + i)] = 1.0;
+    }
   }
   for (int b = 0; b < NB; ++b) stuck[b] = x[sim.body(b).speed] == 0.0 ? 1 : 0;
   const int oi = ctx.output_index - nl;
@@ -380,7 +400,9 @@ __attribute__((always_inline)) inline void segment_lanes(const Simulation<NB, ND
   for (int k = 0; k < count; ++k) {
     const std::size_t s = static_cast<std::size_t>(start + k);
     residuals[k] = (x[oi] - y[s]) * ctx.inv_scale;
-    if (jacobians[0] && free_block) {  // a column per free parameter: the lanes in order
+    if constexpr (ND == 0) {
+      // the residuals alone
+    } else if (jacobians[0] && free_block) {  // a column per free parameter: the lanes in order
       double* row = jacobians[0] + static_cast<std::ptrdiff_t>(k) * nf;
       for (int j = 0; j < nf; ++j) row[j] = S[oi][static_cast<std::size_t>(j)] * ctx.inv_scale;
     } else if (jacobians[0]) {
@@ -390,9 +412,11 @@ __attribute__((always_inline)) inline void segment_lanes(const Simulation<NB, ND
         row[j] = l >= 0 ? S[oi][static_cast<std::size_t>(l)] * ctx.inv_scale : 0.0;
       }
     }
-    if (jacobians[1])
-      for (int i = 0; i < n; ++i)
-        jacobians[1][static_cast<std::ptrdiff_t>(k) * n + i] = S[oi][static_cast<std::size_t>(nf + i)] * ctx.inv_scale;
+    if constexpr (ND > 0)
+      if (jacobians[1])
+        for (int i = 0; i < n; ++i)
+          jacobians[1][static_cast<std::ptrdiff_t>(k) * n + i] =
+              S[oi][static_cast<std::size_t>(nf + i)] * ctx.inv_scale;
     if (k + 1 == count) break;
     for (int sub = 0; sub < ctx.substeps; ++sub) {
       sim.substep(x, S, stuck, u[s], lag);
@@ -401,15 +425,15 @@ __attribute__((always_inline)) inline void segment_lanes(const Simulation<NB, ND
   }
 }
 
-template <int NB, int ND, bool AL>
-__attribute__((flatten)) void segment_lanes_flat(const Simulation<NB, ND, AL>& sim, const FitContext& ctx,
+template <int NB, int ND>
+__attribute__((flatten)) void segment_lanes_flat(const Simulation<NB, ND>& sim, const FitContext& ctx,
                                                  const LaneMap& lanes, bool free_block, const double* x0, int start,
                                                  int count, double* residuals, double** jacobians) {
   segment_lanes(sim, ctx, lanes, free_block, x0, start, count, residuals, jacobians);
 }
 
 
-template <int NB, int ND, bool AL>
+template <int NB, int ND>
 class SensitivityCost final : public ceres::CostFunction {
  public:
   using S_ = Shape<NB>;
@@ -433,11 +457,12 @@ class SensitivityCost final : public ceres::CostFunction {
       }
       p = full;
     }
-    if (!jacobians || (!jacobians[0] && !jacobians[1])) {
-      segment_residual(*ctx_, p, parameters[1], start_, count_, residuals);
+    if (!jacobians || (!jacobians[0] && !jacobians[1])) {  // the same simulation without lanes
+      const Simulation<NB, 0> sim(*ctx_, p, no_lanes());
+      segment_lanes_flat(sim, *ctx_, no_lanes(), false, parameters[1], start_, count_, residuals, nullptr);
       return true;
     }
-    const Simulation<NB, ND, AL> sim(*ctx_, p, lanes_);
+    const Simulation<NB, ND> sim(*ctx_, p, lanes_);
     segment_lanes_flat(sim, *ctx_, lanes_, base_ != nullptr, parameters[1], start_, count_, residuals, jacobians);
     return true;
   }
@@ -451,9 +476,7 @@ class SensitivityCost final : public ceres::CostFunction {
 
 template <int NB, int ND>
 ceres::CostFunction* make_cost(const FitContext* ctx, int start, int count, const LaneMap& lanes, const double* base) {
-  if (lanes.free_linear == Shape<NB>::kLinear)
-    return new SensitivityCost<NB, ND, true>(ctx, start, count, lanes, base);
-  return new SensitivityCost<NB, ND, false>(ctx, start, count, lanes, base);
+  return new SensitivityCost<NB, ND>(ctx, start, count, lanes, base);
 }
 
 }  // namespace
