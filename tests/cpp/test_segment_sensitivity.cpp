@@ -1,4 +1,4 @@
-// The shooting-segment cost by forward sensitivity (identify/segment_sensitivity.cpp, decisions FU1 and FV1)
+// The shooting-segment cost by forward sensitivity (identify/segment_sensitivity.cpp, decisions FU1, FV1 and FV6)
 // against Ceres' automatic differentiation of the same simulation (TimeFitOptions::analytic_jacobian = false), on
 // random parameters and random segment states -- sliding, sticking, breaking away, held by stiction, on either body
 // of a two-mass plant -- with and without a current loop, sub-steps, a load, a speed log, a load-side output.
@@ -120,6 +120,13 @@ int compare_on_random_points(identify::PlantModel model, const std::vector<Case>
         scale_r = std::max(scale_r, std::fabs(rb[k]));
       }
       EXPECT_LE(worst_r, 1e-12 * std::max(1.0, scale_r)) << "case bw " << c.current_bw_hz << " trial " << trial;
+      // Without a Jacobian the forward-sensitivity cost runs its simulation without lanes (decision FV6): the same
+      // residuals, to rounding, as the simulator's code on doubles.
+      const std::vector<double> rc = identify::shooting_residual(log, o, sp, p, states, nullptr);
+      double worst_c = 0.0;
+      for (std::size_t k = 0; k < rc.size() && k < rb.size(); ++k) worst_c = std::max(worst_c, std::fabs(rc[k] - rb[k]));
+      EXPECT_EQ(rc.size(), rb.size());
+      EXPECT_LE(worst_c, 1e-12 * std::max(1.0, scale_r)) << "no Jacobian: case bw " << c.current_bw_hz << " trial " << trial;
       EXPECT_LE(worst_relative_difference(ja, jb), tolerance)
           << "case bw " << c.current_bw_hz << " substeps " << c.substeps << " trial " << trial;
       ++points;

@@ -18,7 +18,8 @@
 // pow(r, e)' = e r^(e-1) r'), so the Jacobian is the AutoDiff one's (SegmentCost on Jets) to rounding:
 // tests/cpp/test_segment_sensitivity.cpp checks it to 1e-12 relative on random states and parameters. A sub-step
 // costs a few hundred multiply-adds on 8 or 15 lanes, where the Jets carried every operation, the constant
-// discretisation's entries included, on all of them.
+// discretisation's entries included, on all of them. An evaluation without a Jacobian (Ceres' trial steps) runs the
+// same simulation without lanes (decision FV6).
 #pragma once
 
 #include <vector>

@@ -10,8 +10,9 @@
 // is the measured minus the simulated output, divided by `measurement_scale`. Short segments keep the problem
 // well-conditioned (an open-loop simulation of an integrating plant drifts) and the initial states absorb the
 // quantisation offset. Derivatives: by forward sensitivity in doubles through the sub-step (segment_sensitivity.cpp,
-// the default analytic_jacobian), or by Ceres automatic differentiation (Jets) of the same code (linked segments,
-// analytic_jacobian false); the discretisation's derivatives by Van Loan's block exponential.
+// the default analytic_jacobian; its residual-only evaluations run the same code without derivative lanes, equal to
+// the simulator's doubles to rounding), or by Ceres automatic differentiation (Jets) of the same code (linked
+// segments, analytic_jacobian false); the discretisation's derivatives by Van Loan's block exponential.
 #pragma once
 
 #include <functional>
