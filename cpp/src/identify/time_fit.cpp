@@ -170,8 +170,10 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
 
     ceres::Solver::Options sopt;
     sopt.linear_solver_type = ceres::DENSE_SCHUR;
-    // The held-Stribeck stage only brings J, b and Fc near: a few iterations do; the later stages converge.
-    sopt.max_num_iterations = hold_stribeck ? std::min(options.max_iterations, 20) : options.max_iterations;
+    // The held-Stribeck stage only brings J, b and Fc near: a few iterations do; the later stages converge. Its own
+    // minimum (the peak held at its guess) is not the fit's, so iterating it further refines a wrong model (decision
+    // FV7: 8 iterations, where 20 cost rigid B 12 more Jacobians per start and the same later stages).
+    sopt.max_num_iterations = hold_stribeck ? std::min(options.max_iterations, 8) : options.max_iterations;
     sopt.num_threads = options.num_threads;
     // Stop when the relative cost change per iteration is below 1e-4 / samples in the last stage (decision J48): the
     // Gauss-Newton iterations converge linearly here (the dry friction's switching makes the residual non-smooth),
