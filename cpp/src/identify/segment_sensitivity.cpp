@@ -474,11 +474,6 @@ class SensitivityCost final : public ceres::CostFunction {
   const double* base_;  // nullptr: parameter block 0 is the whole vector
 };
 
-template <int NB, int ND>
-ceres::CostFunction* make_cost(const FitContext* ctx, int start, int count, const LaneMap& lanes, const double* base) {
-  return new SensitivityCost<NB, ND>(ctx, start, count, lanes, base);
-}
-
 }  // namespace
 
 ceres::CostFunction* sensitivity_cost(const FitContext* ctx, int start, int count, std::vector<int> free,
@@ -486,13 +481,13 @@ ceres::CostFunction* sensitivity_cost(const FitContext* ctx, int start, int coun
   // The lanes carried: the free parameters and the start states, rounded up to one of a few widths.
   if (ctx->layout.model == PlantModel::kRigid) {
     const LaneMap lanes = lane_map(6, 2, free);
-    if (lanes.free + 2 <= 6) return make_cost<1, 6>(ctx, start, count, lanes, base);
-    return make_cost<1, 8>(ctx, start, count, lanes, base);
+    if (lanes.free + 2 <= 6) return new SensitivityCost<1, 6>(ctx, start, count, lanes, base);
+    return new SensitivityCost<1, 8>(ctx, start, count, lanes, base);
   }
   const LaneMap lanes = lane_map(11, 6, free);
-  if (lanes.free + 4 <= 10) return make_cost<2, 10>(ctx, start, count, lanes, base);
-  if (lanes.free + 4 <= 12) return make_cost<2, 12>(ctx, start, count, lanes, base);
-  return make_cost<2, 15>(ctx, start, count, lanes, base);
+  if (lanes.free + 4 <= 10) return new SensitivityCost<2, 10>(ctx, start, count, lanes, base);
+  if (lanes.free + 4 <= 12) return new SensitivityCost<2, 12>(ctx, start, count, lanes, base);
+  return new SensitivityCost<2, 15>(ctx, start, count, lanes, base);
 }
 
 }  // namespace servobench::identify::detail

@@ -371,13 +371,6 @@ void run_segment(const FitContext& ctx, const double* p, const double* x0, int s
     simulate_segment<PlantModel::kTwoMass>(ctx, p, x0, start, count, out, false);
 }
 
-void segment_residual(const FitContext& ctx, const double* p, const double* x0, int start, int count, double* r) {
-  if (ctx.layout.model == PlantModel::kRigid)
-    simulate_segment<PlantModel::kRigid>(ctx, p, x0, start, count, r, true);
-  else
-    simulate_segment<PlantModel::kTwoMass>(ctx, p, x0, start, count, r, true);
-}
-
 void state_at(const FitContext& ctx, const double* p, const double* x0, int start, int steps, double* x_end) {
   std::vector<double> out(static_cast<std::size_t>(steps) + 1);
   if (ctx.layout.model == PlantModel::kRigid)

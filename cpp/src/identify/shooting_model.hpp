@@ -31,8 +31,6 @@ struct FitContext {
 void init_context(FitContext& ctx, const TimeLog& log, const TimeFitOptions& options);
 // Simulates samples [start, start + count) from the mechanical state x0 (internal parameters p); out per sample.
 void run_segment(const FitContext& ctx, const double* p, const double* x0, int start, int count, double* out);
-// The scaled residuals (measured - simulated) / measurement_scale of samples [start, start + count), in doubles.
-void segment_residual(const FitContext& ctx, const double* p, const double* x0, int start, int count, double* r);
 // The mechanical state `steps` samples after `start`, simulated from x0 (internal parameters p) into x_end.
 void state_at(const FitContext& ctx, const double* p, const double* x0, int start, int steps, double* x_end);
 // The log's lengths, finiteness and minimum length for these options (std::invalid_argument naming the sample).
