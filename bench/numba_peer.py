@@ -47,7 +47,9 @@ def _build():
     import numba
 
     @numba.njit(cache=False, inline="always")
-    def _tick_loop(c, pos, vel, acc, out):
+    def _tick_loop(c, pos, vel, acc, out, st=None):
+        # st (optional): the loop's state carried between calls (the step peer), [i, th, w, stuck, s, e_prev,
+        # pending]; read before the loop and written after it, so the loop itself is the same code either way.
         cpr, kp, ki, kd, kvff, kaff, ilmt, bias, mlim = c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8]
         apv, ilim, coul, load, fs = c[9], c[10], c[11], c[12], c[13]
         p00, p01, p02, p10, p11, p12, p20, p21, p22 = c[14], c[15], c[16], c[17], c[18], c[19], c[20], c[21], c[22]
@@ -58,6 +60,8 @@ def _build():
         stuck = True
         s = e_prev = 0.0
         pending = 0.0
+        if st is not None:
+            i, th, w, stuck, s, e_prev, pending = st[0], st[1], st[2], st[3] != 0.0, st[4], st[5], st[6]
         for k in range(pos.shape[0]):
             icmd = max(-ilim, min(ilim, apv * pending))
             y = math.floor(th * cpr + 0.5)
@@ -77,7 +81,7 @@ def _build():
                 i, th, w = xi, xt, xw
                 continue
             d = xt - th
-            st = False
+            st_ = False
             f_slip = -coul if w > 0 else coul
             if w != 0.0 and (xw + g * f_slip) * (1.0 if w > 0 else -1.0) > 0.0:
                 f = f_slip
@@ -85,23 +89,38 @@ def _build():
                 f_stick = -xw / g
                 if -fs <= f_stick <= fs:
                     f = f_stick
-                    st = True
+                    st_ = True
                 else:
                     f = -fs if xw > 0 else fs
-            if not (st and w == 0.0) and f * (d + gth * f) > 0.0:
-                st = False
+            if not (st_ and w == 0.0) and f * (d + gth * f) > 0.0:
+                st_ = False
                 f = 0.0 if d == 0.0 else (-1.0 if d > 0 else 1.0) * min(abs(f), abs(d) / gth)
-            if st and stuck and w == 0.0:
+            if st_ and stuck and w == 0.0:
                 i = pl00 * i + gl00 * icmd + gl01 * ext
                 continue
             i, th, w = xi + g01 * f, xt + g11 * f, xw + g21 * f
-            if st:
+            if st_:
                 w = 0.0
-            stuck = st
+            stuck = st_
+        if st is not None:
+            st[0], st[1], st[2], st[3], st[4], st[5], st[6] = i, th, w, 1.0 if stuck else 0.0, s, e_prev, pending
 
     @numba.njit(cache=False)
     def rigid_chain(c, pos, vel, acc, out):
         _tick_loop(c, pos, vel, acc, out)
+
+    @numba.njit(cache=False)
+    def rigid_step(c, st, buf, cmd):
+        # One tick per call, the state carried in st (see _tick_loop) plus [prev_cmd, prev_vel] in st[7:9]; buf is a
+        # (4, 1) scratch array for the loop's pos, vel, acc and out: what a numba user writes for a program in the
+        # loop (the step API's peer). Returns the encoder reading, pulse.
+        if st[9] == 0.0:  # first tick: the velocity and acceleration start from 0, as servobench's
+            st[7], st[8], st[9] = cmd, 0.0, 1.0
+        v = cmd - st[7]
+        buf[0, 0], buf[1, 0], buf[2, 0] = cmd, v, v - st[8]
+        st[7], st[8] = cmd, v
+        _tick_loop(c, buf[0], buf[1], buf[2], buf[3], st)
+        return buf[3, 0]
 
     @numba.njit(cache=False, parallel=True)
     def rigid_chain_many(consts, pos, vel, acc, out):
@@ -154,7 +173,7 @@ def _build():
             out[p] = complex(cy[0], cy[1]) / complex(cr[0], cr[1])
         return out
 
-    return rigid_chain, rigid_chain_many, sweep
+    return rigid_chain, rigid_chain_many, sweep, rigid_step
 
 
 _KERNELS = None
@@ -169,6 +188,12 @@ def sweep_kernel():
     """sweep(consts, freqs_hz, n_tick, amplitude_pulse, ts_s, settle_fraction) -> closed loop y/r per frequency
     (complex), the stepped-sine sweep on the rigid chain; compiled on first use."""
     return _built()[2]
+
+
+def step_kernel():
+    """(rigid_step, new_state): ``rigid_step(consts, state, scratch, cmd_pulse) -> fb_pulse`` advances the rigid
+    chain one tick per call (the step API's peer); ``new_state()`` returns a fresh (state, scratch) pair."""
+    return _built()[3], lambda: (np.zeros(10), np.zeros((4, 1)))
 
 
 def _built():

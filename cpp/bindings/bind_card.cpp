@@ -4,7 +4,10 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <array>
+#include <cmath>
 #include <map>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -96,6 +99,39 @@ std::vector<const void*> card_keys(Card& card) {
 }
 
 namespace {
+
+// Card.step, the step API for a card (issue 22.2): `n` ticks of every axis recording nothing; returns the card's
+// tick count. One binding (decision FV10): a few ticks run under the card's and its axes' state locks with the GIL
+// held, as every other method; from kLongStep ticks on the call is a run (run locks, GIL released, Ctrl-C
+// between chunks of about 20 ms).
+long long step_card(Card& card, double n_ticks) {
+  constexpr std::size_t kLongStep = 256;
+  if (!(n_ticks >= 0 && n_ticks <= 1e9 && n_ticks == std::floor(n_ticks)))
+    throw_invalid("Card.step", "n", n_ticks, "must be a whole number of ticks, 0..1e9");
+  const auto n = static_cast<std::size_t>(n_ticks);
+  if (n < kLongStep) {
+    std::array<std::unique_lock<std::recursive_mutex>, 9> held;  // the card, then its 4 or 8 axes (object_lock.hpp)
+    held[0] = lock_releasing_gil(locks_of(&card)->state);
+    for (std::size_t i = 0; i < card.axis_count(); ++i) held[i + 1] = lock_releasing_gil(locks_of(&card.axis(i))->state);
+    card.run(n);
+    return card.tick();
+  }
+  RunLock lock(card_keys(card));
+  py::gil_scoped_release release;
+  ChunkClock clock;
+  for (std::size_t done = 0; done < n;) {
+    const std::size_t k = std::min(clock.size(), n - done);
+    {
+      auto chunk = lock.chunk();
+      clock.start();
+      card.run(k);
+      clock.stop();
+    }
+    done += k;
+    if (done < n) check_signals();
+  }
+  return card.tick();
+}
 
 py::list run_card(Card& card, double ticks, const py::object& signals) {
   check_integer("Card.run", "ticks", ticks, 0, 1e9);
@@ -307,13 +343,15 @@ void bind_card(py::module_& m) {
            }, py::arg("axis"))
       .def("pos_limit_input", [](const Card& k, AxisIndex i) { return k.pos_limit_input(card_axis(k, i)); }, py::arg("axis"))
       .def("neg_limit_input", [](const Card& k, AxisIndex i) { return k.neg_limit_input(card_axis(k, i)); }, py::arg("axis"))
-      .def("run", &run_card, py::arg("ticks"), py::arg("signals") = py::none());
+      .def("run", &run_card, py::arg("ticks"), py::arg("signals") = py::none())
+      .def("step", &step_card, py::arg("n") = 1,
+           "Advances n ticks (default 1) of every axis recording nothing; returns the card's tick count.");
   bind_card_modes(c, m);  // gear, PVT, FollowEx, coordinate systems
   bind_card_scope(m, c);  // scope, events, compare, probe (issue 10.3)
   bind_card_aps(c, m);    // [aps] ADLINK interpolation group, gear engage ramp
   bind_card_ge_path(c);   // GE SX crd (card_group_ge.hpp)
   // Every other method waits for the running chunk (object_lock.hpp): the card stays readable while it runs.
-  serialise_methods(c, {"run", "run_until_event"});
+  serialise_methods(c, {"run", "run_until_event", "step"});  // step locks itself (step_card)
 
   m.def("gt_axis_status", [](const Card& k, AxisIndex i) { auto lk = lock_releasing_gil(locks_of(&k)->state); return vendor::googol::gt_axis_status(k, card_axis(k, i)); },
         py::arg("card"), py::arg("axis"), "GT axis status register (Table 4-14) of a card axis (0-based).");

@@ -221,6 +221,59 @@ double finite_request(double volts, std::size_t tick) {
   return volts;
 }
 
+// The tick count of Axis.step: a whole number >= 1 (an int or anything with __index__, not a bool).
+std::size_t step_ticks(py::handle n) {
+  if (PyLong_CheckExact(n.ptr())) {
+    const long long v = PyLong_AsLongLong(n.ptr());
+    if (v >= 1) return static_cast<std::size_t>(v);
+    PyErr_Clear();  // an overflow
+  } else if (!PyBool_Check(n.ptr()) && PyIndex_Check(n.ptr())) {
+    const py::int_ i = py::reinterpret_steal<py::int_>(PyNumber_Index(n.ptr()));
+    if (!i) throw py::error_already_set();
+    const long long v = PyLong_AsLongLong(i.ptr());
+    if (v >= 1) return static_cast<std::size_t>(v);
+    PyErr_Clear();
+  }
+  throw py::value_error("n = " + py::repr(n).cast<std::string>() + " must be a whole number >= 1 (ticks)");
+}
+
+// Axis.step, the step API (issue 22.2): the checks, the object's locks and the ticks in one binding, so a call
+// costs one pybind11 dispatch (decision FV10). A few ticks run under the state lock with the GIL held, as every
+// other method (object_lock.hpp); from kLongStep ticks on the call is a run: the run lock for the whole call, the
+// GIL released and Ctrl-C checked between chunks of about 20 ms, the state lock for each chunk.
+double axis_step(Axis& a, double command_pulse, py::handle n_obj, py::handle volts_obj) {
+  constexpr std::size_t kLongStep = 1024;
+  if (!std::isfinite(command_pulse)) throw_invalid("Axis.step", "command_pulse", command_pulse, "must be a finite number (pulse)");
+  const std::size_t n = step_ticks(n_obj);
+  std::optional<ExternalLaw> ext;
+  if (!volts_obj.is_none()) {
+    const double v = volts_obj.cast<double>();
+    if (!std::isfinite(v)) throw_invalid("Axis.step", "volts", v, "must be a finite number (V)");
+    ext.emplace([v](std::size_t, double, double) { return v; });
+  }
+  const ExternalLaw* law = ext ? &*ext : nullptr;
+  if (n < kLongStep) {
+    auto lk = lock_releasing_gil(locks_of(&a)->state);
+    return a.step(command_pulse, n, law);
+  }
+  RunLock lock({&a});
+  py::gil_scoped_release release;
+  ChunkClock clock;
+  double fb = 0.0;
+  for (std::size_t done = 0; done < n;) {
+    const std::size_t k = std::min(clock.size(), n - done);
+    {
+      auto held = lock.chunk();
+      clock.start();
+      fb = a.step(command_pulse, k, law);
+      clock.stop();
+    }
+    done += k;
+    if (done < n) check_signals();
+  }
+  return fb;
+}
+
 }  // namespace
 
 void bind_machine(py::module_& m) {
@@ -419,25 +472,10 @@ void bind_machine(py::module_& m) {
           "or, without one, as it stood when the run began. "
           "Releases the GIL (not with a Python controller); one run at a time per axis (a second thread waits); "
           "Ctrl-C raises KeyboardInterrupt within about 20 ms, the axis standing at the last whole tick run.")
-      .def("step", [](Axis& a, double command_pulse) { return a.step(command_pulse); }, py::arg("command_pulse"),
-           "Advances one tick holding command_pulse (pulse); returns the feedback read, pulse.")
-      .def(
-          "step_n",
-          [](Axis& a, double command_pulse, std::size_t n, const py::object& volts) {
-            if (volts.is_none()) {
-              if (n < 1024) return a.step(command_pulse, n);
-              py::gil_scoped_release release;
-              return a.step(command_pulse, n);
-            }
-            const double v = volts.cast<double>();
-            if (!std::isfinite(v)) throw_invalid("Axis.step", "volts", v, "must be a finite number (V)");
-            const ExternalLaw ext = [v](std::size_t, double, double) { return v; };
-            return a.step(command_pulse, n, &ext);
-          },
-          py::arg("command_pulse"), py::arg("n"), py::arg("volts"),
-          "Advances n ticks holding command_pulse (pulse), the law's output replaced by `volts` (V) if given; "
-          "returns the feedback read at the last tick, pulse.");
-  serialise_methods(axis_cls, {"run"});
+      .def("step", &axis_step, py::arg("command_pulse"), py::arg("n") = 1, py::kw_only(), py::arg("volts") = py::none(),
+           "Advances n ticks (default 1) holding command_pulse (pulse), the law's output replaced by `volts` (V) if "
+           "given; returns the feedback read at the last tick, pulse. Nothing is recorded.");
+  serialise_methods(axis_cls, {"run", "step"});  // step takes the locks itself (axis_step)
 }
 
 }  // namespace servobench::bindings

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 __all__ = ["Axis", "AxisRun", "SIGNALS", "SIGNAL_UNITS", "controller_signature"]
 
-import math
 from dataclasses import dataclass, field
 from typing import Iterable, Mapping
 
@@ -183,6 +182,8 @@ class Axis:
             filters=filters,
         )
         self._start = (0.0, 0.0, 0.0, 0.0, True)  # the initial state run() starts from (see reset)
+        if type(self).step is Axis.step:  # ax.step is the binding itself: one dispatch per call (decision FV10)
+            self.step = self._axis.step
 
     # -- parts ------------------------------------------------------------------------------------
     law = property(lambda self: self._axis.law, doc="The active servo-law parameters.")
@@ -272,7 +273,9 @@ class Axis:
     def step(self, command_pulse: float, n: int = 1, *, volts: float | None = None) -> float:
         """Advances `n` servo ticks holding the command position `command_pulse` (pulse) and returns the feedback
         read by the encoder at the last of them (pulse); nothing is recorded. The step API for programs in the loop
-        (co-simulation, reinforcement learning): ``fb = axis.step(cmd)`` once per tick costs about a microsecond.
+        (co-simulation, reinforcement learning): ``fb = axis.step(cmd)`` once per tick costs under a microsecond
+        above the tick itself (``bench/results/batch.md``). From 1024 ticks on, a step is a run: it releases the GIL,
+        waits for another thread's run of this axis and answers Ctrl-C between chunks of about 20 ms.
 
         volts
             if given, this voltage (V) replaces the servo law's output (and the biquads) for these ticks: a
@@ -282,13 +285,7 @@ class Axis:
         The ticks are exactly those :meth:`run` makes over the same commands (the state carries on between calls;
         a :meth:`run` after steps starts from the initial state again unless ``continue_=True``).
         """
-        if not math.isfinite(command_pulse):  # TypeError for a non-number; NaN/inf must not enter the state
-            raise ValueError(f"command_pulse = {command_pulse} must be a finite number (pulse)")
-        if n == 1 and volts is None:
-            return self._axis.step(command_pulse)
-        if not isinstance(n, (int, np.integer)) or isinstance(n, bool) or n < 1:
-            raise ValueError(f"n = {n!r} must be a whole number >= 1 (ticks)")
-        return self._axis.step_n(command_pulse, int(n), volts)
+        return self._axis.step(command_pulse, n, volts=volts)  # the checks are the binding's (axis_step)
 
     def run(self, command, *, velocities=None, accelerations=None, signals: Iterable[str] | None = None,
             injection_v=None, error_limit_pulse: float | str | None = "auto", stop_on_alarm: bool = False,

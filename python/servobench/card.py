@@ -242,9 +242,8 @@ class Card:
         between calls. Event callbacks fire as in :meth:`run`."""
         if self._subs:
             self._run_with_callbacks(n, ())
-        else:
-            self._card.run(n, [])
-        return self._card.tick
+            return self._card.tick
+        return self._card.step(n)  # one binding: checks, locks and ticks (decision FV10)
 
     def run_until(self, predicate, max_ticks: int = 10**7, chunk: int = 1) -> int:
         """Runs ``chunk`` ticks at a time until ``predicate(card)`` is true (checked before each chunk), at most

@@ -101,6 +101,37 @@ def test_scope_is_readable_while_the_card_runs():
         assert card.tick == 200000
 
 
+def test_two_threads_stepping_one_axis_lose_no_ticks():
+    # Axis.step takes the axis's locks itself (decision FV10): long steps (GIL released, in chunks) and one-tick
+    # steps from another thread never run at once, so no tick is lost and the state stays finite.
+    axis = sb.Axis(law=sb.GtServoLaw(kp=38, kd=830))
+    long_n, long_reps, short_reps = 5000, 40, 20000
+    errors = []
+
+    def long_steps():
+        try:
+            for k in range(long_reps):
+                axis.step(100.0 * (k % 3), n=long_n)
+        except Exception as e:  # noqa: BLE001
+            errors.append(e)
+
+    def short_steps():
+        try:
+            for k in range(short_reps):
+                assert np.isfinite(axis.step(50.0))
+        except Exception as e:  # noqa: BLE001
+            errors.append(e)
+
+    threads = [threading.Thread(target=long_steps), threading.Thread(target=short_steps)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert not errors, errors
+    assert axis.tick == long_n * long_reps + short_reps
+    assert np.isfinite(axis.angle_rad)
+
+
 def test_threads_by_objects_by_operations():
     # 6 threads x 3 cards x (run, status read, command, scope snapshot), thousands of calls: no crash, no lost
     # tick, every read finite.
@@ -147,7 +178,7 @@ def _interrupt_after(seconds):
 
 
 @pytest.mark.skipif(threading.current_thread() is not threading.main_thread(), reason="signals need the main thread")
-@pytest.mark.parametrize("what", ["axis", "card", "fit_time"])
+@pytest.mark.parametrize("what", ["axis", "step", "card", "card_step", "fit_time"])
 def test_ctrl_c_one_second_into_a_long_run_returns_within_half_a_second(what):
     if what == "axis":
         # A run of several seconds on any machine: the fused rigid tick does 50 M ticks in about 1 s (19 ns/tick),
@@ -157,11 +188,21 @@ def test_ctrl_c_one_second_into_a_long_run_returns_within_half_a_second(what):
 
         def call():
             axis.run(cmd, signals=[])
+    elif what == "step":  # a step of 10^9 ticks is a run: interruptible between chunks like one
+        axis = sb.Axis(law=sb.GtServoLaw(kp=38, kd=830), plant=sb.TwoMassPlant(), substeps=8)
+
+        def call():
+            axis.step(0.0, n=10**9)
     elif what == "card":
         card = tuned_card()
 
         def call():
             card.run(10**9, signals=[])
+    elif what == "card_step":
+        card = tuned_card()
+
+        def call():
+            card.step(10**9)
     else:
         axis = sb.Axis(law=sb.GtServoLaw(kp=38, ki=60, kd=830, kaff=12870), plant=sb.RigidPlant(
             inertia_kgm2=1e-4, viscous_nms=1e-4, coulomb_nm=0.005))
@@ -180,12 +221,12 @@ def test_ctrl_c_one_second_into_a_long_run_returns_within_half_a_second(what):
         timer.cancel()
     elapsed = time.perf_counter() - t0
     assert elapsed < 1.5, f"returned {elapsed - 1.0:.3f} s after SIGINT"
-    if what == "axis":
+    if what in ("axis", "step"):
         tick = axis.tick
-        assert 0 < tick < len(cmd)
+        assert 0 < tick < (len(cmd) if what == "axis" else 10**9)
         run = axis.run(np.zeros(100), signals=["fb_pos"], continue_=True)  # consistent: it runs on from where it stood
         assert axis.tick == tick + 100 and np.all(np.isfinite(run.fb_pos))
-    elif what == "card":
+    elif what in ("card", "card_step"):
         tick = card.tick
         card.run(100, signals=[])
         assert card.tick == tick + 100

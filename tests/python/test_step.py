@@ -1,6 +1,6 @@
 """The step API and user-written controllers in the loop (issue 22.2): Axis.step makes exactly the ticks Axis.run
 makes; a Python controller and a compiled one (numba cfunc, ctypes pointer) replace the law inside the loop and
-give the same result as the same law written out. The per-call overhead is measured by bench/bench_step.py."""
+give the same result as the same law written out. The per-call overhead is measured by bench/bench_batch.py."""
 
 import ctypes
 
@@ -27,6 +27,18 @@ def test_step_n_holds_the_command():
     assert b.tick == 50
     with pytest.raises(ValueError, match="n = 0"):
         b.step(1.0, n=0)
+    for bad in (True, 2.0, -3, "5"):
+        with pytest.raises(ValueError, match="n = "):
+            b.step(1.0, n=bad)
+    assert b.tick == 50
+
+
+def test_a_long_step_is_a_run_in_chunks():
+    # From 1024 ticks on, a step releases the GIL and runs in chunks (decision FV10): the same ticks as one run.
+    a, b = sb.demo_axis(), sb.demo_axis()
+    ref = a.run(np.full(5000, 300.0), signals=("fb_pos",)).fb_pos
+    assert b.step(300.0, n=np.int64(5000)) == ref[-1]
+    assert b.tick == 5000
 
 
 def test_step_with_volts_is_the_injection_with_the_servo_off():
@@ -124,6 +136,10 @@ def test_card_step_equals_card_run():
         card.update(0b1111)
         return card
 
+    long_a, long_b = make(), make()  # a long step (from 256 ticks on) runs in chunks, GIL released: the same ticks
+    assert long_b.step(3000) == 3000
+    np.testing.assert_array_equal(long_b.run(5, signals=["actual_pos"])[0].actual_pos,
+                                  long_a.run(3005, signals=["actual_pos"])[0].actual_pos[-5:])
     a, b = make(), make()
     rec = a.run(200, signals=["actual_pos"])
     for _ in range(200):

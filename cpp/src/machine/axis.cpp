@@ -154,7 +154,7 @@ double Axis::step(double command_pulse, std::size_t n, const std::function<doubl
   // velocity and acceleration are the differences either way), so the fused tick's set-up is paid once per chunk.
   constexpr std::size_t kChunk = 512;
   std::array<double, kChunk> held, fb;
-  held.fill(command_pulse);
+  std::fill_n(held.begin(), std::min(kChunk, n), command_pulse);  // one call per tick (the step API) fills one
   CommandInput in;
   in.pos = held.data();
   Trace t;
