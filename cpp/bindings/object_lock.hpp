@@ -118,7 +118,10 @@ inline py::object locked_method(py::object f, const std::string& name, py::handl
         std::unique_lock<std::recursive_mutex> lk;
         if (args.size() > 0)
           if (const void* key = cpp_object(args[0])) lk = lock_releasing_gil(locks_of(key)->state);
-        return f(*args, **kw);
+        // The call's own tuple and dict, passed on as they are (f(*args, **kw) would copy both).
+        PyObject* out = PyObject_Call(f.ptr(), args.ptr(), kw.size() > 0 ? kw.ptr() : nullptr);
+        if (out == nullptr) throw py::error_already_set();
+        return py::reinterpret_steal<py::object>(out);
       },
       py::name(name.c_str()), py::is_method(scope), py::doc(doc.c_str()));
 }
