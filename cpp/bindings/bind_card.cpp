@@ -116,20 +116,7 @@ long long step_card(Card& card, double n_ticks) {
     card.run(n);
     return card.tick();
   }
-  RunLock lock(card_keys(card));
-  py::gil_scoped_release release;
-  ChunkClock clock;
-  for (std::size_t done = 0; done < n;) {
-    const std::size_t k = std::min(clock.size(), n - done);
-    {
-      auto chunk = lock.chunk();
-      clock.start();
-      card.run(k);
-      clock.stop();
-    }
-    done += k;
-    if (done < n) check_signals();
-  }
+  run_in_chunks(card_keys(card), n, [&](std::size_t k) { card.run(k); });
   return card.tick();
 }
 

@@ -256,21 +256,8 @@ double axis_step(Axis& a, double command_pulse, py::handle n_obj, py::handle vol
     auto lk = lock_releasing_gil(locks_of(&a)->state);
     return a.step(command_pulse, n, law);
   }
-  RunLock lock({&a});
-  py::gil_scoped_release release;
-  ChunkClock clock;
   double fb = 0.0;
-  for (std::size_t done = 0; done < n;) {
-    const std::size_t k = std::min(clock.size(), n - done);
-    {
-      auto held = lock.chunk();
-      clock.start();
-      fb = a.step(command_pulse, k, law);
-      clock.stop();
-    }
-    done += k;
-    if (done < n) check_signals();
-  }
+  run_in_chunks({&a}, n, [&](std::size_t k) { fb = a.step(command_pulse, k, law); });
   return fb;
 }
 

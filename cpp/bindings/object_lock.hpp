@@ -23,6 +23,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lock_table.hpp"
@@ -146,6 +147,27 @@ inline void serialise_methods(py::handle cls, const std::vector<std::string>& ex
       py::object fn = py::reinterpret_borrow<py::object>(PyInstanceMethod_GET_FUNCTION(value.ptr()));
       py::setattr(cls, name.c_str(), locked_method(fn, name, cls, true));
     }
+  }
+}
+
+// Runs `n` ticks as calls `ticks(k)` of at most one chunk each, as a long run does: the run locks of `keys` for the
+// whole call, the GIL released, each chunk under the state locks, Ctrl-C checked between chunks. The step API's
+// long steps (Axis.step, Card.step) use it; call with the GIL held.
+template <class Ticks>
+void run_in_chunks(std::vector<const void*> keys, std::size_t n, Ticks&& ticks) {
+  RunLock lock(std::move(keys));
+  py::gil_scoped_release release;
+  ChunkClock clock;
+  for (std::size_t done = 0; done < n;) {
+    const std::size_t k = std::min(clock.size(), n - done);
+    {
+      auto held = lock.chunk();
+      clock.start();
+      ticks(k);
+      clock.stop();
+    }
+    done += k;
+    if (done < n) check_signals();
   }
 }
 
