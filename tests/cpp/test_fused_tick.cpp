@@ -193,11 +193,38 @@ std::vector<Case> cases() {
       }
     }
   }
-  Case plain_trip = cs[cs.size() - 1];
+  const std::size_t last_plain = cs.size() - 1;
+  // Two-mass layouts the loops above leave out (the two-body solve written out in PowerTrain::Local): friction on one
+  // body only (the other's force stays 0 in every sweep), asymmetric Coulomb and viscous friction, a constant load.
+  pl::TwoMassPlantParams one_side, asym;
+  one_side.motor_coulomb_nm = 0.01;
+  one_side.motor_coulomb_asym_nm = 0.003;
+  one_side.load_nm = 0.004;
+  asym.motor_coulomb_nm = 0.01;
+  asym.motor_static_nm = 0.015;
+  asym.load_coulomb_nm = 0.02;
+  asym.load_coulomb_asym_nm = -0.004;
+  asym.load_viscous_nms = 3e-5;
+  asym.load_viscous_asym_nms = 2e-5;
+  asym.load_nm = -0.002;
+  for (const pl::TwoMassPlantParams& plant : {one_side, asym}) {
+    for (const dr::TorqueDriveParams& d : {lag, ideal}) {
+      Case c;
+      c.name = "two-mass case " + std::to_string(i++);
+      c.cfg.law = gt;
+      c.cfg.plant = plant;
+      c.cfg.drive = d;
+      c.cfg.servo_period_s = 250e-6;
+      c.profile = i % 2 == 0;
+      c.cfg.substeps = 1 + i % 2;
+      cs.push_back(c);
+    }
+  }
+  Case plain_trip = cs[last_plain];
   plain_trip.name = "plain, error-limit trip";
   plain_trip.guard.error_limit_pulse = 40.0;
   cs.push_back(plain_trip);
-  Case plain_alarm = cs[cs.size() - 3];
+  Case plain_alarm = cs[last_plain - 1];
   plain_alarm.name = "plain, drive alarm";
   dr::TorqueDriveParams alarming = lag;
   alarming.alarm_at_s = 0.2;

@@ -10,14 +10,32 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 
 #include "servobench/machine/powertrain.hpp"
 
 namespace servobench::machine {
 
+namespace local_detail {
+// Each body's friction flag and levels, formed once for the two-body solve (PowerTrain::Local<N, 2>).
+struct Levels {
+  bool active = false, slip_fixed = false;
+  double fs_pos = 0.0, fs_neg = 0.0, slip_pos = 0.0, slip_neg = 0.0;
+};
+// A one-body Local holds none: the rigid plain kernel is sensitive to its object's layout (decision FV12).
+template <int NB>
+struct BodyLevels {};
+template <>
+struct BodyLevels<2> {
+  Levels levels_[2];
+};
+}  // namespace local_detail
+
 template <int N, int NB>
-class PowerTrain::Local {
+class PowerTrain::Local : local_detail::BodyLevels<NB> {
+  using Levels = local_detail::Levels;
  public:
   using Vec = Eigen::Matrix<double, N, 1>;
 
@@ -59,6 +77,21 @@ class PowerTrain::Local {
     if (slip_fixed_) {
       slip_pos_ = plant::directional_sliding_nm(fr, 1.0, 1.0);
       slip_neg_ = plant::directional_sliding_nm(fr, -1.0, -1.0);
+    }
+    // Two bodies: both bodies' levels, the same way.
+    if constexpr (NB == 2) {
+      for (int b = 0; b < NB; ++b) {
+        const plant::DryFriction<double>& fb = dry_[b];
+        Levels& l = this->levels_[b];
+        l.active = fb.active();
+        l.fs_pos = plant::directional_breakaway_nm(fb, 1.0);
+        l.fs_neg = plant::directional_breakaway_nm(fb, -1.0);
+        l.slip_fixed = fb.breakaway_nm == fb.coulomb_nm && fb.viscous_asym_nms == 0.0;
+        if (l.slip_fixed) {
+          l.slip_pos = plant::directional_sliding_nm(fb, 1.0, 1.0);
+          l.slip_neg = plant::directional_sliding_nm(fb, -1.0, -1.0);
+        }
+      }
     }
   }
 
@@ -132,8 +165,7 @@ class PowerTrain::Local {
     if constexpr (NB == 1) {
       one_body_substep(t_motor, t_load);
     } else {
-      plant::advance_with_dry_friction(static_cast<std::size_t>(NB), kTwoMass, dry_, f_.phi, f_.gamma, i_cmd_, t_motor,
-                                       t_load, x_, x_free_, stuck_);
+      two_body_substep(t_motor, t_load);
     }
   }
 
@@ -212,6 +244,112 @@ class PowerTrain::Local {
     for (int i = 0; i < N; ++i) x_[i] = xf[i];
   }
 
+  // plant::advance_with_dry_friction for the two-mass layout (applies() checked it), written out: the same operations
+  // in the same order (solve_dry_friction's Gauss-Seidel sweeps and their early end, the locked re-solve), so the
+  // same doubles, with the bodies' indices known at compile time and their levels and flags formed once.
+  __attribute__((always_inline)) void two_body_substep(double t_motor, double t_load) {
+    double xf[N];
+    free_motion(f_.phi[0], f_.gamma[0], t_motor, t_load, xf);
+    if (!(this->levels_[0].active || this->levels_[NB - 1].active)) {
+      for (int i = 0; i < N; ++i) x_[i] = xf[i];
+      return;
+    }
+    double f[2] = {0.0, 0.0};
+    bool stick[2] = {false, false};
+    solve_two(xf, f_.gamma[0], 0u, f, stick);
+    // Bodies at rest that static friction keeps at rest are integrated locked.
+    unsigned locked = 0;
+    for (int b = 0; b < 2; ++b)
+      if (stick[b] && stuck_[b] && x_[kTwoMass[b].speed] == 0.0) locked |= 1u << b;
+    const Eigen::Matrix<double, N, 3>* gamma = &f_.gamma[0];
+    if (locked != 0) {
+      gamma = &f_.gamma[locked];
+      free_motion(f_.phi[locked], *gamma, t_motor, t_load, xf);
+      solve_two(xf, *gamma, locked, f, stick);
+    }
+    for (int b = 0; b < 2; ++b) {
+      if (locked & (1u << b)) {
+        stuck_[b] = 1;
+        continue;
+      }
+      if (f[b] != 0.0)
+        for (int i = 0; i < N; ++i) xf[i] += (*gamma)(i, kTwoMass[b].input) * f[b];
+    }
+    for (int b = 0; b < 2; ++b) {
+      if (locked & (1u << b)) continue;
+      if (stick[b]) xf[kTwoMass[b].speed] = 0.0;  // stopped inside the sub-step (the residual is rounding)
+      stuck_[b] = stick[b] ? 1 : 0;
+    }
+    for (int i = 0; i < N; ++i) x_[i] = xf[i];
+  }
+
+  // plant::solve_dry_friction for the two-mass layout: from x_ with the friction-free end state xf.
+  __attribute__((always_inline)) void solve_two(const double* xf, const Eigen::Matrix<double, N, 3>& gamma,
+                                                unsigned locked, double* f, bool* stick) const {
+    double slip_level[2] = {0.0, 0.0};
+    for (int b = 0; b < 2; ++b) {
+      if (locked & (1u << b)) {
+        f[b] = 0.0;
+        stick[b] = true;
+      } else if (this->levels_[b].active) {
+        const double v0 = x_[kTwoMass[b].speed];
+        const double dir = v0 > 0.0 ? 1.0 : -1.0;
+        const Levels& l = this->levels_[b];
+        slip_level[b] =
+            l.slip_fixed ? (v0 > 0.0 ? l.slip_pos : l.slip_neg) : plant::directional_sliding_nm(dry_[b], v0, dir);
+      }
+    }
+    std::uint64_t last_bits[2] = {0, 0};
+    bool seen[2] = {false, false};
+    for (int sweep = 0; sweep < 3; ++sweep) {
+      for (int b = 0; b < 2; ++b) {
+        if (locked & (1u << b)) continue;
+        const int sa = kTwoMass[b].angle, sv = kTwoMass[b].speed, o = 1 - b;
+        stick[b] = false;
+        if (!this->levels_[b].active) {
+          f[b] = 0.0;
+          continue;
+        }
+        double v_free = xf[sv];
+        double d = xf[sa] - x_[sa];
+        v_free += gamma(sv, kTwoMass[o].input) * f[o];
+        d += gamma(sa, kTwoMass[o].input) * f[o];
+        const double g = gamma(sv, kTwoMass[b].input);
+        const double gth = gamma(sa, kTwoMass[b].input);
+        const double v0 = x_[sv];
+        double fb;
+        bool st = false;
+        const double dir = v0 > 0.0 ? 1.0 : -1.0;
+        const double f_slip = -dir * slip_level[b];
+        if (v0 != 0.0 && (v_free + g * f_slip) * dir > 0.0) {
+          fb = f_slip;
+        } else {
+          const double f_stick = -v_free / g;
+          if (f_stick <= this->levels_[b].fs_neg && f_stick >= -this->levels_[b].fs_pos) {
+            fb = f_stick;
+            st = true;
+          } else {
+            fb = v_free > 0.0 ? -this->levels_[b].fs_pos : this->levels_[b].fs_neg;
+          }
+        }
+        if (!(st && v0 == 0.0) && fb * (d + gth * fb) > 0.0) {
+          st = false;
+          const double cap = gth > 0.0 ? std::fabs(d) / gth : 0.0;
+          const double afb = std::fabs(fb);
+          const double mag = afb < cap ? afb : cap;
+          fb = d == 0.0 ? 0.0 : (d > 0.0 ? -mag : mag);
+        }
+        f[b] = fb;
+        stick[b] = st;
+        std::uint64_t bits;  // converged: see solve_dry_friction (decision SQ2)
+        std::memcpy(&bits, &fb, sizeof bits);
+        if (seen[b] && bits == last_bits[b]) return;
+        last_bits[b] = bits;
+        seen[b] = true;
+      }
+    }
+  }
+
   // zoh_product and add_input: xf = phi x + gamma [i_cmd, t_motor, t_load], each input skipped when exactly 0.
   __attribute__((always_inline)) void free_motion(const Eigen::Matrix<double, N, N>& phi,
                                                   const Eigen::Matrix<double, N, 3>& gam, double t_motor, double t_load,
@@ -249,7 +387,7 @@ class PowerTrain::Local {
   plant::BodyIndex idx_[2];
   plant::DryFriction<double> dry_[2];
   char stuck_[2] = {1, 1};
-  Vec x_, x_free_;
+  Vec x_;
   long long substep_count_;
   double volts_, i_cmd_;
   bool alarm_, alarm_before_;
