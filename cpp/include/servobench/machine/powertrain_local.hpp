@@ -200,37 +200,11 @@ class PowerTrain::Local : local_detail::BodyLevels<NB> {
     constexpr int sa = kAngle, sv = kSpeed, in = 1;  // the layout fused_states() checked
     const double v0 = x_[sv];
     // solve_dry_friction, one body, nothing locked.
-    double fb;
-    bool st = false;
-    {
-      const double v_free = xf[sv];
-      const double d = xf[sa] - x_[sa];
-      const double g = gam0(sv, in);
-      const double gth = gam0(sa, in);
-      const double dir = v0 > 0.0 ? 1.0 : -1.0;
-      const double level =
-          slip_fixed_ ? (v0 > 0.0 ? slip_pos_ : slip_neg_) : plant::directional_sliding_nm(fr, v0, dir);
-      const double f_slip = -dir * level;
-      if (v0 != 0.0 && (v_free + g * f_slip) * dir > 0.0) {
-        fb = f_slip;
-      } else {
-        const double f_stick = -v_free / g;
-        const double fs_pos = fs_pos_, fs_neg = fs_neg_;
-        if (f_stick <= fs_neg && f_stick >= -fs_pos) {
-          fb = f_stick;
-          st = true;
-        } else {
-          fb = v_free > 0.0 ? -fs_pos : fs_neg;
-        }
-      }
-      if (!(st && v0 == 0.0) && fb * (d + gth * fb) > 0.0) {
-        st = false;
-        const double cap = gth > 0.0 ? std::fabs(d) / gth : 0.0;
-        const double afb = std::fabs(fb);
-        const double mag = afb < cap ? afb : cap;
-        fb = d == 0.0 ? 0.0 : (d > 0.0 ? -mag : mag);
-      }
-    }
+    const double v_free = xf[sv], d = xf[sa] - x_[sa], g = gam0(sv, in), gth = gam0(sa, in);
+    const double level = slip_fixed_ ? (v0 > 0.0 ? slip_pos_ : slip_neg_)
+                                     : plant::directional_sliding_nm(fr, v0, v0 > 0.0 ? 1.0 : -1.0);
+    bool st;
+    double fb = plant::friction_decision(v0, v_free, d, g, gth, level, fs_pos_, fs_neg_, st);
     if (st && stuck_[0] && v0 == 0.0) {  // held by static friction: the locked discretisation, no friction work
       free_motion(f_.phi[1], f_.gamma[1], t_motor, t_load, xf);
       stuck_[0] = 1;
@@ -316,29 +290,9 @@ class PowerTrain::Local : local_detail::BodyLevels<NB> {
         d += gamma(sa, kTwoMass[o].input) * f[o];
         const double g = gamma(sv, kTwoMass[b].input);
         const double gth = gamma(sa, kTwoMass[b].input);
-        const double v0 = x_[sv];
-        double fb;
-        bool st = false;
-        const double dir = v0 > 0.0 ? 1.0 : -1.0;
-        const double f_slip = -dir * slip_level[b];
-        if (v0 != 0.0 && (v_free + g * f_slip) * dir > 0.0) {
-          fb = f_slip;
-        } else {
-          const double f_stick = -v_free / g;
-          if (f_stick <= this->levels_[b].fs_neg && f_stick >= -this->levels_[b].fs_pos) {
-            fb = f_stick;
-            st = true;
-          } else {
-            fb = v_free > 0.0 ? -this->levels_[b].fs_pos : this->levels_[b].fs_neg;
-          }
-        }
-        if (!(st && v0 == 0.0) && fb * (d + gth * fb) > 0.0) {
-          st = false;
-          const double cap = gth > 0.0 ? std::fabs(d) / gth : 0.0;
-          const double afb = std::fabs(fb);
-          const double mag = afb < cap ? afb : cap;
-          fb = d == 0.0 ? 0.0 : (d > 0.0 ? -mag : mag);
-        }
+        bool st;
+        const double fb = plant::friction_decision(x_[sv], v_free, d, g, gth, slip_level[b], this->levels_[b].fs_pos,
+                                                   this->levels_[b].fs_neg, st);
         f[b] = fb;
         stick[b] = st;
         std::uint64_t bits;  // converged: see solve_dry_friction (decision SQ2)

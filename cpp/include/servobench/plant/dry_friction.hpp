@@ -91,6 +91,43 @@ SERVOBENCH_TICK_INLINE T directional_sliding_nm(const DryFriction<T>& f, const T
   return sliding_friction_nm(f, speed_rad_s) + dir * (f.coulomb_asym_nm + f.viscous_asym_nms * abs(speed_rad_s));
 }
 
+// One body's held dry-friction torque for a sub-step (N*m), the other bodies' forces already in v_free and d: from
+// the start speed v0 and the friction-free end speed v_free (speed state's units) and displacement d (angle
+// state's), with g and gth the end speed and displacement per N*m of its own friction, the sliding level slip_level
+// at v0 and the breakaway levels fs_pos (resisting positive motion) and fs_neg (negative), all >= 0. The body keeps
+// sliding, sticks (st = true: the torque that stops it, within the breakaway levels) or breaks away; then the work
+// cap. The one decision of solve_dry_friction and of the fused tick's written-out sub-steps (powertrain_local.hpp).
+template <class T>
+SERVOBENCH_TICK_INLINE T friction_decision(const T& v0, const T& v_free, const T& d, const T& g, const T& gth,
+                                           const T& slip_level, const T& fs_pos, const T& fs_neg, bool& st) {
+  using std::abs;
+  T fb;
+  st = false;
+  const double dir = v0 > 0.0 ? 1.0 : -1.0;
+  const T f_slip = -dir * slip_level;
+  if (v0 != 0.0 && (v_free + g * f_slip) * dir > 0.0) {
+    fb = f_slip;  // keeps sliding the same way
+  } else {
+    const T f_stick = -v_free / g;  // holds the body at rest at the sub-step's end
+    if (f_stick <= fs_neg && f_stick >= -fs_pos) {
+      fb = f_stick;
+      st = true;
+    } else {
+      fb = v_free > 0.0 ? T(-fs_pos) : fs_neg;  // breaks away, or passes zero
+    }
+  }
+  // Sliding friction may only oppose the net displacement over the sub-step: f * (d + gth f) <= 0. (A hold from rest
+  // is integrated locked, with no work at all.)
+  if (!(st && v0 == 0.0) && fb * (d + gth * fb) > 0.0) {
+    st = false;
+    const T cap = gth > 0.0 ? T(abs(d) / gth) : T(0.0);
+    const T afb = abs(fb);
+    const T mag = afb < cap ? afb : cap;
+    fb = d == 0.0 ? T(0.0) : (d > 0.0 ? T(-mag) : mag);
+  }
+  return fb;
+}
+
 // Chooses the held dry-friction torque f[b] of every body b for the sub-step from x0 whose friction-free end state
 // is x_free (gamma: the discretisation's input matrix in use; bodies in the `locked` bit mask are frozen and get
 // f = 0, stick = true). Two bodies are coupled through the shaft: three Gauss-Seidel sweeps.
@@ -138,31 +175,8 @@ SERVOBENCH_TICK_INLINE void solve_dry_friction(std::size_t nb, const BodyIndex* 
       }
       const T g = gamma(s.speed, s.input);    // end speed per N*m of own friction
       const T gth = gamma(s.angle, s.input);  // displacement per N*m of own friction
-      const T v0 = x0[s.speed];
-      T fb;
-      bool st = false;
-      const double dir = v0 > 0.0 ? 1.0 : -1.0;
-      const T f_slip = -dir * slip_level[b];
-      if (v0 != 0.0 && (v_free + g * f_slip) * dir > 0.0) {
-        fb = f_slip;  // keeps sliding the same way
-      } else {
-        const T f_stick = -v_free / g;  // holds the body at rest at the sub-step's end
-        if (f_stick <= fs_neg[b] && f_stick >= -fs_pos[b]) {
-          fb = f_stick;
-          st = true;
-        } else {
-          fb = v_free > 0.0 ? T(-fs_pos[b]) : fs_neg[b];  // breaks away, or passes zero
-        }
-      }
-      // Sliding friction may only oppose the net displacement over the sub-step: f * (d + gth f) <= 0. (A hold
-      // from rest is integrated locked, with no work at all.)
-      if (!(st && v0 == 0.0) && fb * (d + gth * fb) > 0.0) {
-        st = false;
-        const T cap = gth > 0.0 ? T(abs(d) / gth) : T(0.0);
-        const T afb = abs(fb);
-        const T mag = afb < cap ? afb : cap;
-        fb = d == 0.0 ? T(0.0) : (d > 0.0 ? T(-mag) : mag);
-      }
+      bool st;
+      const T fb = friction_decision(x0[s.speed], v_free, d, g, gth, slip_level[b], fs_pos[b], fs_neg[b], st);
       f[b] = fb;
       stick[b] = st;
       // Converged (decision SQ2): with two bodies each evaluation depends only on the other body's latest force, so
