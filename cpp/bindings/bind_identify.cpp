@@ -167,21 +167,30 @@ void bind_identify(py::module_& m) {
       "identify_time",
       [](const py::handle& torque_nm, const py::handle& measured, double sample_period_s, Flag measured_is_speed,
          Flag measured_on_load, const std::string& model, const py::handle& initial, const std::vector<Flag>& fixed,
-         const py::handle& lower, const py::handle& upper, const py::object& progress, const py::kwargs& kw) {
+         const py::handle& lower, const py::handle& upper, const py::object& progress, const py::object& join_points,
+         double join_rtol, const py::kwargs& kw) {
         const identify::TimeLog log = time_log(torque_nm, measured, sample_period_s, measured_is_speed,
                                                measured_on_load);
         identify::TimeFitOptions o = options_from(model, kw);
         std::shared_ptr<py::error_already_set> interrupt;
         o.progress = iteration_callback(progress, &interrupt);
         const identify::ParameterSetup s = setup_of(initial, fixed, lower, upper);
+        identify::StageJoin join;
+        join.rtol = join_rtol;
+        if (!join_points.is_none())
+          for (const py::handle& q : join_points) join.points.push_back(real_vector(q, "join_points[k]"));
         identify::TimeFitResult r;
         try {
           py::gil_scoped_release release;
-          r = identify::fit_time_domain(log, s, o);
+          r = identify::fit_time_domain(log, s, o, join_points.is_none() ? nullptr : &join);
         } catch (const SolveInterrupted&) {
         }
         raise_pending(interrupt);
         py::dict d;
+        py::list stage_parameters;
+        for (const auto& q : r.stage_parameters) stage_parameters.append(to_array(q));
+        d["stage_parameters"] = stage_parameters;
+        d["joined_stage"] = r.joined_stage;
         d["parameters"] = estimates(r.parameters);
         d["summary"] = summary(r.summary);
         d["predicted"] = to_array(r.predicted);
@@ -194,7 +203,11 @@ void bind_identify(py::module_& m) {
       py::arg("torque_nm"), py::arg("measured"), py::kw_only(), py::arg("sample_period_s"),
       py::arg("measured_is_speed"), py::arg("measured_on_load"), py::arg("model"), py::arg("initial"),
       py::arg("fixed"), py::arg("lower"), py::arg("upper"), py::arg("progress") = py::none(),
-      "Time-domain grey-box fit of the plant (Ceres). Options: TimeFitOptions field names. Releases the GIL.");
+      py::arg("join_points") = py::none(), py::arg("join_rtol") = 1e-4,
+      "Time-domain grey-box fit of the plant (Ceres). Options: TimeFitOptions field names. join_points: another "
+      "start's stage_parameters; the fit stops after a stage (not the last) whose free parameters agree with that "
+      "start's there within join_rtol (relative), and returns joined_stage >= 0 with only stage_parameters and the "
+      "summary's iterations, seconds and report (decision FV15). Releases the GIL.");
 
   m.def(
       "identify_shooting_problem",

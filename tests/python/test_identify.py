@@ -91,6 +91,34 @@ def test_a_best_start_at_the_resolution_floor_needs_no_twin_when_the_others_are_
     assert fit.converged, fit.summary
     assert "resolution floor" in fit.summary and "NOT CONVERGED" not in fit.summary
     assert max(abs(e) for e in errors_pct(fit, RIGID_B).values()) < 0.1
+    assert not any("Joined start 1" in s.summary for s in fit.starts)  # the lost starts never reached start 1's point
+
+
+@pytest.mark.parametrize("model", ["rigid", "two_mass"])
+def test_later_starts_that_reach_the_first_starts_point_join_it_and_change_nothing(monkeypatch, model):
+    # Decision FV15: a later start whose free parameters agree with the first start's within 1e-4 at the end of a
+    # stage stops there and takes the first start's outcome. The answer is the one the starts give run to the end
+    # (within 0.01 standard errors), and which starts join does not depend on start_threads.
+    if model == "rigid":
+        log, true = sb.run_experiment(axis_with(_core.RigidPlant(**RIGID_A)), amplitude_v=0.1, seed=0), RIGID_A
+    else:
+        log, true = two_mass_log(), TWO_MASS
+    guess = guesses(true)
+    fit = sb.fit_time(log, model, guess=guess, strict=False)
+    joined = [s for s in fit.starts[1:] if "Joined start 1" in s.summary]
+    assert joined and "joined start 1 at an intermediate stage" in fit.summary, fit.summary
+    for s in joined:
+        assert s.parameters == fit.starts[0].parameters and s.iterations < fit.starts[0].iterations + 30
+    assert fit.converged and "NOT CONVERGED" not in fit.summary
+    threaded = sb.fit_time(log, model, guess=guess, strict=False, start_threads=2)
+    assert ["Joined start 1" in s.summary for s in threaded.starts] == ["Joined start 1" in s.summary for s in fit.starts]
+    assert [s.parameters for s in threaded.starts] == [s.parameters for s in fit.starts]
+    monkeypatch.setattr(sb.identify, "_JOIN_RTOL", 1e-300)  # no start joins: each runs every stage
+    full = sb.fit_time(log, model, guess=guess, strict=False)
+    assert not any("Joined start 1" in s.summary for s in full.starts)
+    for k in true:
+        e = full.parameters[k]
+        assert abs(fit[k] - e.value) <= 0.01 * e.std_error, (k, fit[k], e)
 
 
 @pytest.mark.parametrize("seed", [0, 1, 2])

@@ -67,8 +67,11 @@ std::string loss_name(Loss l) {
 
 }  // namespace
 
-TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, const TimeFitOptions& options) {
+TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, const TimeFitOptions& options,
+                              const StageJoin* join) {
   options.validate();
+  if (join != nullptr && !(join->rtol > 0.0 && join->rtol < 1.0))
+    throw_invalid("StageJoin", "rtol", join->rtol, "must be in (0, 1)");
   check_log(log, options);
   const PlantModel model = options.model;
   const auto& info = model_parameters(model);
@@ -217,6 +220,7 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
   // split into residual evaluations, Jacobian evaluations (the model on Jets) and the linear solver.
   std::ostringstream stages;
   double t_residual = 0.0, t_jacobian = 0.0, t_linear = 0.0;
+  TimeFitResult result;
   for (std::size_t i = 0; i < lengths.size(); ++i) {
     if (i) prev = st.shooting;
     st = Stage();
@@ -229,6 +233,33 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
     t_residual += st.summary.residual_evaluation_time_in_seconds;
     t_jacobian += st.summary.jacobian_evaluation_time_in_seconds;
     t_linear += st.summary.linear_solver_time_in_seconds;
+    result.stage_parameters.push_back(to_external(model, p));
+    if (join != nullptr && i + 1 < lengths.size() && i < join->points.size() &&
+        join->points[i].size() == static_cast<std::size_t>(np)) {
+      const std::vector<double>& q = join->points[i];
+      const std::vector<double>& here = result.stage_parameters.back();
+      bool same = true;
+      for (int k : free_index) {
+        const double a = here[static_cast<std::size_t>(k)], b = q[static_cast<std::size_t>(k)];
+        if (!(std::fabs(a - b) <= join->rtol * std::max(std::fabs(a), std::fabs(b)) ||
+              std::max(std::fabs(a), std::fabs(b)) < 1e-300))
+          same = false;
+      }
+      if (same) {
+        result.joined_stage = static_cast<int>(i);
+        FitSummary& fs = result.summary;
+        fs.iterations = total_iterations;
+        fs.initial_cost = initial_cost;
+        fs.final_cost = st.summary.final_cost;
+        fs.seconds = seconds;
+        std::ostringstream os;
+        os << "Stages (segment samples: iterations): " << stages.str() << "; joined after stage " << i + 1 << " of "
+           << lengths.size() << ": every free parameter within " << join->rtol
+           << " (relative) of the other start's at that stage.";
+        fs.report = os.str();
+        return result;
+      }
+    }
   }
   ceres::Solver::Summary& summary = st.summary;
   ceres::Problem& problem = *st.problem;
@@ -238,7 +269,6 @@ TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, c
   const int nseg = static_cast<int>(starts.size());
   const int len = options.segment_samples;
 
-  TimeFitResult result;
   // The model's output and the residuals at the solution.
   result.predicted.assign(n, std::numeric_limits<double>::quiet_NaN());
   result.residual.assign(n, std::numeric_limits<double>::quiet_NaN());

@@ -117,11 +117,26 @@ struct TimeFitResult {
   std::vector<int> segment_start; // first sample of each segment
   std::vector<int> segment_count; // its length; samples outside every segment have NaN predicted/residual
   std::vector<double> segment_states;  // the fitted start state of every segment, concatenated (state_size each)
+  // The parameters (model_parameters order, SI) at the end of every stage of the continuation that ran.
+  std::vector<std::vector<double>> stage_parameters;
+  // >= 0: the fit stopped after this stage because its parameters agreed with another start's at the same stage
+  // (StageJoin); only stage_parameters and the summary's iterations, seconds and report are then filled.
+  int joined_stage = -1;
+};
+
+// Another start's parameters at the end of each stage (TimeFitResult::stage_parameters of a fit of the same log with
+// the same options): a fit whose parameters at the end of stage k (not the last) agree with points[k] -- every free
+// parameter within rtol of its value, relative, or both within 1e-300 -- stops there, since from the same point the
+// remaining stages repeat that start's (decision FV15).
+struct StageJoin {
+  std::vector<std::vector<double>> points;
+  double rtol = 1e-4;
 };
 
 // Fits the plant. Throws std::invalid_argument for bad input (lengths, non-finite values, a log shorter than two
 // segments, bounds not around the initial values).
-TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, const TimeFitOptions& options);
+TimeFitResult fit_time_domain(const TimeLog& log, const ParameterSetup& setup, const TimeFitOptions& options,
+                              const StageJoin* join = nullptr);
 
 // One stage's multiple-shooting problem laid out for an outside least-squares solver (the benchmark against SciPy
 // solves exactly what Ceres solves): the segments of about options.segment_samples, their start states from the
