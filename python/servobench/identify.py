@@ -157,7 +157,7 @@ def _fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | Non
         The first start runs alone; a later start whose free parameters agree with the first start's within 1e-4
         (relative) at the end of a stage of the continuation stops there and takes the first start's outcome (from
         the same point the remaining stages repeat the first start's; its summary says "Joined start 1"). On the 5 s
-        bench experiments this saves 20-40 % of the CPU time (decision FV15).
+        bench experiments this saved 9-47 % of the CPU time (bench table, decision FV15).
     dynamics_hz
         the closed loop's dynamics frequency for the IDIM (see :func:`servobench.idim_ls`); None: from the log.
     loss
@@ -409,8 +409,8 @@ class _Joined:
                                    "parameters, residuals and standard errors are start 1's from there on.")
 
 
-def _fit_once(log: IdentificationLog, model: str = "rigid", spectrum=None, join=None, record=None, /, *, guess: dict, fixed: Iterable[str] = (),
-             bounds: dict | None = None, segment_samples: int = _TIME["segment_samples"],
+def _fit_once(log: IdentificationLog, model: str = "rigid", spectrum=None, join=None, record=None, /, *,
+             guess: dict, fixed: Iterable[str] = (), bounds: dict | None = None, segment_samples: int = _TIME["segment_samples"],
              initial_segment_samples: int = _TIME["initial_segment_samples"], loss: str = "none",
              loss_scale_counts: float = _TIME["loss_scale_counts"],
              stribeck_exponent: float = _TIME["stribeck_exponent"], max_iterations: int = _TIME["max_iterations"],
