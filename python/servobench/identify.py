@@ -410,7 +410,8 @@ class _Joined:
 
 
 def _fit_once(log: IdentificationLog, model: str = "rigid", spectrum=None, join=None, record=None, /, *,
-             guess: dict, fixed: Iterable[str] = (), bounds: dict | None = None, segment_samples: int = _TIME["segment_samples"],
+             guess: dict, fixed: Iterable[str] = (),
+             bounds: dict | None = None, segment_samples: int = _TIME["segment_samples"],
              initial_segment_samples: int = _TIME["initial_segment_samples"], loss: str = "none",
              loss_scale_counts: float = _TIME["loss_scale_counts"],
              stribeck_exponent: float = _TIME["stribeck_exponent"], max_iterations: int = _TIME["max_iterations"],
