@@ -2,7 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
+#include <string>
 
 #include "servobench/identify/plant_model.hpp"
 #include "servobench/identify/time_fit.hpp"
@@ -73,15 +75,49 @@ TEST(Identify, ModelIsTheSimulatorsPowerTrain) {
   EXPECT_LE(worst2, 1e-12);
 }
 
-TEST(Identify, RefusesBadLogs) {
+namespace {
+
+// A still log of 100 samples at 5 kHz (measured: `measured` samples) and a rigid start.
+identify::TimeLog still_log(std::size_t measured) {
   identify::TimeLog log;
   log.sample_period_s = 200e-6;
   log.torque_nm.assign(100, 0.0);
-  log.measured.assign(99, 0.0);
+  log.measured.assign(measured, 0.0);
+  return log;
+}
+identify::ParameterSetup rigid_start() {
   identify::ParameterSetup s;
   s.initial = {1e-4, 0, 0, 0, 1, 0};
+  return s;
+}
+
+}  // namespace
+
+TEST(Identify, RefusesBadLogs) {
+  identify::TimeLog log = still_log(99);
+  const identify::ParameterSetup s = rigid_start();
   EXPECT_THROW(identify::fit_time_domain(log, s, {}), std::invalid_argument);
   log.measured.assign(100, 0.0);
   log.measured[5] = std::nan("");
   EXPECT_THROW(identify::fit_time_domain(log, s, {}), std::invalid_argument);
+}
+
+// StageJoin's tolerance (decision FV15) must be in (0, 1): the error names the struct and the field, before the log is
+// read (this log is valid).
+TEST(Identify, RefusesAStageJoinToleranceOutsideZeroToOne) {
+  const identify::TimeLog log = still_log(100);
+  const identify::ParameterSetup s = rigid_start();
+  for (double rtol : {0.0, -1e-4, 1.0, std::nan(""), std::numeric_limits<double>::infinity()}) {
+    identify::StageJoin join;
+    join.rtol = rtol;
+    try {
+      identify::fit_time_domain(log, s, {}, &join);
+      ADD_FAILURE() << "rtol " << rtol << " accepted";
+    } catch (const std::invalid_argument& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("StageJoin"), std::string::npos) << what;
+      EXPECT_NE(what.find("rtol"), std::string::npos) << what;
+      EXPECT_NE(what.find("(0, 1)"), std::string::npos) << what;
+    }
+  }
 }

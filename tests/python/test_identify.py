@@ -121,6 +121,29 @@ def test_later_starts_that_reach_the_first_starts_point_join_it_and_change_nothi
         assert abs(fit[k] - e.value) <= 0.01 * e.std_error, (k, fit[k], e)
 
 
+def test_a_first_fit_in_a_fresh_process_does_not_import_scipy_stats():
+    # Decision FV17: the p-values of the friction-asymmetry tests come from scipy.special.chdtrc (what
+    # scipy.stats.chi2.sf calls): importing scipy.stats cost a process's first fit_time 0.5 s of CPU time.
+    import subprocess
+    import sys
+    code = f"""
+import sys, servobench as sb
+from servobench import _core
+plant = _core.RigidPlant(**{RIGID_A!r})
+axis = sb.Axis(law=_core.GtServoLaw(kp=38, kd=830),
+               drive=_core.TorqueDrive(amps_per_volt=0.8, kt=0.5, current_bw_hz=1500.0), plant=plant,
+               encoder=_core.Encoder(counts_per_rev=10000), servo_period_s=200e-6)
+log = sb.run_experiment(axis, amplitude_v=0.1, duration_s=2.0, seed=0)
+assert "scipy.stats" not in sys.modules, "imported before the fit"
+fit = sb.fit_time(log, "rigid", guess={guesses(RIGID_A)!r}, strict=False)
+assert fit.asymmetry_p_value >= 0.0, fit.asymmetry_p_value
+print("scipy.stats" in sys.modules)
+"""
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip() == "False", "fit_time imported scipy.stats"
+
+
 @pytest.mark.parametrize("seed", [0, 1, 2])
 def test_rigid_within_5pct_with_encoder_noise(seed):
     # The configured noise: 0.5 count rms on top of the quantisation, a different noise sequence per seed.

@@ -98,6 +98,13 @@ class Simulation {
       body_[0] = BodyFriction{p[6], p[6] + p[7], p[8], true, of[6], of[7], of[8], 0, 1, 1};
       body_[1] = BodyFriction{p[9], p[9], 1.0, false, of[9], -1, -1, 2, 3, 2};
     }
+    for (int b = 0; b < NB; ++b) {
+      inv_ws_[b] = 1.0 / body_[b].ws;
+      unit_fc_[b] = unit(body_[b].lane_fc);
+      unit_excess_[b] = unit(body_[b].lane_excess);
+      unit_ws_[b] = unit(body_[b].lane_ws);
+    }
+    unit_load_ = unit(lane_load_);
   }
 
   // One sub-step (plant::advance_with_dry_friction): x, S advanced in place; stuck[b] carried between sub-steps.
@@ -167,6 +174,15 @@ class Simulation {
     return s;
   }
 
+  // The lane vector of a parameter: 1 in its lane (none: lane < 0), 0 elsewhere. The lanes of a parameter's own
+  // term are added as whole vectors, never written one element at a time: a scalar store into an array the next
+  // operation loads as vectors stalls store-to-load forwarding (measured: a fifth of the evaluation's time).
+  static Lanes unit(int lane) {
+    Lanes u{};
+    if (lane >= 0 && lane < nd) u[static_cast<std::size_t>(lane)] = 1.0;
+    return u;
+  }
+
   static void commit(double x[n], Lanes S[n], const double xf[n], const Lanes dxf[n]) {
     for (int i = 0; i < n; ++i) {
       x[i] = xf[i];
@@ -199,7 +215,8 @@ class Simulation {
         xf[i] += s.gam[i][2] * t_load;
         for (int k = 0; k < nlin_lanes; ++k) d[k] += s.dgam[k][i][2] * t_load;
         if constexpr (nd > 0)
-          if (lane_load_ >= 0) d[lane_load_] -= s.gam[i][2];
+          if (lane_load_ >= 0)
+            for (int j = 0; j < nd; ++j) d[j] -= s.gam[i][2] * unit_load_[j];
       }
       if (lag != 0.0) {
         xf[i] += s.gam[i][3] * lag;
@@ -209,12 +226,10 @@ class Simulation {
   }
 
   // The sliding level Fc + (Fs - Fc) exp(-(|v|/ws)^delta) at the sub-step's start speed v and its lanes.
-  double sliding(const BodyFriction& bf, double v, const Lanes& dv, Lanes& out) const {
+  double sliding(int b, double v, const Lanes& dv, Lanes& out) const {
+    const BodyFriction& bf = body_[b];
     if (!bf.peak) {  // the level is Fc (the Jets' (Fs - Fc) term is exactly 0 with its lanes)
-      if constexpr (nd > 0) {
-        out.fill(0.0);
-        if (bf.lane_fc >= 0) out[bf.lane_fc] = 1.0;
-      }
+      if constexpr (nd > 0) out = unit_fc_[b];
       return bf.fc;
     }
     const double r = std::fabs(v) / bf.ws;
@@ -228,15 +243,10 @@ class Simulation {
     }
     const double e = std::exp(-shape);
     const double excess = bf.fs - bf.fc;
-    if constexpr (nd > 0) {
-      const double sg = std::copysign(1.0, v);
-      Lanes dr;
-      for (int j = 0; j < nd; ++j) dr[j] = sg * dv[j];
-      if (bf.lane_ws >= 0) dr[bf.lane_ws] -= r;  // d|v|/ws = (d|v| - r dws) / ws
-      for (int j = 0; j < nd; ++j) dr[j] /= bf.ws;
-      for (int j = 0; j < nd; ++j) out[j] = -excess * e * slope * dr[j];
-      if (bf.lane_fc >= 0) out[bf.lane_fc] += 1.0;
-      if (bf.lane_excess >= 0) out[bf.lane_excess] += e;
+    if constexpr (nd > 0) {  // d(|v|/ws) = (d|v| - r dws) (1/ws), as Ceres' Jet division
+      const double sg = std::copysign(1.0, v), c = -excess * e * slope, iw = inv_ws_[b];
+      const Lanes &uw = unit_ws_[b], &uf = unit_fc_[b], &ue = unit_excess_[b];
+      for (int j = 0; j < nd; ++j) out[j] = c * ((sg * dv[j] - r * uw[j]) * iw) + uf[j] + e * ue[j];
     }
     return bf.fc + excess * e;
   }
@@ -256,7 +266,7 @@ class Simulation {
         known[b] = false;
         stick[b] = true;
       } else if (body_[b].active() && x[body_[b].speed] != 0.0) {
-        slip[b] = sliding(body_[b], x[body_[b].speed], S[body_[b].speed], dslip[b]);
+        slip[b] = sliding(b, x[body_[b].speed], S[body_[b].speed], dslip[b]);
       }
     }
     for (int sweep = 0; sweep < sweeps; ++sweep) {
@@ -316,11 +326,8 @@ class Simulation {
           } else {  // breaks away, or passes zero: -Fs or +Fs, dFs = dFc + d(excess)
             const double sgn = v_free > 0.0 ? -1.0 : 1.0;
             fb = sgn * bf.fs;
-            if constexpr (nd > 0) {
-              dfb.fill(0.0);
-              if (bf.lane_fc >= 0) dfb[bf.lane_fc] = sgn;
-              if (bf.lane_excess >= 0) dfb[bf.lane_excess] = sgn;
-            }
+            if constexpr (nd > 0)
+              for (int j = 0; j < nd; ++j) dfb[j] = sgn * unit_fc_[b][j] + sgn * unit_excess_[b][j];
           }
         }
         // Sliding friction may only oppose the net displacement over the sub-step.
@@ -367,6 +374,8 @@ class Simulation {
   int lane_load_;  // the load's lane, or -1
   Step steps_[S_::kMasks];
   BodyFriction body_[NB];
+  double inv_ws_[NB];
+  Lanes unit_fc_[NB], unit_excess_[NB], unit_ws_[NB], unit_load_;  // unit(lane) of those parameters
   double expo_ = 2.0;
 };
 
