@@ -298,7 +298,7 @@ def segment_sandwich(log, model: str, values: dict, free, segment_samples: int, 
     rt = r - np.einsum("ns,ns->n", jx, (ai @ by_segment(jx * r[:, None])[:, :, None])[:, :, 0][seg])
     g = by_segment(jt * rt[:, None])
     k = len(fi)
-    from .idim import long_run_covariance
+    from .idim import chi2_1_sf, long_run_covariance
 
     s, lags = long_run_covariance(g)
     hi = np.linalg.pinv(np.einsum("ni,nj->ij", jt, jt))
@@ -308,15 +308,13 @@ def segment_sandwich(log, model: str, values: dict, free, segment_samples: int, 
         y = np.asarray(log.measured, float)
         direction = np.sign(y[starts + counts - 1] - y[starts])
         if np.any(direction > 0) and np.any(direction < 0):
-            from scipy import special  # chdtrc is chi2.sf; scipy.stats alone costs 0.5 s CPU to import
-
             a = jt[:, [names[i] for i in fi].index("viscous_nms")] * direction[seg]
             a = a - np.einsum("nk,k->n", jt, hi @ np.einsum("nk,n->k", jt, a))
             h = by_segment(a * rt)
             lrv, _ = long_run_covariance(h[:, None])
             if lrv[0, 0] > 0:
                 stat = float(h.sum()) ** 2 / lrv[0, 0]  # long_run_covariance is the variance of the sum
-                p_asym = float(special.chdtrc(1, stat))
+                p_asym = chi2_1_sf(stat)
                 d_asym = -2.0 * float(h.sum() / dot(a, a))  # r = model - measured: one Gauss-Newton step
     return SegmentSandwich([names[i] for i in fi], hi @ s @ hi, dot(rt, rt) / dof * hi, lags, nseg,
                            float(math.sqrt(ss / max(len(r), 1))), p_asym, d_asym)

@@ -24,7 +24,6 @@ import warnings
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 from . import _core
 from ._serialise import JsonResult
@@ -154,6 +153,8 @@ def adlink_quantisation(design, integers=None) -> AdlinkQuantisation:
     if theta is not None:
         f0 = theta / (2 * math.pi * ts)
         if float(mag_f(f0)) <= _NULL_DEPTH * peak:
+            from scipy.optimize import brentq  # here, not at import: scipy.optimize is 0.6 s of `import servobench`
+
             edge = peak * _HALF_POWER
             below, above = f[(f < f0) & (hf >= edge)], f[(f > f0) & (hf >= edge)]
             lo = brentq(lambda x: float(mag_f(x)) - edge, below.max(), f0) if below.size else 0.0
