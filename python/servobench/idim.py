@@ -129,8 +129,8 @@ def long_run_covariance(g: np.ndarray, *, lags: int | None = None):
 def chi2_1_sf(x: float) -> float:
     """P(X > x) for X chi-squared with 1 degree of freedom, the p-value of a 1-restriction Wald test: X = Z^2 with Z
     standard normal, so P = erfc(sqrt(x / 2)) (the standard library's erfc: scipy.stats.chi2.sf(x, 1) within 2e-13
-    relative for x in 0..3000 where SciPy's is above 1e-300, without the 0.3-0.5 s of CPU time that importing scipy.stats or scipy.special costs a
-    process's first fit; decision FV17)."""
+    relative for x in 0..3000 where SciPy's is above 1e-300, without the 0.3-0.5 s of CPU time that importing
+    scipy.stats or scipy.special costs a process's first fit; decision FV17)."""
     return math.erfc(math.sqrt(max(float(x), 0.0) / 2.0))
 
 
