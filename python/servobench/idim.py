@@ -126,7 +126,7 @@ def long_run_covariance(g: np.ndarray, *, lags: int | None = None):
     return S, lags
 
 
-def chi2_1_sf(x: float) -> float:
+def _chi2_1_sf(x: float) -> float:
     """P(X > x) for X chi-squared with 1 degree of freedom, the p-value of a 1-restriction Wald test: X = Z^2 with Z
     standard normal, so P = erfc(sqrt(x / 2)) (the standard library's erfc: scipy.stats.chi2.sf(x, 1) within 2e-13
     relative for x in 0..3000 where SciPy's is above 1e-300, without the 0.3-0.5 s of CPU time that importing
@@ -434,7 +434,7 @@ def _asymmetry_check(X_asym, y, theta_asym, Z=None):
     r[1], r[3] = 1, -1
     d = float(r @ theta_asym)
     W = d * d / float(r @ cov @ r)
-    return W, chi2_1_sf(W), d
+    return W, _chi2_1_sf(W), d
 
 
 def idim_ls(log, *, friction: str = "symmetric", offset: bool | None = None, dynamics_hz: float | None = None,

@@ -308,7 +308,7 @@ def segment_sandwich(log, model: str, values: dict, free, segment_samples: int, 
     rt = r - np.einsum("ns,ns->n", jx, (ai @ by_segment(jx * r[:, None])[:, :, None])[:, :, 0][seg])
     g = by_segment(jt * rt[:, None])
     k = len(fi)
-    from .idim import chi2_1_sf, long_run_covariance
+    from .idim import _chi2_1_sf, long_run_covariance
 
     s, lags = long_run_covariance(g)
     hi = np.linalg.pinv(np.einsum("ni,nj->ij", jt, jt))
@@ -324,7 +324,7 @@ def segment_sandwich(log, model: str, values: dict, free, segment_samples: int, 
             lrv, _ = long_run_covariance(h[:, None])
             if lrv[0, 0] > 0:
                 stat = float(h.sum()) ** 2 / lrv[0, 0]  # long_run_covariance is the variance of the sum
-                p_asym = chi2_1_sf(stat)
+                p_asym = _chi2_1_sf(stat)
                 d_asym = -2.0 * float(h.sum() / dot(a, a))  # r = model - measured: one Gauss-Newton step
     return SegmentSandwich([names[i] for i in fi], hi @ s @ hi, dot(rt, rt) / dof * hi, lags, nseg,
                            float(math.sqrt(ss / max(len(r), 1))), p_asym, d_asym)

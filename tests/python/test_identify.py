@@ -122,14 +122,14 @@ def test_later_starts_that_reach_the_first_starts_point_join_it_and_change_nothi
 
 
 def test_a_first_fit_in_a_fresh_process_does_not_import_scipy_stats():
-    # Decision FV17: the p-values of the friction-asymmetry tests are erfc(sqrt(x / 2)) (idim.chi2_1_sf), SciPy's
+    # Decision FV17: the p-values of the friction-asymmetry tests are erfc(sqrt(x / 2)) (idim._chi2_1_sf), SciPy's
     # chi-squared survival function with 1 degree of freedom: importing scipy.stats cost a process's first fit_time
     # 0.5 s of CPU time.
     from scipy import stats
 
-    from servobench.idim import chi2_1_sf
+    from servobench.idim import _chi2_1_sf
     x = np.concatenate(([0.0], np.logspace(-8, np.log10(3000.0), 400)))
-    assert np.allclose([chi2_1_sf(v) for v in x], stats.chi2.sf(x, 1), rtol=2e-13, atol=1e-300)
+    assert np.allclose([_chi2_1_sf(v) for v in x], stats.chi2.sf(x, 1), rtol=2e-13, atol=1e-300)
     import subprocess
     import sys
     code = f"""
