@@ -89,9 +89,10 @@ def full_fits(repeat, duration_s=5.0):
     return rows
 
 
-def first_call_cpu(duration_s=5.0) -> float:
+def first_call_cpu(duration_s=5.0, repeat=3) -> float:
     """CPU time (s) of the first `fit_time` of a fresh Python process on the rigid A log (what a user who fits one
-    log pays: the libraries the fit loads on its way included, `import servobench` and the experiment not)."""
+    log pays: the libraries the fit loads on its way included, `import servobench` and the experiment not); the best
+    of `repeat` fresh processes, as the other rows are best of `repeat` calls."""
     import pathlib
     import subprocess
 
@@ -104,8 +105,11 @@ def first_call_cpu(duration_s=5.0) -> float:
         "c0 = time.process_time()\n"
         f"sb.fit_time(log, model, guess=guess, strict={duration_s >= 5.0})\n"
         "print(time.process_time() - c0)\n")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
-    return float(out.stdout.strip().splitlines()[-1])
+    best = float("inf")
+    for _ in range(repeat):
+        out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+        best = min(best, float(out.stdout.strip().splitlines()[-1]))
+    return best
 
 
 def _stages(report):
@@ -420,9 +424,10 @@ def run(quick: bool = False, repeat: int | None = None) -> benchlib.Result:
         "|---|---:|---:|---:|---:|---|---|",
     ] + [f"| {n} | {t:.3f} | {c:.3f} | {it} / {ita} | {e:.3f} % | {'met' if t <= GOAL_S else 'NOT met'} | "
          f"{'met' if c <= GOAL_CPU_S else 'NOT met'} |" for n, t, it, e, c, ita in rows]
-    first = first_call_cpu(duration)
+    first = first_call_cpu(duration, repeat)
     lines += ["", f"The first `fit_time` of a fresh process on the rigid A log (what a user who fits one log pays, the "
-              f"libraries the fit loads included; `import servobench` not): **{first:.3f} s CPU** "
+              f"libraries the fit loads included; `import servobench` not), best of {repeat} processes: "
+              f"**{first:.3f} s CPU** "
               f"({'met' if first <= GOAL_CPU_S else 'NOT met'}; decision FV17)."]
     text = "\n".join(lines) + "\n"
 
