@@ -174,7 +174,7 @@ def _fit_time(log: IdentificationLog, model: str = "rigid", *, guess: dict | Non
     start_threads
         how many of the later starts run at once, after the first (default 1: one after the other). Threads help
         wall time only: the later starts are independent one-thread solves that release the GIL, so they overlap,
-        but the first start runs alone (FV15) and the CPU time is the sum of the starts (a rigid start 0.10-0.13 s
+        but the first start runs alone (FV15) and the CPU time is the sum of the starts (a rigid start 0.07-0.13 s
         on the 5 s bench experiments, decision FV16). Measured with 2 threads on 2 cores, 3 starts, best of 5: wall
         time 1.22x (rigid A), 1.30x (rigid B) and 1.05x (two-mass, whose later starts join after one stage) less,
         CPU time 0-10 % more. Results do not depend on it. With `progress`

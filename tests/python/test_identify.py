@@ -111,7 +111,8 @@ def test_later_starts_that_reach_the_first_starts_point_join_it_and_change_nothi
         assert s.parameters == fit.starts[0].parameters and s.iterations < fit.starts[0].iterations + 30
     assert fit.converged and "NOT CONVERGED" not in fit.summary
     threaded = sb.fit_time(log, model, guess=guess, strict=False, start_threads=2)
-    assert ["Joined start 1" in s.summary for s in threaded.starts] == ["Joined start 1" in s.summary for s in fit.starts]
+    joins = lambda f: ["Joined start 1" in s.summary for s in f.starts]  # noqa: E731
+    assert joins(threaded) == joins(fit)
     assert [s.parameters for s in threaded.starts] == [s.parameters for s in fit.starts]
     monkeypatch.setattr(sb.identify, "_JOIN_RTOL", 1e-300)  # no start joins: each runs every stage
     full = sb.fit_time(log, model, guess=guess, strict=False)
@@ -132,16 +133,16 @@ def test_a_first_fit_in_a_fresh_process_does_not_import_scipy_stats():
     assert np.allclose([_chi2_1_sf(v) for v in x], stats.chi2.sf(x, 1), rtol=2e-13, atol=1e-300)
     import subprocess
     import sys
+    import pathlib
     code = f"""
-import sys, servobench as sb
+import sys
+sys.path.insert(0, {str(pathlib.Path(__file__).resolve().parent)!r})
+import servobench as sb
 from servobench import _core
-plant = _core.RigidPlant(**{RIGID_A!r})
-axis = sb.Axis(law=_core.GtServoLaw(kp=38, kd=830),
-               drive=_core.TorqueDrive(amps_per_volt=0.8, kt=0.5, current_bw_hz=1500.0), plant=plant,
-               encoder=_core.Encoder(counts_per_rev=10000), servo_period_s=200e-6)
-log = sb.run_experiment(axis, amplitude_v=0.1, duration_s=2.0, seed=0)
+from test_identify import RIGID_A, axis_with, guesses
+log = sb.run_experiment(axis_with(_core.RigidPlant(**RIGID_A)), amplitude_v=0.1, duration_s=2.0, seed=0)
 assert "scipy.stats" not in sys.modules, "imported before the fit"
-fit = sb.fit_time(log, "rigid", guess={guesses(RIGID_A)!r}, strict=False)
+fit = sb.fit_time(log, "rigid", guess=guesses(RIGID_A), strict=False)
 assert 0.0 <= fit.asymmetry_p_value <= 1.0, fit.asymmetry_p_value
 print("scipy.stats" in sys.modules)
 """
