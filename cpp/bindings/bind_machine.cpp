@@ -270,7 +270,8 @@ void bind_machine(py::module_& m) {
 #undef SERVOBENCH_META
   m.attr("TRACE_SIGNALS") = meta;
   m.def("tick_kernel", [] { return std::string(machine::tick_kernel_name(machine::auto_tick_kernel())); },
-        "The fused tick's kernel that Axis.run uses on this CPU: 'sse4.1' or 'portable' (decision SP1)");
+        "The fused tick's kernel that Axis.run uses on this CPU: 'avx512', 'avx2', 'sse4.1' or 'portable' (decisions "
+        "SP1, FV20)");
 
   py::class_<Axis> axis_cls(m, "Axis", "One simulated servo axis (C++ core). Use servobench.Axis.");
   axis_cls.def(py::init([](const py::object& law, const py::object& drv, const py::object& plant,
@@ -332,13 +333,15 @@ void bind_machine(py::module_& m) {
       .def("set_fused_tick", strict(&Axis::set_fused_tick), py::arg("on"),
            "True (default): the fused per-configuration tick where it applies; False: the general loop (for tests)")
       .def("set_tick_kernel", [](Axis& a, const std::string& kernel) {
-             for (auto k : {machine::TickKernel::kAuto, machine::TickKernel::kPortable, machine::TickKernel::kSse41})
+             for (auto k : {machine::TickKernel::kAuto, machine::TickKernel::kPortable, machine::TickKernel::kSse41,
+                            machine::TickKernel::kAvx512, machine::TickKernel::kAvx2})
                if (kernel == machine::tick_kernel_name(k)) return a.set_tick_kernel(k);
              throw py::value_error("Axis.set_tick_kernel: kernel = '" + kernel +
-                                   "' must be 'auto', 'portable' or 'sse4.1'");
+                                   "' must be 'auto', 'portable', 'sse4.1', 'avx2' or 'avx512'");
            }, py::arg("kernel"),
-           "The fused tick's kernel: 'auto' (default: the fastest this CPU runs), 'portable' or 'sse4.1' (ValueError "
-           "if this CPU has no SSE4.1); all give the same doubles (for tests and benchmarks)")
+           "The fused tick's kernel: 'auto' (default: the fastest this CPU runs), 'portable', 'sse4.1', 'avx2' or "
+           "'avx512' "
+           "(ValueError if this CPU lacks its instructions); all give the same doubles (for tests and benchmarks)")
       .def_property_readonly("last_command_pulse", &Axis::last_command_pulse)
       .def(
           "run",

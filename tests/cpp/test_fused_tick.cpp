@@ -234,6 +234,13 @@ std::vector<Case> cases() {
   plain_alarm.name = "plain, drive alarm, run on";
   plain_alarm.guard.stop_on_alarm = false;
   cs.push_back(plain_alarm);
+  // The alarm's first sub-step on the second piece's last tick (1200) and on the third piece's first (1201).
+  for (int at : {1200, 1201}) {
+    plain_alarm.name = "plain, drive alarm at sub-step " + std::to_string(at);
+    alarming.alarm_at_s = at * 250e-6;
+    plain_alarm.cfg.drive = alarming;
+    cs.push_back(plain_alarm);
+  }
 
   Case trip = cs[0];  // the error limit trips inside the second piece
   trip.name = "error-limit trip";
@@ -253,6 +260,16 @@ std::vector<Case> cases() {
 }
 }  // namespace
 
+namespace {
+// The kernels this build and CPU can run (on a machine with AVX-512: all four).
+std::vector<mc::TickKernel> available_kernels() {
+  std::vector<mc::TickKernel> ks{mc::TickKernel::kPortable};
+  for (mc::TickKernel k : {mc::TickKernel::kSse41, mc::TickKernel::kAvx2, mc::TickKernel::kAvx512})
+    if (mc::tick_kernel_available(k)) ks.push_back(k);
+  return ks;
+}
+}  // namespace
+
 TEST(FusedTick, SameDoublesAsTheGeneralLoopOnEverySignal) {
   for (const Case& c : cases()) {
     const std::vector<double> fused = run_case(c, true), general = run_case(c, false);
@@ -261,14 +278,16 @@ TEST(FusedTick, SameDoublesAsTheGeneralLoopOnEverySignal) {
   }
 }
 
-// Decision SP1: every kernel of the fused tick (portable; SSE4.1 where the CPU has it), forced, gives the general
-// loop's doubles on every signal; 'auto' picks SSE4.1 exactly when the CPU has it.
+// Decisions SP1, FV20: every kernel of the fused tick (portable; SSE4.1, AVX2 and AVX-512 where the CPU has them),
+// forced, gives the general loop's doubles on every signal; 'auto' picks the widest the CPU has.
 TEST(FusedTick, EveryKernelGivesTheSameDoubles) {
-  std::vector<mc::TickKernel> kernels{mc::TickKernel::kPortable};
-  if (mc::tick_kernel_available(mc::TickKernel::kSse41)) kernels.push_back(mc::TickKernel::kSse41);
+  const std::vector<mc::TickKernel> kernels = available_kernels();
 #if SERVOBENCH_SSE41_KERNEL
-  EXPECT_EQ(mc::auto_tick_kernel(), __builtin_cpu_supports("sse4.1") ? mc::TickKernel::kSse41
-                                                                     : mc::TickKernel::kPortable);
+  const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl");
+  EXPECT_EQ(mc::auto_tick_kernel(), avx512                               ? mc::TickKernel::kAvx512
+                                    : __builtin_cpu_supports("avx2")   ? mc::TickKernel::kAvx2
+                                    : __builtin_cpu_supports("sse4.1") ? mc::TickKernel::kSse41
+                                                                       : mc::TickKernel::kPortable);
 #else
   EXPECT_EQ(mc::auto_tick_kernel(), mc::TickKernel::kPortable);
 #endif
@@ -286,8 +305,7 @@ TEST(FusedTick, EveryKernelGivesTheSameDoubles) {
 // Decision SR1: a run that records fb_pos only, or nothing (the fused loop skips its recording block), gives the
 // general loop's feedback, outcome and end state bit for bit on every case, with each kernel.
 TEST(FusedTick, FeedbackOnlyRunsGiveTheSameDoubles) {
-  std::vector<mc::TickKernel> kernels{mc::TickKernel::kPortable};
-  if (mc::tick_kernel_available(mc::TickKernel::kSse41)) kernels.push_back(mc::TickKernel::kSse41);
+  const std::vector<mc::TickKernel> kernels = available_kernels();
   for (const Case& c : cases()) {
     const std::vector<double> all = run_case(c, false);
     for (Rec rec : {Rec::kFeedback, Rec::kNothing}) {
@@ -359,14 +377,19 @@ TEST(FusedTick, AKernelTheCpuLacksIsRefused) {
   mc::Axis axis;
   axis.set_tick_kernel(mc::TickKernel::kPortable);
   EXPECT_EQ(axis.tick_kernel(), mc::TickKernel::kPortable);
-  if (!mc::tick_kernel_available(mc::TickKernel::kSse41)) {
-    EXPECT_THROW(axis.set_tick_kernel(mc::TickKernel::kSse41), std::invalid_argument);
-    EXPECT_EQ(axis.tick_kernel(), mc::TickKernel::kPortable);
-  } else {
-    axis.set_tick_kernel(mc::TickKernel::kSse41);
-    EXPECT_EQ(axis.tick_kernel(), mc::TickKernel::kSse41);
+  for (mc::TickKernel k : {mc::TickKernel::kSse41, mc::TickKernel::kAvx2, mc::TickKernel::kAvx512}) {
+    axis.set_tick_kernel(mc::TickKernel::kPortable);
+    if (!mc::tick_kernel_available(k)) {
+      EXPECT_THROW(axis.set_tick_kernel(k), std::invalid_argument);
+      EXPECT_EQ(axis.tick_kernel(), mc::TickKernel::kPortable);
+    } else {
+      axis.set_tick_kernel(k);
+      EXPECT_EQ(axis.tick_kernel(), k);
+    }
   }
   EXPECT_STREQ(mc::tick_kernel_name(mc::TickKernel::kSse41), "sse4.1");
+  EXPECT_STREQ(mc::tick_kernel_name(mc::TickKernel::kAvx2), "avx2");
+  EXPECT_STREQ(mc::tick_kernel_name(mc::TickKernel::kAvx512), "avx512");
 }
 
 TEST(FusedTick, TheGuardCasesTrip) {

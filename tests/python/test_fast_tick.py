@@ -26,15 +26,19 @@ def _axes():
                   plant=sb.RigidPlant(coulomb_nm=0.004, static_nm=0.006, load_nm=0.001))
 
 
+KERNELS = ["portable", "sse4.1", "avx2", "avx512"]  # each needs the instructions of the one before it
+
+
 def _kernels():
-    """The fused tick's kernels this CPU runs (decision SP1): portable always, SSE4.1 where the CPU has it."""
-    return ["portable"] + (["sse4.1"] if sb._core.tick_kernel() == "sse4.1" else [])
+    """The fused tick's kernels this CPU runs (decisions SP1, FV20): portable always, then SSE4.1, AVX2 and AVX-512 up
+    to the one 'auto' picks."""
+    return KERNELS[:KERNELS.index(sb._core.tick_kernel()) + 1]
 
 
 def _fused_and_general(index, kernel):
     """Axis `index` of _axes() twice: on the fused tick with `kernel`, and on the general loop (the reference)."""
     if kernel not in _kernels():
-        pytest.skip("this CPU has no SSE4.1: only the portable kernel runs here")
+        pytest.skip(f"this CPU lacks the {kernel} kernel's instructions")
     axis = list(_axes())[index]
     axis._axis.set_tick_kernel(kernel)
     ref = list(_axes())[index]
@@ -42,7 +46,7 @@ def _fused_and_general(index, kernel):
     return axis, ref
 
 
-@pytest.mark.parametrize("kernel", ["portable", "sse4.1"])
+@pytest.mark.parametrize("kernel", KERNELS)
 @pytest.mark.parametrize("index", range(3))
 def test_the_fused_tick_gives_the_general_loops_doubles(index, kernel):
     axis, ref = _fused_and_general(index, kernel)
@@ -59,7 +63,7 @@ def test_the_fused_tick_gives_the_general_loops_doubles(index, kernel):
 
 
 
-@pytest.mark.parametrize("kernel", ["portable", "sse4.1"])
+@pytest.mark.parametrize("kernel", KERNELS)
 @pytest.mark.parametrize("index", range(3))
 def test_a_feedback_only_run_gives_the_general_loops_doubles(index, kernel):
     """Decision SR1: a run recording fb_pos only (the benchmarks' runs; the fused loop skips its recording block):
@@ -142,15 +146,15 @@ def test_step_continues_and_a_run_after_steps_starts_over():
 
 
 def test_the_tick_kernel_is_chosen_for_the_cpu_and_can_be_forced():
-    assert sb._core.tick_kernel() in ("sse4.1", "portable")
+    assert sb._core.tick_kernel() in KERNELS
     axis = sb.demo_axis()
     for kernel in ["auto"] + _kernels():
         axis._axis.set_tick_kernel(kernel)
-    with pytest.raises(ValueError, match="'auto', 'portable' or 'sse4.1'"):
-        axis._axis.set_tick_kernel("avx512")
-    if "sse4.1" not in _kernels():
-        with pytest.raises(ValueError, match="no SSE4.1"):
-            axis._axis.set_tick_kernel("sse4.1")
+    with pytest.raises(ValueError, match="'auto', 'portable', 'sse4.1', 'avx2' or 'avx512'"):
+        axis._axis.set_tick_kernel("avx10")
+    for kernel in set(KERNELS) - set(_kernels()):
+        with pytest.raises(ValueError, match=f"'{kernel}' cannot run here .*lacks its instructions"):
+            axis._axis.set_tick_kernel(kernel)
 
 
 def test_a_long_recording_is_an_ordinary_array_with_the_same_doubles():

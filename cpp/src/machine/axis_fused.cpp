@@ -55,15 +55,24 @@ bool Axis::run_fused(const CommandInput& command, const Trace& trace, const RunG
           if constexpr (kNB == 1) {
             // The plain kernel: a pass-through rigid axis recording its feedback only, driven by a profile with
             // its own velocity and acceleration, with a quantising encoder without noise, a quantising DAC, one
-            // power-train sub-step per tick and no cogging or unbalance -- each of those a constant of the loop.
+            // power-train sub-step per tick, no cogging or unbalance and no drive alarm within the run -- each of
+            // those a constant of the loop.
             if (pass && plain_run(command, trace) && PowerTrain::Local<kN, 1>::plain(power_)) {
 #if SERVOBENCH_SSE41_KERNEL
+              if (kernel == TickKernel::kAvx512) return fused_avx512<L, kN, 1, true, true>(law, command, trace, guard);
+              if (kernel == TickKernel::kAvx2) return fused_avx2<L, kN, 1, true, true>(law, command, trace, guard);
               if (kernel == TickKernel::kSse41) return fused_sse41<L, kN, 1, true, true>(law, command, trace, guard);
 #endif
               return fused_portable<L, kN, 1, true, true>(law, command, trace, guard);
             }
           }
 #if SERVOBENCH_SSE41_KERNEL
+          if (kernel == TickKernel::kAvx512)
+            return pass ? fused_avx512<L, kN, kNB, true, false>(law, command, trace, guard)
+                        : fused_avx512<L, kN, kNB, false, false>(law, command, trace, guard);
+          if (kernel == TickKernel::kAvx2)
+            return pass ? fused_avx2<L, kN, kNB, true, false>(law, command, trace, guard)
+                        : fused_avx2<L, kN, kNB, false, false>(law, command, trace, guard);
           if (kernel == TickKernel::kSse41)
             return pass ? fused_sse41<L, kN, kNB, true, false>(law, command, trace, guard)
                         : fused_sse41<L, kN, kNB, false, false>(law, command, trace, guard);
@@ -105,21 +114,61 @@ __attribute__((target("sse4.1"), flatten)) RunOutcome Axis::fused_sse41(Law& law
                                                                         const Trace& trace, const RunGuard& guard) {
   return fused_loop<Law, N, NB, kPass, kPlain, Sse41Rounding>(law, command, trace, guard);
 }
+
+// The same loop compiled for AVX-512 (F and VL), for its 32 vector registers (decision FV20): the scalar arithmetic
+// is the SSE kernels' (EVEX-encoded addsd, mulsd, minsd, maxsd, vrndscalesd; no FMA -- this file is compiled with
+// -ffp-contract=off), so the same doubles, but the tick's state, the law's sums and the held DAC voltage stay in
+// registers instead of going through the stack every tick as they do with SSE's 16.
+// The same loop compiled for AVX2, for a CPU without AVX-512 (decision FV20): still 16 vector registers, but the
+// three-operand VEX forms need fewer register copies than SSE's two-operand ones. No FMA (not enabled by this target,
+// and the file is compiled with -ffp-contract=off), so the same doubles.
+template <class Law, int N, int NB, bool kPass, bool kPlain>
+__attribute__((target("avx2"), flatten)) RunOutcome Axis::fused_avx2(Law& law, const CommandInput& command,
+                                                                     const Trace& trace, const RunGuard& guard) {
+  return fused_loop<Law, N, NB, kPass, kPlain, Sse41Rounding>(law, command, trace, guard);
+}
+template <class Law, int N, int NB, bool kPass, bool kPlain>
+__attribute__((target("avx512f,avx512vl"), flatten)) RunOutcome Axis::fused_avx512(Law& law,
+                                                                                   const CommandInput& command,
+                                                                                   const Trace& trace,
+                                                                                   const RunGuard& guard) {
+  return fused_loop<Law, N, NB, kPass, kPlain, Sse41Rounding>(law, command, trace, guard);
+}
 #endif
 
-TickKernel auto_tick_kernel() {
+namespace {
+struct CpuKernels {
+  bool sse41 = false, avx512 = false, avx2 = false;
+};
+const CpuKernels& cpu_kernels() {
+  static const CpuKernels k = [] {
+    CpuKernels c;
 #if SERVOBENCH_SSE41_KERNEL
-  static const bool sse41 = [] {
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("sse4.1") != 0;
-  }();
-  if (sse41) return TickKernel::kSse41;
+    __builtin_cpu_init();  // libgcc also checks that the OS saves the AVX-512 registers (XGETBV)
+    c.sse41 = __builtin_cpu_supports("sse4.1") != 0;
+    c.avx512 = __builtin_cpu_supports("avx512f") != 0 && __builtin_cpu_supports("avx512vl") != 0;
+    c.avx2 = __builtin_cpu_supports("avx2") != 0;
 #endif
+    return c;
+  }();
+  return k;
+}
+}  // namespace
+
+TickKernel auto_tick_kernel() {
+  if (cpu_kernels().avx512) return TickKernel::kAvx512;
+  if (cpu_kernels().avx2) return TickKernel::kAvx2;
+  if (cpu_kernels().sse41) return TickKernel::kSse41;
   return TickKernel::kPortable;
 }
 
 bool tick_kernel_available(TickKernel k) {
-  return k != TickKernel::kSse41 || auto_tick_kernel() == TickKernel::kSse41;
+  switch (k) {
+    case TickKernel::kSse41: return cpu_kernels().sse41;
+    case TickKernel::kAvx512: return cpu_kernels().avx512;
+    case TickKernel::kAvx2: return cpu_kernels().avx2;
+    default: return true;
+  }
 }
 
 const char* tick_kernel_name(TickKernel k) {
@@ -127,15 +176,20 @@ const char* tick_kernel_name(TickKernel k) {
     case TickKernel::kAuto: return "auto";
     case TickKernel::kPortable: return "portable";
     case TickKernel::kSse41: return "sse4.1";
+    case TickKernel::kAvx512: return "avx512";
+    case TickKernel::kAvx2: return "avx2";
   }
   return "?";
 }
 
 void Axis::set_tick_kernel(TickKernel k) {
-  if (!tick_kernel_available(k))
-    throw std::invalid_argument(std::string("Axis.tick_kernel: '") + tick_kernel_name(k) +
-                                "' cannot run here (this build or CPU has no SSE4.1); the kernels here are 'auto' and "
-                                "'portable'");
+  if (!tick_kernel_available(k)) {
+    std::string here = "'auto', 'portable'";
+    for (TickKernel o : {TickKernel::kSse41, TickKernel::kAvx2, TickKernel::kAvx512})
+      if (tick_kernel_available(o)) here += std::string(", '") + tick_kernel_name(o) + "'";
+    throw std::invalid_argument(std::string("Axis.tick_kernel: '") + tick_kernel_name(k) + "' cannot run here (this " +
+                                "build or CPU lacks its instructions); the kernels here are " + here);
+  }
   kernel_ = k;
 }
 

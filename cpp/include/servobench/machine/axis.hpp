@@ -83,13 +83,14 @@ struct RunOutcome {
   double last_error_pulse = 0.0;  // the law's error E = command - encoder read of the last tick run, pulse
 };
 
-// Which compiled kernel of the fused tick runs (decision SP1): kAuto picks the fastest this CPU runs (SSE4.1 where
-// present, else portable); the others force one (for the tests and benchmarks). All give the same doubles.
-enum class TickKernel { kAuto, kPortable, kSse41 };
+// Which compiled kernel of the fused tick runs (decisions SP1, FV20): kAuto picks the fastest this CPU runs (AVX-512
+// where present, else AVX2, else SSE4.1, else portable); the others force one (for the tests and benchmarks). All
+// give the same doubles.
+enum class TickKernel { kAuto, kPortable, kSse41, kAvx512, kAvx2 };
 // The kernel kAuto picks on this CPU (never kAuto), and whether this build and CPU can run kernel k.
 TickKernel auto_tick_kernel();
 bool tick_kernel_available(TickKernel k);
-const char* tick_kernel_name(TickKernel k);  // "auto", "portable", "sse4.1"
+const char* tick_kernel_name(TickKernel k);  // "auto", "portable", "sse4.1", "avx2", "avx512"
 
 class Axis {
  public:
@@ -163,14 +164,21 @@ class Axis {
   bool plain_run(const CommandInput& command, const Trace& trace) const;
   template <class Law, int N, int NB, bool kPass, bool kPlain, class Round>
   RunOutcome fused_loop(Law& law, const CommandInput& command, const Trace& trace, const RunGuard& guard);
-  // The kernels: fused_loop inlined into a function compiled for the baseline ISA, and into one compiled for SSE4.1
-  // (`roundsd`), with the matching rounding policy (common/rounding.hpp).
+  // The kernels: fused_loop inlined into a function compiled for the baseline ISA, into one compiled for SSE4.1
+  // (`roundsd`), one for AVX2 (three-operand forms) and one for AVX-512 (32 vector registers), with the matching
+  // rounding policy (common/rounding.hpp).
   template <class Law, int N, int NB, bool kPass, bool kPlain>
   RunOutcome fused_portable(Law& law, const CommandInput& command, const Trace& trace, const RunGuard& guard);
 #if SERVOBENCH_SSE41_KERNEL
   template <class Law, int N, int NB, bool kPass, bool kPlain>
   __attribute__((target("sse4.1"))) RunOutcome fused_sse41(Law& law, const CommandInput& command,
                                                            const Trace& trace, const RunGuard& guard);
+  template <class Law, int N, int NB, bool kPass, bool kPlain>
+  __attribute__((target("avx2"))) RunOutcome fused_avx2(Law& law, const CommandInput& command, const Trace& trace,
+                                                         const RunGuard& guard);
+  template <class Law, int N, int NB, bool kPass, bool kPlain>
+  __attribute__((target("avx512f,avx512vl"))) RunOutcome fused_avx512(Law& law, const CommandInput& command,
+                                                                     const Trace& trace, const RunGuard& guard);
 #endif
   template <class Law>
   RunOutcome run_with(Law& law, const CommandInput& command, const Trace& trace, const RunGuard& guard);
