@@ -340,8 +340,8 @@ void bind_machine(py::module_& m) {
                                    "' must be 'auto', 'portable', 'sse4.1', 'avx2' or 'avx512'");
            }, py::arg("kernel"),
            "The fused tick's kernel: 'auto' (default: the fastest this CPU runs), 'portable', 'sse4.1', 'avx2' or "
-           "'avx512' "
-           "(ValueError if this CPU lacks its instructions); all give the same doubles (for tests and benchmarks)")
+           "'avx512' (ValueError if this CPU lacks its instructions); all give the same doubles (for tests and "
+           "benchmarks)")
       .def_property_readonly("last_command_pulse", &Axis::last_command_pulse)
       .def(
           "run",

@@ -50,35 +50,30 @@ bool Axis::run_fused(const CommandInput& command, const Trace& trace, const RunG
         // Both filter slots pass-through (the cards' default) is a kernel of its own: no filter history to carry
         // through the loop, only the law's last two outputs, replayed into the filters at the end.
         const bool pass = biquads_[0].bypass() && biquads_[1].bypass();
-        const auto run = [&](auto n, auto nb) {
+        // One kernel instance, in the build `kernel` names (decisions SP1, FV20).
+        const auto call = [&](auto n, auto nb, auto pass_c, auto plain_c) -> RunOutcome {
           constexpr int kN = decltype(n)::value, kNB = decltype(nb)::value;
-          if constexpr (kNB == 1) {
+          constexpr bool kPass = decltype(pass_c)::value, kPlain = decltype(plain_c)::value;
+          switch (kernel) {
+#if SERVOBENCH_SSE41_KERNEL
+            case TickKernel::kAvx512: return fused_avx512<L, kN, kNB, kPass, kPlain>(law, command, trace, guard);
+            case TickKernel::kAvx2: return fused_avx2<L, kN, kNB, kPass, kPlain>(law, command, trace, guard);
+            case TickKernel::kSse41: return fused_sse41<L, kN, kNB, kPass, kPlain>(law, command, trace, guard);
+#endif
+            default: return fused_portable<L, kN, kNB, kPass, kPlain>(law, command, trace, guard);
+          }
+        };
+        const std::true_type yes{};
+        const std::false_type no{};
+        const auto run = [&](auto n, auto nb) {
+          if constexpr (decltype(nb)::value == 1) {
             // The plain kernel: a pass-through rigid axis recording its feedback only, driven by a profile with
             // its own velocity and acceleration, with a quantising encoder without noise, a quantising DAC, one
-            // power-train sub-step per tick, no cogging or unbalance and no drive alarm within the run -- each of
-            // those a constant of the loop.
-            if (pass && plain_run(command, trace) && PowerTrain::Local<kN, 1>::plain(power_)) {
-#if SERVOBENCH_SSE41_KERNEL
-              if (kernel == TickKernel::kAvx512) return fused_avx512<L, kN, 1, true, true>(law, command, trace, guard);
-              if (kernel == TickKernel::kAvx2) return fused_avx2<L, kN, 1, true, true>(law, command, trace, guard);
-              if (kernel == TickKernel::kSse41) return fused_sse41<L, kN, 1, true, true>(law, command, trace, guard);
-#endif
-              return fused_portable<L, kN, 1, true, true>(law, command, trace, guard);
-            }
+            // power-train sub-step per tick and no cogging or unbalance -- each of those a constant of the loop.
+            if (pass && plain_run(command, trace) && PowerTrain::Local<decltype(n)::value, 1>::plain(power_))
+              return call(n, nb, yes, yes);
           }
-#if SERVOBENCH_SSE41_KERNEL
-          if (kernel == TickKernel::kAvx512)
-            return pass ? fused_avx512<L, kN, kNB, true, false>(law, command, trace, guard)
-                        : fused_avx512<L, kN, kNB, false, false>(law, command, trace, guard);
-          if (kernel == TickKernel::kAvx2)
-            return pass ? fused_avx2<L, kN, kNB, true, false>(law, command, trace, guard)
-                        : fused_avx2<L, kN, kNB, false, false>(law, command, trace, guard);
-          if (kernel == TickKernel::kSse41)
-            return pass ? fused_sse41<L, kN, kNB, true, false>(law, command, trace, guard)
-                        : fused_sse41<L, kN, kNB, false, false>(law, command, trace, guard);
-#endif
-          return pass ? fused_portable<L, kN, kNB, true, false>(law, command, trace, guard)
-                      : fused_portable<L, kN, kNB, false, false>(law, command, trace, guard);
+          return pass ? call(n, nb, yes, no) : call(n, nb, no, no);
         };
         using std::integral_constant;
         if (PowerTrain::Local<2, 1>::applies(power_))
@@ -115,10 +110,6 @@ __attribute__((target("sse4.1"), flatten)) RunOutcome Axis::fused_sse41(Law& law
   return fused_loop<Law, N, NB, kPass, kPlain, Sse41Rounding>(law, command, trace, guard);
 }
 
-// The same loop compiled for AVX-512 (F and VL), for its 32 vector registers (decision FV20): the scalar arithmetic
-// is the SSE kernels' (EVEX-encoded addsd, mulsd, minsd, maxsd, vrndscalesd; no FMA -- this file is compiled with
-// -ffp-contract=off), so the same doubles, but the tick's state, the law's sums and the held DAC voltage stay in
-// registers instead of going through the stack every tick as they do with SSE's 16.
 // The same loop compiled for AVX2, for a CPU without AVX-512 (decision FV20): still 16 vector registers, but the
 // three-operand VEX forms need fewer register copies than SSE's two-operand ones. No FMA (not enabled by this target,
 // and the file is compiled with -ffp-contract=off), so the same doubles.
@@ -127,6 +118,11 @@ __attribute__((target("avx2"), flatten)) RunOutcome Axis::fused_avx2(Law& law, c
                                                                      const Trace& trace, const RunGuard& guard) {
   return fused_loop<Law, N, NB, kPass, kPlain, Sse41Rounding>(law, command, trace, guard);
 }
+
+// The same loop compiled for AVX-512 (F and VL), for its 32 vector registers (decision FV20): the scalar arithmetic
+// is the SSE kernels' (EVEX-encoded addsd, mulsd, minsd, maxsd, vrndscalesd; no FMA -- this file is compiled with
+// -ffp-contract=off), so the same doubles, but the tick's state, the law's sums and the held DAC voltage stay in
+// registers instead of going through the stack every tick as they do with SSE's 16.
 template <class Law, int N, int NB, bool kPass, bool kPlain>
 __attribute__((target("avx512f,avx512vl"), flatten)) RunOutcome Axis::fused_avx512(Law& law,
                                                                                    const CommandInput& command,
