@@ -97,7 +97,7 @@ bool Axis::run_fused(const CommandInput& command, const Trace& trace, const RunG
 template <class Law, int N, int NB, bool kPass, bool kPlain>
 __attribute__((flatten)) RunOutcome Axis::fused_portable(Law& law, const CommandInput& command, const Trace& trace,
                                                          const RunGuard& guard) {
-  return fused_loop<Law, N, NB, kPass, kPlain, PortableRounding>(law, command, trace, guard);
+  return fused_loop<Law, N, NB, kPass, kPlain, PortableRounding, 1>(law, command, trace, guard);
 }
 
 #if SERVOBENCH_SSE41_KERNEL
@@ -107,7 +107,7 @@ __attribute__((flatten)) RunOutcome Axis::fused_portable(Law& law, const Command
 template <class Law, int N, int NB, bool kPass, bool kPlain>
 __attribute__((target("sse4.1"), flatten)) RunOutcome Axis::fused_sse41(Law& law, const CommandInput& command,
                                                                         const Trace& trace, const RunGuard& guard) {
-  return fused_loop<Law, N, NB, kPass, kPlain, Sse41Rounding>(law, command, trace, guard);
+  return fused_loop<Law, N, NB, kPass, kPlain, Sse41Rounding, 1>(law, command, trace, guard);
 }
 
 // The same loop compiled for AVX2, for a CPU without AVX-512 (decision FV20): still 16 vector registers, but the
@@ -116,7 +116,7 @@ __attribute__((target("sse4.1"), flatten)) RunOutcome Axis::fused_sse41(Law& law
 template <class Law, int N, int NB, bool kPass, bool kPlain>
 __attribute__((target("avx2"), flatten)) RunOutcome Axis::fused_avx2(Law& law, const CommandInput& command,
                                                                      const Trace& trace, const RunGuard& guard) {
-  return fused_loop<Law, N, NB, kPass, kPlain, Sse41Rounding>(law, command, trace, guard);
+  return fused_loop<Law, N, NB, kPass, kPlain, Sse41Rounding, 1>(law, command, trace, guard);
 }
 
 // The same loop compiled for AVX-512 (F and VL), for its 32 vector registers (decision FV20): the scalar arithmetic
@@ -128,7 +128,7 @@ __attribute__((target("avx512f,avx512vl"), flatten)) RunOutcome Axis::fused_avx5
                                                                                    const CommandInput& command,
                                                                                    const Trace& trace,
                                                                                    const RunGuard& guard) {
-  return fused_loop<Law, N, NB, kPass, kPlain, Sse41Rounding>(law, command, trace, guard);
+  return fused_loop<Law, N, NB, kPass, kPlain, Sse41Rounding, NB == 2 ? 8 : 1>(law, command, trace, guard);
 }
 #endif
 
@@ -189,7 +189,7 @@ void Axis::set_tick_kernel(TickKernel k) {
   kernel_ = k;
 }
 
-template <class Law, int N, int NB, bool kPass, bool kPlain, class Round>
+template <class Law, int N, int NB, bool kPass, bool kPlain, class Round, int W>
 __attribute__((always_inline)) inline RunOutcome Axis::fused_loop(Law& law_state, const CommandInput& command,
                                                                   const Trace& tr, const RunGuard& guard) {
   RunOutcome outcome;
@@ -214,7 +214,7 @@ __attribute__((always_inline)) inline RunOutcome Axis::fused_loop(Law& law_state
   const double dac_fs = dac.params().full_scale_v, dac_cpv = dac.codes_per_volt(), dac_vpc = dac.volts_per_code();
   plant::Encoder& encoder = encoder_;
   const double enc_cpr = encoder.counts_per_rad();
-  PowerTrain::Local<N, NB> pt(power_);
+  PowerTrain::Local<N, NB, W> pt(power_);
   double pending = pending_volts_, prev_cmd = prev_cmd_, prev_vel = prev_vel_, prev_enc = prev_encoder_angle_;
   bool primed = primed_;
   long long tick = tick_;

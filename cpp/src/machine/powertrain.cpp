@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "servobench/common/elementary.hpp"
 #include "servobench/common/validate.hpp"
 #include "servobench/plant/zoh.hpp"
 
@@ -241,13 +242,13 @@ void PowerTrain::substep() {
   // External torques held over the sub-step (N*m): motor-body and load-body columns.
   const plant::Disturbances& dist = mech_.disturbances;
   double t_motor = 0.0;
-  if (dist.cogging_nm != 0.0) t_motor = dist.cogging_nm * std::sin(dist.cogging_periods * x_[motor_angle_]);
+  if (dist.cogging_nm != 0.0) t_motor = dist.cogging_nm * sin_inline(dist.cogging_periods * x_[motor_angle_]);
   if (mode_ == Mode::kStepper) {  // the stepper's torque-angle curve
     stepper_torque_ = alarm_ ? 0.0 : holding_torque_ * std::sin(stepper_teeth_ * (cmd_angle_ - x_[motor_angle_]));
     t_motor += stepper_torque_;
   }
   double t_load = -dist.load_nm;
-  if (dist.unbalance_nm != 0.0) t_load -= dist.unbalance_nm * std::sin(x_[load_angle_]);
+  if (dist.unbalance_nm != 0.0) t_load -= dist.unbalance_nm * sin_inline(x_[load_angle_]);
 
   friction_step(t_motor, t_load);
 }

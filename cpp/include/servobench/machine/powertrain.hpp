@@ -101,7 +101,8 @@ class PowerTrain {
     return static_cast<int>(fixed_.index()) + 1;
   }
   std::size_t bodies() const { return nb_; }
-  template <int N, int NB>
+  // W: how the two-body rows are held (1: one double each; 8: lanes of one AVX-512 vector).
+  template <int N, int NB, int W = 1>
   class Local;
 
  private:

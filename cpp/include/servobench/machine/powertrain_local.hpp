@@ -1,7 +1,7 @@
 // The power train of a torque-mode axis held in a local object of compile-time size, for the fused tick
 // (machine/axis_fused.cpp, decision P16).
 //
-// PowerTrain::Local<N, NB> copies the state (N = 2..5 states, NB = 1 or 2 bodies) and the scalars of one tick out of
+// PowerTrain::Local<N, NB, W> copies the state (N = 2..5 states, NB = 1 or 2 bodies) and the scalars of one tick out of
 // a PowerTrain, advances them with exactly the arithmetic of PowerTrain::set_input / advance_tick (torque drive:
 // A/V and the current limit; the drive alarm; cogging, constant load and unbalance at the sub-step start; dry
 // friction solved implicitly on the fixed-size discretisations), and writes them back with store(). Inside the
@@ -13,7 +13,9 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 
+#include "servobench/common/elementary.hpp"
 #include "servobench/machine/powertrain.hpp"
 
 namespace servobench::machine {
@@ -24,20 +26,56 @@ struct Levels {
   bool active = false, slip_fixed = false;
   double fs_pos = 0.0, fs_neg = 0.0, slip_pos = 0.0, slip_neg = 0.0;
 };
-// A one-body Local holds none: the rigid plain kernel is sensitive to its object's layout (decision FV12).
-template <int NB>
-struct BodyLevels {};
-template <>
-struct BodyLevels<2> {
+// The rows of a two-body state and of the discretisations' columns, element by element: N doubles one row at a time
+// (W = 1, the scalar kernels), or one GCC vector of 8 lanes (W = 8, the AVX-512 kernel, decision FV21), where one
+// instruction does a whole column of up to 8 states. Lane i of a sum or a product is row i's scalar operation on the
+// same doubles (IEEE, element by element; no contraction: axis_fused.cpp is compiled with -ffp-contract=off), so
+// both give the same doubles.
+template <int N>
+struct ScalarRows {
+  double v[N] = {};
+  __attribute__((always_inline)) double& operator[](int i) { return v[i]; }
+  __attribute__((always_inline)) double operator[](int i) const { return v[i]; }
+  __attribute__((always_inline)) ScalarRows operator+(const ScalarRows& b) const {
+    ScalarRows r;
+    for (int i = 0; i < N; ++i) r.v[i] = v[i] + b.v[i];
+    return r;
+  }
+  __attribute__((always_inline)) ScalarRows operator*(double u) const {
+    ScalarRows r;
+    for (int i = 0; i < N; ++i) r.v[i] = v[i] * u;
+    return r;
+  }
+};
+template <int N, int W>
+struct RowsOf {
+  using type = ScalarRows<N>;
+};
+template <int N>
+struct RowsOf<N, 8> {
+  static_assert(N <= 8, "one AVX-512 register holds 8 doubles");
+  typedef double type __attribute__((vector_size(64)));
+};
+
+// A one-body Local holds no more than its scalars: the rigid plain kernel is sensitive to its object's layout
+// (decision FV12). Two bodies: both bodies' levels, and every discretisation's columns as lanes, zero-padded.
+template <int N, int NB, int W>
+struct BodyTables {};
+template <int N, int W>
+struct BodyTables<N, 2, W> {
   Levels levels_[2];
+  typename RowsOf<N, W>::type phi_[4][N], gam_[4][3];  // [locked mask][column]
 };
 }  // namespace local_detail
 
-template <int N, int NB>
-class PowerTrain::Local : local_detail::BodyLevels<NB> {
+template <int N, int NB, int W>
+class PowerTrain::Local : local_detail::BodyTables<N, NB, W> {
   using Levels = local_detail::Levels;
  public:
   using Vec = Eigen::Matrix<double, N, 1>;
+  using Lanes = typename local_detail::RowsOf<N, W>::type;
+  // The state: an Eigen vector for one body (FV12), rows or lanes for two (FV21).
+  using State = std::conditional_t<NB == 2, Lanes, Vec>;
 
   explicit Local(const PowerTrain& p)
       : f_(*std::get_if<Fixed<N>>(&p.fixed_)),
@@ -78,8 +116,12 @@ class PowerTrain::Local : local_detail::BodyLevels<NB> {
       slip_pos_ = plant::directional_sliding_nm(fr, 1.0, 1.0);
       slip_neg_ = plant::directional_sliding_nm(fr, -1.0, -1.0);
     }
-    // Two bodies: both bodies' levels, the same way.
+    // Two bodies: both bodies' levels, the same way, and the discretisations' columns as lanes.
     if constexpr (NB == 2) {
+      for (int m = 0; m < 4; ++m) {
+        for (int k = 0; k < N; ++k) column(f_.phi[m], k, this->phi_[m][k]);
+        for (int c = 0; c < 3; ++c) column(f_.gamma[m], c, this->gam_[m][c]);
+      }
       for (int b = 0; b < NB; ++b) {
         const plant::DryFriction<double>& fb = dry_[b];
         Levels& l = this->levels_[b];
@@ -159,9 +201,9 @@ class PowerTrain::Local : local_detail::BodyLevels<NB> {
     if (alarm_) i_cmd_ = 0.0;
     ++substep_count_;
     double t_motor = 0.0;
-    if (cogging_) t_motor = dist_.cogging_nm * std::sin(dist_.cogging_periods * motor_angle_rad());
+    if (cogging_) t_motor = dist_.cogging_nm * sin_inline(dist_.cogging_periods * motor_angle_rad());
     double t_load = -dist_.load_nm;
-    if (unbalance_) t_load -= dist_.unbalance_nm * std::sin(load_angle_rad());
+    if (unbalance_) t_load -= dist_.unbalance_nm * sin_inline(load_angle_rad());
     if constexpr (NB == 1) {
       one_body_substep(t_motor, t_load);
     } else {
@@ -220,12 +262,13 @@ class PowerTrain::Local : local_detail::BodyLevels<NB> {
 
   // plant::advance_with_dry_friction for the two-mass layout (applies() checked it), written out: the same operations
   // in the same order (solve_dry_friction's Gauss-Seidel sweeps and their early end, the locked re-solve), so the
-  // same doubles, with the bodies' indices known at compile time and their levels and flags formed once.
+  // same doubles, with the bodies' indices known at compile time, their levels and flags formed once and the state's
+  // rows as lanes of one vector.
   __attribute__((always_inline)) void two_body_substep(double t_motor, double t_load) {
-    double xf[N];
-    free_motion(f_.phi[0], f_.gamma[0], t_motor, t_load, xf);
+    Lanes xf;
+    free_lanes(0u, t_motor, t_load, xf);
     if (!(this->levels_[0].active || this->levels_[NB - 1].active)) {
-      for (int i = 0; i < N; ++i) x_[i] = xf[i];
+      x_ = xf;
       return;
     }
     double f[2] = {0.0, 0.0};
@@ -235,30 +278,27 @@ class PowerTrain::Local : local_detail::BodyLevels<NB> {
     unsigned locked = 0;
     for (int b = 0; b < 2; ++b)
       if (stick[b] && stuck_[b] && x_[kTwoMass[b].speed] == 0.0) locked |= 1u << b;
-    const Eigen::Matrix<double, N, 3>* gamma = &f_.gamma[0];
     if (locked != 0) {
-      gamma = &f_.gamma[locked];
-      free_motion(f_.phi[locked], *gamma, t_motor, t_load, xf);
-      solve_two(xf, *gamma, locked, f, stick);
+      free_lanes(locked, t_motor, t_load, xf);
+      solve_two(xf, f_.gamma[locked], locked, f, stick);
     }
     for (int b = 0; b < 2; ++b) {
       if (locked & (1u << b)) {
         stuck_[b] = 1;
         continue;
       }
-      if (f[b] != 0.0)
-        for (int i = 0; i < N; ++i) xf[i] += (*gamma)(i, kTwoMass[b].input) * f[b];
+      if (f[b] != 0.0) xf = xf + this->gam_[locked][kTwoMass[b].input] * f[b];
     }
     for (int b = 0; b < 2; ++b) {
       if (locked & (1u << b)) continue;
       if (stick[b]) xf[kTwoMass[b].speed] = 0.0;  // stopped inside the sub-step (the residual is rounding)
       stuck_[b] = stick[b] ? 1 : 0;
     }
-    for (int i = 0; i < N; ++i) x_[i] = xf[i];
+    x_ = xf;
   }
 
   // plant::solve_dry_friction for the two-mass layout: from x_ with the friction-free end state xf.
-  __attribute__((always_inline)) void solve_two(const double* xf, const Eigen::Matrix<double, N, 3>& gamma,
+  __attribute__((always_inline)) void solve_two(const Lanes& xf, const Eigen::Matrix<double, N, 3>& gamma,
                                                 unsigned locked, double* f, bool* stick) const {
     double slip_level[2] = {0.0, 0.0};
     for (int b = 0; b < 2; ++b) {
@@ -321,6 +361,25 @@ class PowerTrain::Local : local_detail::BodyLevels<NB> {
       for (int i = 0; i < N; ++i) xf[i] += gam(i, 2) * t_load;
   }
 
+  // free_motion on lanes, for two bodies: xf = phi x + gamma [i_cmd, t_motor, t_load] with the discretisation of the
+  // locked mask m; lane i is row i summed left to right from 0.0, then each input's column added unless the input is
+  // exactly 0 -- free_motion's operations on the same doubles.
+  __attribute__((always_inline)) void free_lanes(unsigned m, double t_motor, double t_load, Lanes& xf) const {
+    Lanes s = Lanes{};
+    for (int k = 0; k < N; ++k) s = s + this->phi_[m][k] * x_[k];
+    if (i_cmd_ != 0.0) s = s + this->gam_[m][0] * i_cmd_;
+    if (t_motor != 0.0) s = s + this->gam_[m][1] * t_motor;
+    if (t_load != 0.0) s = s + this->gam_[m][2] * t_load;
+    xf = s;
+  }
+
+  // Column c of a matrix as lanes, the lanes past its rows 0.
+  template <class M>
+  static void column(const M& a, int c, Lanes& v) {
+    v = Lanes{};
+    for (int i = 0; i < N; ++i) v[i] = a(i, c);
+  }
+
   // One body: the angle and speed are the last two states (after the drive's), known at compile time.
   // Two bodies: the two-mass layout applies() checked.
   double motor_angle_rad() const { return NB == 1 ? x_[kAngle] : x_[N - 4]; }
@@ -341,7 +400,7 @@ class PowerTrain::Local : local_detail::BodyLevels<NB> {
   plant::BodyIndex idx_[2];
   plant::DryFriction<double> dry_[2];
   char stuck_[2] = {1, 1};
-  Vec x_;
+  State x_{};
   long long substep_count_;
   double volts_, i_cmd_;
   bool alarm_, alarm_before_;

@@ -21,6 +21,8 @@
 
 #include <Eigen/Core>
 
+#include "servobench/common/elementary.hpp"
+
 // The fused tick's kernels (machine/axis_fused.cpp) are compiled with a target attribute (SSE4.1), and GCC does not
 // inline a plain inline function into them across the different target options, even under `flatten`: measured, the
 // two-body solve and the sliding level stayed calls, ~600 of the full chain's instructions per tick. These helpers
@@ -81,7 +83,11 @@ SERVOBENCH_TICK_INLINE T sliding_friction_nm(const DryFriction<T>& f, const T& s
   // the peak's share is then below any double's resolution of Fc.
   if constexpr (std::is_same<T, double>::value)
     if (shape > 708.0) return f.coulomb_nm;
-  return f.coulomb_nm + (f.breakaway_nm - f.coulomb_nm) * exp(-shape);
+  // The simulator's doubles take exp without a library call (common/elementary.hpp, decision FV22).
+  if constexpr (std::is_same<T, double>::value)
+    return f.coulomb_nm + (f.breakaway_nm - f.coulomb_nm) * exp_inline(-shape);
+  else
+    return f.coulomb_nm + (f.breakaway_nm - f.coulomb_nm) * exp(-shape);
 }
 
 template <class T>
