@@ -111,18 +111,20 @@ __attribute__((target("sse4.1"), flatten)) RunOutcome Axis::fused_sse41(Law& law
 }
 
 // The same loop compiled for AVX2, for a CPU without AVX-512 (decision FV20): still 16 vector registers, but the
-// three-operand VEX forms need fewer register copies than SSE's two-operand ones. No FMA (not enabled by this target,
-// and the file is compiled with -ffp-contract=off), so the same doubles.
+// three-operand VEX forms need fewer register copies than SSE's two-operand ones, and a two-mass power train's rows
+// 0-3 are one 4-lane vector (decision FV24). No FMA (not enabled by this target, and the file is compiled with
+// -ffp-contract=off), so the same doubles.
 template <class Law, int N, int NB, bool kPass, bool kPlain>
 __attribute__((target("avx2"), flatten)) RunOutcome Axis::fused_avx2(Law& law, const CommandInput& command,
                                                                      const Trace& trace, const RunGuard& guard) {
-  return fused_loop<Law, N, NB, kPass, kPlain, Sse41Rounding, 1>(law, command, trace, guard);
+  return fused_loop<Law, N, NB, kPass, kPlain, Sse41Rounding, NB == 2 ? 4 : 1>(law, command, trace, guard);
 }
 
 // The same loop compiled for AVX-512 (F and VL), for its 32 vector registers (decision FV20): the scalar arithmetic
 // is the SSE kernels' (EVEX-encoded addsd, mulsd, minsd, maxsd, vrndscalesd; no FMA -- this file is compiled with
 // -ffp-contract=off), so the same doubles, but the tick's state, the law's sums and the held DAC voltage stay in
-// registers instead of going through the stack every tick as they do with SSE's 16.
+// registers instead of going through the stack every tick as they do with SSE's 16; a two-mass power train's rows
+// are one 8-lane vector (decision FV21).
 template <class Law, int N, int NB, bool kPass, bool kPlain>
 __attribute__((target("avx512f,avx512vl"), flatten)) RunOutcome Axis::fused_avx512(Law& law,
                                                                                    const CommandInput& command,

@@ -162,7 +162,8 @@ class Axis {
   // Whether a run may take the plain kernel as far as the command, the recording, the encoder and the DAC go
   // (axis_fused.cpp; the power train's own conditions are PowerTrain::Local::plain).
   bool plain_run(const CommandInput& command, const Trace& trace) const;
-  // W: the two-body power train's rows (PowerTrain::Local): 1, one double each; 8, the lanes of an AVX-512 vector.
+  // W: the two-body power train's rows (PowerTrain::Local): 1, one double each; 4, rows 0-3 in an AVX2 vector; 8,
+  // the lanes of an AVX-512 vector.
   template <class Law, int N, int NB, bool kPass, bool kPlain, class Round, int W>
   RunOutcome fused_loop(Law& law, const CommandInput& command, const Trace& trace, const RunGuard& guard);
   // The kernels: fused_loop inlined into a function compiled for the baseline ISA, into one compiled for SSE4.1

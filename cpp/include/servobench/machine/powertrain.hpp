@@ -101,7 +101,7 @@ class PowerTrain {
     return static_cast<int>(fixed_.index()) + 1;
   }
   std::size_t bodies() const { return nb_; }
-  // W: how the two-body rows are held (1: one double each; 8: lanes of one AVX-512 vector).
+  // W: how the two-body rows are held (1: one double each; 4: rows 0-3 in an AVX2 vector; 8: one AVX-512 vector).
   template <int N, int NB, int W = 1>
   class Local;
 

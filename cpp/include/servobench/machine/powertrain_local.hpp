@@ -27,7 +27,8 @@ struct Levels {
   double fs_pos = 0.0, fs_neg = 0.0, slip_pos = 0.0, slip_neg = 0.0;
 };
 // The rows of a two-body state and of the discretisations' columns, element by element: N doubles one row at a time
-// (W = 1, the scalar kernels), or one GCC vector of 8 lanes (W = 8, the AVX-512 kernel, decision FV21), where one
+// (W = 1, the SSE4.1 and portable kernels), rows 0-3 as a 4-lane vector and the rest as doubles (W = 4, the AVX2
+// kernel, decision FV24), or one GCC vector of 8 lanes (W = 8, the AVX-512 kernel, decision FV21), where one
 // instruction does a whole column of up to 8 states. Lane i of a sum or a product is row i's scalar operation on the
 // same doubles (IEEE, element by element; no contraction: axis_fused.cpp is compiled with -ffp-contract=off), so
 // both give the same doubles.
@@ -47,9 +48,50 @@ struct ScalarRows {
     return r;
   }
 };
+// W = 4 (the AVX2 kernel): rows 0-3 as one 4-lane vector, rows 4.. one double each.
+template <int N>
+struct QuadRows {
+  typedef double Quad __attribute__((vector_size(32)));
+  static constexpr int kRest = N > 4 ? N - 4 : 1;
+  Quad lo = Quad{};
+  double hi[kRest] = {};
+  __attribute__((always_inline)) double operator[](int i) const { return i < 4 ? lo[i] : hi[i - 4]; }
+  __attribute__((always_inline)) void set(int i, double x) {
+    if (i < 4)
+      lo[i] = x;
+    else
+      hi[i - 4] = x;
+  }
+  __attribute__((always_inline)) QuadRows operator+(const QuadRows& b) const {
+    QuadRows r;
+    r.lo = lo + b.lo;
+    for (int i = 0; i < N - 4; ++i) r.hi[i] = hi[i] + b.hi[i];
+    return r;
+  }
+  __attribute__((always_inline)) QuadRows operator*(double u) const {
+    QuadRows r;
+    r.lo = lo * u;
+    for (int i = 0; i < N - 4; ++i) r.hi[i] = hi[i] * u;
+    return r;
+  }
+};
+// Row i of r set to x, whatever holds the rows.
+template <class R>
+__attribute__((always_inline)) inline void set_row(R& r, int i, double x) {
+  r[i] = x;
+}
+template <int N>
+__attribute__((always_inline)) inline void set_row(QuadRows<N>& r, int i, double x) {
+  r.set(i, x);
+}
+
 template <int N, int W>
 struct RowsOf {
   using type = ScalarRows<N>;
+};
+template <int N>
+struct RowsOf<N, 4> {
+  using type = QuadRows<N>;
 };
 template <int N>
 struct RowsOf<N, 8> {
@@ -58,7 +100,7 @@ struct RowsOf<N, 8> {
 };
 
 // A one-body Local holds no more than its scalars: the rigid plain kernel is sensitive to its object's layout
-// (decision FV12). Two bodies: both bodies' levels, and every discretisation's columns as lanes, zero-padded.
+// (decision FV12). Two bodies: both bodies' levels, and every discretisation's columns as rows, zero-padded.
 template <int N, int NB, int W>
 struct BodyTables {};
 template <int N, int W>
@@ -73,9 +115,9 @@ class PowerTrain::Local : local_detail::BodyTables<N, NB, W> {
   using Levels = local_detail::Levels;
  public:
   using Vec = Eigen::Matrix<double, N, 1>;
-  using Lanes = typename local_detail::RowsOf<N, W>::type;
-  // The state: an Eigen vector for one body (FV12), rows or lanes for two (FV21).
-  using State = std::conditional_t<NB == 2, Lanes, Vec>;
+  using Rows = typename local_detail::RowsOf<N, W>::type;
+  // The state: an Eigen vector for one body (FV12), rows for two (FV21, FV24).
+  using State = std::conditional_t<NB == 2, Rows, Vec>;
 
   explicit Local(const PowerTrain& p)
       : f_(*std::get_if<Fixed<N>>(&p.fixed_)),
@@ -99,7 +141,7 @@ class PowerTrain::Local : local_detail::BodyTables<N, NB, W> {
         alarm_sub_(first_alarm_substep(p.substep_count_, p.h_, p.alarm_at_s_)),
         cogging_(dist_.cogging_nm != 0.0),
         unbalance_(dist_.unbalance_nm != 0.0) {
-    for (int i = 0; i < N; ++i) x_[i] = p.x_[i];
+    for (int i = 0; i < N; ++i) local_detail::set_row(x_, i, p.x_[i]);
     for (int b = 0; b < NB; ++b) {
       idx_[b] = p.body_index_[b];
       dry_[b] = p.dry_[b];
@@ -116,7 +158,7 @@ class PowerTrain::Local : local_detail::BodyTables<N, NB, W> {
       slip_pos_ = plant::directional_sliding_nm(fr, 1.0, 1.0);
       slip_neg_ = plant::directional_sliding_nm(fr, -1.0, -1.0);
     }
-    // Two bodies: both bodies' levels, the same way, and the discretisations' columns as lanes.
+    // Two bodies: both bodies' levels, the same way, and the discretisations' columns as rows.
     if constexpr (NB == 2) {
       for (int m = 0; m < 4; ++m) {
         for (int k = 0; k < N; ++k) column(f_.phi[m], k, this->phi_[m][k]);
@@ -263,10 +305,10 @@ class PowerTrain::Local : local_detail::BodyTables<N, NB, W> {
   // plant::advance_with_dry_friction for the two-mass layout (applies() checked it), written out: the same operations
   // in the same order (solve_dry_friction's Gauss-Seidel sweeps and their early end, the locked re-solve), so the
   // same doubles, with the bodies' indices known at compile time, their levels and flags formed once and the state's
-  // rows as lanes of one vector.
+  // rows held as the kernel holds them (Rows).
   __attribute__((always_inline)) void two_body_substep(double t_motor, double t_load) {
-    Lanes xf;
-    free_lanes(0u, t_motor, t_load, xf);
+    Rows xf;
+    free_rows(0u, t_motor, t_load, xf);
     if (!(this->levels_[0].active || this->levels_[NB - 1].active)) {
       x_ = xf;
       return;
@@ -279,7 +321,7 @@ class PowerTrain::Local : local_detail::BodyTables<N, NB, W> {
     for (int b = 0; b < 2; ++b)
       if (stick[b] && stuck_[b] && x_[kTwoMass[b].speed] == 0.0) locked |= 1u << b;
     if (locked != 0) {
-      free_lanes(locked, t_motor, t_load, xf);
+      free_rows(locked, t_motor, t_load, xf);
       solve_two(xf, f_.gamma[locked], locked, f, stick);
     }
     for (int b = 0; b < 2; ++b) {
@@ -291,14 +333,14 @@ class PowerTrain::Local : local_detail::BodyTables<N, NB, W> {
     }
     for (int b = 0; b < 2; ++b) {
       if (locked & (1u << b)) continue;
-      if (stick[b]) xf[kTwoMass[b].speed] = 0.0;  // stopped inside the sub-step (the residual is rounding)
+      if (stick[b]) local_detail::set_row(xf, kTwoMass[b].speed, 0.0);  // stopped inside the sub-step (rounding)
       stuck_[b] = stick[b] ? 1 : 0;
     }
     x_ = xf;
   }
 
   // plant::solve_dry_friction for the two-mass layout: from x_ with the friction-free end state xf.
-  __attribute__((always_inline)) void solve_two(const Lanes& xf, const Eigen::Matrix<double, N, 3>& gamma,
+  __attribute__((always_inline)) void solve_two(const Rows& xf, const Eigen::Matrix<double, N, 3>& gamma,
                                                 unsigned locked, double* f, bool* stick) const {
     double slip_level[2] = {0.0, 0.0};
     for (int b = 0; b < 2; ++b) {
@@ -361,11 +403,11 @@ class PowerTrain::Local : local_detail::BodyTables<N, NB, W> {
       for (int i = 0; i < N; ++i) xf[i] += gam(i, 2) * t_load;
   }
 
-  // free_motion on lanes, for two bodies: xf = phi x + gamma [i_cmd, t_motor, t_load] with the discretisation of the
+  // free_motion on rows, for two bodies: xf = phi x + gamma [i_cmd, t_motor, t_load] with the discretisation of the
   // locked mask m; lane i is row i summed left to right from 0.0, then each input's column added unless the input is
   // exactly 0 -- free_motion's operations on the same doubles.
-  __attribute__((always_inline)) void free_lanes(unsigned m, double t_motor, double t_load, Lanes& xf) const {
-    Lanes s = Lanes{};
+  __attribute__((always_inline)) void free_rows(unsigned m, double t_motor, double t_load, Rows& xf) const {
+    Rows s = Rows{};
     for (int k = 0; k < N; ++k) s = s + this->phi_[m][k] * x_[k];
     if (i_cmd_ != 0.0) s = s + this->gam_[m][0] * i_cmd_;
     if (t_motor != 0.0) s = s + this->gam_[m][1] * t_motor;
@@ -373,11 +415,11 @@ class PowerTrain::Local : local_detail::BodyTables<N, NB, W> {
     xf = s;
   }
 
-  // Column c of a matrix as lanes, the lanes past its rows 0.
+  // Column c of a matrix as rows, the rows past its N zero.
   template <class M>
-  static void column(const M& a, int c, Lanes& v) {
-    v = Lanes{};
-    for (int i = 0; i < N; ++i) v[i] = a(i, c);
+  static void column(const M& a, int c, Rows& v) {
+    v = Rows{};
+    for (int i = 0; i < N; ++i) local_detail::set_row(v, i, a(i, c));
   }
 
   // One body: the angle and speed are the last two states (after the drive's), known at compile time.
