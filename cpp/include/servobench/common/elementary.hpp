@@ -19,6 +19,8 @@
 #include <cstdint>
 #include <cstring>
 
+#include "servobench/common/rounding.hpp"
+
 namespace servobench {
 
 namespace elementary_detail {
@@ -72,10 +74,9 @@ inline double sin_inline(double x) {
     return kernel_sin(x, 0.0, true);
   }
   if (ix >= 0x413921fbu) return std::sin(x);  // |x| >~ 2^20 pi/2, inf, NaN: libm (never in a realistic tick)
-  // x = n pi/2 + (y0 + y1): n the nearest whole number to x 2/pi (the 1.5 * 2^52 addition rounds it, ties to even),
-  // the pieces of pi/2 times n exact (n < 2^20, 33-bit pieces), further pieces while the reduction cancels.
-  constexpr double kRound = 0x1.8p52;
-  const double fn = (x * kInvPio2 + kRound) - kRound;
+  // x = n pi/2 + (y0 + y1): n the nearest whole number to x 2/pi (ties to even), the pieces of pi/2 times n exact
+  // (n < 2^20, 33-bit pieces), further pieces while the reduction cancels.
+  const double fn = nearbyint_inline(x * kInvPio2);
   const int n = static_cast<int>(fn);
   double r = x - fn * kPio2_1;
   double w = fn * kPio2_1t;  // good to 85 bits
