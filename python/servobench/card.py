@@ -173,6 +173,15 @@ class Card:
                 if not isinstance(a, Axis):
                     raise TypeError(f"axes must be servobench.Axis objects, got {type(a).__name__}")
         self._card = _core.Card([a._axis for a in self.axes], float(motion_cycle_ticks), float(host_cycle_ticks))
+        self._bind_step()
+
+    def _bind_step(self) -> None:
+        # Without Python callbacks, card.step is the binding itself: one dispatch per call (decisions FV10, FV25);
+        # with them (on_event), the method below, which stops where an event fires.
+        if type(self).step is Card.step and not self._subs:
+            object.__setattr__(self, "step", self._card.step)
+        else:
+            self.__dict__.pop("step", None)
 
     @property
     def kernel(self):
@@ -249,7 +258,7 @@ class Card:
         if self._subs:
             self._run_with_callbacks(n, ())
             return self._card.tick
-        return self._card.step(n)  # one binding: checks, locks and ticks (decision FV10)
+        return self._card.step(n)  # what the binding does (checks, locks, ticks: decision FV10)
 
     def run_until(self, predicate, max_ticks: int = 10**7, chunk: int = 1) -> int:
         """Runs ``chunk`` ticks at a time until ``predicate(card)`` is true (checked before each chunk), at most
@@ -378,12 +387,14 @@ class Card:
         sub = _Subscription(callback, None if axis is None else int(axis), ev, int(msts), int(mio), int(system),
                             int(timer_ticks))
         object.__setattr__(self, "_subs", self._subs + ((sid, sub),))
+        self._bind_step()
         self._apply_watch()
         return sid
 
     def remove_event(self, sid: int) -> None:
         """Removes the callback registered under ``sid`` (an :meth:`on_event` id)."""
         object.__setattr__(self, "_subs", tuple((i, s) for i, s in self._subs if i != sid))
+        self._bind_step()
         self._apply_watch()
 
     def _apply_watch(self) -> None:

@@ -161,3 +161,29 @@ def test_non_finite_inputs_and_controller_outputs_are_refused():
     with pytest.raises(TypeError):
         axis.step("1")
     assert axis.tick == 0 and np.isfinite(axis.angle_rad)
+
+
+def test_card_step_is_the_binding_until_a_callback_needs_python():
+    """Without on_event callbacks card.step is the C++ binding itself (one dispatch, decision FV25); with one, the
+    Python method that fires it; removing the callback gives the binding back. Either way the same ticks."""
+    card = sb.Card(4)
+    card.axis_on(0)
+    assert card.step == card.kernel.step  # the binding, bound to this card's kernel
+    fired = []
+    sid = card.on_event(lambda _card, f: fired.append(f.tick), timer_ticks=5)
+    assert "step" not in vars(card)
+    for _ in range(10):
+        card.step()
+    assert card.tick == 10 and len(fired) == 2
+    assert card.step(7) == 17 and len(fired) == 3
+    card.remove_event(sid)
+    assert card.step == card.kernel.step
+    assert card.step() == 18 and len(fired) == 3
+
+    class Logged(sb.Card):  # a subclass's own step is never bypassed
+        def step(self, n=1):
+            self.calls = getattr(self, "calls", 0) + 1
+            return super().step(n)
+
+    sub = Logged(4)
+    assert sub.step(3) == 3 and sub.calls == 1
