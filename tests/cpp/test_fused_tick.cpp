@@ -4,6 +4,7 @@
 // profile velocities; the error-limit and alarm guards; runs continued in pieces).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -194,6 +195,38 @@ std::vector<Case> cases() {
     }
   }
   const std::size_t last_plain = cs.size() - 1;
+  // Plain runs whose saturations bite (decision FV26 leaves a clamp out only where it cannot): a DAC whose full scale
+  // is below the law's largest output, and a drive whose current limit is below the DAC's largest output x A/V.
+  for (const mc::LawParams& law : {mc::LawParams{gt}, mc::LawParams{aps}}) {
+    Case c;
+    c.cfg.law = law;
+    c.cfg.plant = coulomb;
+    c.cfg.servo_period_s = 250e-6;
+    c.profile = true;
+    c.cfg.drive = ideal;  // its current is its command
+    c.name = "plain, DAC full scale bites " + std::to_string(i++);
+    c.cfg.dac.full_scale_v = 0.05;
+    cs.push_back(c);
+    c.name = "plain, current limit bites " + std::to_string(i++);
+    c.cfg.dac = dr::DacParams{};
+    dr::TorqueDriveParams weak = ideal;
+    weak.current_limit_a = 0.2;
+    c.cfg.drive = weak;
+    cs.push_back(c);
+  }
+  {  // the general fused kernel (filters, injection) leaves the drive's clamp out the same way
+    Case c;
+    c.cfg.law = gt;
+    c.cfg.plant = coulomb;
+    c.cfg.servo_period_s = 250e-6;
+    c.cfg.filters = integer_filters();
+    c.inject = true;
+    dr::TorqueDriveParams weak = ideal;
+    weak.current_limit_a = 0.2;
+    c.cfg.drive = weak;
+    c.name = "filters, current limit bites " + std::to_string(i++);
+    cs.push_back(c);
+  }
   // Two-mass layouts the loops above leave out (the two-body solve written out in PowerTrain::Local): friction on one
   // body only (the other's force stays 0 in every sweep), asymmetric Coulomb and viscous friction, a constant load.
   pl::TwoMassPlantParams one_side, asym;
@@ -323,6 +356,38 @@ TEST(FusedTick, FeedbackOnlyRunsGiveTheSameDoubles) {
       }
     }
   }
+}
+
+// Decision FV26: the plain-kernel cases built to saturate do saturate (so the clamps the kernel keeps are tested):
+// the general loop's volts reach the DAC's full scale, its current (an ideal current loop's: its command) the drive's
+// limit.
+TEST(FusedTick, ThePlainSaturationCasesSaturate) {
+  int dac = 0, drive = 0;
+  for (const Case& c : cases()) {
+    const bool dac_case = c.name.find("DAC full scale bites") != std::string::npos;
+    const bool drive_case = c.name.find("current limit bites") != std::string::npos;
+    if (!dac_case && !drive_case) continue;
+    const std::vector<double> rec = run_case(c, false);
+    double peak = 0.0;
+    int slot = 0, at = 0;
+#define SB_FIND(name, unit, doc) \
+  if (std::string(#name) == (dac_case ? "volts" : "current_a")) at = slot; \
+  ++slot;
+    SERVOBENCH_TRACE_SIGNALS(SB_FIND)
+#undef SB_FIND
+    const std::size_t piece = 1200;  // the second piece's signals follow the first's (1 tick) and its 3 outcome slots
+    const std::size_t start = kSignals * 1 + 3 + static_cast<std::size_t>(at) * piece;
+    for (std::size_t k = 0; k < piece; ++k) peak = std::max(peak, std::fabs(rec[start + k]));
+    if (dac_case) {
+      EXPECT_NEAR(peak, 0.05, 1e-12) << c.name;
+      ++dac;
+    } else {
+      EXPECT_NEAR(peak, 0.2, 1e-12) << c.name;
+      ++drive;
+    }
+  }
+  EXPECT_EQ(dac, 2);
+  EXPECT_EQ(drive, 3);
 }
 
 // Decision TK1: a pass-through run keeps no filter history in the loop but replays the law's last two outputs into

@@ -3,7 +3,11 @@
 // ILmt = 0 clears the sum L819; output +-2^15 <-> +-10 V and MtrLmt default 32767 L829.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstring>
+#include <random>
 #include <stdexcept>
+#include <vector>
 
 #include "servobench/control/gt_servo_law.hpp"
 
@@ -109,5 +113,28 @@ TEST(GtServoLaw, RejectsOutOfRangeParameters) {  // Table 3-4 ranges
     FAIL();
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(), "GtServoLaw.kp = 40000 is outside the allowed range 0..32767 (GT manual Table 3-4)");
+  }
+}
+
+// Decision FV26: step() forms the integral term as (Ki/256)*SumE, which must be the manual's Ki*SumE/256 to the last
+// bit: for integer and fractional gains, gains whose Ki/256 is not exact (below 2^-1014), sums of every magnitude
+// down to the subnormals and the results near the smallest normal double where the folded form is not taken.
+TEST(GtServoLaw, IntegralTermIsKiTimesSumOver256ToTheLastBit) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> mant(1.0, 2.0), exp2(-1080.0, 14.0);
+  std::vector<double> sums{0.0, -0.0, 1.0, -3.0, 32767.0, 0x1p-1074, 0x1p-1060, 0x1.fffffffffffffp-1022};
+  for (int k = 0; k < 4000; ++k) sums.push_back((k % 2 ? -1 : 1) * std::ldexp(mant(rng), static_cast<int>(exp2(rng))));
+  for (double ki : {0.0, 1.0, 40.0, 32767.0, 0.3, 1234.5678, 1e-310, 3 * 0x1p-1016, 0x1.23456789abcdep-1013}) {
+    GtServoLawParams p;
+    p.fractional_gains = true;
+    p.ki = ki;
+    for (double e : sums) {
+      GtServoLaw law(p);  // the first tick's sum is its error (0.0 + e)
+      const double got = law.step(e, 0.0, 0.0, 0.0).i;
+      volatile double kv = ki, ev = law.error_sum();  // the manual's form, evaluated at run time
+      const double want = kv * ev * (1.0 / 256.0);
+      EXPECT_EQ(0, std::memcmp(&got, &want, sizeof got))
+          << "ki " << ki << " sum " << e << ": " << got << " vs " << want;
+    }
   }
 }

@@ -1,5 +1,7 @@
 #include "servobench/control/gt_servo_law.hpp"
 
+#include <cmath>
+
 #include "servobench/common/validate.hpp"
 
 namespace servobench::control {
@@ -26,11 +28,23 @@ void GtServoLawParams::validate() const {
   check_integer(owner, "mtr_lmt", mtr_lmt, 0, 32767, "GT manual L829");
 }
 
-GtServoLaw::GtServoLaw(const GtServoLawParams& params) : params_(params) { params_.validate(); }
+namespace {
+// Ki/256 where that division is exact (Ki >= 2^-1014 or 0), else NaN: step() then takes the written-out form.
+double exact_ki_256(double ki) {
+  const double k = ki * (1.0 / 256.0);
+  return k * 256.0 == ki ? k : std::nan("");
+}
+}  // namespace
+
+GtServoLaw::GtServoLaw(const GtServoLawParams& params) : params_(params) {
+  params_.validate();
+  ki_256_ = exact_ki_256(params_.ki);
+}
 
 void GtServoLaw::set_params(const GtServoLawParams& params) {
   params.validate();
   params_ = params;
+  ki_256_ = exact_ki_256(params_.ki);
   if (params_.ilmt == 0) sum_ = 0.0;
 }
 

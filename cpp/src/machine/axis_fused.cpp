@@ -218,6 +218,12 @@ __attribute__((always_inline)) inline RunOutcome Axis::fused_loop(Law& law_state
   const double enc_cpr = encoder.counts_per_rad();
   PowerTrain::Local<N, NB, W> pt(power_);
   double pending = pending_volts_, prev_cmd = prev_cmd_, prev_vel = prev_vel_, prev_enc = prev_encoder_angle_;
+  // The saturations that cannot bite in this run are left out (decision FV26). The drive sees the DAC's output (or
+  // the held voltage the run starts from), at most its largest code; the plain kernel's DAC sees the law's own
+  // output, at most law.max_volts(). Rounding is monotonic, so a clamp that holds at the bound holds below it.
+  const double dac_top = dac.params().quantize ? Round::nearbyint(dac_fs * dac_cpv) * dac_vpc : dac_fs;
+  const bool drive_clamps = !(std::fabs(pending) <= dac_top && pt.current_within_limit(dac_top));
+  const bool dac_clamps = !(law.max_volts() <= dac_fs);
   bool primed = primed_;
   long long tick = tick_;
 
@@ -255,7 +261,10 @@ __attribute__((always_inline)) inline RunOutcome Axis::fused_loop(Law& law_state
       }
       if (trip) outcome.error_pulse = r - y;
     }
-    pt.set_input(pending);  // the previous tick's output reaches the drive now
+    if (!drive_clamps)  // the previous tick's output reaches the drive now
+      pt.set_input_within_limit(pending);
+    else
+      pt.set_input(pending);
     control::LawTerms t;
     double f0 = 0.0, f1 = 0.0, volts = 0.0;
     if (!trip) {
@@ -269,7 +278,7 @@ __attribute__((always_inline)) inline RunOutcome Axis::fused_loop(Law& law_state
       }
       const double request = law.counts_to_volts(f1);
       if constexpr (kPlain) {  // Dac::convert of a quantising DAC, on the loop's constants
-        const double c = request > dac_fs ? dac_fs : (request < -dac_fs ? -dac_fs : request);
+        const double c = !dac_clamps ? request : (request > dac_fs ? dac_fs : (request < -dac_fs ? -dac_fs : request));
         volts = Round::nearbyint(c * dac_cpv) * dac_vpc;
       } else {
         volts = dac.convert<Round>(volts_add ? request + volts_add[k] : request);

@@ -101,6 +101,9 @@ class ApsServoLaw {
     return params_.v_inverse ? -v : v;
   }
 
+  // The largest |counts_to_volts(U)| of any output U: the output stage clamps to V_LIMIT, V.
+  double max_volts() const { return params_.v_limit; }
+
   double error_sum() const { return sum_; }  // PID_ERR_POS_SUM_COUNT (pulse*tick)
   double previous_error() const { return prev_error_; }
 

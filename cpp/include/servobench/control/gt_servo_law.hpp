@@ -9,6 +9,8 @@
 // A_target pulse/ST^2, U DAC counts. The gains are per servo tick: changing the sample time changes the loop.
 #pragma once
 
+#include <cmath>
+
 #include "servobench/control/law_terms.hpp"
 
 namespace servobench::control {
@@ -57,7 +59,12 @@ class GtServoLaw {
     sum_ = sum;
     LawTerms t;
     t.p = params_.kp * error;
-    t.i = params_.ki * sum * (1.0 / 256.0);
+    // Ki*SumE/256 as (Ki/256)*SumE: one rounding fewer on the tick's path and the same double, since scaling by
+    // 2^-8 is exact and commutes with rounding while the result is normal; below 2^-1021 (and where Ki/256 is not
+    // exact: ki_256_ is NaN then) the written-out form is taken (decision FV26).
+    double i = ki_256_ * sum;
+    if (__builtin_expect(!(std::fabs(i) >= 0x1p-1021), 0)) i = params_.ki * sum * (1.0 / 256.0);
+    t.i = i;
     t.d = params_.kd * (error - prev_error_);
     t.vff = params_.kvff * vel;
     t.aff = params_.kaff * acc;
@@ -73,12 +80,15 @@ class GtServoLaw {
 
   // Converts the (filtered) controller output in counts to the commanded voltage: 32767 counts = 10 V.
   static double counts_to_volts(double counts) { return counts * (10.0 / 32767.0); }
+  // The largest |counts_to_volts(U)| of an unfiltered output U (|U| <= MtrLmt), V.
+  double max_volts() const { return counts_to_volts(params_.mtr_lmt); }
 
   double error_sum() const { return sum_; }        // the accumulator GT_GetIntgr reads (pulse*tick)
   double previous_error() const { return prev_error_; }
 
  private:
   GtServoLawParams params_;
+  double ki_256_ = 0.0;  // Ki/256 if exact, else NaN (see step)
   double sum_ = 0.0;
   double prev_error_ = 0.0;
 };

@@ -215,6 +215,15 @@ class PowerTrain::Local : local_detail::BodyTables<N, NB, W> {
     i_cmd_ = alarm_ ? 0.0 : (i > i_max_ ? i_max_ : (i < -i_max_ ? -i_max_ : i));
   }
 
+  // set_input where |amps_per_volt * volts| cannot exceed the current limit (current_within_limit of a bound on
+  // |volts| holds): the same i_cmd without the clamp (decision FV26).
+  __attribute__((always_inline)) void set_input_within_limit(double volts) {
+    volts_ = volts;
+    i_cmd_ = alarm_ ? 0.0 : amps_per_volt_ * volts;
+  }
+  // Whether set_input's clamp is the identity for every |volts| <= max_volts (rounding is monotonic).
+  bool current_within_limit(double max_volts) const { return std::fabs(amps_per_volt_ * max_volts) <= i_max_; }
+
   // PowerTrain::advance_tick for a torque drive: every sub-step with the held input (one sub-step per tick, the
   // torque drive's default, without a loop around it).
   __attribute__((always_inline)) void advance_tick() {
