@@ -40,6 +40,33 @@ def test_batch_equals_one_run_per_plant_bit_for_bit():
             assert (math.isnan(a) and math.isnan(b)) or a == b, (i, name, a, b)
 
 
+def test_feedback_only_batch_of_a_position_command_equals_one_run_per_plant():
+    """A command given as positions only: the batch derives its velocity and acceleration once for every plant (the
+    differences each axis would take from power-on, decision FV27), so plants recording their feedback only run the
+    plain kernel; the feedback and metrics stay those of one Axis.run per plant, bit for bit, from a command that
+    starts away from 0 and moves both ways."""
+    axis = sb.demo_axis()
+    cmd = np.concatenate([np.full(15, 7.0), np.linspace(7.0, 907.5, 200), np.full(100, 907.5),
+                          np.linspace(907.5, -300.25, 150), np.full(135, -300.25)])
+    for signals in (("fb_pos",), ()):
+        res = sb.monte_carlo(axis, cmd, spread=SPREAD, n=10, seed=5, signals=signals)
+        for i, row in res.parameters.iterrows():
+            parts = {}
+            for name, value in row.to_dict().items():
+                part, field = name.split(".")
+                parts.setdefault(part, {})[field] = value
+            spec = sb.batch.axis_spec(axis)
+            for part, changes in parts.items():
+                spec[part] = spec[part].replace(**changes)
+            ref = sb.Axis(**spec).run(cmd)
+            if signals:
+                np.testing.assert_array_equal(res.signals["fb_pos"][i], ref.fb_pos)
+            m = sb.move_metrics(ref)
+            for name in sb.batch.METRICS:
+                a, b = res.metrics.loc[i, name], getattr(m, name)
+                assert (math.isnan(a) and math.isnan(b)) or a == b, (i, name, a, b)
+
+
 def test_same_seed_same_result_whatever_the_threads():
     axis = sb.demo_axis()
     one = sb.monte_carlo(axis, STEP, spread=SPREAD, n=50, seed=7, threads=1)

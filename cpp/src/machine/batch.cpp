@@ -190,6 +190,26 @@ int run_batch(const BatchInput& in, const BatchOutput& out, const BatchOptions& 
   int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
   threads = static_cast<int>(std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), plants)));
 
+  // A command without its own velocity or acceleration gets them here, once for every plant: the differences each
+  // axis would otherwise take tick by tick from power-on (Axis::run's loop: the first tick's velocity is
+  // pos[0] - pos[0], its acceleration that minus 0), so the same doubles; with both given, a plant recording its
+  // feedback only runs the plain kernel (decision FV27).
+  std::vector<double> vel_buf, acc_buf;
+  const double* vel = in.vel;
+  const double* acc = in.acc;
+  if (vel == nullptr || acc == nullptr) {
+    vel_buf.resize(in.n);
+    acc_buf.resize(in.n);
+    double prev_cmd = in.pos[0], prev_vel = 0.0;
+    for (std::size_t k = 0; k < in.n; ++k) {
+      vel_buf[k] = vel ? vel[k] : in.pos[k] - prev_cmd;
+      acc_buf[k] = acc ? acc[k] : vel_buf[k] - prev_vel;
+      prev_cmd = in.pos[k];
+      prev_vel = vel_buf[k];
+    }
+    vel = vel_buf.data();
+    acc = acc_buf.data();
+  }
   std::vector<std::string> errors(plants);  // per plant: the validation message, empty = fine
   auto work = [&](std::size_t begin, std::size_t end) {
     std::vector<double> fb_scratch(out.metrics ? in.n : 0);
@@ -207,8 +227,8 @@ int run_batch(const BatchInput& in, const BatchOutput& out, const BatchOptions& 
         if (out.metrics && !t.fb_pos) t.fb_pos = fb_scratch.data();
         CommandInput cmd;
         cmd.pos = in.pos;
-        cmd.vel = in.vel;
-        cmd.acc = in.acc;
+        cmd.vel = vel;
+        cmd.acc = acc;
         cmd.n = in.n;
         axis.run(cmd, t);
         if (out.metrics)
