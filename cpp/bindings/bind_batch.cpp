@@ -3,9 +3,15 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "arrays.hpp"
 #include "flag.hpp"
 
+#include <algorithm>
+#include <climits>
 #include <cmath>
+#include <functional>
+#include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -53,7 +59,7 @@ void bind_batch(py::module_& m) {
       "run_batch",
       [](const machine::Axis& base, const std::vector<std::string>& names, const py::object& table,
          const py::object& pos, const py::object& vel, const py::object& acc, const std::vector<std::string>& signals,
-         Flag metrics, double settle_band_pulse, int threads) {
+         Flag metrics, double settle_band_pulse, int threads, const py::object& progress) {
         Array tab = finite_array(table, "parameters", 2);
         if (static_cast<std::size_t>(tab.shape(1)) != names.size())
           throw py::value_error("parameters has " + std::to_string(tab.shape(1)) + " columns for " +
@@ -97,19 +103,35 @@ void bind_batch(py::module_& m) {
           out.metrics = reinterpret_cast<machine::MoveMetricsRow*>(mbuf.mutable_data());
           met = mbuf;
         }
+        // Ctrl-C and the progress callback are served from this thread every 50 ms while the workers run
+        // (decision FV28); a pending signal or a false from the callback stops the plants not yet started.
+        std::shared_ptr<py::error_already_set> interrupt;
+        const std::function<bool(int, int)> cb = progress_callback(progress, &interrupt);
         int used = 0;
+        bool stopped = false;
         {
           py::gil_scoped_release release;
           machine::BatchOptions opt;
           opt.threads = threads;
-          used = machine::run_batch(in, out, opt);
+          opt.poll = [&cb](std::size_t done, std::size_t total) {
+            return cb(static_cast<int>(std::min<std::size_t>(done, INT_MAX)),
+                      static_cast<int>(std::min<std::size_t>(total, INT_MAX)));
+          };
+          try {
+            used = machine::run_batch(in, out, opt);
+          } catch (const machine::BatchStopped&) {
+            stopped = true;
+          }
         }
+        raise_pending(interrupt);
+        if (stopped) throw std::runtime_error("simulate_many: the progress callback returned False: batch stopped");
         return py::make_tuple(recorded, met, used);
       },
       py::arg("base"), py::arg("names"), py::arg("parameters"), py::arg("positions"), py::arg("velocities"),
       py::arg("accelerations"), py::arg("signals"), py::arg("metrics"), py::arg("settle_band_pulse"),
-      py::arg("threads"),
-      "Runs one copy of `base` per parameter-table row over the command (pulse) across threads, GIL released; "
+      py::arg("threads"), py::arg("progress") = py::none(),
+      "Runs one copy of `base` per parameter-table row over the command (pulse) across threads, GIL released, "
+      "answering Ctrl-C within about 50 ms; progress(done, total) -> bool is called as plants finish (False stops); "
       "returns ({signal: plants x ticks array}, plants x 6 move metrics or None, threads used).");
 }
 

@@ -148,7 +148,7 @@ def _run_local(spec: dict, names: list[str], values: np.ndarray, pos, vel, acc, 
 
 def simulate_many(axes_or_table, command, *, axis: Axis | None = None, signals: Iterable[str] = ("fb_pos",),
                   metrics: bool = True, settle_band_pulse: float = 5.0, threads: int = 0, client=None,
-                  scheduler=None, chunk_size: int | None = None) -> BatchResult:
+                  scheduler=None, chunk_size: int | None = None, progress="auto") -> BatchResult:
     """Runs many independent copies of an axis over one command, in C++ across all cores (GIL released).
 
     axes_or_table
@@ -175,6 +175,11 @@ def simulate_many(axes_or_table, command, *, axis: Axis | None = None, signals: 
         on a worker, and the chunks are joined in order: the result equals the local run's.
     chunk_size
         plants per Dask chunk (>= 1).
+    progress
+        a local run's progress over its plants: ``"auto"`` (a tqdm bar when stderr is a terminal), True (a bar),
+        None/False, or a callable ``(done, total) -> bool`` (False stops the batch: RuntimeError). A local run
+        answers Ctrl-C within about 50 ms (KeyboardInterrupt; the plants not started are not run). Dask shows its
+        own progress (``dask.distributed.progress``).
 
     Returns a :class:`BatchResult`: per-plant metrics as a pandas DataFrame and the recorded signals as arrays.
     """
@@ -219,8 +224,11 @@ def simulate_many(axes_or_table, command, *, axis: Axis | None = None, signals: 
     spec = axis_spec(base)
     args = (pos, vel, acc, signals, bool(metrics), float(settle_band_pulse), int(threads))
 
+    from ._progress import counter
+
+    bar = counter(progress, "simulate_many", unit="plant", owner="simulate_many")  # checks `progress` (a bar: lazily)
     if client is None and scheduler is None:
-        rec, met, used = _core.run_batch(base._axis, names, values, *args)
+        rec, met, used = _core.run_batch(base._axis, names, values, *args, bar)
         parts = [(rec, met, used)]
     else:
         parts = _run_dask(spec, names, values, args, client, scheduler, chunk_size)

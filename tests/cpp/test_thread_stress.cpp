@@ -7,6 +7,8 @@
 #include <atomic>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
+#include <functional>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -14,6 +16,7 @@
 #include "../../cpp/bindings/lock_table.hpp"
 #include "card_fixtures.hpp"
 #include "servobench/machine/axis.hpp"
+#include "servobench/machine/batch.hpp"
 #include "servobench/machine/card.hpp"
 #include "servobench/machine/card_scope.hpp"
 
@@ -168,4 +171,64 @@ TEST(ThreadStress, SeparateObjectsShareNothing) {
   for (std::size_t t = 0; t < got.size(); ++t) threads.emplace_back([&, t] { got[t] = one(); });
   for (auto& th : threads) th.join();
   for (double g : got) EXPECT_EQ(g, serial);
+}
+
+// Decision FV28: a batch's workers share only the block counter, the done counter and the stop flag; with a poll
+// that watches them, every thread count gives the one-thread metrics bit for bit, and a poll that says stop ends the
+// batch with BatchStopped, leaving the rows never started as they were.
+TEST(ThreadStress, BatchWorkersAndTheirPollShareOnlyTheCounters) {
+  mc::AxisConfig base;
+  base.servo_period_s = 250e-6;
+  std::vector<double> cmd(600, 1000.0);
+  for (std::size_t k = 0; k < 20; ++k) cmd[k] = 0.0;
+  const std::size_t plants = 300;
+  std::vector<double> inertia(plants);
+  for (std::size_t i = 0; i < plants; ++i) inertia[i] = 8e-5 + 1e-7 * static_cast<double>(i);
+  mc::BatchInput in;
+  in.base = base;
+  in.parameter_names = {"plant.inertia_kgm2"};
+  in.parameters = inertia.data();
+  in.plants = plants;
+  in.pos = cmd.data();
+  in.n = cmd.size();
+  auto run = [&](int threads, std::function<bool(std::size_t, std::size_t)> poll) {
+    std::vector<mc::MoveMetricsRow> rows(plants, mc::MoveMetricsRow{-1, -1, -1, -1, -1, -1});
+    mc::BatchOutput out;
+    out.metrics = rows.data();
+    mc::BatchOptions opt;
+    opt.threads = threads;
+    opt.poll = std::move(poll);
+    opt.poll_seconds = 0.001;
+    mc::run_batch(in, out, opt);
+    return rows;
+  };
+  const std::vector<mc::MoveMetricsRow> one = run(1, {});
+  for (int threads : {2, 3, 4}) {
+    std::size_t last = 0, calls = 0;
+    const auto rows = run(threads, [&](std::size_t done, std::size_t total) {
+      EXPECT_EQ(total, plants);
+      EXPECT_GE(done, last);
+      last = done;
+      ++calls;
+      return true;
+    });
+    EXPECT_EQ(last, plants);
+    EXPECT_GE(calls, 1u);
+    EXPECT_EQ(0, std::memcmp(rows.data(), one.data(), plants * sizeof(mc::MoveMetricsRow))) << threads;
+  }
+  std::vector<double> long_cmd(20000, 1000.0);  // ~0.25 ms a plant: the first poll (1 ms) comes mid-batch
+  for (std::size_t k = 0; k < 20; ++k) long_cmd[k] = 0.0;
+  in.pos = long_cmd.data();
+  in.n = long_cmd.size();
+  std::vector<mc::MoveMetricsRow> rows(plants, mc::MoveMetricsRow{-1, -1, -1, -1, -1, -1});
+  mc::BatchOutput out;
+  out.metrics = rows.data();
+  mc::BatchOptions opt;
+  opt.threads = 2;
+  opt.poll_seconds = 0.001;
+  opt.poll = [](std::size_t, std::size_t) { return false; };
+  EXPECT_THROW(mc::run_batch(in, out, opt), mc::BatchStopped);
+  std::size_t untouched = 0;
+  for (const auto& r : rows) untouched += r.rise_time_s == -1.0 ? 1 : 0;
+  EXPECT_GT(untouched, 0u);  // the first poll comes after 1 ms: most of the 300 plants were never started
 }

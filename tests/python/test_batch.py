@@ -67,6 +67,26 @@ def test_feedback_only_batch_of_a_position_command_equals_one_run_per_plant():
                 assert (math.isnan(a) and math.isnan(b)) or a == b, (i, name, a, b)
 
 
+def test_progress_sees_every_plant_and_false_stops_the_batch():
+    """progress=(done, total) is called from the calling thread while the workers run and once at the end with every
+    plant done; returning False stops the batch (RuntimeError), the plants not started are not run (FV28)."""
+    axis = sb.demo_axis()
+    calls = []
+    res = sb.monte_carlo(axis, STEP, spread=SPREAD, n=400, seed=2, threads=2,
+                         progress=lambda done, total: calls.append((done, total)) or True)
+    assert calls and calls[-1] == (400, 400) and all(t == 400 for _d, t in calls)
+    assert [d for d, _t in calls] == sorted(d for d, _t in calls)
+    assert len(res.metrics) == 400
+    slow = np.concatenate([np.zeros(20), np.full(20_000, 1000.0)])  # ~0.3 ms a plant: the first poll comes mid-run
+    seen = []
+    with pytest.raises(RuntimeError, match="progress callback returned False"):
+        sb.monte_carlo(axis, slow, spread=SPREAD, n=2000, seed=2, threads=1,
+                       progress=lambda done, total: seen.append(done) or False)
+    assert seen and seen[0] < 2000
+    with pytest.raises(TypeError, match="progress"):
+        sb.monte_carlo(axis, STEP, spread=SPREAD, n=4, progress="yes")
+
+
 def test_same_seed_same_result_whatever_the_threads():
     axis = sb.demo_axis()
     one = sb.monte_carlo(axis, STEP, spread=SPREAD, n=50, seed=7, threads=1)

@@ -178,7 +178,7 @@ def _interrupt_after(seconds):
 
 
 @pytest.mark.skipif(threading.current_thread() is not threading.main_thread(), reason="signals need the main thread")
-@pytest.mark.parametrize("what", ["axis", "step", "card", "card_step", "fit_time"])
+@pytest.mark.parametrize("what", ["axis", "step", "card", "card_step", "fit_time", "batch"])
 def test_ctrl_c_one_second_into_a_long_run_returns_within_half_a_second(what):
     if what == "axis":
         # A run of several seconds on any machine: the fused rigid tick does 50 M ticks in about 1 s (19 ns/tick),
@@ -203,6 +203,13 @@ def test_ctrl_c_one_second_into_a_long_run_returns_within_half_a_second(what):
 
         def call():
             card.step(10**9)
+    elif what == "batch":  # 10^6 plants x 2,000 ticks: about a minute of work on any machine (decision FV28)
+        base = sb.demo_axis()
+        step = np.concatenate([np.zeros(20), np.full(1980, 1000.0)])
+
+        def call():
+            sb.monte_carlo(base, step, spread={"plant.inertia_kgm2": (8e-5, 1.6e-4)}, n=10**6, signals=(),
+                           progress=None)
     else:
         axis = sb.Axis(law=sb.GtServoLaw(kp=38, ki=60, kd=830, kaff=12870), plant=sb.RigidPlant(
             inertia_kgm2=1e-4, viscous_nms=1e-4, coulomb_nm=0.005))

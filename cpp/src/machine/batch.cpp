@@ -1,8 +1,13 @@
 #include "servobench/machine/batch.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
+#include <exception>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 #include <thread>
 #include <type_traits>
@@ -211,47 +216,86 @@ int run_batch(const BatchInput& in, const BatchOutput& out, const BatchOptions& 
     acc = acc_buf.data();
   }
   std::vector<std::string> errors(plants);  // per plant: the validation message, empty = fine
-  auto work = [&](std::size_t begin, std::size_t end) {
+  // Plants are handed out in blocks of `block` from a shared counter (dynamic scheduling: a worker on a busy core
+  // takes fewer blocks); each plant's result depends on its row only (decision FV28).
+  const std::size_t per_thread = plants / (16 * static_cast<std::size_t>(threads));
+  const std::size_t block = std::min<std::size_t>(64, per_thread + 1);
+  std::atomic<std::size_t> next{0}, done{0};
+  std::atomic<bool> stop{false};
+  auto work = [&]() {
     std::vector<double> fb_scratch(out.metrics ? in.n : 0);
-    for (std::size_t i = begin; i < end; ++i) {
-      try {
-        AxisConfig c = in.base;
-        for (std::size_t j = 0; j < np; ++j) set_axis_parameter(c, in.parameter_names[j], in.parameters[i * np + j]);
-        Axis axis(c);
-        Trace t;
-        const std::size_t off = i * in.n;
+    for (;;) {
+      if (stop.load(std::memory_order_relaxed)) return;
+      const std::size_t begin = next.fetch_add(block, std::memory_order_relaxed);
+      if (begin >= plants) return;
+      const std::size_t end = std::min(plants, begin + block);
+      for (std::size_t i = begin; i < end; ++i) {
+        try {
+          AxisConfig c = in.base;
+          for (std::size_t j = 0; j < np; ++j)
+            set_axis_parameter(c, in.parameter_names[j], in.parameters[i * np + j]);
+          Axis axis(c);
+          Trace t;
+          const std::size_t off = i * in.n;
 #define SB_ROW(name, unit, doc) \
   if (out.signals.name) t.name = out.signals.name + off;
-        SERVOBENCH_TRACE_SIGNALS(SB_ROW)
+          SERVOBENCH_TRACE_SIGNALS(SB_ROW)
 #undef SB_ROW
-        if (out.metrics && !t.fb_pos) t.fb_pos = fb_scratch.data();
-        CommandInput cmd;
-        cmd.pos = in.pos;
-        cmd.vel = vel;
-        cmd.acc = acc;
-        cmd.n = in.n;
-        axis.run(cmd, t);
-        if (out.metrics)
-          out.metrics[i] = move_metrics(in.pos, t.fb_pos, in.n, axis.servo_period_s(), out.settle_band_pulse);
-      } catch (const std::exception& e) {
-        errors[i] = e.what();
+          if (out.metrics && !t.fb_pos) t.fb_pos = fb_scratch.data();
+          CommandInput cmd;
+          cmd.pos = in.pos;
+          cmd.vel = vel;
+          cmd.acc = acc;
+          cmd.n = in.n;
+          axis.run(cmd, t);
+          if (out.metrics)
+            out.metrics[i] = move_metrics(in.pos, t.fb_pos, in.n, axis.servo_period_s(), out.settle_band_pulse);
+        } catch (const std::exception& e) {
+          errors[i] = e.what();
+        }
       }
+      done.fetch_add(end - begin, std::memory_order_release);
     }
   };
-  if (threads == 1) {
-    work(0, plants);
+  if (!options.poll && threads == 1) {
+    work();
   } else {
+    // The workers, and the calling thread polling (options.poll) until they have all finished.
     std::vector<std::thread> pool;
     pool.reserve(static_cast<std::size_t>(threads));
-    const std::size_t per = plants / static_cast<std::size_t>(threads);
-    const std::size_t extra = plants % static_cast<std::size_t>(threads);
-    std::size_t begin = 0;
-    for (int w = 0; w < threads; ++w) {
-      const std::size_t end = begin + per + (static_cast<std::size_t>(w) < extra ? 1 : 0);
-      pool.emplace_back(work, begin, end);
-      begin = end;
+    std::mutex m;
+    std::condition_variable cv;
+    int running = threads;
+    for (int w = 0; w < threads; ++w)
+      pool.emplace_back([&] {
+        work();
+        std::lock_guard<std::mutex> g(m);
+        if (--running == 0) cv.notify_all();
+      });
+    bool go_on = true;
+    std::exception_ptr failed;  // what the poll callback threw: rethrown once every worker has stopped
+    {
+      std::unique_lock<std::mutex> lk(m);
+      const auto period = std::chrono::duration<double>(options.poll_seconds > 0 ? options.poll_seconds : 0.05);
+      while (running > 0) {
+        cv.wait_for(lk, period, [&] { return running == 0; });
+        if (running > 0 && options.poll && go_on) {
+          lk.unlock();
+          try {
+            go_on = options.poll(done.load(std::memory_order_acquire), plants);
+          } catch (...) {
+            failed = std::current_exception();
+            go_on = false;
+          }
+          if (!go_on) stop.store(true, std::memory_order_relaxed);
+          lk.lock();
+        }
+      }
     }
     for (auto& th : pool) th.join();
+    if (failed) std::rethrow_exception(failed);
+    if (!go_on) throw BatchStopped();
+    if (options.poll && !options.poll(done.load(std::memory_order_acquire), plants)) throw BatchStopped();
   }
   for (std::size_t i = 0; i < plants; ++i) {
     if (!errors[i].empty())

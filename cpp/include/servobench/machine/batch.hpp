@@ -14,6 +14,8 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -58,11 +60,22 @@ struct BatchOutput {
 
 struct BatchOptions {
   int threads = 0;  // worker threads, 0 = every hardware thread; never more than the plants
+  // Called from the calling thread about every poll_seconds while the workers run, and once at the end, with the
+  // plants finished so far and the total; returning false stops the batch (plants not started are not run) and
+  // run_batch throws BatchStopped. Empty: no calls.
+  std::function<bool(std::size_t done, std::size_t total)> poll;
+  double poll_seconds = 0.05;
 };
 
-// Runs the batch; returns the threads used. A plant whose parameters are invalid makes the whole call throw
-// std::invalid_argument naming the first such row (lowest index, so the message too is thread-count
-// independent) and the parameter.
+// What run_batch throws when options.poll asked it to stop.
+struct BatchStopped : std::runtime_error {
+  BatchStopped() : std::runtime_error("run_batch: stopped by its poll callback") {}
+};
+
+// Runs the batch; returns the threads used. Workers take the plants in small blocks from a shared counter, so a
+// busy core slows the batch by its share only. A plant whose parameters are invalid makes the whole call throw
+// std::invalid_argument naming the first such row (lowest index, so the message too is thread-count independent)
+// and the parameter.
 int run_batch(const BatchInput& input, const BatchOutput& output, const BatchOptions& options = {});
 
 }  // namespace servobench::machine
