@@ -51,6 +51,17 @@ def timed(fn, repeats: int):
     return best
 
 
+def alternate_timed(first, second, repeats: int):
+    """timed() of each of two calls, run alternately `repeats` times: ((wall, cpu, out) of first, of second)."""
+    best = [(np.inf, np.inf, None), (np.inf, np.inf, None)]
+    for _ in range(repeats):
+        for k, fn in enumerate((first, second)):
+            got = timed(fn, 1)
+            if got[0] < best[k][0]:
+                best[k] = got
+    return best[0], best[1]
+
+
 def run(quick: bool = False, plants: int | None = None, ticks: int | None = None) -> benchlib.Result:
     size = dict(QUICK if quick else FULL)
     size.update({k: v for k, v in dict(plants=plants, ticks=ticks).items() if v is not None})
@@ -65,8 +76,8 @@ def run(quick: bool = False, plants: int | None = None, ticks: int | None = None
         return sb.monte_carlo(axis, cmd, spread=SPREAD, n=n_pl, seed=1, threads=threads, signals=())
 
     t_all, c_all, res = timed(lambda: batch(0), reps)
-    t_1, c_1, _ = timed(lambda: batch(1), reps)
-    t_2, c_2, _ = timed(lambda: batch(2), reps)
+    # 1 and 2 threads alternate, so a slow phase of the shared host hits both alike (decision FV29); best of each.
+    (t_1, c_1, _), (t_2, c_2, _) = alternate_timed(lambda: batch(1), lambda: batch(2), 1 if quick else 5)
     scaling = t_1 / t_2
 
     # numba peer: the same plants, the same loop, prange over plants; exact feedback checked on a sample.
@@ -159,7 +170,7 @@ def run(quick: bool = False, plants: int | None = None, ticks: int | None = None
         f"Batch: {n_pl:,} rigid demo plants (inertia {SPREAD['plant.inertia_kgm2']} kg*m^2, Coulomb "
         f"{SPREAD['plant.coulomb_nm']} N*m, uniform, seed 1) x {n_t:,}-tick step response; servobench computes the "
         "six move metrics of every plant too, the numba peer only the feedback (its ZOH set-up with SciPy is not "
-        f"timed). Best of {reps}."
+        f"timed). Best of {reps}; the 1- and 2-thread rows: best of {1 if quick else 5} runs of each, alternating."
         + (" QUICK run (tiny sizes, for the tests): the figures say nothing about speed." if quick else ""),
         "",
         "| run | wall [s] | CPU [s] | plant-ticks/s |",
