@@ -14,8 +14,8 @@ STEP = np.concatenate([np.zeros(20), np.full(380, 1000.0)])
 SPREAD = {"plant.inertia_kgm2": (0.8e-4, 1.6e-4), "plant.coulomb_nm": (0.0, 0.01), "law.kd": lambda rng, n: rng.integers(700, 901, n)}
 
 
-def _one(axis, row):
-    """The reference: one sb.Axis per plant, built with replace() and run with Axis.run."""
+def _one(axis, row, command=STEP):
+    """The reference: one sb.Axis per plant, built with replace() and run with Axis.run over `command`."""
     parts = {}
     for name, value in row.items():
         part, field = name.split(".")
@@ -23,7 +23,7 @@ def _one(axis, row):
     spec = sb.batch.axis_spec(axis)
     for part, changes in parts.items():
         spec[part] = spec[part].replace(**changes)
-    return sb.Axis(**spec).run(STEP)
+    return sb.Axis(**spec).run(command)
 
 
 def test_batch_equals_one_run_per_plant_bit_for_bit():
@@ -51,14 +51,7 @@ def test_feedback_only_batch_of_a_position_command_equals_one_run_per_plant():
     for signals in (("fb_pos",), ()):
         res = sb.monte_carlo(axis, cmd, spread=SPREAD, n=10, seed=5, signals=signals)
         for i, row in res.parameters.iterrows():
-            parts = {}
-            for name, value in row.to_dict().items():
-                part, field = name.split(".")
-                parts.setdefault(part, {})[field] = value
-            spec = sb.batch.axis_spec(axis)
-            for part, changes in parts.items():
-                spec[part] = spec[part].replace(**changes)
-            ref = sb.Axis(**spec).run(cmd)
+            ref = _one(axis, row.to_dict(), cmd)
             if signals:
                 np.testing.assert_array_equal(res.signals["fb_pos"][i], ref.fb_pos)
             m = sb.move_metrics(ref)
