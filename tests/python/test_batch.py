@@ -26,6 +26,14 @@ def _one(axis, row, command=STEP):
     return sb.Axis(**spec).run(command)
 
 
+def _assert_metrics_equal(res, i, ref):
+    """Plant i's batch metrics are sb.move_metrics of its reference run, bit for bit (NaN where both are NaN)."""
+    m = sb.move_metrics(ref)
+    for name in sb.batch.METRICS:
+        a, b = res.metrics.loc[i, name], getattr(m, name)
+        assert (math.isnan(a) and math.isnan(b)) or a == b, (i, name, a, b)
+
+
 def test_batch_equals_one_run_per_plant_bit_for_bit():
     axis = sb.demo_axis()
     res = sb.monte_carlo(axis, STEP, spread=SPREAD, n=12, seed=3, signals=("fb_pos", "volts"))
@@ -34,10 +42,7 @@ def test_batch_equals_one_run_per_plant_bit_for_bit():
         ref = _one(axis, row.to_dict())
         np.testing.assert_array_equal(res.signals["fb_pos"][i], ref.fb_pos)
         np.testing.assert_array_equal(res.signals["volts"][i], ref.volts)
-        m = sb.move_metrics(ref)
-        for name in sb.batch.METRICS:
-            a, b = res.metrics.loc[i, name], getattr(m, name)
-            assert (math.isnan(a) and math.isnan(b)) or a == b, (i, name, a, b)
+        _assert_metrics_equal(res, i, ref)
 
 
 def test_feedback_only_batch_of_a_position_command_equals_one_run_per_plant():
@@ -54,10 +59,7 @@ def test_feedback_only_batch_of_a_position_command_equals_one_run_per_plant():
             ref = _one(axis, row.to_dict(), cmd)
             if signals:
                 np.testing.assert_array_equal(res.signals["fb_pos"][i], ref.fb_pos)
-            m = sb.move_metrics(ref)
-            for name in sb.batch.METRICS:
-                a, b = res.metrics.loc[i, name], getattr(m, name)
-                assert (math.isnan(a) and math.isnan(b)) or a == b, (i, name, a, b)
+            _assert_metrics_equal(res, i, ref)
 
 
 def test_progress_sees_every_plant_and_false_stops_the_batch():
